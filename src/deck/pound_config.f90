@@ -1,0 +1,90 @@
+!> What a deck declares, after validation and resolution of derived values.
+!>
+!> The deck reader (`pound_deck`) fills these types; the models and the driver read them.
+!> Units throughout: kN, m, s, t (tonne).
+module pound_config
+   use pound_kinds, only: dp
+   implicit none
+   private
+
+   public :: analysis_config, ground_config, building_config, deck_type
+   public :: n_history_quantities, history_names, g_accel
+
+   !> Standard gravity used to turn floor loads into masses (m/s^2).
+   real(dp), parameter :: g_accel = 9.81_dp
+
+   !> Number of history quantities that can be stored.
+   integer, parameter :: n_history_quantities = 5
+   !> Names of the history quantities, as written in `&analysis history=` and in HDF5.
+   character(len=*), parameter :: history_names(n_history_quantities) = &
+      [character(len=12) :: 'u', 'v', 'a_abs', 'drift', 'storey_shear']
+
+   !> `&analysis`: title, time stepping and history output.
+   type :: analysis_config
+      !> Title shown in the listing, the HDF5 file and plots.
+      character(len=:), allocatable :: title
+      !> Time step (s).
+      real(dp) :: dt = 0.0_dp
+      !> Duration (s).
+      real(dp) :: t_end = 0.0_dp
+      !> History output every `output_every` steps.
+      integer :: output_every = 1
+      !> Which history quantities are stored (same order as `history_names`).
+      logical :: store(n_history_quantities) = .true.
+   end type analysis_config
+
+   !> `&ground`: the ground motion.
+   type :: ground_config
+      !> 'pulse' or 'record'.
+      character(len=:), allocatable :: kind
+      !> Pulse amplitude x0 (m), decay a (1/s), circular frequency b (rad/s).
+      real(dp) :: x0 = 0.0_dp, a = 0.0_dp, b = 0.0_dp
+      !> Record file (resolved relative to the deck's directory).
+      character(len=:), allocatable :: file
+      !> Record format: 'auto', 'at2' or 'columns'.
+      character(len=:), allocatable :: format
+      !> Scale factor applied to the record (values are in g).
+      real(dp) :: scale = 1.0_dp
+   end type ground_config
+
+   !> `&building`: one shear building (rigid beams, one lateral DOF per floor).
+   type :: building_config
+      !> Name used in messages, listing and HDF5 groups.
+      character(len=:), allocatable :: name
+      !> Number of storeys (= floors).
+      integer :: n_storeys = 0
+      !> Storey heights (m), storey 1 at the bottom.
+      real(dp), allocatable :: height(:)
+      !> Floor masses (t).
+      real(dp), allocatable :: mass(:)
+      !> Storey lateral stiffness (kN/m).
+      real(dp), allocatable :: stiffness(:)
+      !> Gravity load applied at each floor (kN), used for P-Delta.
+      real(dp), allocatable :: gravity_load(:)
+      !> Damping ratio for Rayleigh damping.
+      real(dp) :: damping_ratio = 0.05_dp
+      !> The two modes at which Rayleigh damping is fitted.
+      integer :: damping_modes(2) = [1, 2]
+      !> Second-order (P-Delta) geometric stiffness on/off.
+      logical :: p_delta = .false.
+      !> How masses were given: 'mass' or 'load_coeff' (for the echo).
+      character(len=:), allocatable :: mass_source
+      !> How stiffness was given: 'stiffness' or 'columns' (for the echo).
+      character(len=:), allocatable :: stiffness_source
+   end type building_config
+
+   !> A whole, validated deck.
+   type :: deck_type
+      !> Path of the deck file as given.
+      character(len=:), allocatable :: path
+      !> Full text of the deck (echoed in the listing and stored in HDF5).
+      character(len=:), allocatable :: text
+      !> `&analysis`.
+      type(analysis_config) :: analysis
+      !> `&ground`.
+      type(ground_config) :: ground
+      !> `&building` occurrences, in deck order (left to right).
+      type(building_config), allocatable :: buildings(:)
+   end type deck_type
+
+end module pound_config

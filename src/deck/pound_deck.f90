@@ -1,0 +1,1369 @@
+!> Input deck reader: Fortran namelist groups `&analysis`, `&ground` and `&building`.
+!>
+!> The deck is read into memory once (kept in `deck%text` for the echo), then scanned:
+!> every group must start with `&name` and end with `/` (or `&end`), text between groups
+!> must be blank or a `!` comment, and every variable name is checked against its group
+!> before gfortran reads the group. Each group occurrence is then read on its own (from
+!> an internal file holding just that group), so the order of the groups does not matter.
+!>
+!> * `&analysis` and `&ground` exactly once, `&building` once per building, left to right.
+!> * `&contact` and `&sweep` are recognised (later features) but not read here.
+!> * Per-storey arrays need exactly `n_storeys` values, storey/floor 1 at the bottom;
+!>   use the namelist repeat count for equal values: `height = 8*3.0`.
+!>
+!> Every value is validated and resolved (masses from load coefficients, storey stiffness
+!> from columns, default gravity loads, record path relative to the deck's directory).
+!> The first error found is reported in one message of the form
+!> `deck.nml:14: &building #2 (B): n_columns(5) = 0, must be >= 1`
+!> (line of the variable's assignment, or of the group start when the variable is missing).
+module pound_deck
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: iso_fortran_env, only: int64
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   use pound_config, only: deck_type, analysis_config, ground_config, building_config, &
+                           n_history_quantities, history_names, g_accel
+   implicit none
+   private
+
+   public :: read_deck, max_storeys, max_name_length
+
+   !> Largest number of storeys a `&building` may have.
+   integer, parameter :: max_storeys = 20000
+   !> Longest building name (it is used as an HDF5 group name).
+   integer, parameter :: max_name_length = 64
+
+   !> Marks namelist values the deck did not give.
+   real(dp), parameter :: unset_real = -huge(1.0_dp)
+   !> Marks namelist integers the deck did not give.
+   integer, parameter :: unset_int = -huge(1)
+
+   !> Largest number of time steps t_end/dt.
+   integer, parameter :: max_steps = 1000000000
+
+   !> Lengths of the character buffers the namelist reads into.
+   integer, parameter :: title_len = 1024, path_len = 4096, word_len = 256
+
+   character(len=*), parameter :: known_groups(5) = &
+      [character(len=8) :: 'analysis', 'ground', 'building', 'contact', 'sweep']
+   character(len=*), parameter :: analysis_vars(5) = &
+      [character(len=12) :: 'title', 'dt', 't_end', 'output_every', 'history']
+   character(len=*), parameter :: ground_vars(7) = &
+      [character(len=6) :: 'kind', 'x0', 'a', 'b', 'file', 'format', 'scale']
+   character(len=*), parameter :: building_vars(15) = &
+      [character(len=14) :: 'name', 'n_storeys', 'height', 'mass', 'load_coeff', 'ref_floor_load', &
+      'stiffness', 'n_columns', 'e_modulus', 'inertia', 'column_ends', 'damping_ratio', &
+      'damping_modes', 'p_delta', 'gravity_load']
+
+   !> A variable assignment seen in a group (`name =` or `name(i) =`).
+   type :: var_ref
+      !> Variable name, lower case.
+      character(len=:), allocatable :: name
+      !> Deck line of the assignment.
+      integer :: line = 0
+   end type var_ref
+
+   !> One occurrence of a namelist group in the deck.
+   type :: group_ref
+      !> Group name, lower case.
+      character(len=:), allocatable :: name
+      !> 1 for the first occurrence of this group name, 2 for the second, ...
+      integer :: occurrence = 0
+      !> Line and column of the `&` that opens the group.
+      integer :: line1 = 0, col1 = 0
+      !> Line and column of the `/` (or `&end`) that closes the group.
+      integer :: line2 = 0, col2 = 0
+      !> Number of assignments seen.
+      integer :: n_vars = 0
+      !> Assignments seen (first `n_vars` used).
+      type(var_ref), allocatable :: vars(:)
+   end type group_ref
+
+   !> Where a message points: deck, group occurrence and its label.
+   type :: site
+      !> Deck path as given.
+      character(len=:), allocatable :: path
+      !> Group label, e.g. `&building #2 (B)`.
+      character(len=:), allocatable :: label
+      !> The group occurrence (for the line of a variable).
+      type(group_ref) :: group
+   end type site
+
+contains
+
+   !> Read, validate and resolve the deck at `path`.
+   !>
+   !> On error `deck` is left in its default state and `error%message` names the deck file,
+   !> the line, the group (occurrence and building name when known), the variable and the rule.
+   subroutine read_deck(path, deck, error)
+      !> Deck file; record files are resolved relative to its directory.
+      character(len=*), intent(in) :: path
+      !> The validated deck (untouched defaults on error).
+      type(deck_type), intent(out) :: deck
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      type(deck_type) :: d
+      character(len=:), allocatable :: text
+
+      call load_deck(path, text, error)
+      if (allocated(error)) return
+      call parse_deck(path, text, longest_line(text), d, error)
+      if (allocated(error)) return
+      deck = d
+   end subroutine read_deck
+
+   !> Scan, read, validate and resolve the deck whose file text is `text` (longest line `line_len`).
+   subroutine parse_deck(path, text, line_len, d, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> Length of the longest line.
+      integer, intent(in) :: line_len
+      !> The resolved deck.
+      type(deck_type), intent(out) :: d
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=line_len), allocatable :: lines(:)
+      type(group_ref), allocatable :: groups(:)
+      integer :: n_groups, i, k, nb, ia, ig
+
+      d%path = path
+      d%text = text
+      allocate (lines(count_lines(text)))
+      call split_lines(text, lines)
+      call scan_groups(path, lines, groups, n_groups, error)
+      if (allocated(error)) return
+
+      call find_single(path, groups(1:n_groups), 'analysis', &
+                       'title, dt, t_end, output_every, history', ia, error)
+      if (allocated(error)) return
+      call find_single(path, groups(1:n_groups), 'ground', &
+                       "kind = 'pulse' or 'record' and its parameters", ig, error)
+      if (allocated(error)) return
+      nb = count([(groups(i)%name == 'building', i=1, n_groups)])
+      if (nb == 0) then
+         call fatal_error(error, path//': no &building group; give one &building per '// &
+                          'building, left to right')
+         return
+      end if
+
+      call read_analysis(path, lines, groups(ia), d%analysis, error)
+      if (allocated(error)) return
+      call read_ground(path, lines, groups(ig), d%ground, error)
+      if (allocated(error)) return
+      allocate (d%buildings(nb))
+      k = 0
+      do i = 1, n_groups
+         if (groups(i)%name /= 'building') cycle
+         k = k + 1
+         call read_building(path, lines, groups(i), d%buildings(1:k - 1), d%buildings(k), error)
+         if (allocated(error)) return
+      end do
+   end subroutine parse_deck
+
+   !> Read the whole deck file; its text without CRs and without the final newline.
+   subroutine load_deck(path, text, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck text.
+      character(len=:), allocatable, intent(out) :: text
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: raw
+      character(len=512) :: msg
+      integer :: u, ios, n, i, j
+
+      msg = ' '
+      open (newunit=u, file=path, access='stream', form='unformatted', action='read', &
+            status='old', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call fatal_error(error, path//': cannot open the deck: '//trim(msg))
+         return
+      end if
+      inquire (unit=u, size=n)
+      allocate (character(len=max(n, 0)) :: raw)
+      ios = 0
+      if (n > 0) read (u, iostat=ios, iomsg=msg) raw
+      close (u)
+      if (ios /= 0 .or. n < 0) then
+         call fatal_error(error, path//': cannot read the deck: '//trim(msg))
+         return
+      end if
+
+      allocate (character(len=len(raw)) :: text)
+      j = 0
+      do i = 1, len(raw)
+         if (raw(i:i) == achar(13)) cycle
+         j = j + 1
+         text(j:j) = raw(i:i)
+      end do
+      if (j > 0) then
+         if (text(j:j) == achar(10)) j = j - 1
+      end if
+      text = text(1:j)
+   end subroutine load_deck
+
+   !> Number of lines in `text` (lines separated by LF).
+   pure integer function count_lines(text) result(n)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      integer :: i
+
+      n = 1
+      do i = 1, len(text)
+         if (text(i:i) == achar(10)) n = n + 1
+      end do
+   end function count_lines
+
+   !> Length of the longest line of `text` (at least 1).
+   pure integer function longest_line(text) result(n)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      integer :: i, start
+
+      n = 1
+      start = 1
+      do i = 1, len(text)
+         if (text(i:i) == achar(10)) then
+            n = max(n, i - start)
+            start = i + 1
+         end if
+      end do
+      n = max(n, len(text) - start + 1)
+   end function longest_line
+
+   !> Split `text` into `lines` (tabs become blanks).
+   pure subroutine split_lines(text, lines)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> The lines, sized by `count_lines`.
+      character(len=*), intent(out) :: lines(:)
+      integer :: i, j, nl, start
+
+      nl = 0
+      start = 1
+      do i = 1, len(text) + 1
+         if (i <= len(text)) then
+            if (text(i:i) /= achar(10)) cycle
+         end if
+         nl = nl + 1
+         lines(nl) = text(start:i - 1)
+         start = i + 1
+      end do
+      do i = 1, size(lines)
+         do j = 1, len_trim(lines(i))
+            if (lines(i) (j:j) == achar(9)) lines(i) (j:j) = ' '
+         end do
+      end do
+   end subroutine split_lines
+
+   !> Find the groups, their extent and their assignments; reject text outside groups,
+   !> unknown groups, unclosed groups and unknown variables.
+   pure subroutine scan_groups(path, lines, groups, n_groups, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck lines.
+      character(len=*), intent(in) :: lines(:)
+      !> Groups found, in deck order (first `n_groups` used).
+      type(group_ref), allocatable, intent(out) :: groups(:)
+      !> Number of groups found.
+      integer, intent(out) :: n_groups
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      type(group_ref), allocatable :: tmp(:)
+      character(len=:), allocatable :: gname, vname
+      character :: c, quote
+      logical :: in_group
+      integer :: il, ic, j, last, i
+
+      allocate (groups(8))
+      n_groups = 0
+      in_group = .false.
+      quote = ' '
+      do il = 1, size(lines)
+         last = len_trim(lines(il))
+         ic = 1
+         do while (ic <= last)
+            c = lines(il) (ic:ic)
+            if (quote /= ' ') then
+               if (c == quote) quote = ' '
+            else if (.not. in_group) then
+               if (c == '!') exit
+               if (c == '&') then
+                  j = name_end(lines(il), ic + 1)
+                  gname = lower(lines(il) (ic + 1:j))
+                  if (.not. any(known_groups == gname) .or. len(gname) == 0) then
+                     call fatal_error(error, path//':'//str(il)//": unknown namelist group '&"// &
+                                      lines(il) (ic + 1:j)//"'; known groups: &analysis, "// &
+                                      '&ground, &building, &contact, &sweep')
+                     return
+                  end if
+                  if (n_groups == size(groups)) then
+                     allocate (tmp(2*size(groups)))
+                     tmp(1:n_groups) = groups(1:n_groups)
+                     call move_alloc(tmp, groups)
+                  end if
+                  n_groups = n_groups + 1
+                  groups(n_groups)%name = gname
+                  groups(n_groups)%occurrence = count([(groups(i)%name == gname, i=1, n_groups)])
+                  groups(n_groups)%line1 = il
+                  groups(n_groups)%col1 = ic
+                  allocate (groups(n_groups)%vars(16))
+                  in_group = .true.
+                  ic = j + 1
+                  cycle
+               else if (c /= ' ') then
+                  call fatal_error(error, path//':'//str(il)//": text outside a namelist group: '"// &
+                                   trim(lines(il) (ic:min(last, ic + 39)))//"'; groups start with "// &
+                                   '&name and end with /, comments start with !')
+                  return
+               end if
+            else
+               select case (c)
+               case ("'", '"')
+                  quote = c
+               case ('!')
+                  exit
+               case ('/')
+                  groups(n_groups)%line2 = il
+                  groups(n_groups)%col2 = ic
+                  in_group = .false.
+               case ('&')
+                  j = name_end(lines(il), ic + 1)
+                  if (lower(lines(il) (ic + 1:j)) == 'end') then
+                     groups(n_groups)%line2 = il
+                     groups(n_groups)%col2 = ic
+                     in_group = .false.
+                     ic = j
+                  else
+                     call fatal_error(error, path//':'//str(groups(n_groups)%line1)//': '// &
+                                      group_label(groups(n_groups))//" is not closed with '/' "// &
+                                      'before line '//str(il))
+                     return
+                  end if
+               case ('=')
+                  call name_before(lines(il), ic, vname)
+                  if (len(vname) > 0) then
+                     if (.not. known_variable(groups(n_groups)%name, vname)) then
+                        call fatal_error(error, path//':'//str(il)//': '// &
+                                         group_label(groups(n_groups))//": unknown variable '"// &
+                                         vname//"'; known: "// &
+                                         variable_list(groups(n_groups)%name))
+                        return
+                     end if
+                     call add_var(groups(n_groups), vname, il)
+                  end if
+               end select
+            end if
+            ic = ic + 1
+         end do
+      end do
+      if (in_group) then
+         if (quote /= ' ') then
+            call fatal_error(error, path//':'//str(groups(n_groups)%line1)//': '// &
+                             group_label(groups(n_groups))//': a character value opened with '// &
+                             quote//' is not closed')
+         else
+            call fatal_error(error, path//':'//str(groups(n_groups)%line1)//': '// &
+                             group_label(groups(n_groups))//" is not closed with '/'")
+         end if
+      end if
+   end subroutine scan_groups
+
+   !> Last position of the name starting at `from` in `line` (`from - 1` if none).
+   pure integer function name_end(line, from) result(j)
+      !> One deck line.
+      character(len=*), intent(in) :: line
+      !> First position of the name.
+      integer, intent(in) :: from
+
+      j = from - 1
+      do while (j + 1 <= len_trim(line))
+         if (.not. is_name_char(line(j + 1:j + 1))) exit
+         j = j + 1
+      end do
+   end function name_end
+
+   !> The variable name (lower case, subscript removed) in front of the `=` at `eq`.
+   pure subroutine name_before(line, eq, name)
+      !> One deck line.
+      character(len=*), intent(in) :: line
+      !> Position of the `=`.
+      integer, intent(in) :: eq
+      !> Variable name, lower case ('' if none).
+      character(len=:), allocatable, intent(out) :: name
+      integer :: k, last, depth
+
+      name = ''
+      k = eq - 1
+      do while (k >= 1)
+         if (line(k:k) /= ' ') exit
+         k = k - 1
+      end do
+      if (k < 1) return
+      if (line(k:k) == ')') then
+         depth = 0
+         do while (k >= 1)
+            if (line(k:k) == ')') depth = depth + 1
+            if (line(k:k) == '(') depth = depth - 1
+            if (depth == 0) exit
+            k = k - 1
+         end do
+         k = k - 1
+         do while (k >= 1)
+            if (line(k:k) /= ' ') exit
+            k = k - 1
+         end do
+      end if
+      last = k
+      do while (k >= 1)
+         if (.not. is_name_char(line(k:k))) exit
+         k = k - 1
+      end do
+      if (last >= k + 1) name = lower(line(k + 1:last))
+   end subroutine name_before
+
+   !> Record an assignment of `name` on `line` in group `g`.
+   pure subroutine add_var(g, name, line)
+      !> Group the assignment belongs to.
+      type(group_ref), intent(inout) :: g
+      !> Name to look up / record.
+      character(len=*), intent(in) :: name
+      !> Deck line number.
+      integer, intent(in) :: line
+      type(var_ref), allocatable :: tmp(:)
+
+      if (g%n_vars == size(g%vars)) then
+         allocate (tmp(2*size(g%vars)))
+         tmp(1:g%n_vars) = g%vars(1:g%n_vars)
+         call move_alloc(tmp, g%vars)
+      end if
+      g%n_vars = g%n_vars + 1
+      g%vars(g%n_vars)%name = name
+      g%vars(g%n_vars)%line = line
+   end subroutine add_var
+
+   !> Whether `name` is a variable of group `group` (groups read elsewhere accept anything).
+   pure logical function known_variable(group, name)
+      !> Group name and variable name, lower case.
+      character(len=*), intent(in) :: group, name
+
+      select case (group)
+      case ('analysis')
+         known_variable = any(analysis_vars == name)
+      case ('ground')
+         known_variable = any(ground_vars == name)
+      case ('building')
+         known_variable = any(building_vars == name)
+      case default
+         known_variable = .true.
+      end select
+   end function known_variable
+
+   !> The variables of `group`, comma separated.
+   pure function variable_list(group) result(list)
+      !> Group name, lower case.
+      character(len=*), intent(in) :: group
+      character(len=:), allocatable :: list
+
+      select case (group)
+      case ('analysis')
+         list = join(analysis_vars)
+      case ('ground')
+         list = join(ground_vars)
+      case ('building')
+         list = join(building_vars)
+      case default
+         list = ''
+      end select
+   end function variable_list
+
+   !> Words joined by ', '.
+   pure function join(words) result(s)
+      !> Words to join (trailing blanks dropped).
+      character(len=*), intent(in) :: words(:)
+      character(len=:), allocatable :: s
+      integer :: i
+
+      s = trim(words(1))
+      do i = 2, size(words)
+         s = s//', '//trim(words(i))
+      end do
+   end function join
+
+   !> `&name` for groups that occur once, `&name #k` for `&building`.
+   pure function group_label(g) result(s)
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      character(len=:), allocatable :: s
+
+      if (g%name == 'building') then
+         s = '&'//g%name//' #'//str(g%occurrence)
+      else
+         s = '&'//g%name
+      end if
+   end function group_label
+
+   !> Index of the single occurrence of group `name`; error if missing or repeated.
+   pure subroutine find_single(path, groups, name, contents, idx, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> All groups, in deck order.
+      type(group_ref), intent(in) :: groups(:)
+      !> Name to look up / record.
+      character(len=*), intent(in) :: name
+      !> What the group holds (for the message).
+      character(len=*), intent(in) :: contents
+      !> Index of the group in `groups`.
+      integer, intent(out) :: idx
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i
+
+      idx = 0
+      do i = 1, size(groups)
+         if (groups(i)%name /= name) cycle
+         if (idx /= 0) then
+            call fatal_error(error, path//':'//str(groups(i)%line1)//': &'//name// &
+                             ' appears again (first at line '//str(groups(idx)%line1)// &
+                             '); exactly one &'//name//' is allowed')
+            return
+         end if
+         idx = i
+      end do
+      if (idx == 0) call fatal_error(error, path//': &'//name//' is missing; exactly one &'// &
+                                     name//' is required ('//contents//')')
+   end subroutine find_single
+
+   !> Just the text of group `g`, as an internal file for a namelist read.
+   pure subroutine group_text(lines, g, buf)
+      !> Deck lines.
+      character(len=*), intent(in) :: lines(:)
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> Internal file with just the group's text.
+      character(len=*), allocatable, intent(out) :: buf(:)
+      integer :: n
+
+      n = g%line2 - g%line1 + 1
+      allocate (buf(n))
+      buf = lines(g%line1:g%line2)
+      buf(n) (g%col2:) = '/'
+      buf(1) (1:g%col1 - 1) = ' '
+   end subroutine group_text
+
+   !> Site of a group occurrence, labelled without a building name.
+   pure function site_of(path, g) result(at)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      type(site) :: at
+
+      at%path = path
+      at%label = group_label(g)
+      at%group = g
+   end function site_of
+
+   !> Fail with `text` at the (last) line where `var` is assigned, or the group's first line.
+   pure subroutine fail(at, var, text, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i, line
+
+      line = at%group%line1
+      do i = 1, at%group%n_vars
+         if (at%group%vars(i)%name == var) line = at%group%vars(i)%line
+      end do
+      call fatal_error(error, at%path//':'//str(line)//': '//at%label//': '//text)
+   end subroutine fail
+
+   !> Pass on gfortran's message when the namelist read of a group failed (`ios /= 0`).
+   pure subroutine read_failed(at, ios, msg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> iostat of the read.
+      integer, intent(in) :: ios
+      !> iomsg of the read.
+      character(len=*), intent(in) :: msg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (ios == 0) return
+      call fatal_error(error, at%path//':'//str(at%group%line1)//': '//at%label//': '//trim(msg))
+   end subroutine read_failed
+
+   !> `&analysis`: title, time step, duration, history output.
+   subroutine read_analysis(path, lines, g, cfg, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck lines.
+      character(len=*), intent(in) :: lines(:)
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> Resolved `&analysis`.
+      type(analysis_config), intent(out) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=title_len) :: title
+      character(len=path_len) :: history
+      real(dp) :: dt, t_end
+      integer :: output_every, ios
+      character(len=len(lines)), allocatable :: buf(:)
+      character(len=512) :: msg
+      type(site) :: at
+      namelist /analysis/ title, dt, t_end, output_every, history
+
+      title = ' '
+      history = ' '
+      dt = unset_real
+      t_end = unset_real
+      output_every = 1
+      at = site_of(path, g)
+      call group_text(lines, g, buf)
+      msg = ' '
+      read (buf, nml=analysis, iostat=ios, iomsg=msg)
+      call read_failed(at, ios, msg, error)
+      if (allocated(error)) return
+
+      if (len_trim(title) == len(title)) then
+         call fail(at, 'title', 'title is longer than '//str(len(title) - 1)//' characters', error)
+         return
+      end if
+      if (len_trim(title) > 0) then
+         cfg%title = trim(title)
+      else
+         cfg%title = base_name(path)
+      end if
+
+      call require_real(at, 'dt', dt, 'time step in s', error)
+      if (allocated(error)) return
+      call check_real(at, 'dt', dt, '>', 0.0_dp, error)
+      if (allocated(error)) return
+      call require_real(at, 't_end', t_end, 'duration in s', error)
+      if (allocated(error)) return
+      call check_real(at, 't_end', t_end, '>=', dt, error, 'dt = '//str(dt))
+      if (allocated(error)) return
+      if (t_end > dt*real(max_steps, dp)) then
+         call fail(at, 't_end', 't_end/dt = '//str(t_end/dt)//' steps, must be <= '// &
+                   str(max_steps), error)
+         return
+      end if
+      if (output_every < 1) then
+         call fail(at, 'output_every', 'output_every = '//str(output_every)//', must be >= 1', error)
+         return
+      end if
+      cfg%dt = dt
+      cfg%t_end = t_end
+      cfg%output_every = output_every
+      call parse_history(at, history, cfg%store, error)
+   end subroutine read_analysis
+
+   !> `history`: blank/comma separated quantities, 'all' or 'none'; blank means all.
+   pure subroutine parse_history(at, spec, store, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> The `history` string.
+      character(len=*), intent(in) :: spec
+      !> Which quantities are stored.
+      logical, intent(out) :: store(n_history_quantities)
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: s, word
+      integer :: i, j, k
+
+      store = .true.
+      s = lower(spec)
+      do i = 1, len(s)
+         if (s(i:i) == ',') s(i:i) = ' '
+      end do
+      if (len_trim(s) == 0) return
+      store = .false.
+      i = 1
+      do
+         do while (i <= len(s))
+            if (s(i:i) /= ' ') exit
+            i = i + 1
+         end do
+         if (i > len(s)) exit
+         j = index(s(i:), ' ')
+         if (j == 0) then
+            j = len(s)
+         else
+            j = i + j - 2
+         end if
+         word = s(i:j)
+         i = j + 1
+         if (word == 'all' .or. word == 'none') then
+            if (len_trim(adjustl(s)) /= len(word)) then
+               call fail(at, 'history', "history = '"//trim(adjustl(spec))//"': '"//word// &
+                         "' must be the only word", error)
+               return
+            end if
+            store = (word == 'all')
+            return
+         end if
+         k = findloc_name(history_names, word)
+         if (k == 0) then
+            call fail(at, 'history', "history: unknown quantity '"//word//"', must be one of "// &
+                      join(history_names)//", 'all' or 'none'", error)
+            return
+         end if
+         store(k) = .true.
+      end do
+   end subroutine parse_history
+
+   !> Position of `word` in `names` (0 if absent).
+   pure integer function findloc_name(names, word) result(k)
+      !> Names to search, word to find.
+      character(len=*), intent(in) :: names(:), word
+
+      do k = 1, size(names)
+         if (names(k) == word) return
+      end do
+      k = 0
+   end function findloc_name
+
+   !> `&ground`: a pulse or a record file.
+   subroutine read_ground(path, lines, g, cfg, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck lines.
+      character(len=*), intent(in) :: lines(:)
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> Resolved `&ground`.
+      type(ground_config), intent(out) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=word_len) :: kind, format
+      character(len=path_len) :: file
+      real(dp) :: x0, a, b, scale
+      integer :: ios
+      logical :: exists
+      character(len=len(lines)), allocatable :: buf(:)
+      character(len=:), allocatable :: resolved
+      character(len=512) :: msg
+      type(site) :: at
+      namelist /ground/ kind, x0, a, b, file, format, scale
+
+      kind = ' '
+      format = ' '
+      file = ' '
+      x0 = unset_real
+      a = unset_real
+      b = unset_real
+      scale = unset_real
+      at = site_of(path, g)
+      call group_text(lines, g, buf)
+      msg = ' '
+      read (buf, nml=ground, iostat=ios, iomsg=msg)
+      call read_failed(at, ios, msg, error)
+      if (allocated(error)) return
+
+      cfg%kind = lower(trim(adjustl(kind)))
+      select case (cfg%kind)
+      case ('')
+         call fail(at, 'kind', "kind is missing, must be 'pulse' or 'record'", error)
+      case ('pulse')
+         if (len_trim(file) > 0) then
+            call fail(at, 'file', "file applies only to kind = 'record'", error)
+         else if (len_trim(format) > 0) then
+            call fail(at, 'format', "format applies only to kind = 'record'", error)
+         else if (is_set(scale)) then
+            call fail(at, 'scale', "scale applies only to kind = 'record'", error)
+         end if
+         if (allocated(error)) return
+         call require_real(at, 'x0', x0, 'pulse amplitude in m', error)
+         if (allocated(error)) return
+         call check_real(at, 'x0', x0, '/=', 0.0_dp, error)
+         if (allocated(error)) return
+         call require_real(at, 'a', a, 'pulse decay in 1/s', error)
+         if (allocated(error)) return
+         call check_real(at, 'a', a, '>=', 0.0_dp, error)
+         if (allocated(error)) return
+         call require_real(at, 'b', b, 'pulse circular frequency in rad/s', error)
+         if (allocated(error)) return
+         call check_real(at, 'b', b, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%x0 = x0
+         cfg%a = a
+         cfg%b = b
+         cfg%file = ''
+         cfg%format = ''
+      case ('record')
+         if (is_set(x0)) then
+            call fail(at, 'x0', "x0 applies only to kind = 'pulse'", error)
+         else if (is_set(a)) then
+            call fail(at, 'a', "a applies only to kind = 'pulse'", error)
+         else if (is_set(b)) then
+            call fail(at, 'b', "b applies only to kind = 'pulse'", error)
+         end if
+         if (allocated(error)) return
+         if (len_trim(file) == 0) then
+            call fail(at, 'file', 'file is missing (record file, relative to the deck''s '// &
+                      'directory unless absolute)', error)
+            return
+         end if
+         if (len_trim(file) == len(file)) then
+            call fail(at, 'file', 'file is longer than '//str(len(file) - 1)//' characters', error)
+            return
+         end if
+         resolved = resolve_path(path, trim(adjustl(file)))
+         inquire (file=resolved, exist=exists)
+         if (.not. exists) then
+            call fail(at, 'file', "file = '"//trim(adjustl(file))//"': record file '"// &
+                      resolved//"' does not exist", error)
+            return
+         end if
+         cfg%file = resolved
+         cfg%format = lower(trim(adjustl(format)))
+         if (len(cfg%format) == 0) cfg%format = 'auto'
+         select case (cfg%format)
+         case ('auto', 'at2', 'columns')
+         case default
+            call fail(at, 'format', "format = '"//trim(adjustl(format))//"', must be 'auto', "// &
+                      "'at2' or 'columns'", error)
+            return
+         end select
+         if (.not. is_set(scale)) scale = 1.0_dp
+         call check_real(at, 'scale', scale, '/=', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%scale = scale
+      case default
+         call fail(at, 'kind', "kind = '"//trim(adjustl(kind))//"', must be 'pulse' or 'record'", error)
+      end select
+   end subroutine read_ground
+
+   !> `file` as given if absolute, else relative to the directory of the deck `deck_path`.
+   pure function resolve_path(deck_path, file) result(resolved)
+      !> Deck path and record file as given.
+      character(len=*), intent(in) :: deck_path, file
+      character(len=:), allocatable :: resolved
+      integer :: slash
+
+      slash = index(deck_path, '/', back=.true.)
+      if (file(1:1) == '/' .or. slash == 0) then
+         resolved = file
+      else
+         resolved = deck_path(1:slash)//file
+      end if
+   end function resolve_path
+
+   !> File name without directory and extension: 'input/a.nml' -> 'a'.
+   pure function base_name(path) result(s)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable :: s
+      integer :: dot
+
+      s = path(index(path, '/', back=.true.) + 1:)
+      dot = index(s, '.', back=.true.)
+      if (dot > 1) s = s(1:dot - 1)
+   end function base_name
+
+   !> `&building`: one shear building.
+   subroutine read_building(path, lines, g, previous, cfg, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck lines.
+      character(len=*), intent(in) :: lines(:)
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> Buildings read before this one.
+      type(building_config), intent(in) :: previous(:)
+      !> Resolved building.
+      type(building_config), intent(out) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=word_len) :: name, column_ends
+      integer :: n_storeys, damping_modes(2)
+      real(dp) :: ref_floor_load, damping_ratio
+      logical :: p_delta
+      real(dp), allocatable :: height(:), mass(:), load_coeff(:), stiffness(:), e_modulus(:), &
+                               inertia(:), gravity_load(:)
+      integer, allocatable :: n_columns(:)
+      character(len=len(lines)), allocatable :: buf(:)
+      character(len=512) :: msg
+      type(site) :: at
+      integer :: ios, n
+      namelist /building/ name, n_storeys, height, mass, load_coeff, ref_floor_load, stiffness, &
+         n_columns, e_modulus, inertia, column_ends, damping_ratio, damping_modes, p_delta, &
+         gravity_load
+
+      allocate (height(max_storeys), mass(max_storeys), load_coeff(max_storeys), &
+                stiffness(max_storeys), e_modulus(max_storeys), inertia(max_storeys), &
+                gravity_load(max_storeys), n_columns(max_storeys))
+      name = ' '
+      column_ends = ' '
+      n_storeys = unset_int
+      damping_modes = unset_int
+      ref_floor_load = unset_real
+      damping_ratio = 0.05_dp
+      p_delta = .false.
+      height = unset_real
+      mass = unset_real
+      load_coeff = unset_real
+      stiffness = unset_real
+      e_modulus = unset_real
+      inertia = unset_real
+      gravity_load = unset_real
+      n_columns = unset_int
+      at = site_of(path, g)
+      call group_text(lines, g, buf)
+      msg = ' '
+      read (buf, nml=building, iostat=ios, iomsg=msg)
+      call read_failed(at, ios, msg, error)
+      if (allocated(error)) return
+
+      call check_name(at, name, previous, error)
+      if (allocated(error)) return
+      cfg%name = trim(adjustl(name))
+      at%label = at%label//' ('//cfg%name//')'
+
+      if (n_storeys == unset_int) then
+         call fail(at, 'n_storeys', 'n_storeys is missing (number of storeys)', error)
+         return
+      end if
+      if (n_storeys < 1 .or. n_storeys > max_storeys) then
+         call fail(at, 'n_storeys', 'n_storeys = '//str(n_storeys)//', must be in 1..'// &
+                   str(max_storeys), error)
+         return
+      end if
+      n = n_storeys
+      cfg%n_storeys = n
+
+      call take_reals(at, 'height', height, n, '>', cfg%height, error)
+      if (allocated(error)) return
+
+      call resolve_masses(at, n, mass, load_coeff, ref_floor_load, cfg, error)
+      if (allocated(error)) return
+      call resolve_stiffness(at, n, cfg%height, stiffness, n_columns, e_modulus, inertia, &
+                             column_ends, cfg, error)
+      if (allocated(error)) return
+
+      if (.not. ieee_is_finite(damping_ratio)) then
+         call fail(at, 'damping_ratio', 'damping_ratio = '//str(damping_ratio)// &
+                   ', must be a finite number', error)
+         return
+      end if
+      if (damping_ratio < 0.0_dp .or. damping_ratio >= 1.0_dp) then
+         call fail(at, 'damping_ratio', 'damping_ratio = '//str(damping_ratio)// &
+                   ', must be >= 0 and < 1', error)
+         return
+      end if
+      cfg%damping_ratio = damping_ratio
+      call check_modes(at, n, damping_modes, cfg%damping_modes, error)
+      if (allocated(error)) return
+      cfg%p_delta = p_delta
+
+      if (given_count(gravity_load) > 0) then
+         call take_reals(at, 'gravity_load', gravity_load, n, '>=', cfg%gravity_load, error)
+         if (allocated(error)) return
+      end if
+   end subroutine read_building
+
+   !> Building name: given, at most `max_name_length` of letters, digits, '_', '-'; unique.
+   pure subroutine check_name(at, raw, previous, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> `name` as read.
+      character(len=*), intent(in) :: raw
+      !> Buildings read before this one.
+      type(building_config), intent(in) :: previous(:)
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: name
+      integer :: i
+
+      name = trim(adjustl(raw))
+      if (len(name) == 0) then
+         call fail(at, 'name', "name is missing or blank; every building needs a unique name "// &
+                   "of letters, digits, '_' and '-'", error)
+         return
+      end if
+      if (len(name) > max_name_length) then
+         call fail(at, 'name', "name = '"//name//"' is longer than "//str(max_name_length)// &
+                   ' characters', error)
+         return
+      end if
+      do i = 1, len(name)
+         if (.not. (is_name_char(name(i:i)) .or. name(i:i) == '-')) then
+            call fail(at, 'name', "name = '"//name//"' contains '"//name(i:i)// &
+                      "', must use only letters, digits, '_' and '-'", error)
+            return
+         end if
+      end do
+      do i = 1, size(previous)
+         if (lower(previous(i)%name) == lower(name)) then
+            call fail(at, 'name', "name = '"//name//"' is already used by &building #"//str(i)// &
+                      ' ('//previous(i)%name//'); names must be unique (ignoring case)', error)
+            return
+         end if
+      end do
+   end subroutine check_name
+
+   !> Floor masses from `mass` or from `load_coeff` * `ref_floor_load`; default gravity loads.
+   pure subroutine resolve_masses(at, n, mass, load_coeff, ref_floor_load, cfg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Number of storeys.
+      integer, intent(in) :: n
+      !> Namelist values as read (`unset_real` where not given).
+      real(dp), intent(in) :: mass(:), load_coeff(:), ref_floor_load
+      !> Building being resolved.
+      type(building_config), intent(inout) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: coeff(:)
+
+      if (given_count(mass) > 0 .and. given_count(load_coeff) > 0) then
+         call fail(at, 'load_coeff', 'give either mass or load_coeff (with ref_floor_load), '// &
+                   'not both', error)
+      else if (given_count(mass) > 0) then
+         if (is_set(ref_floor_load)) then
+            call fail(at, 'ref_floor_load', 'ref_floor_load applies only with load_coeff, '// &
+                      'not with mass', error)
+            return
+         end if
+         call take_reals(at, 'mass', mass, n, '>', cfg%mass, error)
+         if (allocated(error)) return
+         cfg%gravity_load = cfg%mass*g_accel
+         cfg%mass_source = 'mass'
+      else if (given_count(load_coeff) > 0) then
+         call take_reals(at, 'load_coeff', load_coeff, n, '>', coeff, error)
+         if (allocated(error)) return
+         call require_real(at, 'ref_floor_load', ref_floor_load, &
+                           'floor load m0 g in kN that load_coeff multiplies', error)
+         if (allocated(error)) return
+         call check_real(at, 'ref_floor_load', ref_floor_load, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%gravity_load = coeff*ref_floor_load
+         cfg%mass = cfg%gravity_load/g_accel
+         cfg%mass_source = 'load_coeff'
+      else
+         call fail(at, 'mass', 'floor masses are missing: give mass (t) or load_coeff with '// &
+                   'ref_floor_load (kN)', error)
+      end if
+   end subroutine resolve_masses
+
+   !> Storey stiffness from `stiffness` or from the columns (rigid beams).
+   pure subroutine resolve_stiffness(at, n, height, stiffness, n_columns, e_modulus, inertia, &
+                                     column_ends, cfg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Number of storeys.
+      integer, intent(in) :: n
+      !> Storey heights (resolved) and namelist arrays as read.
+      real(dp), intent(in) :: height(:), stiffness(:), e_modulus(:), inertia(:)
+      !> Namelist array as read (`unset_int` where not given).
+      integer, intent(in) :: n_columns(:)
+      !> `column_ends` as read.
+      character(len=*), intent(in) :: column_ends
+      !> Building being resolved.
+      type(building_config), intent(inout) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: e(:), moment(:)
+      integer, allocatable :: nc(:)
+      character(len=:), allocatable :: ends
+      real(dp) :: factor
+      logical :: columns
+
+      columns = given_count(e_modulus) > 0 .or. given_count(inertia) > 0 .or. &
+                count(n_columns /= unset_int) > 0 .or. len_trim(column_ends) > 0
+      if (given_count(stiffness) > 0 .and. columns) then
+         call fail(at, 'stiffness', 'give either stiffness or the columns (n_columns, '// &
+                   'e_modulus, inertia, column_ends), not both', error)
+      else if (given_count(stiffness) > 0) then
+         call take_reals(at, 'stiffness', stiffness, n, '>', cfg%stiffness, error)
+         cfg%stiffness_source = 'stiffness'
+      else if (columns) then
+         call take_ints(at, 'n_columns', n_columns, n, nc, error)
+         if (allocated(error)) return
+         call take_reals(at, 'e_modulus', e_modulus, n, '>', e, error)
+         if (allocated(error)) return
+         call take_reals(at, 'inertia', inertia, n, '>', moment, error)
+         if (allocated(error)) return
+         ends = lower(trim(adjustl(column_ends)))
+         select case (ends)
+         case ('', 'fixed-fixed')
+            factor = 12.0_dp
+         case ('fixed-pinned')
+            factor = 3.0_dp
+         case default
+            call fail(at, 'column_ends', "column_ends = '"//trim(adjustl(column_ends))// &
+                      "', must be 'fixed-fixed' or 'fixed-pinned'", error)
+            return
+         end select
+         cfg%stiffness = real(nc, dp)*factor*e*moment/height**3
+         cfg%stiffness_source = 'columns'
+      else
+         call fail(at, 'stiffness', 'storey stiffness is missing: give stiffness (kN/m) or '// &
+                   'n_columns, e_modulus (kN/m^2) and inertia (m^4)', error)
+      end if
+   end subroutine resolve_stiffness
+
+   !> Rayleigh modes: default (1, 2); with one storey only mode 1, stored as (1, 1).
+   pure subroutine check_modes(at, n, raw, modes, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Number of storeys.
+      integer, intent(in) :: n
+      !> `damping_modes` as read (`unset_int` where not given).
+      integer, intent(in) :: raw(2)
+      !> Modes for the Rayleigh fit.
+      integer, intent(out) :: modes(2)
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i, given
+
+      given = count(raw /= unset_int)
+      if (raw(1) == unset_int .and. raw(2) /= unset_int) then
+         call fail(at, 'damping_modes', 'damping_modes(1) is missing', error)
+         return
+      end if
+      if (n == 1) then
+         modes = 1
+         do i = 1, given
+            if (raw(i) /= 1) then
+               call fail(at, 'damping_modes', 'damping_modes('//str(i)//') = '//str(raw(i))// &
+                         ', must be 1 for a one-storey building', error)
+               return
+            end if
+         end do
+         return
+      end if
+      if (given == 0) then
+         modes = [1, 2]
+         return
+      end if
+      if (given == 1) then
+         call fail(at, 'damping_modes', 'damping_modes has 1 value, must have 2 (two modes, '// &
+                   'ascending)', error)
+         return
+      end if
+      do i = 1, 2
+         if (raw(i) < 1 .or. raw(i) > n) then
+            call fail(at, 'damping_modes', 'damping_modes('//str(i)//') = '//str(raw(i))// &
+                      ', must be in 1..n_storeys = '//str(n), error)
+            return
+         end if
+      end do
+      if (raw(2) <= raw(1)) then
+         call fail(at, 'damping_modes', 'damping_modes = '//str(raw(1))//', '//str(raw(2))// &
+                   ', must be two distinct modes in ascending order', error)
+         return
+      end if
+      modes = raw
+   end subroutine check_modes
+
+   !> Number of values given: position of the last one that is not `unset_real`.
+   pure integer function given_count(raw) result(k)
+      !> Namelist array as read (`unset_real` where not given).
+      real(dp), intent(in) :: raw(:)
+
+      do k = size(raw), 1, -1
+         if (is_set(raw(k))) return
+      end do
+      k = 0
+   end function given_count
+
+   !> Check a per-storey real array (exactly `n` values, each finite and `rule` 0); return them.
+   pure subroutine take_reals(at, var, raw, n, rule, values, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Namelist array as read (`unset_real` where not given).
+      real(dp), intent(in) :: raw(:)
+      !> Number of storeys.
+      integer, intent(in) :: n
+      !> Comparison with the bound: '>', '>=' or '/='.
+      character(len=*), intent(in) :: rule
+      !> The `n` values (unallocated on error).
+      real(dp), allocatable, intent(out) :: values(:)
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k, i
+
+      k = given_count(raw)
+      call check_length(at, var, k, n, error)
+      if (allocated(error)) return
+      do i = 1, n
+         if (.not. is_set(raw(i))) then
+            call fail(at, var, var//'('//str(i)//') is missing; give all '//str(n)// &
+                      ' values', error)
+            return
+         end if
+         call check_real(at, var, raw(i), rule, 0.0_dp, error, name=var//'('//str(i)//')')
+         if (allocated(error)) return
+      end do
+      values = raw(1:n)
+   end subroutine take_reals
+
+   !> Check `n_columns`-like integer array: exactly `n` values, each >= 1.
+   pure subroutine take_ints(at, var, raw, n, values, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Namelist array as read (`unset_int` where not given).
+      integer, intent(in) :: raw(:)
+      !> Number of storeys.
+      integer, intent(in) :: n
+      !> The `n` values (unallocated on error).
+      integer, allocatable, intent(out) :: values(:)
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k, i
+
+      do k = size(raw), 1, -1
+         if (raw(k) /= unset_int) exit
+      end do
+      call check_length(at, var, k, n, error)
+      if (allocated(error)) return
+      do i = 1, n
+         if (raw(i) == unset_int) then
+            call fail(at, var, var//'('//str(i)//') is missing; give all '//str(n)// &
+                      ' values', error)
+            return
+         end if
+         if (raw(i) < 1) then
+            call fail(at, var, var//'('//str(i)//') = '//str(raw(i))//', must be >= 1', error)
+            return
+         end if
+      end do
+      values = raw(1:n)
+   end subroutine take_ints
+
+   !> A per-storey array must have exactly `n` values.
+   pure subroutine check_length(at, var, k, n, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Number of values given, number needed.
+      integer, intent(in) :: k, n
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (k == n) return
+      if (k == 0) then
+         call fail(at, var, var//' is missing; give n_storeys = '//str(n)//' values', error)
+      else if (k == 1) then
+         call fail(at, var, var//' has 1 value, must have n_storeys = '//str(n)// &
+                   ' (repeat equal values: '//str(n)//'*value)', error)
+      else
+         call fail(at, var, var//' has '//str(k)//' values, must have n_storeys = '//str(n), error)
+      end if
+   end subroutine check_length
+
+   !> A required real: error if the deck did not give it.
+   pure subroutine require_real(at, var, x, what, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Value read.
+      real(dp), intent(in) :: x
+      !> What the variable is, with its unit.
+      character(len=*), intent(in) :: what
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. is_set(x)) call fail(at, var, var//' is missing ('//what//')', error)
+   end subroutine require_real
+
+   !> `x rule bound` must hold (rule: '>', '>=', '/='), and `x` must be finite.
+   pure subroutine check_real(at, var, x, rule, bound, error, bound_text, name)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Value read.
+      real(dp), intent(in) :: x
+      !> Comparison with the bound: '>', '>=' or '/='.
+      character(len=*), intent(in) :: rule
+      !> Bound of the rule.
+      real(dp), intent(in) :: bound
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      !> How to show the bound (default: its value).
+      character(len=*), intent(in), optional :: bound_text
+      !> How to show the variable (default: `var`), e.g. 'height(3)'.
+      character(len=*), intent(in), optional :: name
+      character(len=:), allocatable :: shown, limit
+      logical :: ok
+
+      if (present(name)) then
+         shown = name
+      else
+         shown = var
+      end if
+      if (.not. ieee_is_finite(x)) then
+         call fail(at, var, shown//' = '//str(x)//', must be a finite number', error)
+         return
+      end if
+      select case (rule)
+      case ('>')
+         ok = x > bound
+      case ('>=')
+         ok = x >= bound
+      case default
+         ok = x > bound .or. x < bound
+      end select
+      if (ok) return
+      if (present(bound_text)) then
+         limit = bound_text
+      else if (.not. (abs(bound) > 0.0_dp)) then
+         limit = '0'
+      else
+         limit = str(bound)
+      end if
+      call fail(at, var, shown//' = '//str(x)//', must be '//rule//' '//limit, error)
+   end subroutine check_real
+
+   !> Whether the deck gave `x` (it is not the `unset_real` marker; safe for NaN).
+   pure logical function is_set(x)
+      !> Value read.
+      real(dp), intent(in) :: x
+
+      is_set = transfer(x, 0_int64) /= transfer(unset_real, 0_int64)
+   end function is_set
+
+   !> Letters, digits and '_'.
+   pure logical function is_name_char(c)
+      !> Character to classify.
+      character, intent(in) :: c
+
+      select case (c)
+      case ('a':'z', 'A':'Z', '0':'9', '_')
+         is_name_char = .true.
+      case default
+         is_name_char = .false.
+      end select
+   end function is_name_char
+
+   !> Lower-case copy of `s` (ASCII).
+   pure function lower(s) result(t)
+      !> Text.
+      character(len=*), intent(in) :: s
+      character(len=len(s)) :: t
+      integer :: i
+
+      t = s
+      do i = 1, len(s)
+         if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') t(i:i) = achar(iachar(s(i:i)) + 32)
+      end do
+   end function lower
+
+end module pound_deck
