@@ -1,0 +1,202 @@
+!> Newmark average-acceleration integration of one shear building, incremental form.
+!>
+!> With c1 = 4/dt^2 and c2 = 2/dt the effective stiffness
+!> Khat = (K+G) + c1 M + c2 C, C = a0 M + a1 (K+G), is tridiagonal, symmetric and positive
+!> definite; it is factored once (LAPACK dpttrf, the tridiagonal L D L^T form of the banded
+!> Cholesky) and each step costs one dpttrs solve and one tridiagonal product.
+!>
+!> A step is split so that contact forces can be added between the two halves:
+!> `newmark_predict` computes the increment du for the ground motion alone,
+!> the caller may add Khat^{-1} times further load increments to `du`, and
+!> `newmark_commit` updates u, v, a and the energy accumulators.
+!> Equation of motion, relative to the ground: M a + C v + (K+G) u = -M 1 a_g + f_ext.
+module pound_newmark
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   use pound_shear_building, only: shear_building
+   implicit none
+   private
+
+   public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_solve
+   public :: kinetic_energy, strain_energy
+
+   !> Integrator state of one building.
+   type :: newmark_state
+      !> Number of floors.
+      integer :: n = 0
+      !> Time step and Newmark constants c1 = 4/dt^2, c2 = 2/dt.
+      real(dp) :: dt = 0.0_dp, c1 = 0.0_dp, c2 = 0.0_dp
+      !> L D L^T factors of Khat: diagonal d (n) and sub-diagonal e (n-1).
+      real(dp), allocatable :: d(:), e(:)
+      !> Relative displacement, velocity and acceleration at the current time.
+      real(dp), allocatable :: u(:), v(:), a(:)
+      !> Displacement increment of the step in progress.
+      real(dp), allocatable :: du(:)
+      !> Damping force C v at the current time.
+      real(dp), allocatable :: cv(:)
+      !> Work done by the ground motion (effective loads -M 1 a_g) on the relative motion (kJ).
+      real(dp) :: input_work = 0.0_dp
+      !> Energy dissipated by viscous damping (kJ).
+      real(dp) :: damping_energy = 0.0_dp
+   end type newmark_state
+
+   interface
+      subroutine dpttrf(n, d, e, info)
+         import :: dp
+         integer, intent(in) :: n
+         real(dp), intent(inout) :: d(*), e(*)
+         integer, intent(out) :: info
+      end subroutine dpttrf
+      subroutine dpttrs(n, nrhs, d, e, b, ldb, info)
+         import :: dp
+         integer, intent(in) :: n, nrhs, ldb
+         real(dp), intent(in) :: d(*), e(*)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dpttrs
+   end interface
+
+contains
+
+   !> Factor Khat and start at rest relative to the ground.
+   subroutine newmark_init(st, b, dt, error)
+      !> Integrator state.
+      type(newmark_state), intent(out) :: st
+      !> The building.
+      type(shear_building), intent(in) :: b
+      !> Time step (s).
+      real(dp), intent(in) :: dt
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: fk, fm
+      integer :: n, info
+
+      n = b%n
+      st%n = n
+      st%dt = dt
+      st%c1 = 4.0_dp/dt**2
+      st%c2 = 2.0_dp/dt
+      fk = 1.0_dp + st%c2*b%a1
+      fm = st%c1 + st%c2*b%a0
+      allocate (st%d(n), st%e(max(n - 1, 1)))
+      st%d = fk*b%kt(2, :) + fm*b%mass
+      st%e = 0.0_dp
+      if (n > 1) st%e(1:n - 1) = fk*b%kt(1, 2:n)
+      call dpttrf(n, st%d, st%e, info)
+      if (info /= 0) then
+         call fatal_error(error, 'building '//b%name//': effective stiffness not positive definite '// &
+                          '(dpttrf info = '//str(info)//')')
+         return
+      end if
+      allocate (st%u(n), st%v(n), st%a(n), st%du(n), st%cv(n))
+      st%u = 0.0_dp
+      st%v = 0.0_dp
+      st%a = 0.0_dp
+      st%du = 0.0_dp
+      st%cv = 0.0_dp
+      st%input_work = 0.0_dp
+      st%damping_energy = 0.0_dp
+   end subroutine newmark_init
+
+   !> Increment du of the step for the ground acceleration increment `dag` alone.
+   subroutine newmark_predict(st, b, dag)
+      !> Integrator state; `du` is set.
+      type(newmark_state), intent(inout) :: st
+      !> The building.
+      type(shear_building), intent(in) :: b
+      !> Ground acceleration increment a_g(t+dt) - a_g(t) (m/s^2).
+      real(dp), intent(in) :: dag
+      real(dp) :: c4
+      integer :: i
+
+      c4 = 2.0_dp*st%c2
+      do i = 1, st%n
+         st%du(i) = b%mass(i)*(c4*st%v(i) + 2.0_dp*st%a(i) - dag) + 2.0_dp*st%cv(i)
+      end do
+      call newmark_solve(st, st%du)
+   end subroutine newmark_predict
+
+   !> Overwrite x with Khat^{-1} x (one tridiagonal solve).
+   subroutine newmark_solve(st, x)
+      !> Integrator state (factors).
+      type(newmark_state), intent(in) :: st
+      !> Right-hand side on entry, solution on return.
+      real(dp), intent(inout) :: x(:)
+      integer :: info
+
+      call dpttrs(st%n, 1, st%d, st%e, x, st%n, info)
+   end subroutine newmark_solve
+
+   !> Complete the step with the increment `du` and account the energy.
+   !>
+   !> `ag_old` and `ag_new` are the ground accelerations at the start and end of the step;
+   !> the input work increment is du . (p_old + p_new)/2 with p = -M 1 a_g, the damping
+   !> increment du . (C v_old + C v_new)/2: the trapezoidal sums under which the average
+   !> acceleration method balances energy exactly for a linear system.
+   subroutine newmark_commit(st, b, ag_old, ag_new)
+      !> Integrator state.
+      type(newmark_state), intent(inout) :: st
+      !> The building.
+      type(shear_building), intent(in) :: b
+      !> Ground acceleration at the start and end of the step (m/s^2).
+      real(dp), intent(in) :: ag_old, ag_new
+      real(dp) :: c3, dv, mdu, ddamp, cvi
+      integer :: i, n
+
+      n = st%n
+      c3 = 2.0_dp*st%c2
+      mdu = 0.0_dp
+      do i = 1, n
+         dv = st%c2*st%du(i) - 2.0_dp*st%v(i)
+         st%a(i) = st%a(i) + st%c1*st%du(i) - c3*st%v(i) - 2.0_dp*st%a(i)
+         st%v(i) = st%v(i) + dv
+         st%u(i) = st%u(i) + st%du(i)
+         mdu = mdu + b%mass(i)*st%du(i)
+      end do
+      ! C v_new = a0 M v + a1 (K+G) v, tridiagonal, and the damping work.
+      ddamp = 0.0_dp
+      do i = 1, n
+         cvi = b%kt(2, i)*st%v(i)
+         if (i > 1) cvi = cvi + b%kt(1, i)*st%v(i - 1)
+         if (i < n) cvi = cvi + b%kt(1, i + 1)*st%v(i + 1)
+         cvi = b%a0*b%mass(i)*st%v(i) + b%a1*cvi
+         ddamp = ddamp + st%du(i)*(st%cv(i) + cvi)
+         st%cv(i) = cvi
+      end do
+      st%damping_energy = st%damping_energy + 0.5_dp*ddamp
+      st%input_work = st%input_work - 0.5_dp*(ag_old + ag_new)*mdu
+   end subroutine newmark_commit
+
+   !> Kinetic energy of the relative motion, v^T M v / 2 (kJ).
+   pure function kinetic_energy(st, b) result(e)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+      !> The building.
+      type(shear_building), intent(in) :: b
+      real(dp) :: e
+
+      e = 0.5_dp*sum(b%mass*st%v**2)
+   end function kinetic_energy
+
+   !> Strain energy including the geometric term, u^T (K+G) u / 2 (kJ).
+   pure function strain_energy(st, b) result(e)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+      !> The building.
+      type(shear_building), intent(in) :: b
+      real(dp) :: e, drift
+      integer :: j
+
+      e = 0.0_dp
+      do j = 1, st%n
+         if (j == 1) then
+            drift = st%u(1)
+         else
+            drift = st%u(j) - st%u(j - 1)
+         end if
+         e = e + 0.5_dp*(b%storey_stiffness(j) - b%geometric_stiffness(j))*drift**2
+      end do
+   end function strain_energy
+
+end module pound_newmark
