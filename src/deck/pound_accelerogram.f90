@@ -1,0 +1,639 @@
+!> Accelerogram files: a recorded ground acceleration as time and acceleration arrays.
+!>
+!> Two formats are read.
+!>
+!> * PEER `.AT2`: four header lines, then NPTS acceleration values in g, any number per
+!>   line, separated by blanks. Line 4 gives NPTS and DT in either the old PEER form
+!>   `NPTS=  4000, DT= .01000 SEC` (any text may follow, e.g. the NGA-West2 trailing comma)
+!>   or the NGA form `4096    0.0100    NPTS, DT`. Sample i (1-based) is at t = (i-1) DT,
+!>   the first sample at t = 0. The count of values must equal NPTS.
+!> * Two columns (`columns`): each data line holds the time (s) and the acceleration.
+!>   The acceleration is taken to be in g, like an AT2 file, unless the deck says otherwise
+!>   through its scale factor (`pound_ground_motion::record_motion` multiplies by it).
+!>   Lines whose first non-blank character is `#` or `!` are comments; blank lines are
+!>   skipped. Times must increase strictly; they need not be evenly spaced.
+!>
+!> Values are separated by blanks, tabs or commas and may be written in any Fortran real
+!> form: `-.6028715E-02`, `0.0123`, `1.5D-3`, `.1234-100` (exponent without letter).
+!> Every value must be a finite number below 1e301 in magnitude.
+!>
+!> Line endings: LF, CR LF, CR CR LF (as in some PEER files) and a lone CR all end one line;
+!> a missing newline after the last line and trailing blanks are accepted. Line numbers in
+!> messages count lines in that sense (so CR CR LF is one line end, not two).
+module pound_accelerogram
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   implicit none
+   private
+
+   public :: accelerogram_t, read_accelerogram, accelerogram_format
+
+   character(len=*), parameter :: cr = achar(13), lf = achar(10), tab = achar(9)
+
+   !> An accelerogram as read from its file.
+   type :: accelerogram_t
+      !> File it was read from.
+      character(len=:), allocatable :: path
+      !> Format actually read: 'at2' or 'columns'.
+      character(len=:), allocatable :: format
+      !> AT2: first header line (trimmed), for the listing; columns: empty.
+      character(len=:), allocatable :: title
+      !> Number of samples.
+      integer :: npts = 0
+      !> AT2: time step DT from the header (s). Columns: 0 (times are given explicitly).
+      real(dp) :: dt = 0.0_dp
+      !> Sample times (s), strictly increasing; AT2: (i-1) DT.
+      real(dp), allocatable :: time(:)
+      !> Acceleration values as in the file (g for AT2 and, by convention, for columns).
+      real(dp), allocatable :: accel(:)
+   end type accelerogram_t
+
+   !> A line of the file: text between `first` and `last` (possibly empty), number `line`.
+   type :: line_cursor
+      integer :: pos = 1
+      integer :: line = 0
+      integer :: first = 1
+      integer :: last = 0
+   end type line_cursor
+
+contains
+
+   !> Read the accelerogram `path` in `format` ('at2', 'columns' or 'auto').
+   !>
+   !> With 'auto' a file whose name ends in `.at2` (any case) is read as AT2, anything else
+   !> as two columns.
+   subroutine read_accelerogram(path, format, rec, error)
+      !> File to read.
+      character(len=*), intent(in) :: path
+      !> 'at2', 'columns' or 'auto' (case-insensitive).
+      character(len=*), intent(in) :: format
+      !> The accelerogram read.
+      type(accelerogram_t), intent(out) :: rec
+      !> Set on failure: unreadable file, bad header, bad value, wrong count, ...
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: fmt, buf
+
+      fmt = accelerogram_format(path, format)
+      if (len(fmt) == 0) then
+         call fatal_error(error, path//": unknown accelerogram format '"//trim(format)// &
+                          "' (expected 'at2', 'columns' or 'auto')")
+         return
+      end if
+      call read_whole_file(path, buf, error)
+      if (allocated(error)) return
+
+      rec%path = path
+      rec%format = fmt
+      if (fmt == 'at2') then
+         call parse_at2(path, buf, rec, error)
+      else
+         call parse_columns(path, buf, rec, error)
+      end if
+   end subroutine read_accelerogram
+
+   !> The format `format` resolves to for `path`: 'at2' or 'columns', or '' if `format` is
+   !> none of 'at2', 'columns', 'auto' (case-insensitive, surrounding blanks ignored).
+   pure function accelerogram_format(path, format) result(fmt)
+      !> File name (only its extension matters, for 'auto').
+      character(len=*), intent(in) :: path
+      !> Requested format.
+      character(len=*), intent(in) :: format
+      character(len=:), allocatable :: fmt
+      character(len=:), allocatable :: f
+      integer :: n
+
+      f = lower(trim(adjustl(format)))
+      select case (f)
+      case ('at2', 'columns')
+         fmt = f
+      case ('auto')
+         n = len_trim(path)
+         fmt = 'columns'
+         if (n >= 4) then
+            if (lower(path(n - 3:n)) == '.at2') fmt = 'at2'
+         end if
+      case default
+         fmt = ''
+      end select
+   end function accelerogram_format
+
+   ! ---------------------------------------------------------------------------------------
+   ! AT2
+
+   subroutine parse_at2(path, buf, rec, error)
+      character(len=*), intent(in) :: path, buf
+      type(accelerogram_t), intent(inout) :: rec
+      type(error_type), allocatable, intent(out) :: error
+      type(line_cursor) :: c
+      integer :: i, npts, count, p, q, b, e
+      logical :: found
+      real(dp) :: dt, x
+      character(len=:), allocatable :: hdr4
+
+      c = start_cursor(buf)
+      do i = 1, 4
+         call next_line(buf, c, found)
+         if (.not. found) then
+            call fatal_error(error, path//': only '//str(c%line)//' line(s); an AT2 file has 4 '// &
+                             'header lines and then the values')
+            return
+         end if
+         if (i == 1) rec%title = trim(buf(c%first:c%last))
+      end do
+      hdr4 = buf(c%first:c%last)
+      call parse_at2_counts(hdr4, npts, dt, error)
+      if (allocated(error)) then
+         error%message = path//':4: '//error%message
+         return
+      end if
+      if (npts < 2) then
+         call fatal_error(error, path//':4: NPTS = '//str(npts)//'; at least 2 samples are needed')
+         return
+      end if
+      if (.not. (dt > 0.0_dp)) then
+         call fatal_error(error, path//':4: DT = '//str(dt)//' s; DT must be > 0')
+         return
+      end if
+
+      rec%npts = npts
+      rec%dt = dt
+      allocate (rec%accel(npts))
+      count = 0
+      do
+         call next_line(buf, c, found)
+         if (.not. found) exit
+         p = c%first
+         do
+            call next_token(buf, p, c%last, b, e, found)
+            if (.not. found) exit
+            q = number_end(buf(b:e))
+            if (q /= e - b + 1) then
+               call bad_token(path, c%line, buf(b:e), error)
+               return
+            end if
+            call to_real(buf(b:e), x, error)
+            if (allocated(error)) then
+               error%message = path//':'//str(c%line)//': '//error%message
+               return
+            end if
+            count = count + 1
+            if (count <= npts) rec%accel(count) = x
+            p = e + 1
+         end do
+      end do
+      if (count /= npts) then
+         call fatal_error(error, path//': header line 4 gives NPTS = '//str(npts)//' but '// &
+                          str(count)//' values follow')
+         return
+      end if
+      rec%time = [(real(i - 1, dp)*dt, i=1, npts)]
+   end subroutine parse_at2
+
+   !> NPTS and DT from AT2 header line 4: old PEER form (`NPTS= n, DT= dt SEC`, where
+   !> `NPTS` is followed by `=`) or else NGA form (`n dt NPTS, DT`: the first two fields).
+   subroutine parse_at2_counts(s, npts, dt, error)
+      character(len=*), intent(in) :: s
+      integer, intent(out) :: npts
+      real(dp), intent(out) :: dt
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: u
+      integer :: p, q, b, e
+      logical :: ok
+
+      npts = 0
+      dt = 0.0_dp
+      u = upper(s)
+      p = index(u, 'NPTS')
+      ok = .false.
+      if (p > 0) call value_after_equals(s, p + 4, b, e, ok)
+      if (ok) then
+         ! Old PEER form.
+         ok = is_integer(s(b:e))
+         if (ok) then
+            read (s(b:e), *) npts
+            q = index(u(e + 1:), 'DT')
+            ok = q > 0
+         end if
+         if (ok) call value_after_equals(s, e + q + 2, b, e, ok)
+         if (ok) then
+            e = b + number_end(s(b:e)) - 1
+            ok = e >= b
+         end if
+      else
+         ! NGA form.
+         p = 1
+         call next_token(s, p, len(s), b, e, ok)
+         if (ok) ok = is_integer(s(b:e))
+         if (ok) then
+            read (s(b:e), *) npts
+            p = e + 1
+            call next_token(s, p, len(s), b, e, ok)
+         end if
+         if (ok) ok = number_end(s(b:e)) == e - b + 1
+      end if
+      if (.not. ok) then
+         call fatal_error(error, "cannot read NPTS and DT from header line 4 '"//shorten(trim(s))// &
+                          "' (expected 'NPTS= n, DT= dt SEC' or 'n dt NPTS, DT')")
+         return
+      end if
+      call to_real(s(b:e), dt, error)
+   end subroutine parse_at2_counts
+
+   !> After position `p` in `s`: blanks, '=', blanks, then a field [b:e] up to a blank or comma.
+   pure subroutine value_after_equals(s, p, b, e, ok)
+      character(len=*), intent(in) :: s
+      integer, intent(in) :: p
+      integer, intent(out) :: b, e
+      logical, intent(out) :: ok
+      integer :: i
+
+      ok = .false.
+      b = 1
+      e = 0
+      i = p
+      do while (i <= len(s))
+         if (s(i:i) /= ' ' .and. s(i:i) /= tab) exit
+         i = i + 1
+      end do
+      if (i > len(s)) return
+      if (s(i:i) /= '=') return
+      i = i + 1
+      call next_token(s, i, len(s), b, e, ok)
+   end subroutine value_after_equals
+
+   ! ---------------------------------------------------------------------------------------
+   ! Two columns
+
+   subroutine parse_columns(path, buf, rec, error)
+      character(len=*), intent(in) :: path, buf
+      type(accelerogram_t), intent(inout) :: rec
+      type(error_type), allocatable, intent(out) :: error
+      type(line_cursor) :: c
+      real(dp), allocatable :: t(:), a(:), tmp(:)
+      real(dp) :: x(2)
+      integer :: n, p, b, e, ntok, first, prev_line
+      logical :: found
+      character :: ch
+
+      allocate (t(1024), a(1024))
+      n = 0
+      prev_line = 0
+      rec%title = ''
+      c = start_cursor(buf)
+      do
+         call next_line(buf, c, found)
+         if (.not. found) exit
+         p = c%first
+         first = verify(buf(c%first:c%last), ' '//tab)
+         if (first == 0) cycle
+         ch = buf(c%first + first - 1:c%first + first - 1)
+         if (ch == '#' .or. ch == '!') cycle
+         ntok = 0
+         do
+            call next_token(buf, p, c%last, b, e, found)
+            if (.not. found) exit
+            ntok = ntok + 1
+            if (ntok <= 2) then
+               if (number_end(buf(b:e)) /= e - b + 1) then
+                  call bad_token(path, c%line, buf(b:e), error)
+                  return
+               end if
+               call to_real(buf(b:e), x(ntok), error)
+               if (allocated(error)) then
+                  error%message = path//':'//str(c%line)//': '//error%message
+                  return
+               end if
+            end if
+            p = e + 1
+         end do
+         if (ntok /= 2) then
+            call fatal_error(error, path//':'//str(c%line)//': expected 2 numbers (time in s, '// &
+                             'acceleration), found '//str(ntok)//' fields')
+            return
+         end if
+         if (n > 0) then
+            if (.not. (x(1) > t(n))) then
+               call fatal_error(error, path//':'//str(c%line)//': time '//str(x(1))// &
+                                ' s does not increase (previous time '//str(t(n))// &
+                                ' s on line '//str(prev_line)//')')
+               return
+            end if
+         end if
+         if (n == size(t)) then
+            allocate (tmp(2*n))
+            tmp(1:n) = t
+            call move_alloc(tmp, t)
+            allocate (tmp(2*n))
+            tmp(1:n) = a
+            call move_alloc(tmp, a)
+         end if
+         n = n + 1
+         t(n) = x(1)
+         a(n) = x(2)
+         prev_line = c%line
+      end do
+      if (n < 2) then
+         call fatal_error(error, path//': '//str(n)//' data line(s); at least 2 samples '// &
+                          '(time, acceleration) are needed')
+         return
+      end if
+      rec%npts = n
+      rec%dt = 0.0_dp
+      rec%time = t(1:n)
+      rec%accel = a(1:n)
+   end subroutine parse_columns
+
+   ! ---------------------------------------------------------------------------------------
+   ! Text handling
+
+   !> Whole file as one string (stream access, so any line ending survives).
+   subroutine read_whole_file(path, buf, error)
+      character(len=*), intent(in) :: path
+      character(len=:), allocatable, intent(out) :: buf
+      type(error_type), allocatable, intent(out) :: error
+      logical :: exists
+      integer :: u, ios, nbytes
+      character(len=256) :: msg
+
+      inquire (file=path, exist=exists)
+      if (.not. exists) then
+         call fatal_error(error, path//': accelerogram file not found')
+         return
+      end if
+      open (newunit=u, file=path, access='stream', form='unformatted', action='read', &
+            status='old', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         call fatal_error(error, path//': cannot open accelerogram file: '//trim(msg))
+         return
+      end if
+      inquire (unit=u, size=nbytes)
+      if (nbytes < 0) then
+         close (u)
+         call fatal_error(error, path//': cannot determine the size of the accelerogram file')
+         return
+      end if
+      allocate (character(len=nbytes) :: buf)
+      if (nbytes > 0) then
+         read (u, iostat=ios, iomsg=msg) buf
+         if (ios /= 0) then
+            close (u)
+            call fatal_error(error, path//': cannot read accelerogram file: '//trim(msg))
+            return
+         end if
+      end if
+      close (u)
+   end subroutine read_whole_file
+
+   !> Cursor before the first line, skipping a UTF-8 byte-order mark.
+   pure function start_cursor(buf) result(c)
+      character(len=*), intent(in) :: buf
+      type(line_cursor) :: c
+
+      c%pos = 1
+      if (len(buf) >= 3) then
+         if (buf(1:3) == char(239)//char(187)//char(191)) c%pos = 4
+      end if
+   end function start_cursor
+
+   !> Advance `c` to the next line of `buf`; false at the end. A line ends at LF, at a run
+   !> of CRs followed by an optional LF, or at the end of the text.
+   pure subroutine next_line(buf, c, found)
+      character(len=*), intent(in) :: buf
+      type(line_cursor), intent(inout) :: c
+      logical, intent(out) :: found
+      integer :: k, n
+
+      n = len(buf)
+      found = c%pos <= n
+      if (.not. found) return
+      c%line = c%line + 1
+      c%first = c%pos
+      k = scan(buf(c%pos:), cr//lf)
+      if (k == 0) then
+         c%last = n
+         c%pos = n + 1
+         return
+      end if
+      k = c%pos + k - 1
+      c%last = k - 1
+      do while (k <= n)
+         if (buf(k:k) /= cr) exit
+         k = k + 1
+      end do
+      if (k <= n) then
+         if (buf(k:k) == lf) k = k + 1
+      end if
+      c%pos = k
+   end subroutine next_line
+
+   !> Next field of s(p:last) separated by blanks, tabs or commas: s(b:e); false if none.
+   pure subroutine next_token(s, p, last, b, e, found)
+      character(len=*), intent(in) :: s
+      integer, intent(in) :: p, last
+      integer, intent(out) :: b, e
+      logical, intent(out) :: found
+      integer :: k
+
+      found = .false.
+      b = p
+      e = p - 1
+      if (p > last) return
+      k = verify(s(p:last), ' ,'//tab)
+      if (k == 0) return
+      b = p + k - 1
+      k = scan(s(b:last), ' ,'//tab)
+      if (k == 0) then
+         e = last
+      else
+         e = b + k - 2
+      end if
+      found = .true.
+   end subroutine next_token
+
+   !> Length of the longest Fortran real constant at the start of `s` (0 if none):
+   !> [sign] digits [. digits] [(E|D) [sign] digits | sign digits], at least one mantissa digit.
+   pure function number_end(s) result(q)
+      character(len=*), intent(in) :: s
+      integer :: q
+      integer :: i, j, nd, n
+
+      n = len(s)
+      q = 0
+      i = 1
+      if (i <= n) then
+         if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
+      end if
+      nd = 0
+      do while (i <= n)
+         if (.not. is_digit(s(i:i))) exit
+         i = i + 1
+         nd = nd + 1
+      end do
+      if (i <= n) then
+         if (s(i:i) == '.') then
+            i = i + 1
+            do while (i <= n)
+               if (.not. is_digit(s(i:i))) exit
+               i = i + 1
+               nd = nd + 1
+            end do
+         end if
+      end if
+      if (nd == 0) return
+      q = i - 1
+      if (i > n) return
+      j = i
+      if (index('EeDd', s(j:j)) > 0) j = j + 1
+      if (j <= n) then
+         if (s(j:j) == '+' .or. s(j:j) == '-') then
+            j = j + 1
+         else if (j == i) then
+            return
+         end if
+      end if
+      nd = 0
+      do while (j <= n)
+         if (.not. is_digit(s(j:j))) exit
+         j = j + 1
+         nd = nd + 1
+      end do
+      if (nd > 0) q = j - 1
+   end function number_end
+
+   !> Convert a token already checked by `number_end`; reject magnitudes of 1e301 and more
+   !> before converting (the conversion itself would overflow).
+   subroutine to_real(s, x, error)
+      character(len=*), intent(in) :: s
+      real(dp), intent(out) :: x
+      type(error_type), allocatable, intent(out) :: error
+      integer :: ios
+
+      x = 0.0_dp
+      if (decimal_exponent(s) > 300) then
+         call fatal_error(error, "'"//shorten(s)//"' is out of range (magnitude 1e301 or more)")
+         return
+      end if
+      read (s, '(f'//str(len(s))//'.0)', iostat=ios) x
+      if (ios /= 0) then
+         call fatal_error(error, "'"//shorten(s)//"' is not a finite number")
+      end if
+   end subroutine to_real
+
+   !> Decimal exponent of the leading significant digit of a valid real constant `s`
+   !> (-huge for zero; +-huge when the exponent field has more than 6 significant digits).
+   pure function decimal_exponent(s) result(e10)
+      character(len=*), intent(in) :: s
+      integer :: e10
+      integer :: i, n, ndigits, nbefore, kfirst, nexp, expo, sgn
+      logical :: seen_point
+
+      n = len(s)
+      i = 1
+      if (s(1:1) == '+' .or. s(1:1) == '-') i = 2
+      seen_point = .false.
+      ndigits = 0
+      nbefore = -1
+      kfirst = 0
+      do while (i <= n)
+         if (s(i:i) == '.') then
+            seen_point = .true.
+            nbefore = ndigits
+         else if (is_digit(s(i:i))) then
+            ndigits = ndigits + 1
+            if (kfirst == 0 .and. s(i:i) /= '0') kfirst = ndigits
+         else
+            exit
+         end if
+         i = i + 1
+      end do
+      if (kfirst == 0) then
+         e10 = -huge(1)
+         return
+      end if
+      if (.not. seen_point) nbefore = ndigits
+      ! The first nonzero mantissa digit is digit kfirst; nbefore digits precede the point.
+      e10 = nbefore - kfirst
+      expo = 0
+      if (i <= n) then
+         if (index('EeDd', s(i:i)) > 0) i = i + 1
+         sgn = 1
+         if (s(i:i) == '-') sgn = -1
+         if (s(i:i) == '-' .or. s(i:i) == '+') i = i + 1
+         do while (i < n)
+            if (s(i:i) /= '0') exit
+            i = i + 1
+         end do
+         nexp = n - i + 1
+         if (nexp > 6) then
+            e10 = sgn*huge(1)
+            return
+         end if
+         read (s(i:n), *) expo
+         expo = sgn*expo
+      end if
+      e10 = e10 + expo
+   end function decimal_exponent
+
+   subroutine bad_token(path, line, token, error)
+      character(len=*), intent(in) :: path, token
+      integer, intent(in) :: line
+      type(error_type), allocatable, intent(out) :: error
+
+      call fatal_error(error, path//':'//str(line)//": '"//shorten(token)//"' is not a number")
+   end subroutine bad_token
+
+   pure logical function is_digit(ch)
+      character, intent(in) :: ch
+
+      is_digit = ch >= '0' .and. ch <= '9'
+   end function is_digit
+
+   pure logical function is_integer(s)
+      character(len=*), intent(in) :: s
+      integer :: i
+
+      is_integer = len(s) > 0 .and. len(s) <= 9
+      do i = 1, len(s)
+         if (.not. is_integer) return
+         is_integer = is_digit(s(i:i))
+      end do
+   end function is_integer
+
+   !> At most 40 characters of `s`, for messages.
+   pure function shorten(s) result(t)
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: t
+
+      if (len(s) <= 40) then
+         t = s
+      else
+         t = s(1:37)//'...'
+      end if
+   end function shorten
+
+   pure function lower(s) result(t)
+      character(len=*), intent(in) :: s
+      character(len=len(s)) :: t
+      integer :: i, k
+
+      t = s
+      do i = 1, len(s)
+         k = iachar(s(i:i))
+         if (k >= iachar('A') .and. k <= iachar('Z')) t(i:i) = achar(k + 32)
+      end do
+   end function lower
+
+   pure function upper(s) result(t)
+      character(len=*), intent(in) :: s
+      character(len=len(s)) :: t
+      integer :: i, k
+
+      t = s
+      do i = 1, len(s)
+         k = iachar(s(i:i))
+         if (k >= iachar('a') .and. k <= iachar('z')) t(i:i) = achar(k - 32)
+      end do
+   end function upper
+
+end module pound_accelerogram

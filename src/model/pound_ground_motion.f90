@@ -1,0 +1,310 @@
+!> Ground motion: the ground acceleration a_g(t) (m/s^2) that drives the buildings.
+!>
+!> Two kinds.
+!>
+!> * `pulse`: the seed paper's ground displacement x_g(t) = x0 exp(-a t) sin(b t) for t >= 0
+!>   (paper: x0 = 0.010 m, a = 2 1/s, b = 4 pi rad/s), applied through its exact second
+!>   derivative x_g'' = x0 exp(-a t) [(a^2 - b^2) sin(b t) - 2 a b cos(b t)]. Note that the
+!>   pulse starts with x_g'(0) = b x0 and x_g''(0) = -2 a b x0, not from rest: in the relative
+!>   formulation only a_g enters, so the buildings start moving with the ground.
+!>   Before t = 0 the ground is at rest.
+!> * `record`: an accelerogram (values in g) times a scale factor times `standard_gravity`,
+!>   linearly interpolated between its samples. Outside the record, before its first sample
+!>   and after its last one, a_g = 0: after the end of the record the buildings vibrate
+!>   freely.
+!>
+!> The solver does not call `ground_accel` in its time loop: `sample_ground` fills an array
+!> a_g(t_n), t_n = n dt, once before integration.
+module pound_ground_motion
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   use pound_config, only: g_accel
+   use pound_accelerogram, only: accelerogram_t, read_accelerogram
+   implicit none
+   private
+
+   public :: ground_motion_t, standard_gravity
+   public :: pulse_motion, record_motion, sample_ground, ground_accel
+   public :: pulse_displacement, pulse_velocity, pulse_acceleration
+   public :: peak_ground_accel, describe_ground
+
+   !> Acceleration of 1 g (m/s^2) used to turn record values (in g) into m/s^2. It is the
+   !> same 9.81 m/s^2 that turns floor loads into masses (`pound_config::g_accel`), so a
+   !> record of 1 g loads a floor with its own weight.
+   real(dp), parameter :: standard_gravity = g_accel
+
+   !> Two times closer than this fraction of the record's step count as the same sample
+   !> (absorbs rounding in n*dt, so solver steps that fall on samples get them exactly).
+   real(dp), parameter :: snap = 1.0e-9_dp
+
+   !> A ground motion, ready to be evaluated at any time.
+   type :: ground_motion_t
+      !> 'pulse', 'record', or blank (no motion: a_g = 0).
+      character(len=6) :: kind = ''
+      !> Pulse: amplitude x0 (m), decay a (1/s), circular frequency b (rad/s).
+      real(dp) :: x0 = 0.0_dp, a = 0.0_dp, b = 0.0_dp
+      !> Record: file, its format ('at2' or 'columns') and first header line (AT2).
+      character(len=:), allocatable :: path, format, title
+      !> Record: scale factor applied to the values in g.
+      real(dp) :: scale = 1.0_dp
+      !> Record: constant sample step (s) for AT2 records; 0 when times are explicit.
+      real(dp) :: dt = 0.0_dp
+      !> Record: sample times (s), strictly increasing.
+      real(dp), allocatable :: time(:)
+      !> Record: ground acceleration at the samples (m/s^2), scale and g applied.
+      real(dp), allocatable :: accel(:)
+   end type ground_motion_t
+
+contains
+
+   !> The pulse x_g(t) = x0 exp(-a t) sin(b t). The deck checks a >= 0 and b > 0.
+   pure subroutine pulse_motion(gm, x0, a, b)
+      !> Ground motion to define.
+      type(ground_motion_t), intent(out) :: gm
+      !> Amplitude x0 (m).
+      real(dp), intent(in) :: x0
+      !> Decay rate a (1/s).
+      real(dp), intent(in) :: a
+      !> Circular frequency b (rad/s).
+      real(dp), intent(in) :: b
+
+      gm%kind = 'pulse'
+      gm%x0 = x0
+      gm%a = a
+      gm%b = b
+   end subroutine pulse_motion
+
+   !> A recorded ground motion from the accelerogram `path`: a_g = value * scale * g.
+   subroutine record_motion(gm, path, format, scale, error)
+      !> Ground motion to define.
+      type(ground_motion_t), intent(out) :: gm
+      !> Accelerogram file.
+      character(len=*), intent(in) :: path
+      !> 'at2', 'columns' or 'auto' (see `pound_accelerogram`).
+      character(len=*), intent(in) :: format
+      !> Factor applied to the file's values, which are in g (e.g. 1/9.81 for a two-column
+      !> file in m/s^2, or a scaling to a target PGA).
+      real(dp), intent(in) :: scale
+      !> Set if the file cannot be read or the scale is not a finite number.
+      type(error_type), allocatable, intent(out) :: error
+      type(accelerogram_t) :: rec
+
+      if (.not. ieee_is_finite(scale)) then
+         call fatal_error(error, path//': record scale factor is not a finite number')
+         return
+      end if
+      call read_accelerogram(path, format, rec, error)
+      if (allocated(error)) return
+      gm%kind = 'record'
+      gm%path = rec%path
+      gm%format = rec%format
+      gm%title = rec%title
+      gm%scale = scale
+      gm%dt = rec%dt
+      gm%time = rec%time
+      gm%accel = rec%accel*(scale*standard_gravity)
+   end subroutine record_motion
+
+   !> Ground acceleration at the solver's steps: ag(n) = a_g(n dt), n = 0..n_steps.
+   pure subroutine sample_ground(gm, dt, n_steps, ag)
+      !> Ground motion.
+      type(ground_motion_t), intent(in) :: gm
+      !> Solver time step (s).
+      real(dp), intent(in) :: dt
+      !> Number of steps N.
+      integer, intent(in) :: n_steps
+      !> Preallocated with lower bound 0 and at least n_steps+1 elements; on return
+      !> ag(0:n_steps) holds a_g(t_n) (m/s^2). Elements beyond n_steps are left alone.
+      real(dp), intent(inout) :: ag(0:)
+      integer :: n
+
+      do n = 0, n_steps
+         ag(n) = ground_accel(gm, real(n, dp)*dt)
+      end do
+   end subroutine sample_ground
+
+   !> Ground acceleration a_g(t) (m/s^2).
+   elemental function ground_accel(gm, t) result(ag)
+      !> Ground motion.
+      type(ground_motion_t), intent(in) :: gm
+      !> Time (s).
+      real(dp), intent(in) :: t
+      real(dp) :: ag
+
+      select case (gm%kind)
+      case ('pulse')
+         ag = pulse_acceleration(gm%x0, gm%a, gm%b, t)
+      case ('record')
+         ag = record_value(gm, t)
+      case default
+         ag = 0.0_dp
+      end select
+   end function ground_accel
+
+   !> Pulse ground displacement x0 exp(-a t) sin(b t) (m); 0 for t < 0.
+   elemental function pulse_displacement(x0, a, b, t) result(x)
+      !> Amplitude (m).
+      real(dp), intent(in) :: x0
+      !> Decay rate (1/s).
+      real(dp), intent(in) :: a
+      !> Circular frequency (rad/s).
+      real(dp), intent(in) :: b
+      !> Time (s).
+      real(dp), intent(in) :: t
+      real(dp) :: x
+
+      x = 0.0_dp
+      if (t >= 0.0_dp) x = x0*exp(-a*t)*sin(b*t)
+   end function pulse_displacement
+
+   !> Pulse ground velocity x0 exp(-a t) [b cos(b t) - a sin(b t)] (m/s); 0 for t < 0.
+   elemental function pulse_velocity(x0, a, b, t) result(v)
+      !> Amplitude (m).
+      real(dp), intent(in) :: x0
+      !> Decay rate (1/s).
+      real(dp), intent(in) :: a
+      !> Circular frequency (rad/s).
+      real(dp), intent(in) :: b
+      !> Time (s).
+      real(dp), intent(in) :: t
+      real(dp) :: v
+
+      v = 0.0_dp
+      if (t >= 0.0_dp) v = x0*exp(-a*t)*(b*cos(b*t) - a*sin(b*t))
+   end function pulse_velocity
+
+   !> Pulse ground acceleration x0 exp(-a t) [(a^2 - b^2) sin(b t) - 2 a b cos(b t)] (m/s^2);
+   !> 0 for t < 0.
+   elemental function pulse_acceleration(x0, a, b, t) result(acc)
+      !> Amplitude (m).
+      real(dp), intent(in) :: x0
+      !> Decay rate (1/s).
+      real(dp), intent(in) :: a
+      !> Circular frequency (rad/s).
+      real(dp), intent(in) :: b
+      !> Time (s).
+      real(dp), intent(in) :: t
+      real(dp) :: acc
+
+      acc = 0.0_dp
+      if (t >= 0.0_dp) acc = x0*exp(-a*t)*((a*a - b*b)*sin(b*t) - 2.0_dp*a*b*cos(b*t))
+   end function pulse_acceleration
+
+   !> Peak ground acceleration |a_g| (m/s^2) and the time it occurs (s), for t >= 0.
+   !>
+   !> Pulse (a >= 0): x_g'' = x0 (a^2+b^2) exp(-a t) sin(b t - phi), phi = atan2(2ab, a^2-b^2);
+   !> its extrema are at b t = phi + atan2(b, a) + k pi, the first one at t >= 0 being the
+   !> largest; it is compared with |x_g''(0)| = 2 a b |x0|. Record: the largest sample
+   !> (exact for the piecewise linear a_g); the earliest if several are equal.
+   pure subroutine peak_ground_accel(gm, pga, t_pga)
+      !> Ground motion.
+      type(ground_motion_t), intent(in) :: gm
+      !> Peak |a_g| (m/s^2).
+      real(dp), intent(out) :: pga
+      !> Time of the peak (s).
+      real(dp), intent(out) :: t_pga
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      real(dp) :: theta, tk, ak
+      integer :: i
+
+      pga = 0.0_dp
+      t_pga = 0.0_dp
+      select case (gm%kind)
+      case ('pulse')
+         pga = abs(pulse_acceleration(gm%x0, gm%a, gm%b, 0.0_dp))
+         if (gm%b <= 0.0_dp) return
+         theta = atan2(2.0_dp*gm%a*gm%b, gm%a**2 - gm%b**2) + atan2(gm%b, gm%a)
+         theta = theta - pi*real(floor(theta/pi), dp)
+         tk = theta/gm%b
+         ak = abs(pulse_acceleration(gm%x0, gm%a, gm%b, tk))
+         if (ak > pga) then
+            pga = ak
+            t_pga = tk
+         end if
+      case ('record')
+         i = maxloc(abs(gm%accel), dim=1)
+         pga = abs(gm%accel(i))
+         t_pga = gm%time(i)
+      end select
+   end subroutine peak_ground_accel
+
+   !> One line describing the ground motion, for the listing.
+   function describe_ground(gm) result(text)
+      !> Ground motion.
+      type(ground_motion_t), intent(in) :: gm
+      character(len=:), allocatable :: text
+      real(dp) :: pga, t_pga
+      integer :: n
+
+      call peak_ground_accel(gm, pga, t_pga)
+      select case (gm%kind)
+      case ('pulse')
+         text = 'pulse x_g(t) = '//str(gm%x0)//' m * exp(-'//str(gm%a)//' t) * sin('// &
+                str(gm%b)//' t)'
+      case ('record')
+         n = size(gm%time)
+         text = 'record '//gm%path//' ('//gm%format//', '//str(n)//' points'
+         if (gm%dt > 0.0_dp) text = text//', dt = '//str(gm%dt)//' s'
+         text = text//', '//str(gm%time(1))//' to '//str(gm%time(n))//' s, zero after), '// &
+                'scale '//str(gm%scale)
+      case default
+         text = 'no ground motion'
+         return
+      end select
+      text = text//'; PGA '//str(pga)//' m/s^2 = '//str(pga/standard_gravity)//' g at t = '// &
+             str(t_pga)//' s'
+   end function describe_ground
+
+   !> Linear interpolation of the record at t; 0 outside [first sample, last sample].
+   elemental function record_value(gm, t) result(ag)
+      type(ground_motion_t), intent(in) :: gm
+      real(dp), intent(in) :: t
+      real(dp) :: ag
+      real(dp) :: s, w
+      integer :: n, i, lo, hi, mid
+
+      ag = 0.0_dp
+      n = size(gm%time)
+      if (gm%dt > 0.0_dp) then
+         ! Even steps: fractional sample index s, sample i+1 at s = i.
+         s = (t - gm%time(1))/gm%dt
+         if (.not. (s > -1.0_dp .and. s < real(n, dp))) return
+         i = nint(s)
+         if (abs(s - real(i, dp)) <= snap) then
+            if (i >= 0 .and. i <= n - 1) ag = gm%accel(i + 1)
+            return
+         end if
+         if (s < 0.0_dp .or. s > real(n - 1, dp)) return
+         i = min(int(s), n - 2)
+         w = s - real(i, dp)
+         ag = (1.0_dp - w)*gm%accel(i + 1) + w*gm%accel(i + 2)
+      else
+         ! Explicit times: bisection for time(lo) <= t < time(hi).
+         if (t < gm%time(1) - snap*(gm%time(2) - gm%time(1))) return
+         if (t > gm%time(n) + snap*(gm%time(n) - gm%time(n - 1))) return
+         if (t <= gm%time(1)) then
+            ag = gm%accel(1)
+            return
+         end if
+         if (t >= gm%time(n)) then
+            ag = gm%accel(n)
+            return
+         end if
+         lo = 1
+         hi = n
+         do while (hi - lo > 1)
+            mid = (lo + hi)/2
+            if (gm%time(mid) <= t) then
+               lo = mid
+            else
+               hi = mid
+            end if
+         end do
+         w = (t - gm%time(lo))/(gm%time(hi) - gm%time(lo))
+         ag = (1.0_dp - w)*gm%accel(lo) + w*gm%accel(hi)
+      end if
+   end function record_value
+
+end module pound_ground_motion
