@@ -1,0 +1,1489 @@
+!> A thin, safe layer over the HDF5 Fortran API for pound's result files.
+!>
+!> A file is reached through a handle, `type(h5_file)`: `h5_create` (truncates), `h5_open`
+!> (read-only) and `h5_close`. Objects are named by absolute paths such as
+!> '/uncoupled/A/peak'; a path without the leading '/' is taken from the root. Writing a
+!> dataset creates the missing groups on its path. Attributes go on the root ('/'), a group
+!> or a dataset, given by its path; writing an attribute that exists replaces it.
+!>
+!> **Dimension convention.** Arrays are written exactly as they are held in Fortran, with no
+!> transposition. HDF5 records dimensions in C (row-major) order, so C, h5py, h5dump and
+!> NumPy see a Fortran array of shape (n1, n2) as shape (n2, n1), with the same numbers in
+!> memory order: Fortran `a(i, j)` is h5py `a[j-1, i-1]`. pound therefore keeps histories
+!> in Fortran as `hist(n_floors, n_out)`, so that h5py reads them as shape
+!> (n_out, n_floors): one row per output time. `h5_read` returns the Fortran shape again
+!> (a round trip is exact); `h5_dataset_dims` reports the C-order shape stored in the file.
+!>
+!> Storage: reals as IEEE 64-bit little-endian, integers as 32-bit signed little-endian,
+!> strings as variable-length UTF-8 strings (h5py reads those attributes as `str`, and
+!> there is no 64 KiB object-header limit on long attributes such as the deck text).
+!> String array elements lose their trailing blanks (Fortran padding); a string attribute
+!> is stored exactly as given. Strings must not contain NUL characters. Datasets are
+!> contiguous, without chunking or compression, and are written once: writing a dataset
+!> whose path exists is an error.
+!>
+!> Every HDF5 return code is checked; a failure comes back as an `error_type` naming the
+!> file, the object and the HDF5 call. HDF5's automatic error-stack printing is switched
+!> off, so a failure is reported once, by the caller. The library is initialised on the
+!> first `h5_create`/`h5_open` (with floating-point traps held off during `h5open_f`) and
+!> shut down by HDF5 itself at program exit.
+module pound_h5
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_f_pointer, &
+                                          c_size_t, c_int, c_int64_t, c_long_long, c_null_ptr, &
+                                          c_associated
+   use, intrinsic :: ieee_exceptions, only: ieee_status_type, ieee_get_status, ieee_set_status, &
+                                            ieee_set_halting_mode, ieee_all
+   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
+                   h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, &
+                   h5pcreate_f, h5pclose_f, h5pset_fclose_degree_f, H5P_FILE_ACCESS_F, &
+                   H5F_CLOSE_STRONG_F, H5P_DEFAULT_F, &
+                   h5lexists_f, h5oopen_f, h5oclose_f, h5iget_type_f, H5I_GROUP_F, &
+                   H5I_DATASET_F, h5gcreate_f, h5gclose_f, &
+                   h5screate_f, h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, &
+                   h5sget_simple_extent_ndims_f, h5sget_simple_extent_dims_f, &
+                   h5sget_simple_extent_npoints_f, &
+                   h5dcreate_f, h5dopen_f, h5dwrite_f, h5dread_f, h5dget_space_f, &
+                   h5dget_type_f, h5dvlen_reclaim_f, &
+                   h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, h5aexists_f, &
+                   h5adelete_f, h5aget_space_f, h5aget_type_f, &
+                   h5tcopy_f, h5tclose_f, h5tset_size_f, h5tget_size_f, h5tset_cset_f, &
+                   h5tget_class_f, h5tis_variable_str_f, h5tget_strpad_f, &
+                   H5T_C_S1, H5T_CSET_UTF8_F, H5T_STRING_F, H5T_FLOAT_F, H5T_INTEGER_F, &
+                   H5T_STR_SPACEPAD_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
+                   H5T_IEEE_F64LE, H5T_STD_I32LE
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   implicit none
+   private
+
+   public :: h5_file, h5_create, h5_open, h5_close, h5_is_open
+   public :: h5_create_group, h5_exists, h5_dataset_dims
+   public :: h5_write, h5_read, h5_write_attr, h5_read_attr
+
+   !> An open HDF5 file (or none: the default state).
+   type :: h5_file
+      private
+      !> HDF5 file identifier, negative when closed.
+      integer(hid_t) :: id = -1_hid_t
+      !> File name, for messages.
+      character(len=:), allocatable :: name
+      !> Opened by `h5_create` (read-write) rather than `h5_open` (read-only).
+      logical :: writable = .false.
+   end type h5_file
+
+   !> Write a new dataset at a path, creating missing groups:
+   !> `call h5_write(file, path, values, error)` with `values` real(dp) scalar, 1-D or 2-D,
+   !> default integer 1-D, or character 1-D (trailing blanks dropped).
+   interface h5_write
+      module procedure write_real_0d, write_real_1d, write_real_2d, write_int_1d, &
+         write_string_1d
+   end interface h5_write
+
+   !> Read a whole dataset: `call h5_read(file, path, values, error)` with `values` real(dp)
+   !> scalar, or allocatable real(dp) 1-D / 2-D, integer 1-D or character(len=:) 1-D,
+   !> allocated to the shape in the file (Fortran order, see the module notes).
+   interface h5_read
+      module procedure read_real_0d, read_real_1d, read_real_2d, read_int_1d, read_string_1d
+   end interface h5_read
+
+   !> Set an attribute of the object at a path ('/' is the root), replacing an existing one:
+   !> `call h5_write_attr(file, path, name, value, error)` with `value` a character string,
+   !> real(dp) scalar or 1-D, or default integer scalar.
+   interface h5_write_attr
+      module procedure write_attr_string, write_attr_real_0d, write_attr_real_1d, &
+         write_attr_int_0d
+   end interface h5_write_attr
+
+   !> Get an attribute of the object at a path:
+   !> `call h5_read_attr(file, path, name, value, error)` with `value` an allocatable
+   !> character(len=:), real(dp) scalar, allocatable real(dp) 1-D, or integer scalar.
+   interface h5_read_attr
+      module procedure read_attr_string, read_attr_real_0d, read_attr_real_1d, &
+         read_attr_int_0d
+   end interface h5_read_attr
+
+   !> HDF5 identifiers held by one operation, closed together by `release`.
+   type :: h5_ids
+      integer(hid_t) :: obj = -1_hid_t
+      integer(hid_t) :: attr = -1_hid_t
+      integer(hid_t) :: space = -1_hid_t
+      integer(hid_t) :: ftype = -1_hid_t
+      integer(hid_t) :: mtype = -1_hid_t
+   end type h5_ids
+
+   !> State of one link on a path.
+   integer, parameter :: link_missing = 0, link_group = 1, link_other = 2
+
+   !> H5T_VARIABLE: the size that makes a string type variable-length ((size_t)-1 in C).
+   integer(size_t), parameter :: variable_size = -1_size_t
+
+   !> HDF5 initialised and its error printing silenced.
+   logical :: library_ready = .false.
+
+   interface
+      !> C `H5Sget_simple_extent_dims`: dimensions in the file's own (C) order.
+      function c_h5sget_simple_extent_dims(space_id, dims, maxdims) &
+         bind(C, name='H5Sget_simple_extent_dims') result(rank)
+         import :: c_int64_t, c_long_long, c_ptr, c_int
+         integer(c_int64_t), value :: space_id
+         integer(c_long_long), intent(out) :: dims(*)
+         type(c_ptr), value :: maxdims
+         integer(c_int) :: rank
+      end function c_h5sget_simple_extent_dims
+
+      !> C `strlen`.
+      function c_strlen(s) bind(C, name='strlen') result(n)
+         import :: c_ptr, c_size_t
+         type(c_ptr), value :: s
+         integer(c_size_t) :: n
+      end function c_strlen
+   end interface
+
+contains
+
+   ! ------------------------------------------------------------------ files
+
+   !> Create `path` (truncating an existing file) and open it for writing.
+   subroutine h5_create(file, path, error)
+      !> Handle; must not be open already.
+      type(h5_file), intent(inout) :: file
+      !> File name.
+      character(len=*), intent(in) :: path
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: fapl
+      integer :: hdferr, ignore
+
+      call start(file, path, error)
+      if (allocated(error)) return
+      call file_access_list(path, fapl, error)
+      if (allocated(error)) return
+      call h5fcreate_f(path, H5F_ACC_TRUNC_F, file%id, hdferr, access_prp=fapl)
+      call h5pclose_f(fapl, ignore)
+      if (hdferr /= 0) then
+         file%id = -1_hid_t
+         call fatal_error(error, "cannot create HDF5 file '"//path// &
+                          "': h5fcreate_f failed (missing directory or no write permission?)")
+         return
+      end if
+      file%name = path
+      file%writable = .true.
+   end subroutine h5_create
+
+   !> Open an existing HDF5 file read-only.
+   subroutine h5_open(file, path, error)
+      !> Handle; must not be open already.
+      type(h5_file), intent(inout) :: file
+      !> File name.
+      character(len=*), intent(in) :: path
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: fapl
+      integer :: hdferr, ignore
+      logical :: there
+
+      call start(file, path, error)
+      if (allocated(error)) return
+      inquire (file=path, exist=there)
+      if (.not. there) then
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': no such file")
+         return
+      end if
+      call file_access_list(path, fapl, error)
+      if (allocated(error)) return
+      call h5fopen_f(path, H5F_ACC_RDONLY_F, file%id, hdferr, access_prp=fapl)
+      call h5pclose_f(fapl, ignore)
+      if (hdferr /= 0) then
+         file%id = -1_hid_t
+         call fatal_error(error, "cannot open HDF5 file '"//path// &
+                          "': h5fopen_f failed (not an HDF5 file, or unreadable)")
+         return
+      end if
+      file%name = path
+      file%writable = .false.
+   end subroutine h5_open
+
+   !> Close the file (all its objects are closed with it). Closing a closed handle does nothing.
+   subroutine h5_close(file, error)
+      !> Handle; closed on return, even on failure.
+      type(h5_file), intent(inout) :: file
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: hdferr
+
+      if (file%id < 0) return
+      call h5fclose_f(file%id, hdferr)
+      file%id = -1_hid_t
+      file%writable = .false.
+      if (hdferr /= 0) then
+         call fatal_error(error, "cannot close HDF5 file '"//file_name(file)//"': h5fclose_f failed")
+      end if
+   end subroutine h5_close
+
+   !> Whether the handle refers to an open file.
+   pure function h5_is_open(file) result(is_open)
+      !> Handle.
+      type(h5_file), intent(in) :: file
+      logical :: is_open
+
+      is_open = file%id >= 0
+   end function h5_is_open
+
+   ! ------------------------------------------------------------------ groups and paths
+
+   !> Create the group at `path` and any missing groups above it (existing ones are kept).
+   subroutine h5_create_group(file, path, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Group path, e.g. '/uncoupled/A'.
+      character(len=*), intent(in) :: path
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: p
+
+      call check_path(file, path, .true., 'create group', p, error)
+      if (allocated(error)) return
+      call make_groups(file, p, .true., error)
+   end subroutine h5_create_group
+
+   !> Whether an object (group or dataset) exists at `path`. The root always exists.
+   subroutine h5_exists(file, path, exists, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Object path.
+      character(len=*), intent(in) :: path
+      !> True if every group on the path and the final object exist.
+      logical, intent(out) :: exists
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: p
+
+      exists = .false.
+      call check_path(file, path, .false., 'look up', p, error)
+      if (allocated(error)) return
+      call path_exists(file, p, exists, error)
+   end subroutine h5_exists
+
+   !> Dimensions of the dataset at `path` as stored in the file, in HDF5's C order: the
+   !> shape h5py and h5dump report, the reverse of the Fortran shape. Empty for a scalar.
+   subroutine h5_dataset_dims(file, path, dims, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Dimensions, slowest-varying first.
+      integer, allocatable, intent(out) :: dims(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: cdims(32)
+      integer :: rank, hdferr
+
+      call open_dataset(file, path, 'get the shape of', ids, p, error)
+      if (.not. allocated(error)) then
+         call h5sget_simple_extent_ndims_f(ids%space, rank, hdferr)
+         if (hdferr /= 0 .or. rank < 0 .or. rank > size(cdims)) then
+            call fail(error, file, 'get the shape of', 'dataset', p, 'h5sget_simple_extent_ndims_f failed')
+         else if (c_h5sget_simple_extent_dims(ids%space, cdims, c_null_ptr) /= rank) then
+            call fail(error, file, 'get the shape of', 'dataset', p, 'H5Sget_simple_extent_dims failed')
+         else
+            dims = int(cdims(1:rank))
+         end if
+      end if
+      call release(ids, file, 'get the shape of', 'dataset', p, error)
+   end subroutine h5_dataset_dims
+
+   ! ------------------------------------------------------------------ dataset writers
+
+   !> Real scalar dataset.
+   subroutine write_real_0d(file, path, values, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Value.
+      real(dp), intent(in) :: values
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: dims(0)
+      integer :: hdferr
+
+      call new_dataset(file, path, H5T_IEEE_F64LE, dims, ids, p, error)
+      if (.not. allocated(error)) then
+         call h5dwrite_f(ids%obj, H5T_NATIVE_DOUBLE, values, [1_hsize_t], hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
+      end if
+      call release(ids, file, 'write', 'dataset', p, error)
+   end subroutine write_real_0d
+
+   !> Real 1-D dataset.
+   subroutine write_real_1d(file, path, values, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Values.
+      real(dp), intent(in) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: dims(1)
+      integer :: hdferr
+
+      dims = shape(values, kind=hsize_t)
+      call new_dataset(file, path, H5T_IEEE_F64LE, dims, ids, p, error)
+      if (.not. allocated(error) .and. size(values) > 0) then
+         call h5dwrite_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
+      end if
+      call release(ids, file, 'write', 'dataset', p, error)
+   end subroutine write_real_1d
+
+   !> Real 2-D dataset, written as given: Fortran (n1, n2) is seen by h5py as (n2, n1).
+   subroutine write_real_2d(file, path, values, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Values, e.g. hist(n_floors, n_out).
+      real(dp), intent(in) :: values(:, :)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: dims(2)
+      integer :: hdferr
+
+      dims = shape(values, kind=hsize_t)
+      call new_dataset(file, path, H5T_IEEE_F64LE, dims, ids, p, error)
+      if (.not. allocated(error) .and. size(values) > 0) then
+         call h5dwrite_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
+      end if
+      call release(ids, file, 'write', 'dataset', p, error)
+   end subroutine write_real_2d
+
+   !> Integer 1-D dataset (stored as 32-bit signed).
+   subroutine write_int_1d(file, path, values, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Values.
+      integer, intent(in) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: dims(1)
+      integer :: hdferr
+
+      dims = shape(values, kind=hsize_t)
+      call new_dataset(file, path, H5T_STD_I32LE, dims, ids, p, error)
+      if (.not. allocated(error) .and. size(values) > 0) then
+         call h5dwrite_f(ids%obj, H5T_NATIVE_INTEGER, values, dims, hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
+      end if
+      call release(ids, file, 'write', 'dataset', p, error)
+   end subroutine write_int_1d
+
+   !> 1-D dataset of variable-length strings; trailing blanks of each element are dropped.
+   subroutine write_string_1d(file, path, values, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Strings.
+      character(len=*), intent(in) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      character(kind=c_char), allocatable, target :: chars(:)
+      type(c_ptr), allocatable, target :: ptrs(:)
+      integer(hsize_t) :: dims(1)
+      integer :: hdferr, i
+
+      call check_path(file, path, .true., 'write', p, error)
+      if (allocated(error)) return
+      call string_type(ids%ftype, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'write', 'dataset', p, 'h5tcopy_f/h5tset_size_f failed')
+         return
+      end if
+      dims = shape(values, kind=hsize_t)
+      call new_dataset(file, path, ids%ftype, dims, ids, p, error)
+      if (.not. allocated(error) .and. size(values) > 0) then
+         call pack_strings([(len_trim(values(i)), i=1, size(values))], values, chars, ptrs)
+         call h5dwrite_f(ids%obj, ids%ftype, c_loc(ptrs), hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
+      end if
+      call release(ids, file, 'write', 'dataset', p, error)
+   end subroutine write_string_1d
+
+   ! ------------------------------------------------------------------ dataset readers
+
+   !> Real scalar dataset (any dataset holding exactly one number).
+   subroutine read_real_0d(file, path, values, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Value read.
+      real(dp), intent(out) :: values
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: npoints
+      integer :: hdferr
+
+      values = 0.0_dp
+      call open_dataset(file, path, 'read', ids, p, error)
+      if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .true., error)
+      if (.not. allocated(error)) then
+         call h5sget_simple_extent_npoints_f(ids%space, npoints, hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', 'dataset', p, 'h5sget_simple_extent_npoints_f failed')
+         else if (npoints /= 1) then
+            call fail(error, file, 'read', 'dataset', p, 'holds '//str(int(npoints))// &
+                      ' values, expected one')
+         else
+            call h5dread_f(ids%obj, H5T_NATIVE_DOUBLE, values, [1_hsize_t], hdferr)
+            if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
+         end if
+      end if
+      call release(ids, file, 'read', 'dataset', p, error)
+   end subroutine read_real_0d
+
+   !> Real 1-D dataset.
+   subroutine read_real_1d(file, path, values, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Values, allocated to the size in the file.
+      real(dp), allocatable, intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: dims(1)
+      integer :: hdferr
+
+      call open_dataset(file, path, 'read', ids, p, error)
+      if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .true., error)
+      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
+      if (.not. allocated(error)) then
+         allocate (values(dims(1)))
+         if (size(values) > 0) then
+            call h5dread_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
+            if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
+         end if
+      end if
+      call release(ids, file, 'read', 'dataset', p, error)
+   end subroutine read_real_1d
+
+   !> Real 2-D dataset, returned in the Fortran shape it was written with.
+   subroutine read_real_2d(file, path, values, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Values, allocated to the (Fortran-order) shape in the file.
+      real(dp), allocatable, intent(out) :: values(:, :)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: dims(2)
+      integer :: hdferr
+
+      call open_dataset(file, path, 'read', ids, p, error)
+      if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .true., error)
+      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
+      if (.not. allocated(error)) then
+         allocate (values(dims(1), dims(2)))
+         if (size(values) > 0) then
+            call h5dread_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
+            if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
+         end if
+      end if
+      call release(ids, file, 'read', 'dataset', p, error)
+   end subroutine read_real_2d
+
+   !> Integer 1-D dataset.
+   subroutine read_int_1d(file, path, values, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Values, allocated to the size in the file.
+      integer, allocatable, intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: dims(1)
+      integer :: hdferr
+
+      call open_dataset(file, path, 'read', ids, p, error)
+      if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .false., error)
+      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
+      if (.not. allocated(error)) then
+         allocate (values(dims(1)))
+         if (size(values) > 0) then
+            call h5dread_f(ids%obj, H5T_NATIVE_INTEGER, values, dims, hdferr)
+            if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
+         end if
+      end if
+      call release(ids, file, 'read', 'dataset', p, error)
+   end subroutine read_int_1d
+
+   !> 1-D string dataset (variable- or fixed-length); the length is that of the longest element.
+   subroutine read_string_1d(file, path, values, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Strings, blank-padded to the longest.
+      character(len=:), allocatable, intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p, text
+      integer, allocatable :: lengths(:)
+      integer(hsize_t) :: dims(1)
+      integer :: i, pos
+
+      call open_dataset(file, path, 'read', ids, p, error)
+      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
+      if (.not. allocated(error)) then
+         call read_strings(ids, .false., int(dims(1)), file, 'dataset', p, text, lengths, error)
+      end if
+      if (.not. allocated(error)) then
+         allocate (character(len=max(0, maxval(lengths))) :: values(size(lengths)))
+         pos = 0
+         do i = 1, size(lengths)
+            values(i) = text(pos + 1:pos + lengths(i))
+            pos = pos + lengths(i)
+         end do
+      else
+         allocate (character(len=0) :: values(0))
+      end if
+      call release(ids, file, 'read', 'dataset', p, error)
+   end subroutine read_string_1d
+
+   ! ------------------------------------------------------------------ attribute writers
+
+   !> String attribute (variable-length UTF-8, stored exactly as given).
+   subroutine write_attr_string(file, path, name, value, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Path of the object carrying the attribute ('/' for the root).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Text; may be long and contain newlines.
+      character(len=*), intent(in) :: value
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: what
+      character(kind=c_char), allocatable, target :: chars(:)
+      type(c_ptr), allocatable, target :: ptrs(:)
+      integer(hsize_t) :: dims(0)
+      integer :: hdferr
+
+      what = "attribute '"//name//"' of"
+      call string_type(ids%ftype, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'write', what, path, 'h5tcopy_f/h5tset_size_f failed')
+      else
+         call new_attribute(file, path, name, ids%ftype, dims, ids, error)
+      end if
+      if (.not. allocated(error)) then
+         call pack_strings([len(value)], [value], chars, ptrs)
+         call h5awrite_f(ids%attr, ids%ftype, c_loc(ptrs), hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', what, path, 'h5awrite_f failed')
+      end if
+      call release(ids, file, 'write', what, path, error)
+   end subroutine write_attr_string
+
+   !> Real scalar attribute.
+   subroutine write_attr_real_0d(file, path, name, value, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Path of the object carrying the attribute ('/' for the root).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Value.
+      real(dp), intent(in) :: value
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      integer(hsize_t) :: dims(0)
+      integer :: hdferr
+
+      call new_attribute(file, path, name, H5T_IEEE_F64LE, dims, ids, error)
+      if (.not. allocated(error)) then
+         call h5awrite_f(ids%attr, H5T_NATIVE_DOUBLE, value, [1_hsize_t], hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, &
+                                    'h5awrite_f failed')
+      end if
+      call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
+   end subroutine write_attr_real_0d
+
+   !> Real 1-D attribute.
+   subroutine write_attr_real_1d(file, path, name, value, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Path of the object carrying the attribute ('/' for the root).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Values.
+      real(dp), intent(in) :: value(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      integer(hsize_t) :: dims(1)
+      integer :: hdferr
+
+      dims = shape(value, kind=hsize_t)
+      call new_attribute(file, path, name, H5T_IEEE_F64LE, dims, ids, error)
+      if (.not. allocated(error) .and. size(value) > 0) then
+         call h5awrite_f(ids%attr, H5T_NATIVE_DOUBLE, value, dims, hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, &
+                                    'h5awrite_f failed')
+      end if
+      call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
+   end subroutine write_attr_real_1d
+
+   !> Integer scalar attribute (stored as 32-bit signed).
+   subroutine write_attr_int_0d(file, path, name, value, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Path of the object carrying the attribute ('/' for the root).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Value.
+      integer, intent(in) :: value
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      integer(hsize_t) :: dims(0)
+      integer :: hdferr
+
+      call new_attribute(file, path, name, H5T_STD_I32LE, dims, ids, error)
+      if (.not. allocated(error)) then
+         call h5awrite_f(ids%attr, H5T_NATIVE_INTEGER, value, [1_hsize_t], hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, &
+                                    'h5awrite_f failed')
+      end if
+      call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
+   end subroutine write_attr_int_0d
+
+   ! ------------------------------------------------------------------ attribute readers
+
+   !> String attribute (variable- or fixed-length).
+   subroutine read_attr_string(file, path, name, value, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Path of the object carrying the attribute ('/' for the root).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Text read, of its stored length.
+      character(len=:), allocatable, intent(out) :: value
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: what
+      integer, allocatable :: lengths(:)
+
+      what = "attribute '"//name//"' of"
+      value = ''
+      call open_attribute(file, path, name, ids, error)
+      if (.not. allocated(error)) call check_one_value(ids, file, what, path, error)
+      if (.not. allocated(error)) then
+         call read_strings(ids, .true., 1, file, what, path, value, lengths, error)
+         if (allocated(error)) value = ''
+      end if
+      call release(ids, file, 'read', what, path, error)
+   end subroutine read_attr_string
+
+   !> Real scalar attribute.
+   subroutine read_attr_real_0d(file, path, name, value, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Path of the object carrying the attribute ('/' for the root).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Value read.
+      real(dp), intent(out) :: value
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: what
+      integer :: hdferr
+
+      what = "attribute '"//name//"' of"
+      value = 0.0_dp
+      call open_attribute(file, path, name, ids, error)
+      if (.not. allocated(error)) call check_class(ids, file, 'read', what, path, .true., error)
+      if (.not. allocated(error)) call check_one_value(ids, file, what, path, error)
+      if (.not. allocated(error)) then
+         call h5aread_f(ids%attr, H5T_NATIVE_DOUBLE, value, [1_hsize_t], hdferr)
+         if (hdferr /= 0) call fail(error, file, 'read', what, path, 'h5aread_f failed')
+      end if
+      call release(ids, file, 'read', what, path, error)
+   end subroutine read_attr_real_0d
+
+   !> Real 1-D attribute.
+   subroutine read_attr_real_1d(file, path, name, value, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Path of the object carrying the attribute ('/' for the root).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Values, allocated to the size in the file.
+      real(dp), allocatable, intent(out) :: value(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: what
+      integer(hsize_t) :: dims(1)
+      integer :: hdferr
+
+      what = "attribute '"//name//"' of"
+      call open_attribute(file, path, name, ids, error)
+      if (.not. allocated(error)) call check_class(ids, file, 'read', what, path, .true., error)
+      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', what, path, dims, error)
+      if (.not. allocated(error)) then
+         allocate (value(dims(1)))
+         if (size(value) > 0) then
+            call h5aread_f(ids%attr, H5T_NATIVE_DOUBLE, value, dims, hdferr)
+            if (hdferr /= 0) call fail(error, file, 'read', what, path, 'h5aread_f failed')
+         end if
+      end if
+      call release(ids, file, 'read', what, path, error)
+   end subroutine read_attr_real_1d
+
+   !> Integer scalar attribute.
+   subroutine read_attr_int_0d(file, path, name, value, error)
+      !> Open file.
+      type(h5_file), intent(in) :: file
+      !> Path of the object carrying the attribute ('/' for the root).
+      character(len=*), intent(in) :: path
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Value read.
+      integer, intent(out) :: value
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: what
+      integer :: hdferr
+
+      what = "attribute '"//name//"' of"
+      value = 0
+      call open_attribute(file, path, name, ids, error)
+      if (.not. allocated(error)) call check_class(ids, file, 'read', what, path, .false., error)
+      if (.not. allocated(error)) call check_one_value(ids, file, what, path, error)
+      if (.not. allocated(error)) then
+         call h5aread_f(ids%attr, H5T_NATIVE_INTEGER, value, [1_hsize_t], hdferr)
+         if (hdferr /= 0) call fail(error, file, 'read', what, path, 'h5aread_f failed')
+      end if
+      call release(ids, file, 'read', what, path, error)
+   end subroutine read_attr_int_0d
+
+   ! ------------------------------------------------------------------ internals
+
+   !> Initialise HDF5 once and check that the handle is free.
+   subroutine start(file, path, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: path
+      type(error_type), allocatable, intent(out) :: error
+      type(ieee_status_type) :: fp_status
+      integer :: hdferr
+
+      if (file%id >= 0) then
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': the handle is still open on '"// &
+                          file_name(file)//"'")
+         return
+      end if
+      if (library_ready) return
+      ! HDF5's start-up code must not meet the program's floating-point traps; the
+      ! floating-point state, flags included, is restored afterwards.
+      call ieee_get_status(fp_status)
+      call ieee_set_halting_mode(ieee_all, .false.)
+      call h5open_f(hdferr)
+      call ieee_set_status(fp_status)
+      if (hdferr /= 0) then
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5open_f failed (HDF5 library)")
+         return
+      end if
+      call h5eset_auto_f(0, hdferr)
+      if (hdferr /= 0) then
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5eset_auto_f failed (HDF5 library)")
+         return
+      end if
+      library_ready = .true.
+   end subroutine start
+
+   !> File access list that closes every object with the file.
+   subroutine file_access_list(path, fapl, error)
+      character(len=*), intent(in) :: path
+      integer(hid_t), intent(out) :: fapl
+      type(error_type), allocatable, intent(out) :: error
+      integer :: hdferr, ignore
+
+      call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, hdferr)
+      if (hdferr /= 0) then
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5pcreate_f failed")
+         return
+      end if
+      call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, hdferr)
+      if (hdferr /= 0) then
+         call h5pclose_f(fapl, ignore)
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5pset_fclose_degree_f failed")
+      end if
+   end subroutine file_access_list
+
+   !> Check the handle (open; writable if `write`) and normalise `path` to '/a/b'.
+   subroutine check_path(file, path, write, action, p, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: path
+      logical, intent(in) :: write
+      character(len=*), intent(in) :: action
+      character(len=:), allocatable, intent(out) :: p
+      type(error_type), allocatable, intent(out) :: error
+
+      p = trim(adjustl(path))
+      if (len(p) == 0) p = '/'
+      if (p(1:1) /= '/') p = '/'//p
+      do while (len(p) > 1)
+         if (p(len(p):len(p)) /= '/') exit
+         p = p(:len(p) - 1)
+      end do
+      if (file%id < 0) then
+         call fatal_error(error, "cannot "//action//" '"//p//"': no HDF5 file is open")
+      else if (write .and. .not. file%writable) then
+         call fail(error, file, action, 'object', p, 'the file is open read-only')
+      else if (index(p, '//') > 0) then
+         call fail(error, file, action, 'object', p, 'invalid path (empty name)')
+      end if
+   end subroutine check_path
+
+   !> State of the link `prefix` (an absolute path other than '/'), whose parent is a group.
+   subroutine link_state(file, prefix, state, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: prefix
+      integer, intent(out) :: state
+      type(error_type), allocatable, intent(out) :: error
+      logical :: there
+      integer(hid_t) :: obj
+      integer :: hdferr, obj_type, ignore
+
+      state = link_missing
+      call h5lexists_f(file%id, prefix, there, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'look up', 'object', prefix, 'h5lexists_f failed')
+         return
+      end if
+      if (.not. there) return
+      call h5oopen_f(file%id, prefix, obj, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'look up', 'object', prefix, 'h5oopen_f failed')
+         return
+      end if
+      call h5iget_type_f(obj, obj_type, hdferr)
+      call h5oclose_f(obj, ignore)
+      if (hdferr /= 0) then
+         call fail(error, file, 'look up', 'object', prefix, 'h5iget_type_f failed')
+         return
+      end if
+      state = merge(link_group, link_other, obj_type == H5I_GROUP_F)
+   end subroutine link_state
+
+   !> Whether every component of the normalised path `p` exists (all but the last as groups).
+   subroutine path_exists(file, p, exists, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: p
+      logical, intent(out) :: exists
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i, state
+
+      exists = .true.
+      if (p == '/') return
+      do i = 2, len(p) + 1
+         if (i <= len(p)) then
+            if (p(i:i) /= '/') cycle
+         end if
+         call link_state(file, p(:i - 1), state, error)
+         if (allocated(error)) exists = .false.
+         if (allocated(error)) return
+         if (state == link_missing .or. (i <= len(p) .and. state /= link_group)) then
+            exists = .false.
+            return
+         end if
+      end do
+   end subroutine path_exists
+
+   !> Create the missing groups of the normalised path `p` (the last component too if `whole`).
+   subroutine make_groups(file, p, whole, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: p
+      logical, intent(in) :: whole
+      type(error_type), allocatable, intent(out) :: error
+      integer(hid_t) :: gid
+      integer :: i, last, state, hdferr
+
+      if (p == '/') return
+      last = len(p)
+      if (.not. whole) last = index(p, '/', back=.true.) - 1
+      do i = 2, last + 1
+         if (i <= last) then
+            if (p(i:i) /= '/') cycle
+         end if
+         call link_state(file, p(:i - 1), state, error)
+         if (allocated(error)) return
+         select case (state)
+         case (link_other)
+            call fail(error, file, 'create', 'group', p(:i - 1), 'an object that is not a group has this path')
+            return
+         case (link_missing)
+            call h5gcreate_f(file%id, p(:i - 1), gid, hdferr)
+            if (hdferr /= 0) then
+               call fail(error, file, 'create', 'group', p(:i - 1), 'h5gcreate_f failed')
+               return
+            end if
+            call h5gclose_f(gid, hdferr)
+            if (hdferr /= 0) then
+               call fail(error, file, 'create', 'group', p(:i - 1), 'h5gclose_f failed')
+               return
+            end if
+         end select
+      end do
+   end subroutine make_groups
+
+   !> Create the dataspace and dataset at `path` (groups above it on demand).
+   !> Empty `dims` gives a scalar dataset.
+   subroutine new_dataset(file, path, ftype, dims, ids, p, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: path
+      integer(hid_t), intent(in) :: ftype
+      integer(hsize_t), intent(in) :: dims(:)
+      type(h5_ids), intent(inout) :: ids
+      character(len=:), allocatable, intent(out) :: p
+      type(error_type), allocatable, intent(out) :: error
+      logical :: there
+
+      call check_path(file, path, .true., 'write', p, error)
+      if (allocated(error)) return
+      if (p == '/') then
+         call fail(error, file, 'write', 'dataset', p, 'the root is a group')
+         return
+      end if
+      call make_groups(file, p, .false., error)
+      if (allocated(error)) return
+      call path_exists(file, p, there, error)
+      if (allocated(error)) return
+      if (there) then
+         call fail(error, file, 'write', 'dataset', p, 'an object with this path already exists')
+         return
+      end if
+      call new_space(dims, ids, file, 'write', 'dataset', p, error)
+      if (allocated(error)) return
+      call dataset_create(ftype, ids, file, p, error)
+   end subroutine new_dataset
+
+   !> h5dcreate_f, checked.
+   subroutine dataset_create(ftype, ids, file, p, error)
+      integer(hid_t), intent(in) :: ftype
+      type(h5_ids), intent(inout) :: ids
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: p
+      type(error_type), allocatable, intent(out) :: error
+      integer :: hdferr
+
+      call h5dcreate_f(file%id, p, ftype, ids%space, ids%obj, hdferr)
+      if (hdferr /= 0) then
+         ids%obj = -1_hid_t
+         call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+      end if
+   end subroutine dataset_create
+
+   !> Scalar (empty `dims`) or simple dataspace.
+   subroutine new_space(dims, ids, file, action, what, path, error)
+      integer(hsize_t), intent(in) :: dims(:)
+      type(h5_ids), intent(inout) :: ids
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: action, what, path
+      type(error_type), allocatable, intent(out) :: error
+      integer :: hdferr
+
+      if (size(dims) == 0) then
+         call h5screate_f(H5S_SCALAR_F, ids%space, hdferr)
+         if (hdferr /= 0) call fail(error, file, action, what, path, 'h5screate_f failed')
+      else
+         call h5screate_simple_f(size(dims), dims, ids%space, hdferr)
+         if (hdferr /= 0) call fail(error, file, action, what, path, 'h5screate_simple_f failed')
+      end if
+      if (hdferr /= 0) ids%space = -1_hid_t
+   end subroutine new_space
+
+   !> Open the dataset at `path` with its dataspace and file datatype.
+   subroutine open_dataset(file, path, action, ids, p, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: path
+      character(len=*), intent(in) :: action
+      type(h5_ids), intent(inout) :: ids
+      character(len=:), allocatable, intent(out) :: p
+      type(error_type), allocatable, intent(out) :: error
+      logical :: there
+      integer :: hdferr, obj_type
+
+      call check_path(file, path, .false., action, p, error)
+      if (allocated(error)) return
+      call path_exists(file, p, there, error)
+      if (allocated(error)) return
+      if (.not. there) then
+         call fail(error, file, action, 'dataset', p, 'no such object')
+         return
+      end if
+      call h5oopen_f(file%id, p, ids%obj, hdferr)
+      if (hdferr /= 0) then
+         ids%obj = -1_hid_t
+         call fail(error, file, action, 'dataset', p, 'h5oopen_f failed')
+         return
+      end if
+      call h5iget_type_f(ids%obj, obj_type, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, action, 'dataset', p, 'h5iget_type_f failed')
+         return
+      end if
+      if (obj_type /= H5I_DATASET_F) then
+         call fail(error, file, action, 'dataset', p, 'the object is not a dataset')
+         return
+      end if
+      call h5dget_space_f(ids%obj, ids%space, hdferr)
+      if (hdferr /= 0) then
+         ids%space = -1_hid_t
+         call fail(error, file, action, 'dataset', p, 'h5dget_space_f failed')
+         return
+      end if
+      call h5dget_type_f(ids%obj, ids%ftype, hdferr)
+      if (hdferr /= 0) then
+         ids%ftype = -1_hid_t
+         call fail(error, file, action, 'dataset', p, 'h5dget_type_f failed')
+      end if
+   end subroutine open_dataset
+
+   !> Open the object at `path`; delete attribute `name` if present; create it anew.
+   subroutine new_attribute(file, path, name, ftype, dims, ids, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: path, name
+      integer(hid_t), intent(in) :: ftype
+      integer(hsize_t), intent(in) :: dims(:)
+      type(h5_ids), intent(inout) :: ids
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: p, what
+      logical :: there
+      integer :: hdferr
+
+      what = "attribute '"//name//"' of"
+      call open_carrier(file, path, .true., 'write', what, ids, p, error)
+      if (allocated(error)) return
+      call h5aexists_f(ids%obj, name, there, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'write', what, p, 'h5aexists_f failed')
+         return
+      end if
+      if (there) then
+         call h5adelete_f(ids%obj, name, hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'write', what, p, 'h5adelete_f failed (replacing it)')
+            return
+         end if
+      end if
+      call new_space(dims, ids, file, 'write', what, p, error)
+      if (allocated(error)) return
+      call h5acreate_f(ids%obj, name, ftype, ids%space, ids%attr, hdferr)
+      if (hdferr /= 0) then
+         ids%attr = -1_hid_t
+         call fail(error, file, 'write', what, p, 'h5acreate_f failed')
+      end if
+   end subroutine new_attribute
+
+   !> Open attribute `name` of the object at `path`, with its dataspace and file datatype.
+   subroutine open_attribute(file, path, name, ids, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: path, name
+      type(h5_ids), intent(inout) :: ids
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: p, what
+      logical :: there
+      integer :: hdferr
+
+      what = "attribute '"//name//"' of"
+      call open_carrier(file, path, .false., 'read', what, ids, p, error)
+      if (allocated(error)) return
+      call h5aexists_f(ids%obj, name, there, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'read', what, p, 'h5aexists_f failed')
+         return
+      end if
+      if (.not. there) then
+         call fail(error, file, 'read', what, p, 'no such attribute')
+         return
+      end if
+      call h5aopen_f(ids%obj, name, ids%attr, hdferr)
+      if (hdferr /= 0) then
+         ids%attr = -1_hid_t
+         call fail(error, file, 'read', what, p, 'h5aopen_f failed')
+         return
+      end if
+      call h5aget_space_f(ids%attr, ids%space, hdferr)
+      if (hdferr /= 0) then
+         ids%space = -1_hid_t
+         call fail(error, file, 'read', what, p, 'h5aget_space_f failed')
+         return
+      end if
+      call h5aget_type_f(ids%attr, ids%ftype, hdferr)
+      if (hdferr /= 0) then
+         ids%ftype = -1_hid_t
+         call fail(error, file, 'read', what, p, 'h5aget_type_f failed')
+      end if
+   end subroutine open_attribute
+
+   !> Open the group or dataset at `path` that carries attributes.
+   subroutine open_carrier(file, path, write, action, what, ids, p, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: path
+      logical, intent(in) :: write
+      character(len=*), intent(in) :: action, what
+      type(h5_ids), intent(inout) :: ids
+      character(len=:), allocatable, intent(out) :: p
+      type(error_type), allocatable, intent(out) :: error
+      logical :: there
+      integer :: hdferr
+
+      call check_path(file, path, write, action, p, error)
+      if (allocated(error)) return
+      call path_exists(file, p, there, error)
+      if (allocated(error)) return
+      if (.not. there) then
+         call fail(error, file, action, what, p, 'no such object')
+         return
+      end if
+      call h5oopen_f(file%id, p, ids%obj, hdferr)
+      if (hdferr /= 0) then
+         ids%obj = -1_hid_t
+         call fail(error, file, action, what, p, 'h5oopen_f failed')
+      end if
+   end subroutine open_carrier
+
+   !> Require a numeric datatype (`real_ok`: float or integer; otherwise integer only).
+   subroutine check_class(ids, file, action, what, path, real_ok, error)
+      type(h5_ids), intent(in) :: ids
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: action, what, path
+      logical, intent(in) :: real_ok
+      type(error_type), allocatable, intent(out) :: error
+      integer :: class, hdferr
+
+      call h5tget_class_f(ids%ftype, class, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, action, what, path, 'h5tget_class_f failed')
+      else if (real_ok .and. class /= H5T_FLOAT_F .and. class /= H5T_INTEGER_F) then
+         call fail(error, file, action, what, path, 'the stored values are not numbers')
+      else if (.not. real_ok .and. class /= H5T_INTEGER_F) then
+         call fail(error, file, action, what, path, 'the stored values are not integers')
+      end if
+   end subroutine check_class
+
+   !> Require a dataspace of exactly one element.
+   subroutine check_one_value(ids, file, what, path, error)
+      type(h5_ids), intent(in) :: ids
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: what, path
+      type(error_type), allocatable, intent(out) :: error
+      integer(hsize_t) :: npoints
+      integer :: hdferr
+
+      call h5sget_simple_extent_npoints_f(ids%space, npoints, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'read', what, path, 'h5sget_simple_extent_npoints_f failed')
+      else if (npoints /= 1) then
+         call fail(error, file, 'read', what, path, 'holds '//str(int(npoints))//' values, expected one')
+      end if
+   end subroutine check_one_value
+
+   !> Fortran-order dimensions of a dataspace whose rank must be size(dims).
+   subroutine space_dims(space, file, action, what, path, dims, error)
+      integer(hid_t), intent(in) :: space
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: action, what, path
+      integer(hsize_t), intent(out) :: dims(:)
+      type(error_type), allocatable, intent(out) :: error
+      integer(hsize_t) :: maxdims(size(dims))
+      integer :: rank, hdferr
+
+      dims = 0
+      call h5sget_simple_extent_ndims_f(space, rank, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, action, what, path, 'h5sget_simple_extent_ndims_f failed')
+      else if (rank /= size(dims)) then
+         call fail(error, file, action, what, path, 'has rank '//str(rank)//', expected '//str(size(dims)))
+      else
+         ! On success this call returns the rank in hdferr.
+         call h5sget_simple_extent_dims_f(space, dims, maxdims, hdferr)
+         if (hdferr /= rank) call fail(error, file, action, what, path, 'h5sget_simple_extent_dims_f failed')
+      end if
+   end subroutine space_dims
+
+   !> Read `n` strings (variable- or fixed-length) from a dataset or attribute, returned
+   !> concatenated in `text` with their lengths in `lengths`.
+   subroutine read_strings(ids, is_attr, n, file, what, path, text, lengths, error)
+      type(h5_ids), intent(inout) :: ids
+      logical, intent(in) :: is_attr
+      integer, intent(in) :: n
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: what, path
+      character(len=:), allocatable, intent(out) :: text
+      integer, allocatable, intent(out) :: lengths(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(c_ptr), allocatable, target :: ptrs(:)
+      character(kind=c_char), allocatable, target :: chars(:)
+      character(kind=c_char), pointer :: cstr(:)
+      type(c_ptr) :: buf
+      integer(size_t) :: width
+      integer :: class, hdferr, pad, i, j, k, w, pos
+      logical :: variable
+
+      text = ''
+      allocate (lengths(n))
+      lengths = 0
+      call h5tget_class_f(ids%ftype, class, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'read', what, path, 'h5tget_class_f failed')
+         return
+      end if
+      if (class /= H5T_STRING_F) then
+         call fail(error, file, 'read', what, path, 'the stored values are not strings')
+         return
+      end if
+      call h5tis_variable_str_f(ids%ftype, variable, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'read', what, path, 'h5tis_variable_str_f failed')
+         return
+      end if
+      if (n == 0) return
+
+      if (variable) then
+         call string_type(ids%mtype, hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', what, path, 'h5tcopy_f/h5tset_size_f failed')
+            return
+         end if
+         allocate (ptrs(n))
+         ptrs = c_null_ptr
+         call raw_read(ids, is_attr, c_loc(ptrs), hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', what, path, merge('h5aread_f', 'h5dread_f', is_attr)//' failed')
+            return
+         end if
+         do i = 1, n
+            if (c_associated(ptrs(i))) lengths(i) = int(c_strlen(ptrs(i)))
+         end do
+         deallocate (text)
+         allocate (character(len=sum(lengths)) :: text)
+         pos = 0
+         do i = 1, n
+            if (lengths(i) == 0) cycle
+            call c_f_pointer(ptrs(i), cstr, [lengths(i)])
+            do j = 1, lengths(i)
+               text(pos + j:pos + j) = cstr(j)
+            end do
+            pos = pos + lengths(i)
+         end do
+         ! HDF5 allocated the strings; hand them back.
+         buf = c_loc(ptrs)
+         call h5dvlen_reclaim_f(ids%mtype, ids%space, H5P_DEFAULT_F, buf, hdferr)
+         if (hdferr /= 0) call fail(error, file, 'read', what, path, 'h5dvlen_reclaim_f failed')
+      else
+         call h5tget_size_f(ids%ftype, width, hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', what, path, 'h5tget_size_f failed')
+            return
+         end if
+         call h5tget_strpad_f(ids%ftype, pad, hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', what, path, 'h5tget_strpad_f failed')
+            return
+         end if
+         w = int(width)
+         allocate (chars(w*n))
+         call raw_read(ids, is_attr, c_loc(chars), hdferr, ids%ftype)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', what, path, merge('h5aread_f', 'h5dread_f', is_attr)//' failed')
+            return
+         end if
+         ! Each element ends at its first NUL; blank padding is not part of the text.
+         do i = 1, n
+            k = (i - 1)*w
+            lengths(i) = w
+            do j = 1, w
+               if (chars(k + j) == c_null_char) then
+                  lengths(i) = j - 1
+                  exit
+               end if
+            end do
+            if (pad == H5T_STR_SPACEPAD_F) then
+               do while (lengths(i) > 0)
+                  if (chars(k + lengths(i)) /= ' ') exit
+                  lengths(i) = lengths(i) - 1
+               end do
+            end if
+         end do
+         deallocate (text)
+         allocate (character(len=sum(lengths)) :: text)
+         pos = 0
+         do i = 1, n
+            k = (i - 1)*w
+            do j = 1, lengths(i)
+               text(pos + j:pos + j) = chars(k + j)
+            end do
+            pos = pos + lengths(i)
+         end do
+      end if
+   end subroutine read_strings
+
+   !> Read a whole attribute or dataset into memory at `buf` with type `mtype` (default ids%mtype).
+   subroutine raw_read(ids, is_attr, buf, hdferr, mtype)
+      type(h5_ids), intent(in) :: ids
+      logical, intent(in) :: is_attr
+      type(c_ptr), intent(in) :: buf
+      integer, intent(out) :: hdferr
+      integer(hid_t), intent(in), optional :: mtype
+      integer(hid_t) :: t
+      type(c_ptr), target :: b
+
+      t = ids%mtype
+      if (present(mtype)) t = mtype
+      b = buf
+      if (is_attr) then
+         call h5aread_f(ids%attr, t, b, hdferr)
+      else
+         call h5dread_f(ids%obj, t, b, hdferr)
+      end if
+   end subroutine raw_read
+
+   !> New variable-length UTF-8 C string datatype.
+   subroutine string_type(type_id, hdferr)
+      integer(hid_t), intent(out) :: type_id
+      integer, intent(out) :: hdferr
+      integer :: ignore
+
+      call h5tcopy_f(H5T_C_S1, type_id, hdferr)
+      if (hdferr /= 0) then
+         type_id = -1_hid_t
+         return
+      end if
+      call h5tset_size_f(type_id, variable_size, hdferr)
+      if (hdferr == 0) call h5tset_cset_f(type_id, H5T_CSET_UTF8_F, hdferr)
+      if (hdferr /= 0) then
+         call h5tclose_f(type_id, ignore)
+         type_id = -1_hid_t
+      end if
+   end subroutine string_type
+
+   !> NUL-terminated copies of `values(i)(1:lengths(i))` in `chars`, addressed by `ptrs`.
+   subroutine pack_strings(lengths, values, chars, ptrs)
+      integer, intent(in) :: lengths(:)
+      character(len=*), intent(in) :: values(:)
+      character(kind=c_char), allocatable, target, intent(out) :: chars(:)
+      type(c_ptr), allocatable, intent(out) :: ptrs(:)
+      integer :: i, j, pos
+
+      allocate (chars(sum(lengths) + size(lengths)), ptrs(size(values)))
+      pos = 1
+      do i = 1, size(values)
+         do j = 1, lengths(i)
+            chars(pos + j - 1) = values(i) (j:j)
+         end do
+         chars(pos + lengths(i)) = c_null_char
+         ptrs(i) = c_loc(chars(pos))
+         pos = pos + lengths(i) + 1
+      end do
+   end subroutine pack_strings
+
+   !> Close every identifier held; report the first failure unless an error is already set.
+   subroutine release(ids, file, action, what, path, error)
+      type(h5_ids), intent(inout) :: ids
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: action, what, path
+      type(error_type), allocatable, intent(inout) :: error
+      character(len=:), allocatable :: failed
+      integer :: hdferr
+
+      if (ids%attr >= 0) then
+         call h5aclose_f(ids%attr, hdferr)
+         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5aclose_f'
+      end if
+      if (ids%obj >= 0) then
+         call h5oclose_f(ids%obj, hdferr)
+         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5oclose_f'
+      end if
+      if (ids%space >= 0) then
+         call h5sclose_f(ids%space, hdferr)
+         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5sclose_f'
+      end if
+      if (ids%ftype >= 0) then
+         call h5tclose_f(ids%ftype, hdferr)
+         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5tclose_f'
+      end if
+      if (ids%mtype >= 0) then
+         call h5tclose_f(ids%mtype, hdferr)
+         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5tclose_f'
+      end if
+      ids = h5_ids()
+      if (allocated(failed) .and. .not. allocated(error)) then
+         call fail(error, file, action, what, path, failed//' failed')
+      end if
+   end subroutine release
+
+   !> Error "HDF5 file '<file>': cannot <action> <what> '<path>': <detail>".
+   subroutine fail(error, file, action, what, path, detail)
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: action, what, path, detail
+
+      call fatal_error(error, "HDF5 file '"//file_name(file)//"': cannot "//action//" "//what// &
+                       " '"//path//"': "//detail)
+   end subroutine fail
+
+   !> File name of a handle, for messages.
+   pure function file_name(file) result(name)
+      type(h5_file), intent(in) :: file
+      character(len=:), allocatable :: name
+
+      if (allocated(file%name)) then
+         name = file%name
+      else
+         name = '(none)'
+      end if
+   end function file_name
+
+end module pound_h5
