@@ -7,7 +7,7 @@ module pound_config
    implicit none
    private
 
-   public :: analysis_config, ground_config, building_config, deck_type
+   public :: analysis_config, ground_config, building_config, contact_config, deck_type
    public :: n_history_quantities, history_names, g_accel
 
    !> Standard gravity used to turn floor loads into masses (m/s^2).
@@ -73,6 +73,25 @@ module pound_config
       character(len=:), allocatable :: stiffness_source
    end type building_config
 
+   !> `&contact`: unilateral constraints between facing floors of two buildings.
+   !>
+   !> Pair k joins floor `floor_left(k)` of building `left` with floor `floor_right(k)` of
+   !> building `right`; a displacement of `left` towards `right` closes the gap.
+   type :: contact_config
+      !> Names of the building on the left and on the right.
+      character(len=:), allocatable :: left, right
+      !> Their indices in `deck%buildings`.
+      integer :: left_index = 0, right_index = 0
+      !> Facing floors, one entry per pair.
+      integer, allocatable :: floor_left(:), floor_right(:)
+      !> Initial gap of each pair (m).
+      real(dp), allocatable :: gap(:)
+      !> Constraint law: 'elastic'.
+      character(len=:), allocatable :: law
+      !> Joint stiffness p (kN/m) and dashpot c (kN s/m).
+      real(dp) :: stiffness = 0.0_dp, dashpot = 0.0_dp
+   end type contact_config
+
    !> A whole, validated deck.
    type :: deck_type
       !> Path of the deck file as given.
@@ -85,6 +104,8 @@ module pound_config
       type(ground_config) :: ground
       !> `&building` occurrences, in deck order (left to right).
       type(building_config), allocatable :: buildings(:)
+      !> `&contact` occurrences (size 0 when the deck declares none).
+      type(contact_config), allocatable :: contacts(:)
    end type deck_type
 
 end module pound_config

@@ -1,4 +1,4 @@
-!> Input deck reader: Fortran namelist groups `&analysis`, `&ground` and `&building`.
+!> Input deck reader: Fortran namelist groups `&analysis`, `&ground`, `&building` and `&contact`.
 !>
 !> The deck is read into memory once (kept in `deck%text` for the echo), then scanned:
 !> every group must start with `&name` and end with `/` (or `&end`), text between groups
@@ -7,9 +7,27 @@
 !> an internal file holding just that group), so the order of the groups does not matter.
 !>
 !> * `&analysis` and `&ground` exactly once, `&building` once per building, left to right.
-!> * `&contact` and `&sweep` are recognised (later features) but not read here.
+!> * `&contact` zero or more times (none: the buildings are uncoupled).
+!> * `&sweep` is recognised (a later feature) but not read here.
 !> * Per-storey arrays need exactly `n_storeys` values, storey/floor 1 at the bottom;
 !>   use the namelist repeat count for equal values: `height = 8*3.0`.
+!>
+!> `&contact` declares unilateral constraints (pairs of facing floors) between two buildings:
+!>
+!>     &contact
+!>        left = 'A'                 ! building on the left (its displacement to the right closes the gaps)
+!>        right = 'B'                ! building on the right
+!>        floors_left = 1, 2, 3      ! floor of `left` in each pair
+!>        floors_right = 1, 2, 3     ! facing floor of `right` in each pair (floors at different heights allowed)
+!>        gap = 3*0.001              ! initial gap of each pair (m): one value per pair, or a single value for all
+!>        law = 'elastic'            ! constraint law (only 'elastic' for now)
+!>        stiffness = 1.0e6          ! joint stiffness p (kN/m), > 0
+!>        dashpot = 0.0              ! joint dashpot c (kN s/m), >= 0, default 0
+!>     /
+!>
+!> `left`, `right` (building names, any case, distinct), `floors_left`, `floors_right` (same
+!> count, 1..`max_pairs` pairs, each floor in 1..n_storeys of its building), `gap` (>= 0),
+!> `law` and `stiffness` are required. The same floor pair may appear more than once.
 !>
 !> Every value is validated and resolved (masses from load coefficients, storey stiffness
 !> from columns, default gravity loads, record path relative to the deck's directory).
@@ -23,16 +41,18 @@ module pound_deck
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: deck_type, analysis_config, ground_config, building_config, &
-                           n_history_quantities, history_names, g_accel
+                           contact_config, n_history_quantities, history_names, g_accel
    implicit none
    private
 
-   public :: read_deck, max_storeys, max_name_length
+   public :: read_deck, max_storeys, max_name_length, max_pairs
 
    !> Largest number of storeys a `&building` may have.
    integer, parameter :: max_storeys = 20000
    !> Longest building name (it is used as an HDF5 group name).
    integer, parameter :: max_name_length = 64
+   !> Largest number of floor pairs in one `&contact`.
+   integer, parameter :: max_pairs = 1000
 
    !> Marks namelist values the deck did not give.
    real(dp), parameter :: unset_real = -huge(1.0_dp)
@@ -55,6 +75,9 @@ module pound_deck
       [character(len=14) :: 'name', 'n_storeys', 'height', 'mass', 'load_coeff', 'ref_floor_load', &
       'stiffness', 'n_columns', 'e_modulus', 'inertia', 'column_ends', 'damping_ratio', &
       'damping_modes', 'p_delta', 'gravity_load']
+   character(len=*), parameter :: contact_vars(8) = &
+      [character(len=12) :: 'left', 'right', 'floors_left', 'floors_right', 'gap', 'law', &
+      'stiffness', 'dashpot']
 
    !> A variable assignment seen in a group (`name =` or `name(i) =`).
    type :: var_ref
@@ -159,6 +182,14 @@ contains
          if (groups(i)%name /= 'building') cycle
          k = k + 1
          call read_building(path, lines, groups(i), d%buildings(1:k - 1), d%buildings(k), error)
+         if (allocated(error)) return
+      end do
+      allocate (d%contacts(count([(groups(i)%name == 'contact', i=1, n_groups)])))
+      k = 0
+      do i = 1, n_groups
+         if (groups(i)%name /= 'contact') cycle
+         k = k + 1
+         call read_contact(path, lines, groups(i), d%buildings, d%contacts(k), error)
          if (allocated(error)) return
       end do
    end subroutine parse_deck
@@ -457,6 +488,8 @@ contains
          known_variable = any(ground_vars == name)
       case ('building')
          known_variable = any(building_vars == name)
+      case ('contact')
+         known_variable = any(contact_vars == name)
       case default
          known_variable = .true.
       end select
@@ -475,6 +508,8 @@ contains
          list = join(ground_vars)
       case ('building')
          list = join(building_vars)
+      case ('contact')
+         list = join(contact_vars)
       case default
          list = ''
       end select
@@ -493,13 +528,13 @@ contains
       end do
    end function join
 
-   !> `&name` for groups that occur once, `&name #k` for `&building`.
+   !> `&name` for groups that occur once, `&name #k` for `&building` and `&contact`.
    pure function group_label(g) result(s)
       !> The group occurrence.
       type(group_ref), intent(in) :: g
       character(len=:), allocatable :: s
 
-      if (g%name == 'building') then
+      if (g%name == 'building' .or. g%name == 'contact') then
          s = '&'//g%name//' #'//str(g%occurrence)
       else
          s = '&'//g%name
@@ -1010,6 +1045,218 @@ contains
          end if
       end do
    end subroutine check_name
+
+   !> `&contact`: unilateral constraints between facing floors of two buildings.
+   subroutine read_contact(path, lines, g, buildings, cfg, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck lines.
+      character(len=*), intent(in) :: lines(:)
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> All buildings of the deck (already resolved).
+      type(building_config), intent(in) :: buildings(:)
+      !> Resolved contact.
+      type(contact_config), intent(out) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=word_len) :: left, right, law
+      integer, allocatable :: floors_left(:), floors_right(:)
+      real(dp), allocatable :: gap(:)
+      real(dp) :: stiffness, dashpot
+      character(len=len(lines)), allocatable :: buf(:)
+      character(len=512) :: msg
+      type(site) :: at
+      integer :: ios, n, k, i
+      namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot
+
+      ! One slot more than allowed, so that too many pairs get our message, not gfortran's.
+      allocate (floors_left(max_pairs + 1), floors_right(max_pairs + 1), gap(max_pairs + 1))
+      left = ' '
+      right = ' '
+      law = ' '
+      floors_left = unset_int
+      floors_right = unset_int
+      gap = unset_real
+      stiffness = unset_real
+      dashpot = 0.0_dp
+      at = site_of(path, g)
+      call group_text(lines, g, buf)
+      msg = ' '
+      read (buf, nml=contact, iostat=ios, iomsg=msg)
+      call read_failed(at, ios, msg, error)
+      if (allocated(error)) return
+
+      call find_building(at, 'left', left, 'the building on the left', buildings, cfg%left_index, error)
+      if (allocated(error)) return
+      call find_building(at, 'right', right, 'the building on the right', buildings, cfg%right_index, error)
+      if (allocated(error)) return
+      cfg%left = buildings(cfg%left_index)%name
+      cfg%right = buildings(cfg%right_index)%name
+      if (cfg%left_index == cfg%right_index) then
+         call fail(at, 'right', "right = '"//trim(adjustl(right))//"' is the same building as left = '"// &
+                   trim(adjustl(left))//"'; a contact joins two different buildings", error)
+         return
+      end if
+      at%label = at%label//' ('//cfg%left//', '//cfg%right//')'
+
+      call take_floors(at, 'floors_left', floors_left, buildings(cfg%left_index), cfg%floor_left, error)
+      if (allocated(error)) return
+      call take_floors(at, 'floors_right', floors_right, buildings(cfg%right_index), cfg%floor_right, error)
+      if (allocated(error)) return
+      n = size(cfg%floor_left)
+      if (size(cfg%floor_right) /= n) then
+         call fail(at, 'floors_right', 'floors_right has '//values_text(size(cfg%floor_right))// &
+                   ', floors_left has '//values_text(n)//'; both need one floor per pair', error)
+         return
+      end if
+
+      k = given_count(gap)
+      if (k == 0) then
+         call fail(at, 'gap', 'gap is missing (initial gap in m: one value per pair, or a single '// &
+                   'value for all pairs)', error)
+         return
+      end if
+      if (k /= 1 .and. k /= n) then
+         call fail(at, 'gap', 'gap has '//values_text(k)//', must have 1 (for all pairs) or one '// &
+                   'per pair = '//str(n), error)
+         return
+      end if
+      do i = 1, k
+         if (.not. is_set(gap(i))) then
+            call fail(at, 'gap', 'gap('//str(i)//') is missing; give one value per pair', error)
+            return
+         end if
+         if (k == 1) then
+            call check_real(at, 'gap', gap(i), '>=', 0.0_dp, error)
+         else
+            call check_real(at, 'gap', gap(i), '>=', 0.0_dp, error, name='gap('//str(i)//')')
+         end if
+         if (allocated(error)) return
+      end do
+      if (k == 1) then
+         cfg%gap = spread(gap(1), 1, n)
+      else
+         cfg%gap = gap(1:n)
+      end if
+
+      cfg%law = lower(trim(adjustl(law)))
+      select case (cfg%law)
+      case ('elastic')
+      case ('')
+         call fail(at, 'law', "law is missing, must be 'elastic'", error)
+         return
+      case default
+         call fail(at, 'law', "law = '"//trim(adjustl(law))//"', must be 'elastic'", error)
+         return
+      end select
+
+      call require_real(at, 'stiffness', stiffness, 'joint stiffness p in kN/m', error)
+      if (allocated(error)) return
+      call check_real(at, 'stiffness', stiffness, '>', 0.0_dp, error)
+      if (allocated(error)) return
+      call check_real(at, 'dashpot', dashpot, '>=', 0.0_dp, error)
+      if (allocated(error)) return
+      cfg%stiffness = stiffness
+      cfg%dashpot = dashpot
+   end subroutine read_contact
+
+   !> Index of the building named `raw` (ignoring case); error if blank or not a building.
+   pure subroutine find_building(at, var, raw, what, buildings, idx, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Building name as read.
+      character(len=*), intent(in) :: raw
+      !> What the variable is (for the message when it is missing).
+      character(len=*), intent(in) :: what
+      !> All buildings of the deck.
+      type(building_config), intent(in) :: buildings(:)
+      !> Index of the building in `buildings` (0 on error).
+      integer, intent(out) :: idx
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: name, names
+      integer :: i
+
+      idx = 0
+      names = buildings(1)%name
+      do i = 2, size(buildings)
+         names = names//', '//buildings(i)%name
+      end do
+      name = trim(adjustl(raw))
+      if (len(name) == 0) then
+         call fail(at, var, var//' is missing or blank (name of '//what//'; buildings: '// &
+                   names//')', error)
+         return
+      end if
+      do i = 1, size(buildings)
+         if (lower(buildings(i)%name) == lower(name)) then
+            idx = i
+            return
+         end if
+      end do
+      call fail(at, var, var//" = '"//name//"' is not a building of the deck; buildings: "// &
+                names, error)
+   end subroutine find_building
+
+   !> Floors of building `b` in each pair: 1..`max_pairs` values, none missing, each in
+   !> 1..n_storeys of `b`.
+   pure subroutine take_floors(at, var, raw, b, values, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Namelist array as read (`unset_int` where not given).
+      integer, intent(in) :: raw(:)
+      !> The building these floors belong to.
+      type(building_config), intent(in) :: b
+      !> The floors (unallocated on error).
+      integer, allocatable, intent(out) :: values(:)
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k, i
+
+      do k = size(raw), 1, -1
+         if (raw(k) /= unset_int) exit
+      end do
+      if (k == 0) then
+         call fail(at, var, var//' is missing (floor of building '//b%name//' in each pair, '// &
+                   '1..n_storeys = '//str(b%n_storeys)//')', error)
+         return
+      end if
+      if (k > max_pairs) then
+         call fail(at, var, var//' has '//values_text(k)//', must have at most '//str(max_pairs)// &
+                   ' (one per pair)', error)
+         return
+      end if
+      do i = 1, k
+         if (raw(i) == unset_int) then
+            call fail(at, var, var//'('//str(i)//') is missing; give one floor per pair', error)
+            return
+         end if
+         if (raw(i) < 1 .or. raw(i) > b%n_storeys) then
+            call fail(at, var, var//'('//str(i)//') = '//str(raw(i))//', must be a floor of '// &
+                      'building '//b%name//': 1..n_storeys = '//str(b%n_storeys), error)
+            return
+         end if
+      end do
+      values = raw(1:k)
+   end subroutine take_floors
+
+   !> '1 value' or 'k values'.
+   pure function values_text(k) result(s)
+      !> Number of values.
+      integer, intent(in) :: k
+      character(len=:), allocatable :: s
+
+      if (k == 1) then
+         s = '1 value'
+      else
+         s = str(k)//' values'
+      end if
+   end function values_text
 
    !> Floor masses from `mass` or from `load_coeff` * `ref_floor_load`; default gravity loads.
    pure subroutine resolve_masses(at, n, mass, load_coeff, ref_floor_load, cfg, error)

@@ -59,14 +59,17 @@ module pound_newmark
 
 contains
 
-   !> Factor Khat and start at rest relative to the ground.
-   subroutine newmark_init(st, b, dt, error)
+   !> Factor Khat and start at rest relative to the ground, in equilibrium with the
+   !> ground acceleration at t = 0: u = v = 0, M a = -M 1 a_g(0), so a = -a_g(0).
+   subroutine newmark_init(st, b, dt, ag0, error)
       !> Integrator state.
       type(newmark_state), intent(out) :: st
       !> The building.
       type(shear_building), intent(in) :: b
       !> Time step (s).
       real(dp), intent(in) :: dt
+      !> Ground acceleration at t = 0 (m/s^2).
+      real(dp), intent(in) :: ag0
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: fk, fm
@@ -92,7 +95,7 @@ contains
       allocate (st%u(n), st%v(n), st%a(n), st%du(n), st%cv(n))
       st%u = 0.0_dp
       st%v = 0.0_dp
-      st%a = 0.0_dp
+      st%a = -ag0
       st%du = 0.0_dp
       st%cv = 0.0_dp
       st%input_work = 0.0_dp

@@ -1,0 +1,213 @@
+!> The analyses a deck asks for: the buildings uncoupled (no contact) and coupled.
+!>
+!> Each building is integrated with Newmark's average acceleration method; in the
+!> coupled analysis the contact forces of every step come from the step's LCP
+!> (pound_contact). The response record keeps peaks at every step and histories at
+!> output steps, and the energy balance
+!> W_input = E_kinetic + E_strain + E_damping + E_contact is audited at every output step
+!> (E_contact: energy stored in and dissipated by the joints).
+module pound_analysis
+   use iso_fortran_env, only: int64
+   use pound_kinds, only: dp
+   use pound_error, only: error_type
+   use pound_config, only: analysis_config
+   use pound_shear_building, only: shear_building
+   use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, &
+                            kinetic_energy, strain_energy
+   use pound_response, only: response_record, response_init, response_sample, response_finish
+   use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit
+   implicit none
+   private
+
+   public :: analysis_result, run_uncoupled, run_coupled, output_steps
+   public :: e_input, e_kinetic, e_strain, e_damping, e_contact, n_energy, energy_names
+
+   !> Energy history components.
+   integer, parameter :: e_input = 1, e_kinetic = 2, e_strain = 3, e_damping = 4, e_contact = 5
+   integer, parameter :: n_energy = 5
+   !> Energy component names (HDF5 attribute, listing).
+   character(len=*), parameter :: energy_names(n_energy) = &
+      [character(len=8) :: 'input', 'kinetic', 'strain', 'damping', 'contact']
+
+   !> Result of one analysis (all buildings).
+   type :: analysis_result
+      !> Number of steps and of output samples.
+      integer :: n_steps = 0, n_out = 0
+      !> Output times (s).
+      real(dp), allocatable :: time(:)
+      !> One record per building, in deck order.
+      type(response_record), allocatable :: building(:)
+      !> Energy history (n_energy, n_out), summed over the buildings (kJ).
+      real(dp), allocatable :: energy(:, :)
+      !> Audit: max over output steps of |W_in - sum of the other terms| / max energy scale.
+      real(dp) :: energy_error = 0.0_dp
+      !> Contact force and closing displacement histories (n_pairs, n_out); coupled only.
+      real(dp), allocatable :: contact_force(:, :), contact_closing(:, :)
+      !> Wall-clock time of the integration loop (s).
+      real(dp) :: seconds = 0.0_dp
+   end type analysis_result
+
+contains
+
+   !> Number of output samples for n_steps steps stored every `every` steps (t = 0 included).
+   pure integer function output_steps(n_steps, every)
+      !> Number of time steps.
+      integer, intent(in) :: n_steps
+      !> Output interval in steps.
+      integer, intent(in) :: every
+
+      output_steps = n_steps/every + 1
+   end function output_steps
+
+   !> Integrate every building without contact.
+   subroutine run_uncoupled(cfg, models, ag, res, error)
+      !> `&analysis` settings.
+      type(analysis_config), intent(in) :: cfg
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
+      real(dp), intent(in) :: ag(0:)
+      !> The result.
+      type(analysis_result), intent(out) :: res
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(newmark_state) :: st
+      integer :: ib, step, k, every
+      integer(int64) :: c0, c1, rate
+      logical :: out
+
+      call system_clock(c0, rate)
+      res%n_steps = size(ag) - 1
+      every = cfg%output_every
+      res%n_out = output_steps(res%n_steps, every)
+      allocate (res%time(res%n_out), res%building(size(models)), res%energy(n_energy, res%n_out))
+      res%time = [(real((k - 1)*every, dp)*cfg%dt, k=1, res%n_out)]
+      res%energy = 0.0_dp
+
+      do ib = 1, size(models)
+         call newmark_init(st, models(ib), cfg%dt, ag(0), error)
+         if (allocated(error)) return
+         call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out)
+         call response_sample(res%building(ib), models(ib), st%u, st%v, st%a, ag(0), 0.0_dp, .true.)
+         k = 1
+         do step = 1, res%n_steps
+            call newmark_predict(st, models(ib), ag(step) - ag(step - 1))
+            call newmark_commit(st, models(ib), ag(step - 1), ag(step))
+            out = mod(step, every) == 0
+            call response_sample(res%building(ib), models(ib), st%u, st%v, st%a, ag(step), &
+                                 real(step, dp)*cfg%dt, out)
+            if (out) then
+               k = k + 1
+               res%energy(e_input, k) = res%energy(e_input, k) + st%input_work
+               res%energy(e_kinetic, k) = res%energy(e_kinetic, k) + kinetic_energy(st, models(ib))
+               res%energy(e_strain, k) = res%energy(e_strain, k) + strain_energy(st, models(ib))
+               res%energy(e_damping, k) = res%energy(e_damping, k) + st%damping_energy
+            end if
+         end do
+         call response_finish(res%building(ib), models(ib))
+      end do
+      res%energy_error = energy_balance_error(res%energy)
+      call system_clock(c1)
+      res%seconds = real(c1 - c0, dp)/real(rate, dp)
+   end subroutine run_uncoupled
+
+   !> Integrate all buildings together with the unilateral constraints `pairs`.
+   subroutine run_coupled(cfg, models, ag, pairs, res, cs, error)
+      !> `&analysis` settings.
+      type(analysis_config), intent(in) :: cfg
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
+      real(dp), intent(in) :: ag(0:)
+      !> The constraints, at rest and open at t = 0.
+      type(contact_pair), intent(in) :: pairs(:)
+      !> The result.
+      type(analysis_result), intent(out) :: res
+      !> The contact system at the end (statistics per pair and of the LCPs).
+      type(contact_system), intent(out) :: cs
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(newmark_state), allocatable :: st(:)
+      integer :: ib, step, k, every, nb, ip
+      integer(int64) :: c0, c1, rate
+      real(dp) :: t
+      logical :: out
+
+      call system_clock(c0, rate)
+      nb = size(models)
+      res%n_steps = size(ag) - 1
+      every = cfg%output_every
+      res%n_out = output_steps(res%n_steps, every)
+      allocate (res%time(res%n_out), res%building(nb), res%energy(n_energy, res%n_out), st(nb))
+      allocate (res%contact_force(size(pairs), res%n_out), res%contact_closing(size(pairs), res%n_out))
+      res%time = [(real((k - 1)*every, dp)*cfg%dt, k=1, res%n_out)]
+      res%energy = 0.0_dp
+      res%contact_force(:, 1) = 0.0_dp
+      res%contact_closing(:, 1) = 0.0_dp
+      do ib = 1, nb
+         call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error)
+         if (allocated(error)) return
+         call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out)
+         call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(0), &
+                              0.0_dp, .true.)
+      end do
+      call contact_init(cs, pairs, st, error)
+      if (allocated(error)) return
+      k = 1
+      do step = 1, res%n_steps
+         t = real(step, dp)*cfg%dt
+         do ib = 1, nb
+            call newmark_predict(st(ib), models(ib), ag(step) - ag(step - 1))
+         end do
+         call contact_step(cs, st, t, step, error)
+         if (allocated(error)) return
+         out = mod(step, every) == 0
+         do ib = 1, nb
+            call newmark_commit(st(ib), models(ib), ag(step - 1), ag(step))
+            call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(step), &
+                                 t, out)
+         end do
+         call contact_commit(cs, st, t, cfg%dt)
+         if (out) then
+            k = k + 1
+            do ib = 1, nb
+               res%energy(e_input, k) = res%energy(e_input, k) + st(ib)%input_work
+               res%energy(e_kinetic, k) = res%energy(e_kinetic, k) + kinetic_energy(st(ib), models(ib))
+               res%energy(e_strain, k) = res%energy(e_strain, k) + strain_energy(st(ib), models(ib))
+               res%energy(e_damping, k) = res%energy(e_damping, k) + st(ib)%damping_energy
+            end do
+            res%energy(e_contact, k) = cs%element_work
+            do ip = 1, cs%m
+               res%contact_force(ip, k) = cs%pair(ip)%r
+               res%contact_closing(ip, k) = cs%pair(ip)%v
+            end do
+         end if
+      end do
+      do ib = 1, nb
+         call response_finish(res%building(ib), models(ib))
+      end do
+      res%energy_error = energy_balance_error(res%energy)
+      call system_clock(c1)
+      res%seconds = real(c1 - c0, dp)/real(rate, dp)
+   end subroutine run_coupled
+
+   !> Relative energy balance error: max_t |W_in - E_k - E_s - E_d - E_c| / max_t max(|W_in|, E_k + E_s + E_d + E_c).
+   pure function energy_balance_error(energy) result(err)
+      real(dp), intent(in) :: energy(:, :)
+      real(dp) :: err, scale, resid
+      integer :: k
+
+      scale = 0.0_dp
+      resid = 0.0_dp
+      do k = 1, size(energy, 2)
+         resid = max(resid, abs(energy(e_input, k) - sum(energy(e_kinetic:n_energy, k))))
+         scale = max(scale, abs(energy(e_input, k)), sum(energy(e_kinetic:n_energy, k)))
+      end do
+      if (scale > 0.0_dp) then
+         err = resid/scale
+      else
+         err = 0.0_dp
+      end if
+   end function energy_balance_error
+
+end module pound_analysis

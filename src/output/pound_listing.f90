@@ -1,0 +1,227 @@
+!> The listing (`.out`): a fixed-width report readable in a terminal and on paper.
+module pound_listing
+   use pound_kinds, only: dp
+   use pound_version, only: program_name, program_version
+   use pound_config, only: deck_type
+   use pound_shear_building, only: shear_building
+   use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
+   use pound_analysis, only: analysis_result
+   use pound_contact, only: contact_system
+   use pound_contact_law, only: law_name
+   use pound_influence, only: influence_coefficient
+   implicit none
+   private
+
+   public :: write_listing_header, write_model_summary, write_peak_tables, write_section
+   public :: write_contact_summary, write_influence_tables
+
+   !> Modes listed in the model summary (all are in the HDF5 file).
+   integer, parameter :: max_listed_modes = 12
+
+contains
+
+   !> Program, version, date, deck, title, units and the deck echo.
+   subroutine write_listing_header(u, deck, ground_text)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> The deck.
+      type(deck_type), intent(in) :: deck
+      !> Ground motion summary lines.
+      character(len=*), intent(in) :: ground_text(:)
+      character(len=8) :: date
+      character(len=10) :: time
+      integer :: i, start
+
+      call date_and_time(date=date, time=time)
+      write (u, '(a)') repeat('=', 78)
+      write (u, '(a)') program_name//' '//program_version// &
+         ' - seismic pounding of adjacent buildings (unilateral contact, LCP)'
+      write (u, '(a)') 'run on '//date(1:4)//'-'//date(5:6)//'-'//date(7:8)//' '// &
+         time(1:2)//':'//time(3:4)//':'//time(5:6)
+      write (u, '(a)') 'deck:  '//deck%path
+      write (u, '(a)') 'title: '//deck%analysis%title
+      write (u, '(a)') 'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ'
+      write (u, '(a)') repeat('=', 78)
+      call write_section(u, 'Deck echo')
+      start = 1
+      do i = 1, len(deck%text)
+         if (deck%text(i:i) == new_line('a')) then
+            write (u, '(a)') '  | '//deck%text(start:i - 1)
+            start = i + 1
+         end if
+      end do
+      if (start <= len(deck%text)) write (u, '(a)') '  | '//deck%text(start:)
+      call write_section(u, 'Analysis and ground motion')
+      write (u, '(a,es12.4,a,f10.4,a,i0,a,i0)') '  dt =', deck%analysis%dt, ' s   t_end =', &
+         deck%analysis%t_end, ' s   steps = ', nint(deck%analysis%t_end/deck%analysis%dt), &
+         '   history every ', deck%analysis%output_every
+      do i = 1, size(ground_text)
+         write (u, '(a)') '  '//trim(ground_text(i))
+      end do
+   end subroutine write_listing_header
+
+   !> A section heading.
+   subroutine write_section(u, title)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> Heading text.
+      character(len=*), intent(in) :: title
+
+      write (u, '(/,a,/,a)') title, repeat('-', len(title))
+   end subroutine write_section
+
+   !> Per building: storey data, periods and Rayleigh coefficients.
+   subroutine write_model_summary(u, models)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      integer :: ib, j
+      character(len=3) :: pd
+
+      call write_section(u, 'Models (shear buildings, rigid beams, one lateral DOF per floor)')
+      do ib = 1, size(models)
+         associate (b => models(ib))
+            pd = 'off'
+            if (b%p_delta) pd = 'on'
+            write (u, '(/,a,i0,a,a)') '  Building '//b%name//': ', b%n, ' storeys, P-Delta ', trim(pd)
+            write (u, '(a)') '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
+            do j = 1, b%n
+               write (u, '(2x,i6,f9.3,f12.4,es13.5,es12.4,es13.5,f14.5)') j, b%height(j), b%mass(j), &
+                  b%storey_stiffness(j), b%axial_load(j), b%geometric_stiffness(j), &
+                  b%geometric_stiffness(j)/b%storey_stiffness(j)
+            end do
+            write (u, '(a)') '    mode      T [s]      f [Hz]  omega [rad/s]'
+            do j = 1, min(b%n, max_listed_modes)
+               write (u, '(2x,i6,f11.5,f12.5,f15.4)') j, b%period(j), 1.0_dp/b%period(j), b%omega(j)
+            end do
+            if (b%n > max_listed_modes) write (u, '(a,i0,a)') '    (', b%n - max_listed_modes, &
+               ' more modes in the HDF5 file)'
+            write (u, '(a,f6.2,a,i0,a,i0,a,es12.5,a,es12.5,a)') '  Rayleigh damping ', &
+               100.0_dp*b%damping_ratio, ' % at modes ', b%damping_modes(1), ' and ', &
+               b%damping_modes(2), ': a0 = ', b%a0, ' 1/s, a1 = ', b%a1, ' s'
+         end associate
+      end do
+   end subroutine write_model_summary
+
+   !> Peak tables of an analysis: floors (u, v, a_abs) and storeys (drift, shear).
+   subroutine write_peak_tables(u, label, models, res)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> Analysis label, e.g. 'Uncoupled'.
+      character(len=*), intent(in) :: label
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> The analysis result.
+      type(analysis_result), intent(in) :: res
+      integer :: ib, j
+
+      call write_section(u, label//' response: absolute maxima and the time they occur')
+      do ib = 1, size(models)
+         associate (b => models(ib), p => res%building(ib)%peak, t => res%building(ib)%peak_time)
+            write (u, '(/,a)') '  Building '//b%name
+            write (u, '(a)') '   floor     |u| [m]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]'
+            do j = b%n, 1, -1
+               write (u, '(2x,i6,es12.4,f9.3,es12.4,f9.3,es16.4,f9.3)') j, p(j, q_u), t(j, q_u), &
+                  p(j, q_v), t(j, q_v), p(j, q_a_abs), t(j, q_a_abs)
+            end do
+            write (u, '(a)') '  storey   |drift| [m]    t [s]   |Q| [kN]     t [s]'
+            do j = b%n, 1, -1
+               write (u, '(2x,i6,es14.4,f9.3,es11.4,f9.3)') j, p(j, q_drift), t(j, q_drift), &
+                  p(j, q_shear), t(j, q_shear)
+            end do
+         end associate
+      end do
+      write (u, '(/,a,es10.3)') '  Energy audit (input = kinetic + strain + damping + contact), '// &
+         'max relative error over time: ', res%energy_error
+      j = res%n_out
+      write (u, '(a,5es12.4)') '  at the end [kJ]: input, kinetic, strain, damping, contact =', res%energy(:, j)
+   end subroutine write_peak_tables
+
+   !> Contact pairs, impacts, time in contact, peak forces and LCP statistics.
+   subroutine write_contact_summary(u, cs)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> Contact system at the end of the coupled run.
+      type(contact_system), intent(in) :: cs
+      integer :: k
+      real(dp) :: mean_pivots
+
+      call write_section(u, 'Contact (unilateral constraints between facing floors)')
+      write (u, '(a)') '  pair          gap [m]  law         p [kN/m]   c [kNs/m]  impacts  in contact [s]'// &
+         '  peak r [kN]    t [s]'
+      do k = 1, cs%m
+         associate (p => cs%pair(k))
+            write (u, '(2x,a12,es10.3,2x,a10,es11.3,es12.3,i9,f16.4,es13.4,f9.4)') p%label, p%gap, &
+               law_name(p%law%kind), p%law%stiffness, p%law%dashpot, p%impacts, p%contact_time, &
+               p%peak_force, p%peak_time
+         end associate
+      end do
+      mean_pivots = 0.0_dp
+      if (cs%solves > 0) mean_pivots = real(cs%pivots_total, dp)/real(cs%solves, dp)
+      write (u, '(/,a)') '  LCP (Lemke, lexicographic) statistics:'
+      write (u, '(a,i0,a,i0,a,i0,a)') '    solves ', cs%solves, ' (q >= 0 without pivoting: ', cs%trivial, &
+         '; warm start accepted: ', cs%warm, ')'
+      write (u, '(a,i0,a,i0,a,f8.3)') '    pivots total ', cs%pivots_total, ', max per solve ', &
+         cs%pivots_max, ', mean per solve ', mean_pivots
+      write (u, '(a,i0)') '    re-solves after a left-out constraint would have closed: ', cs%resolves
+      write (u, '(a,es10.3)') '    max natural residual ||min(r, w)|| / ||q||: ', cs%residual_max
+   end subroutine write_contact_summary
+
+   !> Influence coefficients lambda = (Qc - Qu)/Qu * 100 (%), storey (floor) rows and one
+   !> column per building, for storey shear, storey drift, floor displacement and
+   !> floor absolute acceleration.
+   subroutine write_influence_tables(u, models, unc, cpl)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> Uncoupled and coupled results.
+      type(analysis_result), intent(in) :: unc, cpl
+
+      call write_section(u, 'Influence coefficients lambda = (Qc - Qu) / Qu * 100 [%]')
+      call table('storey shear Q', 'storey', q_shear)
+      call table('storey drift', 'storey', q_drift)
+      call table('floor displacement u', 'floor', q_u)
+      call table('floor absolute acceleration a_abs', 'floor', q_a_abs)
+
+   contains
+
+      subroutine table(title, row, q)
+         character(len=*), intent(in) :: title, row
+         integer, intent(in) :: q
+         character(len=14) :: cell
+         character(len=:), allocatable :: line
+         integer :: j, ib
+         real(dp) :: lambda
+
+         write (u, '(/,a)') '  '//title
+         line = '  '//row//repeat(' ', 6 - len(row))
+         do ib = 1, size(models)
+            cell = models(ib)%name(1:min(14, len(models(ib)%name)))
+            line = line//adjustr(cell)
+         end do
+         write (u, '(a)') line
+         do j = maxval(models(:)%n), 1, -1
+            write (cell, '(i6)') j
+            line = '  '//cell(1:6)//'  '
+            do ib = 1, size(models)
+               if (j > models(ib)%n) then
+                  cell = ''
+               else
+                  lambda = influence_coefficient(cpl%building(ib)%peak(j, q), unc%building(ib)%peak(j, q))
+                  if (lambda >= huge(1.0_dp)) then
+                     cell = '           inf'
+                  else
+                     write (cell, '(f14.2)') lambda
+                  end if
+               end if
+               line = line//cell
+            end do
+            write (u, '(a)') line
+         end do
+      end subroutine table
+
+   end subroutine write_influence_tables
+
+end module pound_listing

@@ -1,0 +1,216 @@
+!> The HDF5 results file (`.h5`): model data, histories, peaks, contact and influence.
+!>
+!> Layout (as read by h5py; histories are (n_out, n) with one row per output time):
+!>
+!>     /                          attributes program, version, units, title, deck
+!>     /ground/time, /ground/acceleration        (n_out), m/s^2; attribute description
+!>     /model/<b>/height, mass, storey_stiffness, geometric_stiffness, axial_load,
+!>                periods, omega, rayleigh (a0, a1)
+!>     /<analysis>/time                          (n_out), analysis = uncoupled | coupled
+!>     /<analysis>/<b>/u, v, a_abs               (n_out, n_floors), only those stored
+!>     /<analysis>/<b>/drift, storey_shear       (n_out, n_storeys), only those stored
+!>     /<analysis>/<b>/peak/<q>, peak_time/<q>   (n) for every quantity q
+!>     /<analysis>/energy                        (n_out, 5): input, kinetic, strain, damping,
+!>                                               contact; attributes components, relative_error
+!>     /coupled/contact/force, closing           (n_out, n_pairs); attribute pairs
+!>     /coupled/contact/impacts, contact_time, peak_force, peak_time   (n_pairs)
+!>     /influence/<b>/<q>                        (n) lambda in percent
+module pound_results_h5
+   use pound_kinds, only: dp
+   use pound_error, only: error_type
+   use pound_version, only: program_name, program_version
+   use pound_config, only: deck_type, history_names, n_history_quantities
+   use pound_shear_building, only: shear_building
+   use pound_analysis, only: analysis_result
+   use pound_contact, only: contact_system
+   use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
+   use pound_influence, only: influence_coefficient
+   use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr
+   implicit none
+   private
+
+   public :: write_results_h5
+
+   !> Units, as written in the root attribute.
+   character(len=*), parameter :: units = 'kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
+                                          'influence coefficients percent'
+
+contains
+
+   !> Write the whole results file at `path`.
+   subroutine write_results_h5(path, deck, models, ground_text, ag_out, unc, error, cpl, cs)
+      !> File to create (truncated).
+      character(len=*), intent(in) :: path
+      !> The deck.
+      type(deck_type), intent(in) :: deck
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> One-line description of the ground motion.
+      character(len=*), intent(in) :: ground_text
+      !> Ground acceleration at the output times (m/s^2).
+      real(dp), intent(in) :: ag_out(:)
+      !> Uncoupled result.
+      type(analysis_result), intent(in) :: unc
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      !> Coupled result, when the deck declares contact.
+      type(analysis_result), intent(in), optional :: cpl
+      !> Contact system at the end of the coupled run.
+      type(contact_system), intent(in), optional :: cs
+      type(h5_file) :: h5
+      type(error_type), allocatable :: close_error
+      integer :: ib, q
+
+      call h5_create(h5, path, error)
+      if (allocated(error)) return
+      call write_all()
+      call h5_close(h5, close_error)
+      if (.not. allocated(error) .and. allocated(close_error)) call move_alloc(close_error, error)
+
+   contains
+
+      subroutine write_all()
+         call h5_write_attr(h5, '/', 'program', program_name, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/', 'version', program_version, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/', 'units', units, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/', 'title', deck%analysis%title, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/', 'deck', deck%text, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/', 'dt', deck%analysis%dt, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/ground/time', unc%time, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/ground/acceleration', ag_out, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/ground', 'description', ground_text, error)
+         if (allocated(error)) return
+         do ib = 1, size(models)
+            call write_model(models(ib))
+            if (allocated(error)) return
+         end do
+         call write_analysis('/uncoupled', unc)
+         if (allocated(error)) return
+         if (.not. present(cpl)) return
+         call write_analysis('/coupled', cpl)
+         if (allocated(error)) return
+         if (present(cs)) then
+            call write_contact()
+            if (allocated(error)) return
+         end if
+         do ib = 1, size(models)
+            do q = 1, n_history_quantities
+               call h5_write(h5, '/influence/'//models(ib)%name//'/'//trim(history_names(q)), &
+                             influence_coefficient(cpl%building(ib)%peak(:, q), unc%building(ib)%peak(:, q)), &
+                             error)
+               if (allocated(error)) return
+            end do
+         end do
+      end subroutine write_all
+
+      subroutine write_model(b)
+         type(shear_building), intent(in) :: b
+         character(len=:), allocatable :: g
+
+         g = '/model/'//b%name//'/'
+         call h5_write(h5, g//'height', b%height, error)
+         if (allocated(error)) return
+         call h5_write(h5, g//'mass', b%mass, error)
+         if (allocated(error)) return
+         call h5_write(h5, g//'storey_stiffness', b%storey_stiffness, error)
+         if (allocated(error)) return
+         call h5_write(h5, g//'geometric_stiffness', b%geometric_stiffness, error)
+         if (allocated(error)) return
+         call h5_write(h5, g//'axial_load', b%axial_load, error)
+         if (allocated(error)) return
+         call h5_write(h5, g//'periods', b%period, error)
+         if (allocated(error)) return
+         call h5_write(h5, g//'omega', b%omega, error)
+         if (allocated(error)) return
+         call h5_write(h5, g//'rayleigh', [b%a0, b%a1], error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/model/'//b%name, 'p_delta', merge(1, 0, b%p_delta), error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/model/'//b%name, 'damping_ratio', b%damping_ratio, error)
+      end subroutine write_model
+
+      subroutine write_analysis(g, res)
+         character(len=*), intent(in) :: g
+         type(analysis_result), intent(in) :: res
+         character(len=:), allocatable :: gb
+         integer :: i, n
+
+         n = res%n_out
+         call h5_write(h5, g//'/time', res%time, error)
+         if (allocated(error)) return
+         call h5_write(h5, g//'/energy', res%energy, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, g//'/energy', 'components', 'input kinetic strain damping contact', error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, g//'/energy', 'relative_error', res%energy_error, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, g, 'integration_seconds', res%seconds, error)
+         if (allocated(error)) return
+         do i = 1, size(models)
+            gb = g//'/'//models(i)%name//'/'
+            associate (r => res%building(i))
+               if (r%store(q_u)) call h5_write(h5, gb//'u', r%u(:, 1:n), error)
+               if (allocated(error)) return
+               if (r%store(q_v)) call h5_write(h5, gb//'v', r%v(:, 1:n), error)
+               if (allocated(error)) return
+               if (r%store(q_a_abs)) call h5_write(h5, gb//'a_abs', r%a_abs(:, 1:n), error)
+               if (allocated(error)) return
+               if (r%store(q_drift)) call h5_write(h5, gb//'drift', r%drift(:, 1:n), error)
+               if (allocated(error)) return
+               if (r%store(q_shear)) call h5_write(h5, gb//'storey_shear', r%shear(:, 1:n), error)
+               if (allocated(error)) return
+               do q = 1, n_history_quantities
+                  call h5_write(h5, gb//'peak/'//trim(history_names(q)), r%peak(:, q), error)
+                  if (allocated(error)) return
+                  call h5_write(h5, gb//'peak_time/'//trim(history_names(q)), r%peak_time(:, q), error)
+                  if (allocated(error)) return
+               end do
+            end associate
+         end do
+      end subroutine write_analysis
+
+      subroutine write_contact()
+         character(len=:), allocatable :: labels
+         integer :: k
+
+         call h5_write(h5, '/coupled/contact/force', cpl%contact_force, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/coupled/contact/closing', cpl%contact_closing, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/coupled/contact/impacts', cs%pair(:)%impacts, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/coupled/contact/contact_time', cs%pair(:)%contact_time, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/coupled/contact/peak_force', cs%pair(:)%peak_force, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/coupled/contact/peak_time', cs%pair(:)%peak_time, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/coupled/contact/gap', cs%pair(:)%gap, error)
+         if (allocated(error)) return
+         labels = ''
+         do k = 1, cs%m
+            if (k > 1) labels = labels//' '
+            labels = labels//cs%pair(k)%label
+         end do
+         call h5_write_attr(h5, '/coupled/contact', 'pairs', labels, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/coupled/contact', 'lcp_solves', cs%solves, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/coupled/contact', 'lcp_pivots_total', cs%pivots_total, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/coupled/contact', 'lcp_pivots_max', cs%pivots_max, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/coupled/contact', 'lcp_residual_max', cs%residual_max, error)
+      end subroutine write_contact
+
+   end subroutine write_results_h5
+
+end module pound_results_h5
