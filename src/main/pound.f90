@@ -103,7 +103,8 @@ program pound
       call write_influence_tables(u, models, unc, cpl)
    end if
    write (u, '(/,a,f10.4,a)') '  uncoupled integration: ', unc%seconds, ' s'
-   if (coupled) write (u, '(a,f10.4,a)') '  coupled integration:   ', cpl%seconds, ' s'
+   if (coupled) write (u, '(a,f10.4,a,f10.4,a)') '  coupled integration:   ', cpl%seconds, &
+      ' s, of which contact (LCP) ', cpl%contact_seconds, ' s'
    close (u)
    if (coupled) then
       call write_results_h5(temporary_name(h5_path), deck, models, trim(ground_text(1)), &
@@ -129,6 +130,8 @@ program pound
       write (output_unit, '(a,f10.4,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
          ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%pair(:)%impacts), ' impacts, ', &
          cs%pivots_total, ' LCP pivots'
+      write (output_unit, '(a,f10.4,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
+         ' s, LCP solves ', cs%solves, ', pivots max ', cs%pivots_max, ', steps ', cpl%n_steps
    end if
    write (output_unit, '(a)') '  wrote '//listing_path//' and '//h5_path
 

@@ -1,0 +1,23 @@
+# The shipped example runs and writes a complete listing and HDF5 file, nothing partial.
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
+file(MAKE_DIRECTORY ${WORK_DIR}/out)
+run_pound(r ${SOURCE_DIR}/input/two_frames_pdelta.nml -o out)
+expect_equal("exit status" 0 "${r_rc}")
+foreach(f out/two_frames_pdelta.out out/two_frames_pdelta.h5)
+  if(NOT EXISTS ${WORK_DIR}/${f})
+    message(FATAL_ERROR "missing ${f}")
+  endif()
+endforeach()
+file(GLOB partial ${WORK_DIR}/out/.*.partial)
+if(partial)
+  message(FATAL_ERROR "partial files left: ${partial}")
+endif()
+file(READ ${WORK_DIR}/out/two_frames_pdelta.out listing)
+foreach(s "units: kN, m, s, t (tonne)" "Deck echo" "T [s]" "Uncoupled response" "Coupled response"
+          "Influence coefficients" "storey shear Q" "LCP (Lemke, lexicographic) statistics" "Energy audit")
+  expect_contains("listing" "${listing}" "${s}")
+endforeach()
+# Output directory that does not exist: clear message, exit 1.
+run_pound(d ${SOURCE_DIR}/input/two_frames_pdelta.nml -o no/such/dir)
+expect_equal("exit status, bad -o" 1 "${d_rc}")
+expect_contains("bad -o" "${d_err}" "no/such/dir")
