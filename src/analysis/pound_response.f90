@@ -32,6 +32,8 @@ module pound_response
       real(dp), allocatable :: peak(:, :)
       !> Time of each peak (s).
       real(dp), allocatable :: peak_time(:, :)
+      !> Work array (n): drift or absolute acceleration of the step being sampled.
+      real(dp), allocatable :: work(:)
    end type response_record
 
 contains
@@ -51,12 +53,13 @@ contains
       rec%store = store
       rec%capacity = capacity
       rec%n_out = 0
-      if (store(q_u)) allocate (rec%u(n, capacity))
-      if (store(q_v)) allocate (rec%v(n, capacity))
-      if (store(q_a_abs)) allocate (rec%a_abs(n, capacity))
-      if (store(q_drift)) allocate (rec%drift(n, capacity))
-      if (store(q_shear)) allocate (rec%shear(n, capacity))
-      allocate (rec%peak(n, n_history_quantities), rec%peak_time(n, n_history_quantities))
+      ! Histories are zeroed here, so that their memory is touched before the time loop.
+      if (store(q_u)) allocate (rec%u(n, capacity), source=0.0_dp)
+      if (store(q_v)) allocate (rec%v(n, capacity), source=0.0_dp)
+      if (store(q_a_abs)) allocate (rec%a_abs(n, capacity), source=0.0_dp)
+      if (store(q_drift)) allocate (rec%drift(n, capacity), source=0.0_dp)
+      if (store(q_shear)) allocate (rec%shear(n, capacity), source=0.0_dp)
+      allocate (rec%peak(n, n_history_quantities), rec%peak_time(n, n_history_quantities), rec%work(n))
       rec%peak = 0.0_dp
       rec%peak_time = 0.0_dp
    end subroutine response_init
@@ -75,30 +78,9 @@ contains
       real(dp), intent(in) :: t
       !> Whether this is an output step.
       logical, intent(in) :: output
-      real(dp) :: d, below
-      integer :: i, k
+      integer :: k
 
-      below = 0.0_dp
-      do i = 1, rec%n
-         d = u(i) - below
-         below = u(i)
-         if (abs(u(i)) > rec%peak(i, q_u)) then
-            rec%peak(i, q_u) = abs(u(i))
-            rec%peak_time(i, q_u) = t
-         end if
-         if (abs(v(i)) > rec%peak(i, q_v)) then
-            rec%peak(i, q_v) = abs(v(i))
-            rec%peak_time(i, q_v) = t
-         end if
-         if (abs(a(i) + ag) > rec%peak(i, q_a_abs)) then
-            rec%peak(i, q_a_abs) = abs(a(i) + ag)
-            rec%peak_time(i, q_a_abs) = t
-         end if
-         if (abs(d) > rec%peak(i, q_drift)) then
-            rec%peak(i, q_drift) = abs(d)
-            rec%peak_time(i, q_drift) = t
-         end if
-      end do
+      call track_peaks(rec%n, u, v, a, ag, t, rec%peak, rec%peak_time)
       if (.not. output) return
       rec%n_out = rec%n_out + 1
       k = rec%n_out
@@ -106,15 +88,47 @@ contains
       if (rec%store(q_v)) rec%v(:, k) = v
       if (rec%store(q_a_abs)) rec%a_abs(:, k) = a + ag
       if (rec%store(q_drift) .or. rec%store(q_shear)) then
-         below = 0.0_dp
-         do i = 1, rec%n
-            d = u(i) - below
-            below = u(i)
-            if (rec%store(q_drift)) rec%drift(i, k) = d
-            if (rec%store(q_shear)) rec%shear(i, k) = b%storey_stiffness(i)*d
-         end do
+         rec%work(1) = u(1)
+         rec%work(2:) = u(2:) - u(:rec%n - 1)
+         if (rec%store(q_drift)) rec%drift(:, k) = rec%work
+         if (rec%store(q_shear)) rec%shear(:, k) = b%storey_stiffness*rec%work
       end if
    end subroutine response_sample
+
+   !> Running absolute maxima of u, v, a_abs and drift in one pass over the floors
+   !> (explicit-shape arrays, so the compiler sees plain contiguous memory).
+   pure subroutine track_peaks(n, u, v, a, ag, t, peak, peak_time)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: u(n), v(n), a(n), ag, t
+      real(dp), intent(inout) :: peak(n, n_history_quantities), peak_time(n, n_history_quantities)
+      real(dp) :: x, below
+      integer :: i
+
+      below = 0.0_dp
+      do i = 1, n
+         x = abs(u(i))
+         if (x > peak(i, q_u)) then
+            peak(i, q_u) = x
+            peak_time(i, q_u) = t
+         end if
+         x = abs(v(i))
+         if (x > peak(i, q_v)) then
+            peak(i, q_v) = x
+            peak_time(i, q_v) = t
+         end if
+         x = abs(a(i) + ag)
+         if (x > peak(i, q_a_abs)) then
+            peak(i, q_a_abs) = x
+            peak_time(i, q_a_abs) = t
+         end if
+         x = abs(u(i) - below)
+         below = u(i)
+         if (x > peak(i, q_drift)) then
+            peak(i, q_drift) = x
+            peak_time(i, q_drift) = t
+         end if
+      end do
+   end subroutine track_peaks
 
    !> Derive the storey-shear peaks (Q_j = k_j drift_j, so they occur with the drift peaks).
    pure subroutine response_finish(rec, b)

@@ -27,8 +27,8 @@ module pound_newmark
       integer :: n = 0
       !> Time step and Newmark constants c1 = 4/dt^2, c2 = 2/dt.
       real(dp) :: dt = 0.0_dp, c1 = 0.0_dp, c2 = 0.0_dp
-      !> L D L^T factors of Khat: diagonal d (n) and sub-diagonal e (n-1).
-      real(dp), allocatable :: d(:), e(:)
+      !> L D L^T factors of Khat: diagonal d (n) and sub-diagonal e (n-1), and 1/d.
+      real(dp), allocatable :: d(:), e(:), dinv(:)
       !> Relative displacement, velocity and acceleration at the current time.
       real(dp), allocatable :: u(:), v(:), a(:)
       !> Displacement increment of the step in progress.
@@ -92,6 +92,7 @@ contains
                           '(dpttrf info = '//str(info)//')')
          return
       end if
+      st%dinv = 1.0_dp/st%d
       allocate (st%u(n), st%v(n), st%a(n), st%du(n), st%cv(n))
       st%u = 0.0_dp
       st%v = 0.0_dp
@@ -103,6 +104,9 @@ contains
    end subroutine newmark_init
 
    !> Increment du of the step for the ground acceleration increment `dag` alone.
+   !>
+   !> The right-hand side is formed inside the forward sweep of the L D L^T solve and the
+   !> back sweep multiplies by the stored 1/d: two passes over the floors, no division.
    subroutine newmark_predict(st, b, dag)
       !> Integrator state; `du` is set.
       type(newmark_state), intent(inout) :: st
@@ -110,15 +114,29 @@ contains
       type(shear_building), intent(in) :: b
       !> Ground acceleration increment a_g(t+dt) - a_g(t) (m/s^2).
       real(dp), intent(in) :: dag
-      real(dp) :: c4
+
+      call predict_kernel(st%n, 2.0_dp*st%c2, dag, b%mass, st%v, st%a, st%cv, st%e, st%dinv, st%du)
+   end subroutine newmark_predict
+
+   !> du = Khat^{-1} (M (4/dt v + 2 a - 1 dag) + 2 C v) with Khat = L D L^T.
+   pure subroutine predict_kernel(n, c4, dag, mass, v, a, cv, e, dinv, du)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: c4, dag, mass(n), v(n), a(n), cv(n), e(max(n - 1, 1)), dinv(n)
+      real(dp), intent(out) :: du(n)
+      real(dp) :: y
       integer :: i
 
-      c4 = 2.0_dp*st%c2
-      do i = 1, st%n
-         st%du(i) = b%mass(i)*(c4*st%v(i) + 2.0_dp*st%a(i) - dag) + 2.0_dp*st%cv(i)
+      y = mass(1)*(c4*v(1) + 2.0_dp*a(1) - dag) + 2.0_dp*cv(1)
+      du(1) = y
+      do i = 2, n
+         y = mass(i)*(c4*v(i) + 2.0_dp*a(i) - dag) + 2.0_dp*cv(i) - e(i - 1)*y
+         du(i) = y
       end do
-      call newmark_solve(st, st%du)
-   end subroutine newmark_predict
+      du(n) = du(n)*dinv(n)
+      do i = n - 1, 1, -1
+         du(i) = du(i)*dinv(i) - e(i)*du(i + 1)
+      end do
+   end subroutine predict_kernel
 
    !> Overwrite x with Khat^{-1} x (one tridiagonal solve).
    subroutine newmark_solve(st, x)
@@ -144,32 +162,49 @@ contains
       type(shear_building), intent(in) :: b
       !> Ground acceleration at the start and end of the step (m/s^2).
       real(dp), intent(in) :: ag_old, ag_new
-      real(dp) :: c3, dv, mdu, ddamp, cvi
-      integer :: i, n
+      real(dp) :: mdu, ddamp
 
-      n = st%n
-      c3 = 2.0_dp*st%c2
-      mdu = 0.0_dp
-      do i = 1, n
-         dv = st%c2*st%du(i) - 2.0_dp*st%v(i)
-         st%a(i) = st%a(i) + st%c1*st%du(i) - c3*st%v(i) - 2.0_dp*st%a(i)
-         st%v(i) = st%v(i) + dv
-         st%u(i) = st%u(i) + st%du(i)
-         mdu = mdu + b%mass(i)*st%du(i)
-      end do
-      ! C v_new = a0 M v + a1 (K+G) v, tridiagonal, and the damping work.
-      ddamp = 0.0_dp
-      do i = 1, n
-         cvi = b%kt(2, i)*st%v(i)
-         if (i > 1) cvi = cvi + b%kt(1, i)*st%v(i - 1)
-         if (i < n) cvi = cvi + b%kt(1, i + 1)*st%v(i + 1)
-         cvi = b%a0*b%mass(i)*st%v(i) + b%a1*cvi
-         ddamp = ddamp + st%du(i)*(st%cv(i) + cvi)
-         st%cv(i) = cvi
-      end do
+      call commit_kernel(st%n, st%c1, st%c2, b%a0, b%a1, b%mass, b%kt, st%du, st%u, st%v, st%a, &
+                         st%cv, mdu, ddamp)
       st%damping_energy = st%damping_energy + 0.5_dp*ddamp
       st%input_work = st%input_work - 0.5_dp*(ag_old + ag_new)*mdu
    end subroutine newmark_commit
+
+   !> Newmark update of u, v, a from du; C v at the new time; sum(m du) and du.(Cv_old + Cv_new).
+   pure subroutine commit_kernel(n, c1, c2, a0, a1, mass, kt, du, u, v, a, cv, mdu, ddamp)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: c1, c2, a0, a1, mass(n), kt(2, n), du(n)
+      real(dp), intent(inout) :: u(n), v(n), a(n), cv(n)
+      real(dp), intent(out) :: mdu, ddamp
+      real(dp) :: cvi
+      integer :: i
+
+      mdu = 0.0_dp
+      do i = 1, n
+         a(i) = c1*du(i) - 2.0_dp*c2*v(i) - a(i)
+         v(i) = c2*du(i) - v(i)
+         u(i) = u(i) + du(i)
+         mdu = mdu + mass(i)*du(i)
+      end do
+      ! C v = a0 M v + a1 (K+G) v; (K+G) tridiagonal with kt(1, i) = (K+G)(i-1, i).
+      if (n == 1) then
+         cvi = (a0*mass(1) + a1*kt(2, 1))*v(1)
+         ddamp = du(1)*(cv(1) + cvi)
+         cv(1) = cvi
+         return
+      end if
+      cvi = a0*mass(1)*v(1) + a1*(kt(2, 1)*v(1) + kt(1, 2)*v(2))
+      ddamp = du(1)*(cv(1) + cvi)
+      cv(1) = cvi
+      do i = 2, n - 1
+         cvi = a0*mass(i)*v(i) + a1*(kt(1, i)*v(i - 1) + kt(2, i)*v(i) + kt(1, i + 1)*v(i + 1))
+         ddamp = ddamp + du(i)*(cv(i) + cvi)
+         cv(i) = cvi
+      end do
+      cvi = a0*mass(n)*v(n) + a1*(kt(1, n)*v(n - 1) + kt(2, n)*v(n))
+      ddamp = ddamp + du(n)*(cv(n) + cvi)
+      cv(n) = cvi
+   end subroutine commit_kernel
 
    !> Kinetic energy of the relative motion, v^T M v / 2 (kJ).
    pure function kinetic_energy(st, b) result(e)

@@ -1,0 +1,88 @@
+"""Pounding benchmarks (called by scripts/bench_contact)."""
+import os
+import re
+import resource
+import statistics
+import subprocess
+import sys
+import tempfile
+
+
+def building(name, n, mass, k, zeta=0.05):
+    return (f"&building name='{name}', n_storeys={n}, height={n}*3.0, mass={n}*{mass}, "
+            f"stiffness={n}*{k}, damping_ratio={zeta}, damping_modes=1,2, p_delta=.true. /\n")
+
+
+def contact(left, right, n, gap=0.005):
+    floors = ", ".join(str(i) for i in range(1, n + 1))
+    return (f"&contact left='{left}', right='{right}', floors_left={floors}, floors_right={floors}, "
+            f"gap={gap}, law='elastic', stiffness=1.0e6 /\n")
+
+
+HEAD = """&analysis title='{title}', dt=1.0e-3, t_end=20.0, output_every=10, history='u' /
+&ground kind='pulse', x0=0.05, a=0.25, b=6.283185307179586 /
+"""
+
+
+def scale_decks():
+    two = HEAD.format(title="two 40-storey buildings, 40 constraints")
+    two += building("A", 40, 20.0, 6.0e5) + building("B", 40, 20.0, 3.0e5) + contact("A", "B", 40)
+    three = HEAD.format(title="three 20-storey buildings in a row, 40 constraints")
+    three += (building("A", 20, 20.0, 5.0e5) + building("B", 20, 20.0, 2.5e5)
+              + building("C", 20, 20.0, 4.0e5) + contact("A", "B", 20) + contact("B", "C", 20))
+    return {"two 40-storey, every floor": two, "three 20-storey in a row": three}
+
+
+def run(exe, deck, out):
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
+    stdout = subprocess.run([exe, deck, "-o", out], check=True, capture_output=True, text=True).stdout
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
+    num = r"([0-9.Ee+-]+)"
+    m = re.search(r"coupled integration:\s+" + num + r" s, energy balance error\s+" + num
+                  + r", (\d+) impacts, (\d+) LCP pivots", stdout)
+    c = re.search(r"contact \(LCP\) time:\s+" + num + r" s, LCP solves (\d+), pivots max (\d+), steps (\d+)",
+                  stdout)
+    u = re.search(r"uncoupled integration:\s+" + num + " s", stdout)
+    return dict(cpu=cpu, coupled=float(m.group(1)), energy=float(m.group(2)), impacts=int(m.group(3)),
+                pivots=int(m.group(4)), contact=float(c.group(1)), solves=int(c.group(2)),
+                pivots_max=int(c.group(3)), steps=int(c.group(4)), uncoupled=float(u.group(1)))
+
+
+def median_of(runs, key):
+    return statistics.median(r[key] for r in runs)
+
+
+def main():
+    exe, seed, repeats = sys.argv[1], sys.argv[2], int(sys.argv[3])
+    with tempfile.TemporaryDirectory() as tmp:
+        runs = [run(exe, seed, tmp) for _ in range(repeats)]
+        print(f"Seed example ({os.path.basename(seed)}), {repeats} runs:")
+        print(f"  total process time (CPU, uncoupled + coupled + outputs), median: "
+              f"{1e3 * median_of(runs, 'cpu'):.1f} ms")
+        print(f"  integration loops, median: uncoupled {1e3 * median_of(runs, 'uncoupled'):.2f} ms, "
+              f"coupled {1e3 * median_of(runs, 'coupled'):.2f} ms "
+              f"(contact/LCP {1e3 * median_of(runs, 'contact'):.2f} ms)")
+        r = runs[0]
+        print(f"  {r['impacts']} impacts, {r['solves']} LCP solves in {r['steps']} steps, "
+              f"{r['pivots']} pivots (max {r['pivots_max']} per solve), energy balance error {r['energy']:.2e}")
+        print()
+        print("| case | steps | time/step structure [us] | time/step contact+LCP [us] | LCP solves | "
+              "pivots/step | pivots/solve (max) | impacts | process time [s] |")
+        print("|---|--:|--:|--:|--:|--:|--:|--:|--:|")
+        for name, text in scale_decks().items():
+            path = os.path.join(tmp, "scale.nml")
+            with open(path, "w") as f:
+                f.write(text)
+            runs = [run(exe, path, tmp) for _ in range(max(3, repeats // 2))]
+            steps = runs[0]["steps"]
+            structure = median_of(runs, "coupled") - median_of(runs, "contact")
+            r = runs[0]
+            print(f"| {name} | {steps} | {1e6 * structure / steps:.2f} | "
+                  f"{1e6 * median_of(runs, 'contact') / steps:.2f} | {r['solves']} | "
+                  f"{r['pivots'] / steps:.3f} | {r['pivots'] / max(r['solves'], 1):.2f} ({r['pivots_max']}) | "
+                  f"{r['impacts']} | {median_of(runs, 'cpu'):.3f} |")
+
+
+if __name__ == "__main__":
+    main()
