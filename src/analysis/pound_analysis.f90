@@ -20,6 +20,7 @@ module pound_analysis
    private
 
    public :: analysis_result, run_uncoupled, run_coupled, output_steps
+   public :: coupled_model, coupled_prepare, coupled_integrate
    public :: e_input, e_kinetic, e_strain, e_damping, e_contact, n_energy, energy_names
 
    !> Energy history components.
@@ -47,6 +48,16 @@ module pound_analysis
       !> (forming and solving the step's LCP, applying and committing the forces).
       real(dp) :: seconds = 0.0_dp, contact_seconds = 0.0_dp
    end type analysis_result
+
+   !> What the coupled analysis needs that does not depend on the gaps: the factored
+   !> integrators at rest and the condensed constraints (Khat^{-1} B, F). Prepared once,
+   !> reused for every gap of a sweep.
+   type :: coupled_model
+      !> Integrators at t = 0.
+      type(newmark_state), allocatable :: st(:)
+      !> Contact system at t = 0.
+      type(contact_system) :: cs
+   end type coupled_model
 
 contains
 
@@ -128,6 +139,56 @@ contains
       type(contact_system), intent(out) :: cs
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      type(coupled_model) :: prep
+
+      call coupled_prepare(cfg, models, ag(0), pairs, prep, error)
+      if (allocated(error)) return
+      call coupled_integrate(cfg, models, ag, prep, res, cs, error)
+   end subroutine run_coupled
+
+   !> Factor every building's Khat and condense the structure onto the constraints.
+   subroutine coupled_prepare(cfg, models, ag0, pairs, prep, error)
+      !> `&analysis` settings.
+      type(analysis_config), intent(in) :: cfg
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> Ground acceleration at t = 0 (m/s^2).
+      real(dp), intent(in) :: ag0
+      !> The constraints, at rest and open at t = 0.
+      type(contact_pair), intent(in) :: pairs(:)
+      !> The prepared model.
+      type(coupled_model), intent(out) :: prep
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: ib
+
+      allocate (prep%st(size(models)))
+      do ib = 1, size(models)
+         call newmark_init(prep%st(ib), models(ib), cfg%dt, ag0, error)
+         if (allocated(error)) return
+      end do
+      call contact_init(prep%cs, pairs, prep%st, error)
+   end subroutine coupled_prepare
+
+   !> The coupled time integration from a prepared model (left unchanged, so that it can be
+   !> reused); `gaps`, when given, replace the gaps of the constraints.
+   subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps)
+      !> `&analysis` settings.
+      type(analysis_config), intent(in) :: cfg
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
+      real(dp), intent(in) :: ag(0:)
+      !> The prepared model.
+      type(coupled_model), intent(in) :: prep
+      !> The result.
+      type(analysis_result), intent(out) :: res
+      !> The contact system at the end (statistics per pair and of the LCPs).
+      type(contact_system), intent(out) :: cs
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      !> Gaps of the constraints (m), one per constraint.
+      real(dp), intent(in), optional :: gaps(:)
       type(newmark_state), allocatable :: st(:)
       integer :: ib, step, k, every, nb, ip
       integer(int64) :: c0, c1, rate, ca, cb, c_contact
@@ -136,24 +197,23 @@ contains
 
       call system_clock(c0, rate)
       nb = size(models)
+      st = prep%st
+      cs = prep%cs
+      if (present(gaps)) cs%pair(:)%gap = gaps
       res%n_steps = size(ag) - 1
       every = cfg%output_every
       res%n_out = output_steps(res%n_steps, every)
-      allocate (res%time(res%n_out), res%building(nb), res%energy(n_energy, res%n_out), st(nb))
-      allocate (res%contact_force(size(pairs), res%n_out), res%contact_closing(size(pairs), res%n_out))
+      allocate (res%time(res%n_out), res%building(nb), res%energy(n_energy, res%n_out))
+      allocate (res%contact_force(cs%m, res%n_out), res%contact_closing(cs%m, res%n_out))
       res%time = [(real((k - 1)*every, dp)*cfg%dt, k=1, res%n_out)]
       res%energy = 0.0_dp
       res%contact_force(:, 1) = 0.0_dp
       res%contact_closing(:, 1) = 0.0_dp
       do ib = 1, nb
-         call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error)
-         if (allocated(error)) return
          call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out)
          call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(0), &
                               0.0_dp, .true.)
       end do
-      call contact_init(cs, pairs, st, error)
-      if (allocated(error)) return
       k = 1
       c_contact = 0
       do step = 1, res%n_steps
@@ -198,7 +258,7 @@ contains
       call system_clock(c1)
       res%seconds = real(c1 - c0, dp)/real(rate, dp)
       res%contact_seconds = real(c_contact, dp)/real(rate, dp)
-   end subroutine run_coupled
+   end subroutine coupled_integrate
 
    !> Relative energy balance error: max_t |W_in - E_k - E_s - E_d - E_c| / max_t max(|W_in|, E_k + E_s + E_d + E_c).
    pure function energy_balance_error(energy) result(err)

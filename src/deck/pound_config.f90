@@ -7,7 +7,7 @@ module pound_config
    implicit none
    private
 
-   public :: analysis_config, ground_config, building_config, contact_config, deck_type
+   public :: analysis_config, ground_config, building_config, contact_config, sweep_config, deck_type
    public :: n_history_quantities, history_names, g_accel
 
    !> Standard gravity used to turn floor loads into masses (m/s^2).
@@ -92,6 +92,20 @@ module pound_config
       real(dp) :: stiffness = 0.0_dp, dashpot = 0.0_dp
    end type contact_config
 
+   !> `&sweep`: the coupled analysis repeated for a range of seismic-joint gaps.
+   type :: sweep_config
+      !> Whether the deck asks for a sweep.
+      logical :: active = .false.
+      !> First and last gap (m), applied to every contact pair.
+      real(dp) :: gap_from = 0.0_dp, gap_to = 0.0_dp
+      !> Number of gaps, evenly spaced from gap_from to gap_to.
+      integer :: n_gaps = 0
+      !> Target for the largest |lambda| (%); negative when none is given.
+      real(dp) :: target = -1.0_dp
+      !> Quantities the target applies to (same order as `history_names`).
+      logical :: target_quantities(n_history_quantities) = .true.
+   end type sweep_config
+
    !> A whole, validated deck.
    type :: deck_type
       !> Path of the deck file as given.
@@ -106,6 +120,8 @@ module pound_config
       type(building_config), allocatable :: buildings(:)
       !> `&contact` occurrences (size 0 when the deck declares none).
       type(contact_config), allocatable :: contacts(:)
+      !> `&sweep` (inactive when the deck has none).
+      type(sweep_config) :: sweep
    end type deck_type
 
 end module pound_config

@@ -8,7 +8,8 @@
 !>
 !> * `&analysis` and `&ground` exactly once, `&building` once per building, left to right.
 !> * `&contact` zero or more times (none: the buildings are uncoupled).
-!> * `&sweep` is recognised (a later feature) but not read here.
+!> * `&sweep` at most once, with at least one `&contact`: gap_from, gap_to (m), n_gaps, and
+!>   optionally target_lambda (%) and target_quantities (default 'u a_abs drift storey_shear').
 !> * Per-storey arrays need exactly `n_storeys` values, storey/floor 1 at the bottom;
 !>   use the namelist repeat count for equal values: `height = 8*3.0`.
 !>
@@ -41,7 +42,7 @@ module pound_deck
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: deck_type, analysis_config, ground_config, building_config, &
-                           contact_config, n_history_quantities, history_names, g_accel
+                           contact_config, sweep_config, n_history_quantities, history_names, g_accel
    implicit none
    private
 
@@ -75,6 +76,8 @@ module pound_deck
       [character(len=14) :: 'name', 'n_storeys', 'height', 'mass', 'load_coeff', 'ref_floor_load', &
       'stiffness', 'n_columns', 'e_modulus', 'inertia', 'column_ends', 'damping_ratio', &
       'damping_modes', 'p_delta', 'gravity_load']
+   character(len=*), parameter :: sweep_vars(5) = &
+      [character(len=17) :: 'gap_from', 'gap_to', 'n_gaps', 'target_lambda', 'target_quantities']
    character(len=*), parameter :: contact_vars(8) = &
       [character(len=12) :: 'left', 'right', 'floors_left', 'floors_right', 'gap', 'law', &
       'stiffness', 'dashpot']
@@ -192,6 +195,11 @@ contains
          call read_contact(path, lines, groups(i), d%buildings, d%contacts(k), error)
          if (allocated(error)) return
       end do
+      k = count([(groups(i)%name == 'sweep', i=1, n_groups)])
+      if (k == 0) return
+      call find_single(path, groups(1:n_groups), 'sweep', 'gap_from, gap_to, n_gaps', i, error)
+      if (allocated(error)) return
+      call read_sweep(path, lines, groups(i), size(d%contacts), d%sweep, error)
    end subroutine parse_deck
 
    !> Read the whole deck file; its text without CRs and without the final newline.
@@ -490,6 +498,8 @@ contains
          known_variable = any(building_vars == name)
       case ('contact')
          known_variable = any(contact_vars == name)
+      case ('sweep')
+         known_variable = any(sweep_vars == name)
       case default
          known_variable = .true.
       end select
@@ -510,6 +520,8 @@ contains
          list = join(building_vars)
       case ('contact')
          list = join(contact_vars)
+      case ('sweep')
+         list = join(sweep_vars)
       case default
          list = ''
       end select
@@ -703,7 +715,7 @@ contains
    end subroutine read_analysis
 
    !> `history`: blank/comma separated quantities, 'all' or 'none'; blank means all.
-   pure subroutine parse_history(at, spec, store, error)
+   pure subroutine parse_history(at, spec, store, error, var)
       !> Where messages point.
       type(site), intent(in) :: at
       !> The `history` string.
@@ -712,9 +724,13 @@ contains
       logical, intent(out) :: store(n_history_quantities)
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: s, word
+      !> Variable name in messages (default 'history').
+      character(len=*), intent(in), optional :: var
+      character(len=:), allocatable :: s, word, v
       integer :: i, j, k
 
+      v = 'history'
+      if (present(var)) v = var
       store = .true.
       s = lower(spec)
       do i = 1, len(s)
@@ -739,7 +755,7 @@ contains
          i = j + 1
          if (word == 'all' .or. word == 'none') then
             if (len_trim(adjustl(s)) /= len(word)) then
-               call fail(at, 'history', "history = '"//trim(adjustl(spec))//"': '"//word// &
+               call fail(at, v, v//" = '"//trim(adjustl(spec))//"': '"//word// &
                          "' must be the only word", error)
                return
             end if
@@ -748,7 +764,7 @@ contains
          end if
          k = findloc_name(history_names, word)
          if (k == 0) then
-            call fail(at, 'history', "history: unknown quantity '"//word//"', must be one of "// &
+            call fail(at, v, v//": unknown quantity '"//word//"', must be one of "// &
                       join(history_names)//", 'all' or 'none'", error)
             return
          end if
@@ -1160,6 +1176,77 @@ contains
       cfg%stiffness = stiffness
       cfg%dashpot = dashpot
    end subroutine read_contact
+
+   !> `&sweep`: range of seismic-joint gaps and the optional target for |lambda|.
+   subroutine read_sweep(path, lines, g, n_contacts, cfg, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck lines.
+      character(len=*), intent(in) :: lines(:)
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> Number of `&contact` groups in the deck.
+      integer, intent(in) :: n_contacts
+      !> Resolved sweep.
+      type(sweep_config), intent(out) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: gap_from, gap_to, target_lambda
+      integer :: n_gaps, ios
+      character(len=path_len) :: target_quantities
+      character(len=len(lines)), allocatable :: buf(:)
+      character(len=512) :: msg
+      type(site) :: at
+      namelist /sweep/ gap_from, gap_to, n_gaps, target_lambda, target_quantities
+
+      gap_from = unset_real
+      gap_to = unset_real
+      target_lambda = unset_real
+      n_gaps = unset_int
+      target_quantities = 'u a_abs drift storey_shear'
+      at = site_of(path, g)
+      call group_text(lines, g, buf)
+      msg = ' '
+      read (buf, nml=sweep, iostat=ios, iomsg=msg)
+      call read_failed(at, ios, msg, error)
+      if (allocated(error)) return
+      if (n_contacts == 0) then
+         call fail(at, 'gap_from', 'a sweep varies the gaps of the &contact groups, and the deck '// &
+                   'has none', error)
+         return
+      end if
+      call require_real(at, 'gap_from', gap_from, 'first gap in m', error)
+      if (allocated(error)) return
+      call check_real(at, 'gap_from', gap_from, '>=', 0.0_dp, error)
+      if (allocated(error)) return
+      call require_real(at, 'gap_to', gap_to, 'last gap in m', error)
+      if (allocated(error)) return
+      call check_real(at, 'gap_to', gap_to, '>', gap_from, error, 'gap_from = '//str(gap_from))
+      if (allocated(error)) return
+      if (n_gaps == unset_int) then
+         call fail(at, 'n_gaps', 'n_gaps is missing (number of gaps from gap_from to gap_to)', error)
+         return
+      end if
+      if (n_gaps < 2 .or. n_gaps > 10000) then
+         call fail(at, 'n_gaps', 'n_gaps = '//str(n_gaps)//', must be in 2..10000', error)
+         return
+      end if
+      if (is_set(target_lambda)) then
+         call check_real(at, 'target_lambda', target_lambda, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%target = target_lambda
+      end if
+      call parse_history(at, target_quantities, cfg%target_quantities, error, 'target_quantities')
+      if (allocated(error)) return
+      if (.not. any(cfg%target_quantities)) then
+         call fail(at, 'target_quantities', "target_quantities = 'none' leaves nothing to check", error)
+         return
+      end if
+      cfg%active = .true.
+      cfg%gap_from = gap_from
+      cfg%gap_to = gap_to
+      cfg%n_gaps = n_gaps
+   end subroutine read_sweep
 
    !> Index of the building named `raw` (ignoring case); error if blank or not a building.
    pure subroutine find_building(at, var, raw, what, buildings, idx, error)

@@ -20,7 +20,8 @@ program pound
    use pound_analysis, only: analysis_result, run_uncoupled, run_coupled
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
-                            write_contact_summary, write_influence_tables
+                            write_contact_summary, write_influence_tables, write_sweep_table
+   use pound_sweep, only: sweep_result, run_sweep
    use pound_results_h5, only: write_results_h5
    use pound_files, only: rename_file, delete_file, file_stem, temporary_name, join_path
    implicit none
@@ -39,6 +40,7 @@ program pound
    type(analysis_result) :: unc, cpl
    type(contact_system) :: cs
    type(contact_pair), allocatable :: pairs(:)
+   type(sweep_result) :: sweep
    character(len=64), allocatable :: names(:)
    logical :: coupled
    type(error_type), allocatable :: error
@@ -83,6 +85,11 @@ program pound
       call run_coupled(deck%analysis, models, ag, pairs, cpl, cs, error)
       if (allocated(error)) error%message = deck_path//': '//error%message
       call check(error)
+      if (deck%sweep%active) then
+         call run_sweep(deck%analysis, deck%sweep, models, ag, pairs, unc, sweep, error)
+         if (allocated(error)) error%message = deck_path//': '//error%message
+         call check(error)
+      end if
    end if
 
    ! Outputs: temporary names first, renamed when complete.
@@ -101,12 +108,16 @@ program pound
       call write_peak_tables(u, 'Coupled', models, cpl)
       call write_contact_summary(u, cs)
       call write_influence_tables(u, models, unc, cpl)
+      if (deck%sweep%active) call write_sweep_table(u, models, deck%sweep, sweep)
    end if
    write (u, '(/,a,f10.4,a)') '  uncoupled integration: ', unc%seconds, ' s'
    if (coupled) write (u, '(a,f10.4,a,f10.4,a)') '  coupled integration:   ', cpl%seconds, &
       ' s, of which contact (LCP) ', cpl%contact_seconds, ' s'
    close (u)
-   if (coupled) then
+   if (deck%sweep%active) then
+      call write_results_h5(temporary_name(h5_path), deck, models, trim(ground_text(1)), &
+                            ag(0:n_steps:deck%analysis%output_every), unc, error, cpl, cs, sweep)
+   else if (coupled) then
       call write_results_h5(temporary_name(h5_path), deck, models, trim(ground_text(1)), &
                             ag(0:n_steps:deck%analysis%output_every), unc, error, cpl, cs)
    else
@@ -132,6 +143,11 @@ program pound
          cs%pivots_total, ' LCP pivots'
       write (output_unit, '(a,f10.4,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
          ' s, LCP solves ', cs%solves, ', pivots max ', cs%pivots_max, ', steps ', cpl%n_steps
+   end if
+   if (deck%sweep%active) then
+      write (output_unit, '(a,i0,a,f10.4,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'
+      if (sweep%found) write (output_unit, '(a,f10.4,a)') '  smallest gap meeting the target: ', &
+         1000.0_dp*sweep%safe_gap, ' mm'
    end if
    write (output_unit, '(a)') '  wrote '//listing_path//' and '//h5_path
 

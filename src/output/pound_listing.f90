@@ -9,11 +9,13 @@ module pound_listing
    use pound_contact, only: contact_system
    use pound_contact_law, only: law_name
    use pound_influence, only: influence_coefficient
+   use pound_config, only: sweep_config
+   use pound_sweep, only: sweep_result
    implicit none
    private
 
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
-   public :: write_contact_summary, write_influence_tables
+   public :: write_contact_summary, write_influence_tables, write_sweep_table
 
    !> Modes listed in the model summary (all are in the HDF5 file).
    integer, parameter :: max_listed_modes = 12
@@ -223,5 +225,63 @@ contains
       end subroutine table
 
    end subroutine write_influence_tables
+
+   !> Gap study: largest |lambda| per building and quantity against the gap, and the smallest
+   !> gap meeting the target.
+   subroutine write_sweep_table(u, models, cfg, res)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> `&sweep`.
+      type(sweep_config), intent(in) :: cfg
+      !> The sweep result.
+      type(sweep_result), intent(in) :: res
+      integer, parameter :: shown(4) = [q_shear, q_drift, q_u, q_a_abs]
+      character(len=*), parameter :: heads(4) = [character(len=9) :: 'Q', 'drift', 'u', 'a_abs']
+      character(len=:), allocatable :: line
+      character(len=10) :: cell
+      integer :: i, ib, k
+
+      call write_section(u, 'Gap study: largest |lambda| [%] over the storeys (floors) against the gap')
+      write (u, '(a,i0,a,f10.4,a)') '  ', size(res%gap), ' gaps applied to every contact pair; ', &
+         res%seconds, ' s for all coupled runs'
+      line = '    gap [mm]  impacts'
+      do ib = 1, size(models)
+         do k = 1, size(shown)
+            cell = trim(models(ib)%name(1:min(len(models(ib)%name), 4)))//':'//trim(heads(k))
+            line = line//adjustr(cell)
+         end do
+      end do
+      if (cfg%target > 0.0_dp) line = line//'  target'
+      write (u, '(a)') line
+      do i = 1, size(res%gap)
+         write (cell, '(f10.4)') 1000.0_dp*res%gap(i)
+         line = '  '//cell
+         write (cell, '(i9)') res%impacts(i)
+         line = line//cell(1:9)
+         do ib = 1, size(models)
+            do k = 1, size(shown)
+               if (res%max_abs_lambda(shown(k), ib, i) >= huge(1.0_dp)) then
+                  cell = '       inf'
+               else
+                  write (cell, '(f10.2)') res%max_abs_lambda(shown(k), ib, i)
+               end if
+               line = line//cell
+            end do
+         end do
+         if (cfg%target > 0.0_dp) line = line//merge('     met', '        ', res%meets(i))
+         write (u, '(a)') line
+      end do
+      if (cfg%target > 0.0_dp) then
+         if (res%found) then
+            write (u, '(/,a,f7.2,a,f10.4,a)') '  Smallest gap with every targeted |lambda| <= ', cfg%target, &
+               ' % at it and at every larger gap of the sweep: ', 1000.0_dp*res%safe_gap, ' mm'
+         else
+            write (u, '(/,a,f7.2,a)') '  No gap of the sweep range keeps every targeted |lambda| <= ', &
+               cfg%target, ' % from there to the end of the range.'
+         end if
+      end if
+   end subroutine write_sweep_table
 
 end module pound_listing

@@ -15,6 +15,9 @@
 !>     /coupled/contact/force, closing           (n_out, n_pairs); attribute pairs
 !>     /coupled/contact/impacts, contact_time, peak_force, peak_time   (n_pairs)
 !>     /influence/<b>/<q>                        (n) lambda in percent
+!>     /sweep/gap, impacts, meets                (n_gaps)
+!>     /sweep/max_abs_lambda/<b>/<q>             (n_gaps) largest |lambda| over the storeys, percent;
+!>                                               attributes target_lambda, safe_gap (-1: none)
 module pound_results_h5
    use pound_kinds, only: dp
    use pound_error, only: error_type
@@ -26,6 +29,8 @@ module pound_results_h5
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: influence_coefficient
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr
+   use pound_sweep, only: sweep_result
+   use pound_config, only: sweep_config
    implicit none
    private
 
@@ -38,7 +43,7 @@ module pound_results_h5
 contains
 
    !> Write the whole results file at `path`.
-   subroutine write_results_h5(path, deck, models, ground_text, ag_out, unc, error, cpl, cs)
+   subroutine write_results_h5(path, deck, models, ground_text, ag_out, unc, error, cpl, cs, sweep)
       !> File to create (truncated).
       character(len=*), intent(in) :: path
       !> The deck.
@@ -57,6 +62,8 @@ contains
       type(analysis_result), intent(in), optional :: cpl
       !> Contact system at the end of the coupled run.
       type(contact_system), intent(in), optional :: cs
+      !> Gap study, when the deck asks for one.
+      type(sweep_result), intent(in), optional :: sweep
       type(h5_file) :: h5
       type(error_type), allocatable :: close_error
       integer :: ib, q
@@ -109,7 +116,27 @@ contains
                if (allocated(error)) return
             end do
          end do
+         if (present(sweep)) call write_sweep()
       end subroutine write_all
+
+      subroutine write_sweep()
+         call h5_write(h5, '/sweep/gap', sweep%gap, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/sweep/impacts', sweep%impacts, error)
+         if (allocated(error)) return
+         call h5_write(h5, '/sweep/meets', merge(1, 0, sweep%meets), error)
+         if (allocated(error)) return
+         do ib = 1, size(models)
+            do q = 1, n_history_quantities
+               call h5_write(h5, '/sweep/max_abs_lambda/'//models(ib)%name//'/'//trim(history_names(q)), &
+                             sweep%max_abs_lambda(q, ib, :), error)
+               if (allocated(error)) return
+            end do
+         end do
+         call h5_write_attr(h5, '/sweep', 'target_lambda', deck%sweep%target, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/sweep', 'safe_gap', sweep%safe_gap, error)
+      end subroutine write_sweep
 
       subroutine write_model(b)
          type(shear_building), intent(in) :: b

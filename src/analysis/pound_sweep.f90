@@ -1,0 +1,123 @@
+!> Seismic-joint gap study: the coupled analysis repeated for a range of gaps.
+!>
+!> The uncoupled analysis is run once (it does not depend on the gap); everything of the
+!> coupled analysis that does not depend on the gap — the factored Khat of every building and
+!> the condensed constraints Khat^{-1} B and F — is prepared once and reused for every gap.
+!> Each gap is applied to every constraint. For every gap the largest |lambda| over the
+!> floors (storeys) is kept per building and quantity, and the smallest gap from which on every
+!> targeted |lambda| stays within the target is reported.
+module pound_sweep
+   use iso_fortran_env, only: int64
+   use pound_kinds, only: dp
+   use pound_error, only: error_type
+   use pound_strings, only: str
+   use pound_config, only: analysis_config, sweep_config, n_history_quantities
+   use pound_shear_building, only: shear_building
+   use pound_analysis, only: analysis_result, coupled_model, coupled_prepare, coupled_integrate
+   use pound_contact, only: contact_pair, contact_system
+   use pound_influence, only: influence_coefficient
+   implicit none
+   private
+
+   public :: sweep_result, run_sweep, sweep_gaps
+
+   !> Result of a gap sweep.
+   type :: sweep_result
+      !> Gaps (m).
+      real(dp), allocatable :: gap(:)
+      !> Largest |lambda| (%) over floors/storeys, (n_history_quantities, n_buildings, n_gaps).
+      real(dp), allocatable :: max_abs_lambda(:, :, :)
+      !> Total number of impacts at each gap.
+      integer, allocatable :: impacts(:)
+      !> Whether each gap meets the target on every targeted quantity and building.
+      logical, allocatable :: meets(:)
+      !> Smallest gap from which on every larger gap of the sweep meets the target (m).
+      real(dp) :: safe_gap = -1.0_dp
+      !> Whether such a gap exists in the range (only with a target).
+      logical :: found = .false.
+      !> Wall-clock time of all coupled runs (s).
+      real(dp) :: seconds = 0.0_dp
+   end type sweep_result
+
+contains
+
+   !> The gaps of a sweep: n_gaps values evenly spaced from gap_from to gap_to.
+   pure function sweep_gaps(cfg) result(gaps)
+      !> `&sweep`.
+      type(sweep_config), intent(in) :: cfg
+      real(dp) :: gaps(cfg%n_gaps)
+      integer :: i
+
+      do i = 1, cfg%n_gaps
+         gaps(i) = cfg%gap_from + (cfg%gap_to - cfg%gap_from)*real(i - 1, dp)/real(cfg%n_gaps - 1, dp)
+      end do
+   end function sweep_gaps
+
+   !> Run the coupled analysis for every gap of the sweep, against the uncoupled result `unc`.
+   subroutine run_sweep(cfg, sweep, models, ag, pairs, unc, res, error)
+      !> `&analysis` settings (histories are not stored for the sweep runs).
+      type(analysis_config), intent(in) :: cfg
+      !> `&sweep`.
+      type(sweep_config), intent(in) :: sweep
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> Ground acceleration at t_n = n dt (m/s^2).
+      real(dp), intent(in) :: ag(0:)
+      !> The constraints of the deck.
+      type(contact_pair), intent(in) :: pairs(:)
+      !> Uncoupled result.
+      type(analysis_result), intent(in) :: unc
+      !> The sweep result.
+      type(sweep_result), intent(out) :: res
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(analysis_config) :: quiet
+      type(coupled_model) :: prep
+      type(analysis_result) :: cpl
+      type(contact_system) :: cs
+      real(dp) :: gaps(size(pairs))
+      integer :: i, ib, q
+      integer(int64) :: c0, c1, rate
+
+      call system_clock(c0, rate)
+      quiet = cfg
+      quiet%store = .false.
+      quiet%output_every = max(1, nint(cfg%t_end/cfg%dt))
+      res%gap = sweep_gaps(sweep)
+      allocate (res%max_abs_lambda(n_history_quantities, size(models), sweep%n_gaps), &
+                res%impacts(sweep%n_gaps), res%meets(sweep%n_gaps))
+      call coupled_prepare(quiet, models, ag(0), pairs, prep, error)
+      if (allocated(error)) return
+      do i = 1, sweep%n_gaps
+         gaps = res%gap(i)
+         call coupled_integrate(quiet, models, ag, prep, cpl, cs, error, gaps)
+         if (allocated(error)) then
+            error%message = 'gap sweep, gap = '//str(res%gap(i))//' m: '//error%message
+            return
+         end if
+         res%impacts(i) = sum(cs%pair(:)%impacts)
+         do ib = 1, size(models)
+            do q = 1, n_history_quantities
+               res%max_abs_lambda(q, ib, i) = maxval(abs(influence_coefficient( &
+                                                     cpl%building(ib)%peak(:, q), unc%building(ib)%peak(:, q))))
+            end do
+         end do
+         res%meets(i) = .true.
+         do q = 1, n_history_quantities
+            if (sweep%target_quantities(q)) then
+               if (any(res%max_abs_lambda(q, :, i) > sweep%target)) res%meets(i) = .false.
+            end if
+         end do
+      end do
+      if (sweep%target > 0.0_dp) then
+         do i = sweep%n_gaps, 1, -1
+            if (.not. res%meets(i)) exit
+            res%safe_gap = res%gap(i)
+            res%found = .true.
+         end do
+      end if
+      call system_clock(c1)
+      res%seconds = real(c1 - c0, dp)/real(rate, dp)
+   end subroutine run_sweep
+
+end module pound_sweep
