@@ -55,7 +55,18 @@ def median_of(runs, key):
 
 def main():
     exe, seed, repeats = sys.argv[1], sys.argv[2], int(sys.argv[3])
+    sweep_deck = os.path.join(os.path.dirname(seed), "two_frames_gap_study.nml")
     with tempfile.TemporaryDirectory() as tmp:
+        cpu = []
+        for _ in range(repeats):
+            before = resource.getrusage(resource.RUSAGE_CHILDREN)
+            out = subprocess.run([exe, sweep_deck, "-o", tmp], check=True, capture_output=True, text=True).stdout
+            after = resource.getrusage(resource.RUSAGE_CHILDREN)
+            cpu.append((after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
+        m = re.search(r"gap sweep: (\d+) gaps in\s+([0-9.]+) s", out)
+        print(f"Gap study ({os.path.basename(sweep_deck)}): {m.group(1)} gaps, total process time median "
+              f"{1e3 * statistics.median(cpu):.1f} ms (sweep loop {1e3 * float(m.group(2)):.1f} ms in the last run)")
+        print()
         runs = [run(exe, seed, tmp) for _ in range(repeats)]
         print(f"Seed example ({os.path.basename(seed)}), {repeats} runs:")
         print(f"  total process time (CPU, uncoupled + coupled + outputs), median: "

@@ -176,16 +176,20 @@ contains
       real(dp), intent(in) :: c1, c2, a0, a1, mass(n), kt(2, n), du(n)
       real(dp), intent(inout) :: u(n), v(n), a(n), cv(n)
       real(dp), intent(out) :: mdu, ddamp
-      real(dp) :: cvi
-      integer :: i
+      ! The two sums are kept in four partial sums each, so that the loops are not bound by
+      ! the latency of one long chain of additions.
+      real(dp) :: cvi, sm(0:3), sd(0:3)
+      integer :: i, j, last
 
-      mdu = 0.0_dp
+      sm = 0.0_dp
       do i = 1, n
+         j = iand(i, 3)
          a(i) = c1*du(i) - 2.0_dp*c2*v(i) - a(i)
          v(i) = c2*du(i) - v(i)
          u(i) = u(i) + du(i)
-         mdu = mdu + mass(i)*du(i)
+         sm(j) = sm(j) + mass(i)*du(i)
       end do
+      mdu = (sm(0) + sm(1)) + (sm(2) + sm(3))
       ! C v = a0 M v + a1 (K+G) v; (K+G) tridiagonal with kt(1, i) = (K+G)(i-1, i).
       if (n == 1) then
          cvi = (a0*mass(1) + a1*kt(2, 1))*v(1)
@@ -193,17 +197,21 @@ contains
          cv(1) = cvi
          return
       end if
+      sd = 0.0_dp
       cvi = a0*mass(1)*v(1) + a1*(kt(2, 1)*v(1) + kt(1, 2)*v(2))
-      ddamp = du(1)*(cv(1) + cvi)
+      sd(1) = du(1)*(cv(1) + cvi)
       cv(1) = cvi
-      do i = 2, n - 1
+      last = n - 1
+      do i = 2, last
+         j = iand(i, 3)
          cvi = a0*mass(i)*v(i) + a1*(kt(1, i)*v(i - 1) + kt(2, i)*v(i) + kt(1, i + 1)*v(i + 1))
-         ddamp = ddamp + du(i)*(cv(i) + cvi)
+         sd(j) = sd(j) + du(i)*(cv(i) + cvi)
          cv(i) = cvi
       end do
       cvi = a0*mass(n)*v(n) + a1*(kt(1, n)*v(n - 1) + kt(2, n)*v(n))
-      ddamp = ddamp + du(n)*(cv(n) + cvi)
+      sd(iand(n, 3)) = sd(iand(n, 3)) + du(n)*(cv(n) + cvi)
       cv(n) = cvi
+      ddamp = (sd(0) + sd(1)) + (sd(2) + sd(3))
    end subroutine commit_kernel
 
    !> Kinetic energy of the relative motion, v^T M v / 2 (kJ).
