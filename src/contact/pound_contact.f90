@@ -165,6 +165,8 @@ module pound_contact
       integer :: nonconvex = 0, fallbacks = 0, largest_lcp = 0
       !> Largest accepted natural residual.
       real(dp) :: residual_max = 0.0_dp
+      !> Pivot cap of each Lemke run (0: Lemke's default, 50 (n + 1)).
+      integer :: pivot_cap = 0
       !> Steps Lemke could not solve (fallbacks), in order.
       type(contact_event), allocatable :: events(:)
       integer :: n_events = 0
@@ -435,7 +437,12 @@ contains
          call assemble(cs, na, n, nonconvex)
          if (n == 0) exit
          cs%largest_lcp = max(cs%largest_lcp, n)
-         call lemke_solve(cs%ws, n, cs%mat, cs%qa, cs%za, cs%wa, rep, active_guess=cs%guess(1:n))
+         if (cs%pivot_cap > 0) then
+            call lemke_solve(cs%ws, n, cs%mat, cs%qa, cs%za, cs%wa, rep, active_guess=cs%guess(1:n), &
+                             max_pivots=cs%pivot_cap)
+         else
+            call lemke_solve(cs%ws, n, cs%mat, cs%qa, cs%za, cs%wa, rep, active_guess=cs%guess(1:n))
+         end if
          cs%solves = cs%solves + 1
          cs%pivots_total = cs%pivots_total + rep%pivots
          cs%pivots_max = max(cs%pivots_max, rep%pivots)
