@@ -4,8 +4,9 @@
 !> coupled analysis the contact forces of every step come from the step's LCP
 !> (pound_contact). The response record keeps peaks at every step and histories at
 !> output steps, and the energy balance
-!> W_input = E_kinetic + E_strain + E_damping + E_contact is audited at every output step
-!> (E_contact: energy stored in and dissipated by the joints).
+!> W_input = E_kinetic + E_strain + E_damping + E_contact + E_plastic is audited at every
+!> output step (E_contact: energy stored in the joints' springs and dissipated by their
+!> dashpots; E_plastic: dissipated by the joints' plastic flow).
 module pound_analysis
    use iso_fortran_env, only: int64
    use pound_kinds, only: dp
@@ -21,14 +22,15 @@ module pound_analysis
 
    public :: analysis_result, run_uncoupled, run_coupled, output_steps
    public :: coupled_model, coupled_prepare, coupled_integrate
-   public :: e_input, e_kinetic, e_strain, e_damping, e_contact, n_energy, energy_names
+   public :: e_input, e_kinetic, e_strain, e_damping, e_contact, e_plastic, n_energy, energy_names
 
    !> Energy history components.
    integer, parameter :: e_input = 1, e_kinetic = 2, e_strain = 3, e_damping = 4, e_contact = 5
-   integer, parameter :: n_energy = 5
+   integer, parameter :: e_plastic = 6
+   integer, parameter :: n_energy = 6
    !> Energy component names (HDF5 attribute, listing).
    character(len=*), parameter :: energy_names(n_energy) = &
-      [character(len=8) :: 'input', 'kinetic', 'strain', 'damping', 'contact']
+      [character(len=8) :: 'input', 'kinetic', 'strain', 'damping', 'contact', 'plastic']
 
    !> Result of one analysis (all buildings).
    type :: analysis_result
@@ -42,8 +44,12 @@ module pound_analysis
       real(dp), allocatable :: energy(:, :)
       !> Audit: max over output steps of |W_in - sum of the other terms| / max energy scale.
       real(dp) :: energy_error = 0.0_dp
-      !> Contact force and closing displacement histories (n_pairs, n_out); coupled only.
+      !> Contact force, closing displacement, joint compression (penetration) and plastic
+      !> penetration histories (n_pairs, n_out); coupled only.
       real(dp), allocatable :: contact_force(:, :), contact_closing(:, :)
+      real(dp), allocatable :: contact_penetration(:, :), contact_plastic(:, :)
+      !> Joint state history (n_pairs, n_out): see `pound_contact` (state_open, ...).
+      integer, allocatable :: contact_state(:, :)
       !> Wall-clock time of the time-step loops (s; set-up and output excluded), and the part
       !> of it spent on contact
       !> (forming and solving the step's LCP, applying and committing the forces).
@@ -205,11 +211,16 @@ contains
       every = cfg%output_every
       res%n_out = output_steps(res%n_steps, every)
       allocate (res%time(res%n_out), res%building(nb), res%energy(n_energy, res%n_out))
-      allocate (res%contact_force(cs%m, res%n_out), res%contact_closing(cs%m, res%n_out))
+      allocate (res%contact_force(cs%m, res%n_out), res%contact_closing(cs%m, res%n_out), &
+                res%contact_penetration(cs%m, res%n_out), res%contact_plastic(cs%m, res%n_out), &
+                res%contact_state(cs%m, res%n_out))
       res%time = [(real((k - 1)*every, dp)*cfg%dt, k=1, res%n_out)]
       res%energy = 0.0_dp
       res%contact_force(:, 1) = 0.0_dp
       res%contact_closing(:, 1) = 0.0_dp
+      res%contact_penetration(:, 1) = 0.0_dp
+      res%contact_plastic(:, 1) = 0.0_dp
+      res%contact_state(:, 1) = 0
       do ib = 1, nb
          call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out)
          call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(0), &
@@ -246,10 +257,14 @@ contains
                res%energy(e_strain, k) = res%energy(e_strain, k) + strain_energy(st(ib), models(ib))
                res%energy(e_damping, k) = res%energy(e_damping, k) + st(ib)%damping_energy
             end do
-            res%energy(e_contact, k) = cs%element_work
+            res%energy(e_contact, k) = cs%element_work - cs%plastic_work
+            res%energy(e_plastic, k) = cs%plastic_work
             do ip = 1, cs%m
                res%contact_force(ip, k) = cs%pair(ip)%r
                res%contact_closing(ip, k) = cs%pair(ip)%v
+               res%contact_penetration(ip, k) = cs%pair(ip)%d
+               res%contact_plastic(ip, k) = cs%pair(ip)%plastic
+               res%contact_state(ip, k) = cs%pair(ip)%state
             end do
          end if
       end do
@@ -262,7 +277,7 @@ contains
       res%contact_seconds = real(c_contact, dp)/real(rate, dp)
    end subroutine coupled_integrate
 
-   !> Relative energy balance error: max_t |W_in - E_k - E_s - E_d - E_c| / max_t max(|W_in|, E_k + E_s + E_d + E_c).
+   !> Relative energy balance error: max_t |W_in - E_k - E_s - E_d - E_c - E_p| / max_t max(|W_in|, E_k + ... + E_p).
    pure function energy_balance_error(energy) result(err)
       real(dp), intent(in) :: energy(:, :)
       real(dp) :: err, scale, resid

@@ -9,35 +9,74 @@
 !>
 !>   v_{n+1} = v_pred - F r_{n+1},  F = B^T Khat^{-1} B,  v_pred = B^T (u_n + du_pred) + F r_n.
 !>
-!> With the spring-dashpot law r = p d + c d' (trapezoidal d', phat = p + c2 c) and the open
-!> gap w = g - v + d, each step is the LCP
+!> **Joint.** A spring (law of pound_contact_law: elastic stiffness k0, plastic penetration
+!> d_p, yield force r_y(d_p)) with a dashpot c in parallel, in series with the gap g: the
+!> open gap is w = g - v + d (d the joint's compression), the force r = k0 (d - d_p) + c d'.
+!> The dashpot rate is d'_{n+1} = a (d_{n+1} - d_n) - b d'_n: (a, b) = (2/dt, 1) for the
+!> trapezoidal rule, (1/dt, 0) for backward Euler. With phat = k0 + a c, beta = k0/phat
+!> and the plastic increment x of the step (d_p,n+1 = d_p,n + x):
 !>
-!>   w = (F + diag(1/phat)) r + q,  r >= 0, w >= 0, r.w = 0,  q = g - v_pred + c (c2 d_n + d'_n)/phat,
+!>   w = (F + diag(1/phat)) r + beta x + q,  q = g - v_pred + (c (a d_n + b d'_n) + k0 d_p,n)/phat,
+!>   spring force r_s = beta r + (1 - beta) r_s,n + beta b c d'_n - k0 (1 - beta) x.
 !>
-!> solved by Lemke's method (pound_lemke) over the constraints that can close in this step:
-!> those carrying force at the start of the step or whose q < 0. The others are checked
-!> after the solve (w_k = q_k + F_kA r_A >= 0) and, if one would penetrate, added and the
-!> LCP solved again, so the accepted r solves the full LCP; its natural residual
-!> ||min(r, w)||_inf / ||q||_inf over all constraints must be below `residual_limit`.
+!> **Plasticity (Maier).** The yield condition r_s <= r_y(d_p,n + x) with x >= 0 and
+!> x (r_y - r_s) = 0 is one complementarity pair per joint; r_y is piecewise linear,
+!> r_y(d_p,n + x) = r_y(d_p,n) + h_c x + sum_i (h_{c+i} - h_{c+i-1}) t_i with hinge variables
+!> t_i = max(0, x - x_i) (x_i the distance to node c+i), each one more pair
+!> (t_i >= 0, t_i - x + x_i >= 0, product 0). All rows are written in metres with the
+!> plastic variables scaled to kN (X = k0 x, T_i = k0 t_i), so one LCP per step decides
+!> contact, yielding and the crossing of segment ends together:
+!>
+!>   w   = (F + 1/phat) r + (beta/k0) X + q
+!>   y/k0 = -(beta/k0) r + (h_c + k0 (1-beta))/k0^2 X + sum_i (h_{c+i} - h_{c+i-1})/k0^2 T_i
+!>          + (r_y(d_p,n) - (1-beta) r_s,n - beta b c d'_n)/k0
+!>   s_i = -X/k0 + T_i/k0 + x_i
+!>
+!> Only what the step needs is modelled: contact rows for the constraints carrying force or
+!> whose q < 0, a yield row for each of those with a plastic law, and hinge rows only for
+!> segment ends the solution actually passes. After a solve, a left-out constraint that
+!> would penetrate, or a plastic increment reaching beyond the last modelled segment end,
+!> is added and the LCP solved again, so the accepted solution solves the full problem.
+!> Its natural residual ||min(z, w)||_inf / ||q||_inf over all rows must be below
+!> `residual_limit`.
+!>
+!> **Non-convex steps.** Softening segments (h < 0) make the matrix lose the P-property:
+!> the LCP may have several solutions or none and Lemke may end on a secondary ray. Then
+!> every complementary basis is enumerated (problems of up to `fallback_max_rows` rows) and
+!> the solution nearest to the previous state (forces as they were, no plastic flow) is
+!> taken; every such event is recorded (time, step, pairs). If there is no solution, or the
+!> problem is too large to enumerate, the step fails, naming time, step, pairs and data.
+!> Once a joint with a fracturing law has reached the end of its envelope it is fractured:
+!> it carries nothing and takes no part in the LCP for the rest of the analysis.
 !> Khat^{-1} B is computed once (one tridiagonal solve per constraint end).
 module pound_contact
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_shear_building, only: shear_building
    use pound_newmark, only: newmark_state, newmark_solve
-   use pound_contact_law, only: contact_law, law_elastic
+   use pound_contact_law, only: contact_law, make_elastic, make_elastic_plastic, make_bilinear, &
+                                make_piecewise, make_parabola_cubic, is_plastic, yield_force, &
+                                yield_segment, rate_trapezoidal, rate_backward_euler
    use pound_config, only: contact_config
-   use pound_lemke, only: lemke_workspace, lemke_init, lemke_solve, lemke_report, &
+   use pound_lemke, only: lemke_workspace, lemke_init, lemke_solve, lemke_report, lcp_evaluate, &
                           lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
+   use pound_lcp_enumerate, only: lcp_enumerate
    implicit none
    private
 
-   public :: contact_pair, contact_system, contact_init, contact_step, contact_commit
-   public :: residual_limit, pairs_from_config
+   public :: contact_pair, contact_system, contact_event, contact_init, contact_init_flexibility
+   public :: contact_step, contact_solve, contact_commit, contact_update
+   public :: residual_limit, fallback_max_rows, max_hinges, pairs_from_config
+   public :: state_open, state_elastic, state_fractured
 
    !> Largest accepted natural residual of a step's LCP, relative to ||q||.
    real(dp), parameter :: residual_limit = 1.0e-10_dp
+   !> Largest LCP (rows) solved by enumeration when Lemke ends on a ray.
+   integer, parameter :: fallback_max_rows = 16
+   !> Largest number of segment ends one joint may pass in one step.
+   integer, parameter :: max_hinges = 32
+   !> Joint state codes (per step; > 0: yielding on that yield segment, 1-based).
+   integer, parameter :: state_open = 0, state_elastic = -1, state_fractured = -2
 
    !> A vector of its own length (Khat^{-1} e of one constraint end).
    type :: column
@@ -56,15 +95,38 @@ module pound_contact
       real(dp) :: gap = 0.0_dp
       !> Constraint law.
       type(contact_law) :: law
-      !> Compressive force r (kN), spring compression d (m) and its rate (m/s).
+      !> Compressive force r (kN), joint compression d (m) and its rate (m/s).
       real(dp) :: r = 0.0_dp, d = 0.0_dp, ddot = 0.0_dp
+      !> Plastic penetration d_p (m) and the plastic increment of the last step (m).
+      real(dp) :: plastic = 0.0_dp, x = 0.0_dp
       !> Closing displacement v = B^T u (m).
       real(dp) :: v = 0.0_dp
+      !> State after the last step: `state_open`, `state_elastic`, `state_fractured` or the
+      !> yield segment (1-based) the joint is yielding on.
+      integer :: state = state_open
+      !> The joint has fractured (carries nothing from then on), and when (s).
+      logical :: fractured = .false.
+      real(dp) :: fracture_time = 0.0_dp
       !> Number of impacts (open -> closed transitions).
       integer :: impacts = 0
       !> Time in contact (s), peak force (kN) and its time (s).
       real(dp) :: contact_time = 0.0_dp, peak_force = 0.0_dp, peak_time = 0.0_dp
+      !> Largest compression d reached (m).
+      real(dp) :: peak_penetration = 0.0_dp
    end type contact_pair
+
+   !> A step whose LCP Lemke could not solve, and what was done.
+   type :: contact_event
+      !> Time (s) and step.
+      real(dp) :: time = 0.0_dp
+      integer :: step = 0
+      !> Lemke's status (`lemke_ray` or `lemke_max_iter`) and the LCP size.
+      integer :: status = 0, rows = 0
+      !> Solutions found by enumeration (the one nearest the previous state was taken).
+      integer :: solutions = 0
+      !> The constraints in the LCP.
+      character(len=:), allocatable :: pairs
+   end type contact_event
 
    !> All constraints of an analysis, their condensed flexibility and LCP statistics.
    type :: contact_system
@@ -76,24 +138,38 @@ module pound_contact
       type(column), allocatable :: y(:, :)
       !> Condensed flexibility F = B^T Khat^{-1} B (m, m).
       real(dp), allocatable :: f(:, :)
-      !> Effective joint stiffness phat = p + c2 c.
-      real(dp), allocatable :: phat(:)
+      !> Per joint: phat = k0 + a c, beta = k0/phat, dashpot rate coefficients a, b.
+      real(dp), allocatable :: phat(:), beta(:), rate_a(:), rate_b(:)
       !> Newmark c2 = 2/dt.
       real(dp) :: c2 = 0.0_dp
-      !> Step work arrays.
-      real(dp), allocatable :: q(:), r_new(:), mat(:, :), qa(:), za(:), wa(:)
-      integer, allocatable :: act(:)
+      !> Largest LCP size (rows) the workspace holds.
+      integer :: n_max = 0
+      !> Step work arrays: contact q, new forces and plastic increments, LCP data.
+      real(dp), allocatable :: q(:), r_new(:), x_new(:), mat(:, :), qa(:), za(:), wa(:), zref(:)
+      !> Closing displacements if all forces were released (m).
+      real(dp), allocatable :: vp(:)
+      !> Row bookkeeping: constraint of each contact row, row of each joint's yield variable,
+      !> modelled segment ends per joint.
+      integer, allocatable :: act(:), yrow(:), nh(:)
       logical, allocatable :: in_lcp(:), guess(:)
       type(lemke_workspace) :: ws
       !> Work of the contact forces on the structure, sum r_avg dv (kJ).
       real(dp) :: work = 0.0_dp
-      !> Work stored in or dissipated by the joints, sum r_avg dd (kJ).
-      real(dp) :: element_work = 0.0_dp
+      !> Work stored in or dissipated by the joints, sum r_avg dd (kJ), and the part of it
+      !> dissipated by plastic flow, sum r_s,avg dd_p (kJ).
+      real(dp) :: element_work = 0.0_dp, plastic_work = 0.0_dp
       !> LCP statistics: solves, total and largest pivot counts, steps needing no pivoting,
-      !> warm starts accepted, re-solves after an excluded constraint would have closed.
+      !> warm starts accepted, re-solves after an excluded constraint would have closed or a
+      !> segment end was passed, steps with softening rows (non-convex), enumeration fallbacks.
       integer :: solves = 0, pivots_total = 0, pivots_max = 0, trivial = 0, warm = 0, resolves = 0
+      integer :: nonconvex = 0, fallbacks = 0, largest_lcp = 0
       !> Largest accepted natural residual.
       real(dp) :: residual_max = 0.0_dp
+      !> Pivot cap of each Lemke run (0: Lemke's default, 50 (n + 1)).
+      integer :: pivot_cap = 0
+      !> Steps Lemke could not solve (fallbacks), in order.
+      type(contact_event), allocatable :: events(:)
+      integer :: n_events = 0
    end type contact_system
 
 contains
@@ -108,56 +184,108 @@ contains
       type(newmark_state), intent(in) :: states(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      type(column), allocatable :: y(:, :)
+      real(dp), allocatable :: f(:, :)
       integer :: k, l, e, g, b, m
 
       m = size(pairs)
-      cs%m = m
-      cs%pair = pairs
-      if (m == 0) return
-      cs%c2 = states(1)%c2
-      allocate (cs%y(2, m), cs%f(m, m), cs%phat(m), cs%q(m), cs%r_new(m), cs%mat(m, m), &
-                cs%qa(m), cs%za(m), cs%wa(m), cs%act(m), cs%in_lcp(m), cs%guess(m))
+      allocate (y(2, m), f(m, m))
       do k = 1, m
-         associate (p => cs%pair(k))
-            if (p%law%stiffness <= 0.0_dp) then
-               call fatal_error(error, 'contact '//p%label//': stiffness must be > 0')
-               return
-            end if
-            cs%phat(k) = p%law%stiffness + cs%c2*p%law%dashpot
-            do e = 1, 2
-               b = p%building(e)
-               if (b == 0) cycle
-               allocate (cs%y(e, k)%x(states(b)%n))
-               cs%y(e, k)%x = 0.0_dp
-               cs%y(e, k)%x(p%floor(e)) = 1.0_dp
-               call newmark_solve(states(b), cs%y(e, k)%x)
-            end do
-         end associate
+         do e = 1, 2
+            b = pairs(k)%building(e)
+            if (b == 0) cycle
+            allocate (y(e, k)%x(states(b)%n))
+            y(e, k)%x = 0.0_dp
+            y(e, k)%x(pairs(k)%floor(e)) = 1.0_dp
+            call newmark_solve(states(b), y(e, k)%x)
+         end do
       end do
       ! F_kl = sum over ends e of k and g of l on the same building of s_e s_g y(g,l)(floor_e).
       do l = 1, m
          do k = 1, m
-            cs%f(k, l) = 0.0_dp
+            f(k, l) = 0.0_dp
             do e = 1, 2
-               b = cs%pair(k)%building(e)
+               b = pairs(k)%building(e)
                if (b == 0) cycle
                do g = 1, 2
-                  if (cs%pair(l)%building(g) /= b) cycle
-                  cs%f(k, l) = cs%f(k, l) + end_sign(e)*end_sign(g)*cs%y(g, l)%x(cs%pair(k)%floor(e))
+                  if (pairs(l)%building(g) /= b) cycle
+                  f(k, l) = f(k, l) + end_sign(e)*end_sign(g)*y(g, l)%x(pairs(k)%floor(e))
                end do
             end do
          end do
       end do
-      call lemke_init(cs%ws, m)
+      call contact_init_flexibility(cs, pairs, f, 2.0_dp/states(1)%c2, error)
+      if (allocated(error)) return
+      call move_alloc(y, cs%y)
    end subroutine contact_init
 
+   !> Set up the joints for a given condensed flexibility F (the structure enters only
+   !> through F and v_pred, so F = 0 drives the joints by prescribed closing displacements).
+   subroutine contact_init_flexibility(cs, pairs, f, dt, error)
+      !> The contact system.
+      type(contact_system), intent(out) :: cs
+      !> The constraints (ends, gaps, laws).
+      type(contact_pair), intent(in) :: pairs(:)
+      !> Condensed flexibility F (m, m), symmetric positive semidefinite.
+      real(dp), intent(in) :: f(:, :)
+      !> Time step (s).
+      real(dp), intent(in) :: dt
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k, m, ns
+
+      m = size(pairs)
+      cs%m = m
+      cs%pair = pairs
+      cs%f = f
+      if (m == 0) return
+      cs%c2 = 2.0_dp/dt
+      allocate (cs%phat(m), cs%beta(m), cs%rate_a(m), cs%rate_b(m), cs%q(m), cs%vp(m), cs%r_new(m), &
+                cs%x_new(m), &
+                cs%in_lcp(m), cs%yrow(m), cs%nh(m))
+      cs%n_max = m
+      do k = 1, m
+         associate (p => cs%pair(k), law => cs%pair(k)%law)
+            if (.not. (law%stiffness > 0.0_dp)) then
+               call fatal_error(error, 'contact '//p%label//': stiffness must be > 0')
+               return
+            end if
+            if (law%dashpot_rate == rate_trapezoidal) then
+               cs%rate_a(k) = cs%c2
+               cs%rate_b(k) = 1.0_dp
+            else
+               cs%rate_a(k) = 1.0_dp/dt
+               cs%rate_b(k) = 0.0_dp
+            end if
+            cs%phat(k) = law%stiffness + cs%rate_a(k)*law%dashpot
+            cs%beta(k) = law%stiffness/cs%phat(k)
+            if (is_plastic(law)) then
+               ns = size(law%yp) - 1
+               cs%n_max = cs%n_max + 1 + min(ns, max_hinges)
+            end if
+         end associate
+      end do
+      associate (n => cs%n_max)
+         allocate (cs%mat(n, n), cs%qa(n), cs%za(n), cs%wa(n), cs%zref(n), cs%act(n), cs%guess(n))
+      end associate
+      cs%nh = 0
+      cs%yrow = 0
+      cs%r_new = 0.0_dp
+      cs%x_new = 0.0_dp
+      allocate (cs%events(0))
+      call lemke_init(cs%ws, cs%n_max)
+   end subroutine contact_init_flexibility
+
    !> One constraint per facing floor pair of the deck's `&contact` groups, in deck order.
-   function pairs_from_config(contacts, names) result(pairs)
+   function pairs_from_config(contacts, names, error) result(pairs)
       !> The deck's contact groups.
       type(contact_config), intent(in) :: contacts(:)
       !> Building names, in deck order.
       character(len=*), intent(in) :: names(:)
+      !> Error state (a law that cannot be built).
+      type(error_type), allocatable, intent(out) :: error
       type(contact_pair), allocatable :: pairs(:)
+      type(contact_law) :: law
       integer :: i, k, n
 
       n = 0
@@ -168,6 +296,28 @@ contains
       n = 0
       do i = 1, size(contacts)
          associate (c => contacts(i))
+            select case (c%law)
+            case ('elastic_plastic')
+               call make_elastic_plastic(law, c%stiffness, c%yield_force, c%dashpot, error)
+            case ('bilinear')
+               call make_bilinear(law, c%stiffness, c%yield_force, c%second_slope, c%dashpot, error)
+            case ('piecewise')
+               call make_piecewise(law, c%envelope_d, c%envelope_r, c%dashpot, error)
+            case ('parabola_cubic')
+               call make_parabola_cubic(law, c%stiffness, c%peak_penetration, c%fracture_penetration, &
+                                        c%n_segments, c%dashpot, error)
+            case default
+               call make_elastic(law, c%stiffness, c%dashpot, error)
+            end select
+            if (allocated(error)) then
+               error%message = '&contact #'//str(i)//': '//error%message
+               return
+            end if
+            if (c%dashpot_rate == 'trapezoidal') then
+               law%dashpot_rate = rate_trapezoidal
+            else
+               law%dashpot_rate = rate_backward_euler
+            end if
             do k = 1, size(c%floor_left)
                n = n + 1
                pairs(n)%label = trim(names(c%left_index))//':'//str(c%floor_left(k))//'-'// &
@@ -175,9 +325,7 @@ contains
                pairs(n)%building = [c%left_index, c%right_index]
                pairs(n)%floor = [c%floor_left(k), c%floor_right(k)]
                pairs(n)%gap = c%gap(k)
-               pairs(n)%law%kind = law_elastic
-               pairs(n)%law%stiffness = c%stiffness
-               pairs(n)%law%dashpot = c%dashpot
+               pairs(n)%law = law
             end do
          end associate
       end do
@@ -204,10 +352,8 @@ contains
       integer, intent(in) :: step
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      type(lemke_report) :: rep
-      integer :: k, e, b, na, i, j
-      real(dp) :: vp, dr, qnorm, wk, resid
-      logical :: added
+      integer :: k, e, b, i
+      real(dp) :: vp, dr
 
       if (cs%m == 0) return
       ! Closing displacement if every force were released in this step.
@@ -219,82 +365,13 @@ contains
             i = cs%pair(k)%floor(e)
             vp = vp + end_sign(e)*(states(b)%u(i) + states(b)%du(i))
          end do
-         cs%q(k) = vp
+         cs%vp(k) = vp
       end do
       do k = 1, cs%m
-         if (cs%pair(k)%r /= 0.0_dp) cs%q = cs%q + cs%f(:, k)*cs%pair(k)%r
+         if (cs%pair(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%pair(k)%r
       end do
-      qnorm = 0.0_dp
-      do k = 1, cs%m
-         associate (p => cs%pair(k))
-            cs%q(k) = p%gap - cs%q(k) + p%law%dashpot*(cs%c2*p%d + p%ddot)/cs%phat(k)
-            cs%in_lcp(k) = p%r > 0.0_dp .or. cs%q(k) < 0.0_dp
-         end associate
-         qnorm = max(qnorm, abs(cs%q(k)))
-      end do
-      qnorm = max(qnorm, tiny(1.0_dp))
-
-      cs%r_new = 0.0_dp
-      do
-         na = 0
-         do k = 1, cs%m
-            if (.not. cs%in_lcp(k)) cycle
-            na = na + 1
-            cs%act(na) = k
-         end do
-         if (na == 0) exit
-         do j = 1, na
-            do i = 1, na
-               cs%mat(i, j) = cs%f(cs%act(i), cs%act(j))
-            end do
-            cs%mat(j, j) = cs%mat(j, j) + 1.0_dp/cs%phat(cs%act(j))
-            cs%qa(j) = cs%q(cs%act(j))
-            cs%guess(j) = cs%pair(cs%act(j))%r > 0.0_dp
-         end do
-         call lemke_solve(cs%ws, na, cs%mat, cs%qa, cs%za, cs%wa, rep, active_guess=cs%guess(1:na))
-         cs%solves = cs%solves + 1
-         cs%pivots_total = cs%pivots_total + rep%pivots
-         cs%pivots_max = max(cs%pivots_max, rep%pivots)
-         if (rep%status == LEMKE_TRIVIAL) cs%trivial = cs%trivial + 1
-         if (rep%warm_started) cs%warm = cs%warm + 1
-         if ((rep%status /= LEMKE_SOLVED .and. rep%status /= LEMKE_TRIVIAL) .or. &
-             .not. (rep%residual <= residual_limit)) then
-            call fatal_error(error, 'contact LCP failed at t = '//str(t)//' s (step '//str(step)// &
-                             '): Lemke ended with '//lemke_status_name(rep%status)//', residual '// &
-                             str(rep%residual)//', '//str(rep%pivots)//' pivots; constraints '// &
-                             labels(cs, cs%act(1:na))//'; q = '//vector_text(cs%qa(1:na)))
-            return
-         end if
-         cs%r_new = 0.0_dp
-         cs%r_new(cs%act(1:na)) = cs%za(1:na)
-         ! Constraints left out must stay open under the new forces.
-         added = .false.
-         do k = 1, cs%m
-            if (cs%in_lcp(k)) cycle
-            wk = cs%q(k) + dot_product(cs%f(k, cs%act(1:na)), cs%za(1:na))
-            if (wk < -residual_limit*qnorm) then
-               cs%in_lcp(k) = .true.
-               added = .true.
-            end if
-         end do
-         if (.not. added) exit
-         cs%resolves = cs%resolves + 1
-      end do
-
-      ! Verify the accepted forces on the full LCP.
-      resid = 0.0_dp
-      do k = 1, cs%m
-         wk = cs%q(k) + dot_product(cs%f(k, cs%act(1:na)), cs%r_new(cs%act(1:na))) + cs%r_new(k)/cs%phat(k)
-         if (na == 0) wk = cs%q(k)
-         resid = max(resid, abs(min(cs%r_new(k), wk)))
-      end do
-      resid = resid/qnorm
-      cs%residual_max = max(cs%residual_max, resid)
-      if (.not. (resid <= residual_limit)) then
-         call fatal_error(error, 'contact LCP solution rejected at t = '//str(t)//' s (step '// &
-                          str(step)//'): natural residual '//str(resid)//' > '//str(residual_limit))
-         return
-      end if
+      call contact_solve(cs, cs%vp, t, step, error)
+      if (allocated(error)) return
 
       ! du -= Khat^{-1} B (r_new - r_old), only where the force changed.
       do k = 1, cs%m
@@ -308,6 +385,285 @@ contains
       end do
    end subroutine contact_step
 
+   !> Solve the step's LCP for the closing displacements `v_pred` (forces released): sets
+   !> `cs%r_new` and `cs%x_new`. `v_pred` may be `cs%vp` (not `cs%q`).
+   subroutine contact_solve(cs, v_pred, t, step, error)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+      !> Closing displacement of each constraint if all forces were released (m).
+      real(dp), intent(in) :: v_pred(:)
+      !> Time at the end of the step (s), for messages.
+      real(dp), intent(in) :: t
+      !> Step number, for messages.
+      integer, intent(in) :: step
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(lemke_report) :: rep
+      integer :: k, na, n, j, nxt
+      real(dp) :: qnorm, wk, resid, reach
+      logical :: added, nonconvex
+
+      if (cs%m == 0) return
+      qnorm = 0.0_dp
+      do k = 1, cs%m
+         associate (p => cs%pair(k), c => cs%pair(k)%law%dashpot)
+            cs%q(k) = p%gap - v_pred(k) + (c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + &
+                                           p%law%stiffness*p%plastic)/cs%phat(k)
+            cs%in_lcp(k) = .not. p%fractured .and. (p%r > 0.0_dp .or. cs%q(k) < 0.0_dp)
+            if (.not. p%fractured) qnorm = max(qnorm, abs(cs%q(k)))
+         end associate
+      end do
+      qnorm = max(qnorm, tiny(1.0_dp))
+      ! Segment ends within reach: those the plastic increment would pass if the joint alone
+      ! took up all of its predicted penetration -q plastically (more are added on demand).
+      do k = 1, cs%m
+         cs%nh(k) = 0
+         if (.not. cs%in_lcp(k) .or. .not. is_plastic(cs%pair(k)%law)) cycle
+         associate (law => cs%pair(k)%law, pl => cs%pair(k)%plastic)
+            reach = pl + max(0.0_dp, -cs%q(k))/cs%beta(k)
+            nxt = yield_segment(law, pl) + 1
+            do while (nxt <= size(law%yp) - 1 .and. cs%nh(k) < max_hinges)
+               if (law%yp(nxt) >= reach) exit
+               cs%nh(k) = cs%nh(k) + 1
+               nxt = nxt + 1
+            end do
+         end associate
+      end do
+      nonconvex = .false.
+
+      cs%r_new = 0.0_dp
+      cs%x_new = 0.0_dp
+      do
+         call assemble(cs, na, n, nonconvex)
+         if (n == 0) exit
+         cs%largest_lcp = max(cs%largest_lcp, n)
+         if (cs%pivot_cap > 0) then
+            call lemke_solve(cs%ws, n, cs%mat, cs%qa, cs%za, cs%wa, rep, active_guess=cs%guess(1:n), &
+                             max_pivots=cs%pivot_cap)
+         else
+            call lemke_solve(cs%ws, n, cs%mat, cs%qa, cs%za, cs%wa, rep, active_guess=cs%guess(1:n))
+         end if
+         cs%solves = cs%solves + 1
+         cs%pivots_total = cs%pivots_total + rep%pivots
+         cs%pivots_max = max(cs%pivots_max, rep%pivots)
+         if (rep%status == LEMKE_TRIVIAL) cs%trivial = cs%trivial + 1
+         if (rep%warm_started) cs%warm = cs%warm + 1
+         if (rep%status /= LEMKE_SOLVED .and. rep%status /= LEMKE_TRIVIAL) then
+            ! A missing segment end can leave the model without a solution (a softening
+            ! line extended below r = 0): model one more wherever there is one, and retry.
+            if (more_hinges(cs, na)) then
+               cs%resolves = cs%resolves + 1
+               cycle
+            end if
+            call fallback(cs, n, rep, t, step, error)
+            if (allocated(error)) return
+         else if (.not. (rep%residual <= residual_limit)) then
+            call fatal_error(error, 'contact LCP failed at t = '//str(t)//' s (step '//str(step)// &
+                             '): Lemke ended with '//lemke_status_name(rep%status)//', residual '// &
+                             str(rep%residual)//', '//str(rep%pivots)//' pivots; constraints '// &
+                             labels(cs, cs%act(1:na))//'; q = '//vector_text(cs%qa(1:n)))
+            return
+         end if
+         cs%r_new = 0.0_dp
+         cs%x_new = 0.0_dp
+         cs%r_new(cs%act(1:na)) = cs%za(1:na)
+         added = .false.
+         do j = 1, na
+            k = cs%act(j)
+            if (cs%yrow(k) > 0) cs%x_new(k) = cs%za(cs%yrow(k))/cs%pair(k)%law%stiffness
+         end do
+         ! Constraints left out must stay open under the new forces.
+         do k = 1, cs%m
+            if (cs%in_lcp(k) .or. cs%pair(k)%fractured) cycle
+            wk = cs%q(k) + dot_product(cs%f(k, cs%act(1:na)), cs%za(1:na))
+            if (wk < -residual_limit*qnorm) then
+               cs%in_lcp(k) = .true.
+               added = .true.
+            end if
+         end do
+         ! Plastic flow must not pass a segment end that is not modelled.
+         do j = 1, na
+            k = cs%act(j)
+            if (cs%yrow(k) == 0 .or. cs%x_new(k) <= 0.0_dp) cycle
+            associate (law => cs%pair(k)%law, pl => cs%pair(k)%plastic)
+               reach = pl + cs%x_new(k) - residual_limit*qnorm
+               nxt = yield_segment(law, pl) + cs%nh(k) + 1
+               do while (nxt <= size(law%yp) - 1)
+                  if (law%yp(nxt) >= reach) exit
+                  cs%nh(k) = cs%nh(k) + 1
+                  added = .true.
+                  nxt = nxt + 1
+               end do
+            end associate
+            if (cs%nh(k) > max_hinges) then
+               call fatal_error(error, 'contact '//cs%pair(k)%label//' at t = '//str(t)//' s (step '// &
+                                str(step)//'): the joint passes more than '//str(max_hinges)// &
+                                ' segment ends of its law in one step; reduce dt or n_segments')
+               return
+            end if
+         end do
+         if (.not. added) exit
+         cs%resolves = cs%resolves + 1
+      end do
+      if (nonconvex) cs%nonconvex = cs%nonconvex + 1
+
+      ! Verify the accepted solution on the full LCP: the assembled rows and the left-out
+      ! constraints.
+      resid = 0.0_dp
+      if (n > 0) then
+         call lcp_evaluate(n, cs%mat, cs%qa, cs%za, cs%wa, resid)
+         resid = resid*max(maxval(abs(cs%qa(1:n))), tiny(1.0_dp))
+      end if
+      do k = 1, cs%m
+         if (cs%in_lcp(k) .or. cs%pair(k)%fractured) cycle
+         wk = cs%q(k)
+         if (na > 0) wk = wk + dot_product(cs%f(k, cs%act(1:na)), cs%za(1:na))
+         resid = max(resid, abs(min(0.0_dp, wk)))
+      end do
+      if (n > 0) qnorm = max(qnorm, maxval(abs(cs%qa(1:n))))
+      resid = resid/qnorm
+      cs%residual_max = max(cs%residual_max, resid)
+      if (.not. (resid <= residual_limit)) then
+         call fatal_error(error, 'contact LCP solution rejected at t = '//str(t)//' s (step '// &
+                          str(step)//'): natural residual '//str(resid)//' > '//str(residual_limit)// &
+                          '; constraints '//labels(cs, cs%act(1:na)))
+         return
+      end if
+   end subroutine contact_solve
+
+   !> Assemble the LCP of the constraints in `cs%in_lcp` (contact rows 1..na, then per
+   !> plastic joint its yield row and `cs%nh` hinge rows), the warm-start guess and the
+   !> reference point (previous forces, no plastic flow).
+   subroutine assemble(cs, na, n, nonconvex)
+      type(contact_system), intent(inout) :: cs
+      integer, intent(out) :: na, n
+      logical, intent(inout) :: nonconvex
+      integer :: i, j, k, l, seg, iy
+      real(dp) :: k0, rs
+
+      na = 0
+      do k = 1, cs%m
+         cs%yrow(k) = 0
+         if (.not. cs%in_lcp(k)) cycle
+         na = na + 1
+         cs%act(na) = k
+      end do
+      n = na
+      do j = 1, na
+         k = cs%act(j)
+         if (.not. is_plastic(cs%pair(k)%law)) cycle
+         n = n + 1
+         cs%yrow(k) = n
+         n = n + cs%nh(k)
+      end do
+      if (n == 0) return
+      cs%mat(1:n, 1:n) = 0.0_dp
+      do j = 1, na
+         do i = 1, na
+            cs%mat(i, j) = cs%f(cs%act(i), cs%act(j))
+         end do
+         k = cs%act(j)
+         cs%mat(j, j) = cs%mat(j, j) + 1.0_dp/cs%phat(k)
+         cs%qa(j) = cs%q(k)
+         cs%guess(j) = cs%pair(k)%r > 0.0_dp
+         cs%zref(j) = cs%pair(k)%r
+      end do
+      do j = 1, na
+         k = cs%act(j)
+         iy = cs%yrow(k)
+         if (iy == 0) cycle
+         associate (p => cs%pair(k), law => cs%pair(k)%law, b => cs%beta(k))
+            k0 = law%stiffness
+            seg = yield_segment(law, p%plastic)
+            rs = k0*(p%d - p%plastic)
+            cs%mat(j, iy) = b/k0
+            cs%mat(iy, j) = -b/k0
+            cs%mat(iy, iy) = (law%yh(seg) + k0*(1.0_dp - b))/k0**2
+            cs%qa(iy) = (yield_force(law, p%plastic) - (1.0_dp - b)*rs - &
+                         b*cs%rate_b(k)*law%dashpot*p%ddot)/k0
+            cs%guess(iy) = p%x > 0.0_dp
+            cs%zref(iy) = 0.0_dp
+            if (law%yh(seg) < 0.0_dp) nonconvex = .true.
+            do l = 1, cs%nh(k)
+               i = iy + l
+               cs%mat(iy, i) = (law%yh(seg + l) - law%yh(seg + l - 1))/k0**2
+               cs%mat(i, iy) = -1.0_dp/k0
+               cs%mat(i, i) = 1.0_dp/k0
+               cs%qa(i) = law%yp(seg + l) - p%plastic
+               cs%guess(i) = .false.
+               cs%zref(i) = 0.0_dp
+               if (law%yh(seg + l) < 0.0_dp) nonconvex = .true.
+            end do
+         end associate
+      end do
+   end subroutine assemble
+
+   !> One more modelled segment end for every plastic joint in the LCP that has one left;
+   !> false if there was none.
+   logical function more_hinges(cs, na) result(added)
+      type(contact_system), intent(inout) :: cs
+      integer, intent(in) :: na
+      integer :: j, k
+
+      added = .false.
+      do j = 1, na
+         k = cs%act(j)
+         if (cs%yrow(k) == 0 .or. cs%nh(k) >= max_hinges) cycle
+         if (yield_segment(cs%pair(k)%law, cs%pair(k)%plastic) + cs%nh(k) >= size(cs%pair(k)%law%yp) - 1) cycle
+         cs%nh(k) = cs%nh(k) + 1
+         added = .true.
+      end do
+   end function more_hinges
+
+   !> Lemke failed (ray or pivot cap): enumerate the complementary bases and take the
+   !> solution nearest the previous state; record the event. Fails if there is none.
+   subroutine fallback(cs, n, rep, t, step, error)
+      type(contact_system), intent(inout) :: cs
+      integer, intent(in) :: n
+      type(lemke_report), intent(in) :: rep
+      real(dp), intent(in) :: t
+      integer, intent(in) :: step
+      type(error_type), allocatable, intent(out) :: error
+      type(contact_event), allocatable :: grown(:)
+      integer :: nsol, k
+      character(len=:), allocatable :: who
+
+      who = ''
+      do k = 1, cs%m
+         if (.not. cs%in_lcp(k)) cycle
+         if (len(who) > 0) who = who//', '
+         who = who//cs%pair(k)%label
+      end do
+      if (n > fallback_max_rows) then
+         call fatal_error(error, 'contact LCP failed at t = '//str(t)//' s (step '//str(step)// &
+                          '): Lemke ended with '//lemke_status_name(rep%status)//' after '// &
+                          str(rep%pivots)//' pivots on a non-convex LCP of '//str(n)// &
+                          ' rows, too large to enumerate (limit '//str(fallback_max_rows)// &
+                          '); constraints '//who//'; reduce dt')
+         return
+      end if
+      call lcp_enumerate(cs%mat(1:n, 1:n), cs%qa(1:n), nsol, z=cs%za(1:n), reference=cs%zref(1:n), &
+                         error=error)
+      if (allocated(error)) return
+      if (nsol == 0) then
+         call fatal_error(error, 'contact LCP has no solution at t = '//str(t)//' s (step '//str(step)// &
+                          '): Lemke ended with '//lemke_status_name(rep%status)//' and enumeration of '// &
+                          'all '//str(2**n)//' complementary bases found none (softening steeper than '// &
+                          'the structure can follow: snap-back); constraints '//who//'; q = '// &
+                          vector_text(cs%qa(1:n)))
+         return
+      end if
+      cs%fallbacks = cs%fallbacks + 1
+      cs%n_events = cs%n_events + 1
+      if (cs%n_events > size(cs%events)) then
+         allocate (grown(max(8, 2*size(cs%events))))
+         grown(1:size(cs%events)) = cs%events
+         call move_alloc(grown, cs%events)
+      end if
+      cs%events(cs%n_events) = contact_event(time=t, step=step, status=rep%status, rows=n, &
+                                             solutions=nsol, pairs=who)
+   end subroutine fallback
+
    !> Update the joints after `newmark_commit`: compression, statistics and energy.
    subroutine contact_commit(cs, states, t, dt)
       !> The contact system.
@@ -319,22 +675,67 @@ contains
       !> Time step (s).
       real(dp), intent(in) :: dt
       integer :: k, e, b
-      real(dp) :: v, r, r0, d, ddot
+
+      ! The closing displacements at the end of the step.
+      do k = 1, cs%m
+         cs%vp(k) = 0.0_dp
+         do e = 1, 2
+            b = cs%pair(k)%building(e)
+            if (b == 0) cycle
+            cs%vp(k) = cs%vp(k) + end_sign(e)*states(b)%u(cs%pair(k)%floor(e))
+         end do
+      end do
+      call contact_update(cs, cs%vp, t, dt)
+   end subroutine contact_commit
+
+   !> Update the joints for the accepted step: plastic penetration, compression, rate,
+   !> state, statistics and energy. `v` (closing displacements at the end of the step) may
+   !> be `cs%vp` itself (not modified here).
+   subroutine contact_update(cs, v, t, dt)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+      !> Closing displacement of each constraint at the end of the step (m).
+      real(dp), intent(in) :: v(:)
+      !> Time at the end of the step (s).
+      real(dp), intent(in) :: t
+      !> Time step (s).
+      real(dp), intent(in) :: dt
+      integer :: k, seg, ns
+      real(dp) :: r, r0, d, ddot, pl, k0, rs0, rs, tol
 
       do k = 1, cs%m
-         associate (p => cs%pair(k))
-            v = 0.0_dp
-            do e = 1, 2
-               b = p%building(e)
-               if (b == 0) cycle
-               v = v + end_sign(e)*states(b)%u(p%floor(e))
-            end do
+         associate (p => cs%pair(k), c => cs%pair(k)%law%dashpot)
+            k0 = p%law%stiffness
             r0 = p%r
             r = cs%r_new(k)
+            if (p%fractured) then
+               cs%work = cs%work + 0.5_dp*r0*(v(k) - p%v)
+               p%r = 0.0_dp
+               p%v = v(k)
+               cycle
+            end if
+            pl = p%plastic + cs%x_new(k)
+            seg = 0
+            if (is_plastic(p%law)) then
+               ! Land exactly on a segment end passed within round-off.
+               seg = yield_segment(p%law, pl)
+               ns = size(p%law%yp) - 1
+               if (ns > 0) then
+                  tol = 1.0e-9_dp*(p%law%yp(min(seg + 1, ns)) - p%law%yp(min(seg + 1, ns) - 1))
+                  if (seg < ns .and. p%law%yp(min(seg + 1, ns)) - pl <= tol) then
+                     seg = seg + 1
+                     pl = p%law%yp(seg)
+                  else if (seg > 0 .and. pl - p%law%yp(seg) <= tol) then
+                     pl = p%law%yp(seg)
+                  end if
+               end if
+            end if
             ! The spring-dashpot evolves by its own law also while the gap is open (r = 0):
-            ! p d + c d' = 0 relaxes d, which is exactly 0 without a dashpot.
-            d = (r + p%law%dashpot*(cs%c2*p%d + p%ddot))/cs%phat(k)
-            ddot = cs%c2*(d - p%d) - p%ddot
+            ! k0 (d - d_p) + c d' = 0 relaxes d, which stays d_p without a dashpot.
+            d = (r + c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + k0*pl)/cs%phat(k)
+            ddot = cs%rate_a(k)*(d - p%d) - cs%rate_b(k)*p%ddot
+            rs0 = k0*(p%d - p%plastic)
+            rs = k0*(d - pl)
             if (r > 0.0_dp) then
                if (r0 == 0.0_dp) p%impacts = p%impacts + 1
                p%contact_time = p%contact_time + dt
@@ -342,16 +743,32 @@ contains
                   p%peak_force = r
                   p%peak_time = t
                end if
+               p%state = state_elastic
+               ! Yielding: on the segment the flow ended in (at a segment end, the one before).
+               if (cs%x_new(k) > 0.0_dp) p%state = seg + merge(0, 1, seg > 0 .and. pl == p%law%yp(seg))
+            else
+               p%state = state_open
             end if
-            cs%work = cs%work + 0.5_dp*(r0 + r)*(v - p%v)
+            cs%work = cs%work + 0.5_dp*(r0 + r)*(v(k) - p%v)
             cs%element_work = cs%element_work + 0.5_dp*(r0 + r)*(d - p%d)
+            cs%plastic_work = cs%plastic_work + 0.5_dp*(rs0 + rs)*cs%x_new(k)
+            p%peak_penetration = max(p%peak_penetration, d)
             p%r = r
             p%d = d
             p%ddot = ddot
-            p%v = v
+            p%v = v(k)
+            p%x = cs%x_new(k)
+            p%plastic = pl
+            if (p%law%fractures) then
+               if (pl >= p%law%yp(size(p%law%yp) - 1)) then
+                  p%fractured = .true.
+                  p%fracture_time = t
+                  p%state = state_fractured
+               end if
+            end if
          end associate
       end do
-   end subroutine contact_commit
+   end subroutine contact_update
 
    !> Labels of the listed constraints, comma separated.
    function labels(cs, idx) result(s)

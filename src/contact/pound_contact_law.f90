@@ -1,27 +1,87 @@
 !> Constitutive laws of the unilateral constraints between facing floors.
 !>
 !> A law relates the compression d of the joint (penetration beyond the gap) to the
-!> compressive force r >= 0. Per time step the contact solver needs, for every closed
-!> joint, the effective compliance 1/phat and the offset that the law adds to the
-!> step's LCP; the law is a choice in the deck, each kind with its own parameters.
+!> compressive force r >= 0 of its spring, with an optional dashpot in parallel. Every law
+!> is an envelope in the (d, r) plane, loaded from the virgin state along the envelope and
+!> unloaded and reloaded inside it elastically at the initial stiffness k0; the plastic
+!> penetration d_p (d at r = 0 on the unloading line) is remembered, so a crushed joint
+!> reopens at a larger gap.
+!>
+!> | kind | envelope |
+!> |---|---|
+!> | `elastic` | r = k0 d |
+!> | `elastic_plastic` | k0 up to the yield force, then flat |
+!> | `bilinear` | k0 up to the yield force, then a second slope k2 < k0 of either sign |
+!> | `piecewise` | the polygon through the origin and the given points; k0 is its first slope |
+!> | `parabola_cubic` | the paper's Fig. 1b: a parabola from 0 (slope k0) to the peak rB at dB (slope 0), a cubic falling to 0 at dF (slope 0 at both ends, inflexion midway), nothing beyond (fracture) |
+!>
+!> Curved branches are replaced by `n_segments` chords each (equal steps in d). Beyond the
+!> last point the polygon goes on with its last slope; a falling envelope that reaches
+!> r = 0 ends there: the joint is fractured and carries nothing for the rest of the analysis.
+!>
+!> For the per-step LCP (pound_contact) every envelope is stored as the yield force as a
+!> function of the plastic penetration, r_y(d_p), piecewise linear with nodes
+!> (p_i, ry_i), i = 0..ns, p_i = d_i - r_i/k0, and plastic moduli h_i = k0 s/(k0 - s) for an
+!> envelope slope s (segment i runs from node i to node i+1; h_ns is the tail beyond the
+!> last node). Yield segment i+1 (1-based, as reported) is segment i here.
 module pound_contact_law
    use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
    implicit none
    private
 
-   public :: contact_law, law_elastic, law_name
+   public :: contact_law, law_name, law_elastic, law_elastic_plastic, law_bilinear, law_piecewise
+   public :: law_parabola_cubic, rate_trapezoidal, rate_backward_euler, rate_name
+   public :: make_elastic, make_elastic_plastic, make_bilinear, make_piecewise, make_parabola_cubic
+   public :: envelope_force, yield_force, yield_segment, is_plastic, plastic_modulus
+   public :: parabola_cubic_force, max_law_points
 
-   !> Elastic compression-only spring, optional dashpot in parallel: r = p d + c d'.
+   !> Elastic compression-only spring: r = k0 d.
    integer, parameter :: law_elastic = 1
+   !> Elastic-perfectly-plastic: k0 up to the yield force, then flat.
+   integer, parameter :: law_elastic_plastic = 2
+   !> Bilinear: k0 up to the yield force, then a second slope (hardening or softening).
+   integer, parameter :: law_bilinear = 3
+   !> General piecewise-linear envelope through given points.
+   integer, parameter :: law_piecewise = 4
+   !> The seed paper's Fig. 1b: parabola to the peak, cubic down to fracture.
+   integer, parameter :: law_parabola_cubic = 5
+
+   !> Dashpot rate by the trapezoidal rule (Newmark's own): d'_{n+1} = (2/dt) (d_{n+1} - d_n) - d'_n.
+   integer, parameter :: rate_trapezoidal = 1
+   !> Dashpot rate by backward Euler: d'_{n+1} = (d_{n+1} - d_n)/dt (dissipative, no ringing).
+   integer, parameter :: rate_backward_euler = 2
+
+   !> Largest number of envelope points of a law.
+   integer, parameter :: max_law_points = 1000
 
    !> A constraint law and its parameters.
    type :: contact_law
-      !> Kind of law (`law_elastic`).
+      !> Kind of law (`law_elastic`, ...).
       integer :: kind = law_elastic
-      !> Initial (elastic) stiffness p (kN/m).
+      !> Initial (elastic, unloading and reloading) stiffness k0 (kN/m).
       real(dp) :: stiffness = 0.0_dp
-      !> Dashpot coefficient c (kN s/m).
+      !> Dashpot coefficient c (kN s/m), in parallel with the spring.
       real(dp) :: dashpot = 0.0_dp
+      !> How the dashpot rate is integrated (`rate_backward_euler` or `rate_trapezoidal`).
+      integer :: dashpot_rate = rate_backward_euler
+      !> Envelope nodes (d, r) after the origin, as used (chords of curved branches).
+      real(dp), allocatable :: env_d(:), env_r(:)
+      !> Envelope slope beyond the last node (kN/m).
+      real(dp) :: tail_slope = 0.0_dp
+      !> Yield function nodes: plastic penetration p(0:ns) (m) and yield force ry(0:ns) (kN).
+      real(dp), allocatable :: yp(:), yr(:)
+      !> Plastic modulus of yield segment i (from node i on), i = 0..ns (kN/m).
+      real(dp), allocatable :: yh(:)
+      !> The envelope ends at r = 0 in its last node: beyond it the joint is fractured.
+      logical :: fractures = .false.
+      !> Parameters as given, for the listing: yield force (kN), second slope (kN/m),
+      !> peak force rB (kN), peak and fracture penetrations dB, dF (m).
+      real(dp) :: yield_force = 0.0_dp, second_slope = 0.0_dp
+      real(dp) :: peak_force = 0.0_dp, peak_penetration = 0.0_dp, fracture_penetration = 0.0_dp
+      !> Chords per curved branch (`parabola_cubic`).
+      integer :: n_segments = 0
    end type contact_law
 
 contains
@@ -35,9 +95,381 @@ contains
       select case (kind)
       case (law_elastic)
          name = 'elastic'
+      case (law_elastic_plastic)
+         name = 'elastic_plastic'
+      case (law_bilinear)
+         name = 'bilinear'
+      case (law_piecewise)
+         name = 'piecewise'
+      case (law_parabola_cubic)
+         name = 'parabola_cubic'
       case default
          name = 'unknown'
       end select
    end function law_name
+
+   !> Name of a dashpot rate rule, as written in the deck.
+   pure function rate_name(rule) result(name)
+      !> `rate_trapezoidal` or `rate_backward_euler`.
+      integer, intent(in) :: rule
+      character(len=:), allocatable :: name
+
+      select case (rule)
+      case (rate_trapezoidal)
+         name = 'trapezoidal'
+      case (rate_backward_euler)
+         name = 'backward_euler'
+      case default
+         name = 'unknown'
+      end select
+   end function rate_name
+
+   !> The law has yield segments (anything but `elastic`).
+   pure logical function is_plastic(law)
+      !> The law.
+      type(contact_law), intent(in) :: law
+
+      is_plastic = law%kind /= law_elastic
+   end function is_plastic
+
+   !> Plastic modulus h = k0 s/(k0 - s) of an envelope slope s < k0 (kN/m).
+   pure real(dp) function plastic_modulus(k0, s)
+      !> Elastic stiffness.
+      real(dp), intent(in) :: k0
+      !> Envelope slope, < k0.
+      real(dp), intent(in) :: s
+
+      plastic_modulus = k0*s/(k0 - s)
+   end function plastic_modulus
+
+   !> Elastic law r = k0 d.
+   pure subroutine make_elastic(law, k0, dashpot, error)
+      !> The law.
+      type(contact_law), intent(out) :: law
+      !> Stiffness k0 (kN/m), > 0.
+      real(dp), intent(in) :: k0
+      !> Dashpot c (kN s/m), >= 0.
+      real(dp), intent(in) :: dashpot
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      call check_common(k0, dashpot, error)
+      if (allocated(error)) return
+      law%kind = law_elastic
+      law%stiffness = k0
+      law%dashpot = dashpot
+      law%env_d = [real(dp) ::]
+      law%env_r = [real(dp) ::]
+      law%tail_slope = k0
+      law%yp = [real(dp) ::]
+      law%yr = [real(dp) ::]
+      law%yh = [real(dp) ::]
+   end subroutine make_elastic
+
+   !> Elastic-perfectly-plastic: k0 up to the yield force, flat beyond.
+   pure subroutine make_elastic_plastic(law, k0, fy, dashpot, error)
+      !> The law.
+      type(contact_law), intent(out) :: law
+      !> Stiffness k0 (kN/m), > 0.
+      real(dp), intent(in) :: k0
+      !> Yield force (kN), > 0.
+      real(dp), intent(in) :: fy
+      !> Dashpot c (kN s/m), >= 0.
+      real(dp), intent(in) :: dashpot
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      call make_bilinear(law, k0, fy, 0.0_dp, dashpot, error)
+      if (allocated(error)) return
+      law%kind = law_elastic_plastic
+   end subroutine make_elastic_plastic
+
+   !> Bilinear: k0 up to the yield force, then the second slope k2 < k0 (either sign).
+   pure subroutine make_bilinear(law, k0, fy, k2, dashpot, error)
+      !> The law.
+      type(contact_law), intent(out) :: law
+      !> Stiffness k0 (kN/m), > 0.
+      real(dp), intent(in) :: k0
+      !> Yield force (kN), > 0.
+      real(dp), intent(in) :: fy
+      !> Second slope (kN/m), < k0.
+      real(dp), intent(in) :: k2
+      !> Dashpot c (kN s/m), >= 0.
+      real(dp), intent(in) :: dashpot
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      call check_common(k0, dashpot, error)
+      if (allocated(error)) return
+      if (.not. (fy > 0.0_dp)) then
+         call fatal_error(error, 'yield force must be > 0, got '//str(fy))
+         return
+      end if
+      if (.not. (k2 < k0)) then
+         call fatal_error(error, 'second slope '//str(k2)//' must be < the stiffness k0 = '//str(k0))
+         return
+      end if
+      law%kind = law_bilinear
+      law%stiffness = k0
+      law%dashpot = dashpot
+      law%yield_force = fy
+      law%second_slope = k2
+      call finish_envelope(law, [fy/k0], [fy], k2, 1)
+   end subroutine make_bilinear
+
+   !> Piecewise-linear envelope through the origin and the points (d(i), r(i)); k0 = r(1)/d(1).
+   !>
+   !> d strictly increasing and > 0, r(1) > 0, r >= 0, only the last r may be 0, every slope
+   !> after the first below k0. Beyond the last point the last slope goes on (a falling
+   !> envelope ends, fractured, where it reaches r = 0).
+   pure subroutine make_piecewise(law, d, r, dashpot, error)
+      !> The law.
+      type(contact_law), intent(out) :: law
+      !> Penetrations of the points (m).
+      real(dp), intent(in) :: d(:)
+      !> Forces of the points (kN).
+      real(dp), intent(in) :: r(:)
+      !> Dashpot c (kN s/m), >= 0.
+      real(dp), intent(in) :: dashpot
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i, n
+      real(dp) :: k0, s, tail
+
+      n = size(d)
+      if (n < 2 .or. size(r) /= n) then
+         call fatal_error(error, 'a piecewise envelope needs at least 2 points (d, r) with as many '// &
+                          'forces as penetrations')
+         return
+      end if
+      if (n > max_law_points) then
+         call fatal_error(error, 'a piecewise envelope may have at most '//str(max_law_points)//' points')
+         return
+      end if
+      if (.not. (d(1) > 0.0_dp .and. r(1) > 0.0_dp)) then
+         call fatal_error(error, 'the first point must have d > 0 and r > 0 (k0 = r/d is its slope)')
+         return
+      end if
+      k0 = r(1)/d(1)
+      do i = 2, n
+         if (.not. (d(i) > d(i - 1))) then
+            call fatal_error(error, 'point '//str(i)//': penetrations must increase, d = '//str(d(i))// &
+                             ' after '//str(d(i - 1)))
+            return
+         end if
+         if (.not. (r(i) >= 0.0_dp) .or. (r(i) == 0.0_dp .and. i < n)) then
+            call fatal_error(error, 'point '//str(i)//': force r = '//str(r(i))//' must be > 0 '// &
+                             '(only the last point may have r = 0, the fracture point)')
+            return
+         end if
+         s = (r(i) - r(i - 1))/(d(i) - d(i - 1))
+         if (.not. (s < k0*(1.0_dp - 1.0e-9_dp))) then
+            call fatal_error(error, 'point '//str(i)//': slope '//str(s)//' must be below the first '// &
+                             'slope k0 = '//str(k0)//' (the envelope yields at point 1)')
+            return
+         end if
+      end do
+      call check_common(k0, dashpot, error)
+      if (allocated(error)) return
+      law%kind = law_piecewise
+      law%stiffness = k0
+      law%dashpot = dashpot
+      tail = (r(n) - r(n - 1))/(d(n) - d(n - 1))
+      call finish_envelope(law, d, r, tail, 1)
+   end subroutine make_piecewise
+
+   !> The paper's Fig. 1b law from k0, dB, dF (rB = k0 dB/2), `nseg` chords per branch.
+   pure subroutine make_parabola_cubic(law, k0, db, df, nseg, dashpot, error)
+      !> The law.
+      type(contact_law), intent(out) :: law
+      !> Initial stiffness k0 = 2 rB/dB (kN/m), > 0.
+      real(dp), intent(in) :: k0
+      !> Penetration at the peak dB (m), > 0.
+      real(dp), intent(in) :: db
+      !> Penetration at fracture dF (m), > dB.
+      real(dp), intent(in) :: df
+      !> Chords per curved branch, >= 1.
+      integer, intent(in) :: nseg
+      !> Dashpot c (kN s/m), >= 0.
+      real(dp), intent(in) :: dashpot
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: d(2*nseg), r(2*nseg)
+      integer :: i
+
+      call check_common(k0, dashpot, error)
+      if (allocated(error)) return
+      if (.not. (db > 0.0_dp .and. df > db)) then
+         call fatal_error(error, 'need 0 < dB < dF, got dB = '//str(db)//', dF = '//str(df))
+         return
+      end if
+      if (nseg < 1) then
+         call fatal_error(error, 'n_segments must be >= 1, got '//str(nseg))
+         return
+      end if
+      law%kind = law_parabola_cubic
+      law%stiffness = k0
+      law%dashpot = dashpot
+      law%peak_force = 0.5_dp*k0*db
+      law%peak_penetration = db
+      law%fracture_penetration = df
+      law%n_segments = nseg
+      do i = 1, nseg
+         d(i) = db*real(i, dp)/real(nseg, dp)
+         d(nseg + i) = db + (df - db)*real(i, dp)/real(nseg, dp)
+      end do
+      d(nseg) = db
+      d(2*nseg) = df
+      do i = 1, 2*nseg
+         r(i) = parabola_cubic_force(law%peak_force, db, df, d(i))
+      end do
+      r(nseg) = law%peak_force
+      r(2*nseg) = 0.0_dp
+      call finish_envelope(law, d, r, 0.0_dp, 0)
+   end subroutine make_parabola_cubic
+
+   !> The smooth Fig. 1b envelope (not linearised) at penetration d.
+   pure real(dp) function parabola_cubic_force(rb, db, df, d) result(r)
+      !> Peak force rB (kN).
+      real(dp), intent(in) :: rb
+      !> Peak and fracture penetrations (m).
+      real(dp), intent(in) :: db, df
+      !> Penetration (m).
+      real(dp), intent(in) :: d
+      real(dp) :: xi
+
+      if (d <= 0.0_dp) then
+         r = 0.0_dp
+      else if (d <= db) then
+         xi = d/db
+         r = rb*xi*(2.0_dp - xi)
+      else if (d < df) then
+         xi = (d - db)/(df - db)
+         r = rb*(1.0_dp - xi*xi*(3.0_dp - 2.0_dp*xi))
+      else
+         r = 0.0_dp
+      end if
+   end function parabola_cubic_force
+
+   !> Envelope force at penetration d on monotonic loading from the virgin state (kN).
+   pure real(dp) function envelope_force(law, d) result(r)
+      !> The law.
+      type(contact_law), intent(in) :: law
+      !> Penetration (m).
+      real(dp), intent(in) :: d
+      integer :: i, n
+      real(dp) :: d0, r0
+
+      n = size(law%env_d)
+      if (d <= 0.0_dp) then
+         r = 0.0_dp
+         return
+      end if
+      d0 = 0.0_dp
+      r0 = 0.0_dp
+      do i = 1, n
+         if (d <= law%env_d(i)) then
+            r = r0 + (law%env_r(i) - r0)*(d - d0)/(law%env_d(i) - d0)
+            return
+         end if
+         d0 = law%env_d(i)
+         r0 = law%env_r(i)
+      end do
+      if (law%fractures) then
+         r = 0.0_dp
+      else
+         r = r0 + law%tail_slope*(d - d0)
+      end if
+   end function envelope_force
+
+   !> Yield segment (0-based, see the module notes) holding plastic penetration p:
+   !> the last node i with yp(i) <= p (0 for the elastic law).
+   pure integer function yield_segment(law, p) result(seg)
+      !> The law.
+      type(contact_law), intent(in) :: law
+      !> Plastic penetration (m).
+      real(dp), intent(in) :: p
+      integer :: ns
+
+      seg = 0
+      ns = size(law%yp) - 1
+      do while (seg < ns)
+         if (law%yp(seg + 1) > p) exit
+         seg = seg + 1
+      end do
+   end function yield_segment
+
+   !> Yield force r_y(p) at plastic penetration p (kN); huge for the elastic law.
+   pure real(dp) function yield_force(law, p) result(ry)
+      !> The law.
+      type(contact_law), intent(in) :: law
+      !> Plastic penetration (m), >= 0.
+      real(dp), intent(in) :: p
+      integer :: seg
+
+      if (.not. is_plastic(law)) then
+         ry = huge(1.0_dp)
+         return
+      end if
+      seg = yield_segment(law, p)
+      ry = law%yr(seg) + law%yh(seg)*(p - law%yp(seg))
+   end function yield_force
+
+   !> Checks shared by every law.
+   pure subroutine check_common(k0, dashpot, error)
+      real(dp), intent(in) :: k0, dashpot
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. (k0 > 0.0_dp .and. k0 < huge(1.0_dp))) then
+         call fatal_error(error, 'stiffness k0 must be > 0 and finite, got '//str(k0))
+         return
+      end if
+      if (.not. (dashpot >= 0.0_dp .and. dashpot < huge(1.0_dp))) then
+         call fatal_error(error, 'dashpot must be >= 0 and finite, got '//str(dashpot))
+      end if
+   end subroutine check_common
+
+   !> Store the envelope nodes (d, r) (origin implied) and derive the yield function.
+   !> Nodes first..n yield (node `first` is the elastic limit; 0 = the origin); a falling
+   !> tail that reaches r = 0 adds the fracture node.
+   pure subroutine finish_envelope(law, d, r, tail, first)
+      type(contact_law), intent(inout) :: law
+      real(dp), intent(in) :: d(:), r(:), tail
+      integer, intent(in) :: first
+      real(dp) :: dd(0:size(d) + 1), rr(0:size(d) + 1)
+      real(dp) :: k0
+      integer :: n, i, ns
+
+      k0 = law%stiffness
+      n = size(d)
+      dd(0) = 0.0_dp
+      rr(0) = 0.0_dp
+      dd(1:n) = d
+      rr(1:n) = r
+      law%tail_slope = tail
+      law%fractures = rr(n) == 0.0_dp
+      if (.not. law%fractures .and. tail < 0.0_dp) then
+         ! A falling tail ends where it reaches r = 0: the fracture node.
+         dd(n + 1) = dd(n) + rr(n)/(-tail)
+         rr(n + 1) = 0.0_dp
+         n = n + 1
+         law%fractures = .true.
+      end if
+      if (law%fractures) law%tail_slope = 0.0_dp
+      law%env_d = dd(1:n)
+      law%env_r = rr(1:n)
+      ! Yield nodes: envelope nodes first..n.
+      ns = n - first
+      allocate (law%yp(0:ns), law%yr(0:ns), law%yh(0:ns))
+      do i = 0, ns
+         law%yp(i) = dd(first + i) - rr(first + i)/k0
+         law%yr(i) = rr(first + i)
+      end do
+      law%yp(0) = 0.0_dp
+      do i = 0, ns - 1
+         law%yh(i) = (law%yr(i + 1) - law%yr(i))/(law%yp(i + 1) - law%yp(i))
+      end do
+      law%yh(ns) = plastic_modulus(k0, law%tail_slope)
+   end subroutine finish_envelope
 
 end module pound_contact_law

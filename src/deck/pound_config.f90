@@ -86,10 +86,20 @@ module pound_config
       integer, allocatable :: floor_left(:), floor_right(:)
       !> Initial gap of each pair (m).
       real(dp), allocatable :: gap(:)
-      !> Constraint law: 'elastic'.
+      !> Constraint law: 'elastic', 'elastic_plastic', 'bilinear', 'piecewise' or 'parabola_cubic'.
       character(len=:), allocatable :: law
-      !> Joint stiffness p (kN/m) and dashpot c (kN s/m).
+      !> Joint (initial) stiffness k0 (kN/m) and dashpot c (kN s/m).
       real(dp) :: stiffness = 0.0_dp, dashpot = 0.0_dp
+      !> Dashpot rate rule: 'backward_euler' or 'trapezoidal'.
+      character(len=:), allocatable :: dashpot_rate
+      !> Yield force (kN) and second slope (kN/m) of `elastic_plastic` and `bilinear`.
+      real(dp) :: yield_force = 0.0_dp, second_slope = 0.0_dp
+      !> Envelope points of `piecewise`: penetrations (m) and forces (kN).
+      real(dp), allocatable :: envelope_d(:), envelope_r(:)
+      !> `parabola_cubic`: peak force rB (kN), peak and fracture penetrations dB, dF (m),
+      !> chords per curved branch.
+      real(dp) :: peak_force = 0.0_dp, peak_penetration = 0.0_dp, fracture_penetration = 0.0_dp
+      integer :: n_segments = 8
    end type contact_config
 
    !> `&sweep`: the coupled analysis repeated for a range of seismic-joint gaps.

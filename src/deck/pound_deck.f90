@@ -21,14 +21,19 @@
 !>        floors_left = 1, 2, 3      ! floor of `left` in each pair
 !>        floors_right = 1, 2, 3     ! facing floor of `right` in each pair (floors at different heights allowed)
 !>        gap = 3*0.001              ! initial gap of each pair (m): one value per pair, or a single value for all
-!>        law = 'elastic'            ! constraint law (only 'elastic' for now)
-!>        stiffness = 1.0e6          ! joint stiffness p (kN/m), > 0
+!>        law = 'elastic'            ! constraint law, see below
+!>        stiffness = 1.0e6          ! joint stiffness k0 (kN/m), > 0
 !>        dashpot = 0.0              ! joint dashpot c (kN s/m), >= 0, default 0
+!>        dashpot_rate = 'backward_euler'  ! or 'trapezoidal'
 !>     /
 !>
 !> `left`, `right` (building names, any case, distinct), `floors_left`, `floors_right` (same
-!> count, 1..`max_pairs` pairs, each floor in 1..n_storeys of its building), `gap` (>= 0),
-!> `law` and `stiffness` are required. The same floor pair may appear more than once.
+!> count, 1..`max_pairs` pairs, each floor in 1..n_storeys of its building), `gap` (>= 0) and
+!> `law` are required. The same floor pair may appear more than once. Laws and their variables:
+!> 'elastic' (stiffness), 'elastic_plastic' (stiffness, yield_force), 'bilinear' (stiffness,
+!> yield_force, second_slope < stiffness), 'piecewise' (envelope_d, envelope_r: points after the
+!> origin), 'parabola_cubic' (peak_penetration, fracture_penetration, peak_force or stiffness,
+!> n_segments = 8); see pound_contact_law. A variable the chosen law does not use is an error.
 !>
 !> Every value is validated and resolved (masses from load coefficients, storey stiffness
 !> from columns, default gravity loads, record path relative to the deck's directory).
@@ -43,6 +48,7 @@ module pound_deck
    use pound_strings, only: str
    use pound_config, only: deck_type, analysis_config, ground_config, building_config, &
                            contact_config, sweep_config, n_history_quantities, history_names, g_accel
+   use pound_contact_law, only: contact_law, make_piecewise
    implicit none
    private
 
@@ -78,9 +84,17 @@ module pound_deck
       'damping_modes', 'p_delta', 'gravity_load']
    character(len=*), parameter :: sweep_vars(5) = &
       [character(len=17) :: 'gap_from', 'gap_to', 'n_gaps', 'target_lambda', 'target_quantities']
-   character(len=*), parameter :: contact_vars(8) = &
-      [character(len=12) :: 'left', 'right', 'floors_left', 'floors_right', 'gap', 'law', &
-      'stiffness', 'dashpot']
+   character(len=*), parameter :: contact_vars(17) = &
+      [character(len=20) :: 'left', 'right', 'floors_left', 'floors_right', 'gap', 'law', &
+      'stiffness', 'dashpot', 'dashpot_rate', 'yield_force', 'second_slope', 'envelope_d', 'envelope_r', &
+      'peak_force', 'peak_penetration', 'fracture_penetration', 'n_segments']
+   !> Constraint laws, as written in the deck.
+   character(len=*), parameter :: law_names = &
+      "'elastic', 'elastic_plastic', 'bilinear', 'piecewise' or 'parabola_cubic'"
+   !> Largest number of envelope points of a `piecewise` law.
+   integer, parameter :: max_envelope_points = 1000
+   !> Largest number of chords per curved branch of `parabola_cubic`.
+   integer, parameter :: max_segments = 64
 
    !> A variable assignment seen in a group (`name =` or `name(i) =`).
    type :: var_ref
@@ -1076,25 +1090,39 @@ contains
       type(contact_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      character(len=word_len) :: left, right, law
+      character(len=word_len) :: left, right, law, dashpot_rate
       integer, allocatable :: floors_left(:), floors_right(:)
-      real(dp), allocatable :: gap(:)
-      real(dp) :: stiffness, dashpot
+      real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:)
+      real(dp) :: stiffness, dashpot, yield_force, second_slope, peak_force, peak_penetration, &
+                  fracture_penetration
+      integer :: n_segments
       character(len=len(lines)), allocatable :: buf(:)
       character(len=512) :: msg
       type(site) :: at
       integer :: ios, n, k, i
-      namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot
+      namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot, &
+         dashpot_rate, yield_force, second_slope, envelope_d, envelope_r, peak_force, peak_penetration, &
+         fracture_penetration, n_segments
 
       ! One slot more than allowed, so that too many pairs get our message, not gfortran's.
-      allocate (floors_left(max_pairs + 1), floors_right(max_pairs + 1), gap(max_pairs + 1))
+      allocate (floors_left(max_pairs + 1), floors_right(max_pairs + 1), gap(max_pairs + 1), &
+                envelope_d(max_envelope_points + 1), envelope_r(max_envelope_points + 1))
       left = ' '
       right = ' '
       law = ' '
+      dashpot_rate = 'backward_euler'
       floors_left = unset_int
       floors_right = unset_int
       gap = unset_real
+      envelope_d = unset_real
+      envelope_r = unset_real
       stiffness = unset_real
+      yield_force = unset_real
+      second_slope = unset_real
+      peak_force = unset_real
+      peak_penetration = unset_real
+      fracture_penetration = unset_real
+      n_segments = unset_int
       dashpot = 0.0_dp
       at = site_of(path, g)
       call group_text(lines, g, buf)
@@ -1158,23 +1186,196 @@ contains
 
       cfg%law = lower(trim(adjustl(law)))
       select case (cfg%law)
-      case ('elastic')
+      case ('elastic', 'elastic_plastic', 'bilinear', 'piecewise', 'parabola_cubic')
       case ('')
-         call fail(at, 'law', "law is missing, must be 'elastic'", error)
+         call fail(at, 'law', 'law is missing, must be '//law_names, error)
          return
       case default
-         call fail(at, 'law', "law = '"//trim(adjustl(law))//"', must be 'elastic'", error)
+         call fail(at, 'law', "law = '"//trim(adjustl(law))//"', must be "//law_names, error)
          return
       end select
 
-      call require_real(at, 'stiffness', stiffness, 'joint stiffness p in kN/m', error)
+      ! Variables of other laws are an error, not silently ignored.
+      call unused('stiffness', is_set(stiffness), cfg%law == 'piecewise', error)
       if (allocated(error)) return
-      call check_real(at, 'stiffness', stiffness, '>', 0.0_dp, error)
+      call unused('yield_force', is_set(yield_force), &
+                  cfg%law /= 'elastic_plastic' .and. cfg%law /= 'bilinear', error)
       if (allocated(error)) return
+      call unused('second_slope', is_set(second_slope), cfg%law /= 'bilinear', error)
+      if (allocated(error)) return
+      call unused('envelope_d', given_count(envelope_d) > 0, cfg%law /= 'piecewise', error)
+      if (allocated(error)) return
+      call unused('envelope_r', given_count(envelope_r) > 0, cfg%law /= 'piecewise', error)
+      if (allocated(error)) return
+      call unused('peak_force', is_set(peak_force), cfg%law /= 'parabola_cubic', error)
+      if (allocated(error)) return
+      call unused('peak_penetration', is_set(peak_penetration), cfg%law /= 'parabola_cubic', error)
+      if (allocated(error)) return
+      call unused('fracture_penetration', is_set(fracture_penetration), cfg%law /= 'parabola_cubic', error)
+      if (allocated(error)) return
+      call unused('n_segments', n_segments /= unset_int, cfg%law /= 'parabola_cubic', error)
+      if (allocated(error)) return
+
+      select case (cfg%law)
+      case ('elastic', 'elastic_plastic', 'bilinear')
+         call require_real(at, 'stiffness', stiffness, 'joint stiffness k0 in kN/m', error)
+         if (allocated(error)) return
+         call check_real(at, 'stiffness', stiffness, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%stiffness = stiffness
+         if (cfg%law /= 'elastic') then
+            call require_real(at, 'yield_force', yield_force, 'yield force in kN', error)
+            if (allocated(error)) return
+            call check_real(at, 'yield_force', yield_force, '>', 0.0_dp, error)
+            if (allocated(error)) return
+            cfg%yield_force = yield_force
+         end if
+         if (cfg%law == 'bilinear') then
+            call require_real(at, 'second_slope', second_slope, 'slope after yielding in kN/m, '// &
+                              '< stiffness, negative for softening', error)
+            if (allocated(error)) return
+            if (.not. (second_slope < stiffness .and. ieee_is_finite(second_slope))) then
+               call fail(at, 'second_slope', 'second_slope = '//str(second_slope)//', must be < '// &
+                         'stiffness = '//str(stiffness), error)
+               return
+            end if
+            cfg%second_slope = second_slope
+         end if
+      case ('piecewise')
+         call take_points(error)
+         if (allocated(error)) return
+      case ('parabola_cubic')
+         call take_parabola_cubic(error)
+         if (allocated(error)) return
+      end select
+
       call check_real(at, 'dashpot', dashpot, '>=', 0.0_dp, error)
       if (allocated(error)) return
-      cfg%stiffness = stiffness
       cfg%dashpot = dashpot
+      cfg%dashpot_rate = lower(trim(adjustl(dashpot_rate)))
+      if (cfg%dashpot_rate /= 'backward_euler' .and. cfg%dashpot_rate /= 'trapezoidal') then
+         call fail(at, 'dashpot_rate', "dashpot_rate = '"//trim(adjustl(dashpot_rate))// &
+                   "', must be 'backward_euler' or 'trapezoidal'", error)
+         return
+      end if
+
+   contains
+
+      !> `var` was given (`given`) although the law does not use it (`not_used`).
+      pure subroutine unused(var, given, not_used, error)
+         character(len=*), intent(in) :: var
+         logical, intent(in) :: given, not_used
+         type(error_type), allocatable, intent(out) :: error
+
+         if (given .and. not_used) then
+            if (var == 'stiffness') then
+               call fail(at, var, "stiffness is not used by law = 'piecewise' (k0 is the slope of "// &
+                         'its first segment, envelope_r(1)/envelope_d(1))', error)
+            else
+               call fail(at, var, var//" is not used by law = '"//cfg%law//"'", error)
+            end if
+         end if
+      end subroutine unused
+
+      !> `piecewise`: the envelope points, checked by the law's own rules.
+      subroutine take_points(error)
+         type(error_type), allocatable, intent(out) :: error
+         type(contact_law) :: probe
+         character(len=:), allocatable :: why
+         integer :: nd, nr, j
+
+         nd = given_count(envelope_d)
+         nr = given_count(envelope_r)
+         if (nd < 2) then
+            call fail(at, 'envelope_d', 'envelope_d has '//values_text(nd)//', needs at least 2 '// &
+                      'penetrations (m) of the envelope points after the origin', error)
+            return
+         end if
+         if (nd > max_envelope_points) then
+            call fail(at, 'envelope_d', 'envelope_d has '//values_text(nd)//', must have at most '// &
+                      str(max_envelope_points), error)
+            return
+         end if
+         if (nr /= nd) then
+            call fail(at, 'envelope_r', 'envelope_r has '//values_text(nr)//', envelope_d has '// &
+                      values_text(nd)//'; both need one value per point', error)
+            return
+         end if
+         do j = 1, nd
+            if (.not. is_set(envelope_d(j))) then
+               call fail(at, 'envelope_d', 'envelope_d('//str(j)//') is missing', error)
+               return
+            end if
+            if (.not. is_set(envelope_r(j))) then
+               call fail(at, 'envelope_r', 'envelope_r('//str(j)//') is missing', error)
+               return
+            end if
+            call check_real(at, 'envelope_d', envelope_d(j), '>', 0.0_dp, error, name='envelope_d('//str(j)//')')
+            if (allocated(error)) return
+            call check_real(at, 'envelope_r', envelope_r(j), '>=', 0.0_dp, error, name='envelope_r('//str(j)//')')
+            if (allocated(error)) return
+         end do
+         call make_piecewise(probe, envelope_d(1:nd), envelope_r(1:nd), 0.0_dp, error)
+         if (allocated(error)) then
+            why = error%message
+            call fail(at, 'envelope_r', 'envelope points: '//why, error)
+            return
+         end if
+         cfg%envelope_d = envelope_d(1:nd)
+         cfg%envelope_r = envelope_r(1:nd)
+         cfg%stiffness = probe%stiffness
+      end subroutine take_points
+
+      !> `parabola_cubic`: dB, dF, and k0 or rB (k0 = 2 rB/dB), chords per branch.
+      subroutine take_parabola_cubic(error)
+         type(error_type), allocatable, intent(out) :: error
+         real(dp) :: k0
+
+         call require_real(at, 'peak_penetration', peak_penetration, 'penetration dB at the peak force, m', &
+                           error)
+         if (allocated(error)) return
+         call check_real(at, 'peak_penetration', peak_penetration, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         call require_real(at, 'fracture_penetration', fracture_penetration, &
+                           'penetration dF at fracture, m', error)
+         if (allocated(error)) return
+         call check_real(at, 'fracture_penetration', fracture_penetration, '>', peak_penetration, error, &
+                         bound_text='peak_penetration = '//str(peak_penetration))
+         if (allocated(error)) return
+         if (is_set(stiffness)) then
+            call check_real(at, 'stiffness', stiffness, '>', 0.0_dp, error)
+            if (allocated(error)) return
+            k0 = stiffness
+            if (is_set(peak_force)) then
+               if (abs(peak_force - 0.5_dp*k0*peak_penetration) > 1.0e-9_dp*peak_force) then
+                  call fail(at, 'peak_force', 'peak_force = '//str(peak_force)//' contradicts stiffness = '// &
+                            str(stiffness)//' and peak_penetration = '//str(peak_penetration)// &
+                            ' (the parabola needs stiffness = 2 peak_force/peak_penetration); give one '// &
+                            'of stiffness and peak_force', error)
+                  return
+               end if
+            end if
+         else
+            call require_real(at, 'peak_force', peak_force, 'peak force rB in kN, or give stiffness '// &
+                              'k0 = 2 rB/dB', error)
+            if (allocated(error)) return
+            call check_real(at, 'peak_force', peak_force, '>', 0.0_dp, error)
+            if (allocated(error)) return
+            k0 = 2.0_dp*peak_force/peak_penetration
+         end if
+         if (n_segments == unset_int) n_segments = 8
+         if (n_segments < 1 .or. n_segments > max_segments) then
+            call fail(at, 'n_segments', 'n_segments = '//str(n_segments)//', must be 1..'//str(max_segments)// &
+                      ' (chords per curved branch)', error)
+            return
+         end if
+         cfg%stiffness = k0
+         cfg%peak_force = 0.5_dp*k0*peak_penetration
+         cfg%peak_penetration = peak_penetration
+         cfg%fracture_penetration = fracture_penetration
+         cfg%n_segments = n_segments
+      end subroutine take_parabola_cubic
+
    end subroutine read_contact
 
    !> `&sweep`: range of seismic-joint gaps and the optional target for |lambda|.

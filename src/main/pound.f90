@@ -81,7 +81,9 @@ program pound
       do ib = 1, size(models)
          names(ib) = models(ib)%name
       end do
-      pairs = pairs_from_config(deck%contacts, names)
+      pairs = pairs_from_config(deck%contacts, names, error)
+      if (allocated(error)) error%message = deck_path//': '//error%message
+      call check(error)
       call run_coupled(deck%analysis, models, ag, pairs, cpl, cs, error)
       if (allocated(error)) error%message = deck_path//': '//error%message
       call check(error)

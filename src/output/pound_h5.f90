@@ -76,7 +76,7 @@ module pound_h5
    !> `call h5_write(file, path, values, error)` with `values` real(dp) scalar, 1-D or 2-D,
    !> default integer 1-D, or character 1-D (trailing blanks dropped).
    interface h5_write
-      module procedure write_real_0d, write_real_1d, write_real_2d, write_int_1d, &
+      module procedure write_real_0d, write_real_1d, write_real_2d, write_int_1d, write_int_2d, &
          write_string_1d
    end interface h5_write
 
@@ -391,6 +391,30 @@ contains
       end if
       call release(ids, file, 'write', 'dataset', p, error)
    end subroutine write_int_1d
+
+   !> Integer 2-D dataset (stored as 32-bit signed; h5py sees the transpose, see the notes).
+   subroutine write_int_2d(file, path, values, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Values, e.g. state(n_pairs, n_out).
+      integer, intent(in) :: values(:, :)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: dims(2)
+      integer :: hdferr
+
+      dims = shape(values, kind=hsize_t)
+      call new_dataset(file, path, H5T_STD_I32LE, dims, ids, p, error)
+      if (.not. allocated(error) .and. size(values) > 0) then
+         call h5dwrite_f(ids%obj, H5T_NATIVE_INTEGER, values, dims, hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
+      end if
+      call release(ids, file, 'write', 'dataset', p, error)
+   end subroutine write_int_2d
 
    !> 1-D dataset of variable-length strings; trailing blanks of each element are dropped.
    subroutine write_string_1d(file, path, values, error)

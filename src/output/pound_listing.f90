@@ -7,7 +7,9 @@ module pound_listing
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
-   use pound_contact_law, only: law_name
+   use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic_plastic, &
+                                law_bilinear, law_piecewise, law_parabola_cubic
+   use pound_lemke, only: lemke_status_name
    use pound_influence, only: influence_coefficient
    use pound_config, only: sweep_config
    use pound_sweep, only: sweep_result
@@ -134,30 +136,47 @@ contains
             end do
          end associate
       end do
-      write (u, '(/,a,es10.3)') '  Energy audit (input = kinetic + strain + damping + contact), '// &
+      write (u, '(/,a,es10.3)') '  Energy audit (input = kinetic + strain + damping + contact + plastic), '// &
          'max relative error over time: ', res%energy_error
       j = res%n_out
-      write (u, '(a,5es12.4)') '  at the end [kJ]: input, kinetic, strain, damping, contact =', res%energy(:, j)
+      write (u, '(a)') '  at the end [kJ]:      input     kinetic      strain     damping     contact     plastic'
+      write (u, '(a,6es12.4)') '                 ', res%energy(:, j)
    end subroutine write_peak_tables
 
-   !> Contact pairs, impacts, time in contact, peak forces and LCP statistics.
+   !> Contact pairs and laws, impacts, time in contact, peak forces, plastic penetration
+   !> left, fracture, and the LCP statistics with every fallback event.
    subroutine write_contact_summary(u, cs)
       !> Open unit.
       integer, intent(in) :: u
       !> Contact system at the end of the coupled run.
       type(contact_system), intent(in) :: cs
+      integer, parameter :: max_listed_events = 20
       integer :: k
       real(dp) :: mean_pivots
+      character(len=16) :: fractured
 
       call write_section(u, 'Contact (unilateral constraints between facing floors)')
-      write (u, '(a)') '  pair          gap [m]  law         p [kN/m]   c [kNs/m]  impacts  in contact [s]'// &
-         '  peak r [kN]    t [s]'
+      write (u, '(a)') '  pair          gap [m]  law                 k0 [kN/m]   c [kNs/m]  dashpot rate'
       do k = 1, cs%m
          associate (p => cs%pair(k))
-            write (u, '(2x,a12,es10.3,2x,a10,es11.3,es12.3,i9,f16.4,es13.4,f9.4)') p%label, p%gap, &
-               law_name(p%law%kind), p%law%stiffness, p%law%dashpot, p%impacts, p%contact_time, &
-               p%peak_force, p%peak_time
+            write (u, '(2x,a12,es10.3,2x,a16,es13.3,es12.3,2x,a)') p%label, p%gap, law_name(p%law%kind), &
+               p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
+            call law_parameters(p%law)
          end associate
+      end do
+      write (u, '(/,a)') '  pair         impacts  in contact [s]  peak r [kN]    t [s]  max pen. [m]'// &
+         '  plastic left [m]  fractured'
+      do k = 1, cs%m
+         associate (p => cs%pair(k))
+            fractured = 'no'
+            if (p%fractured) write (fractured, '(a,f9.4,a)') 'at', p%fracture_time, ' s'
+            write (u, '(2x,a12,i8,f16.4,es13.4,f9.4,es14.4,es18.4,2x,a)') p%label, p%impacts, p%contact_time, &
+               p%peak_force, p%peak_time, p%peak_penetration, p%plastic, trim(fractured)
+         end associate
+      end do
+      do k = 1, cs%m
+         if (cs%pair(k)%fractured) write (u, '(a,f10.4,a)') '  joint '//cs%pair(k)%label// &
+            ' FRACTURED at t = ', cs%pair(k)%fracture_time, ' s: it carries nothing for the rest of the analysis'
       end do
       mean_pivots = 0.0_dp
       if (cs%solves > 0) mean_pivots = real(cs%pivots_total, dp)/real(cs%solves, dp)
@@ -166,8 +185,46 @@ contains
          '; warm start accepted: ', cs%warm, ')'
       write (u, '(a,i0,a,i0,a,f8.3)') '    pivots total ', cs%pivots_total, ', max per solve ', &
          cs%pivots_max, ', mean per solve ', mean_pivots
-      write (u, '(a,i0)') '    re-solves after a left-out constraint would have closed: ', cs%resolves
-      write (u, '(a,es10.3)') '    max natural residual ||min(r, w)|| / ||q||: ', cs%residual_max
+      write (u, '(a,i0)') '    re-solves (a left-out constraint would close, a segment end was passed): ', &
+         cs%resolves
+      write (u, '(a,i0)') '    largest LCP (contact + yield + segment-end rows): ', cs%largest_lcp
+      write (u, '(a,i0)') '    non-convex steps (softening rows in the LCP): ', cs%nonconvex
+      write (u, '(a,i0)') '    Lemke failures solved by enumeration (nearest the previous state): ', cs%fallbacks
+      do k = 1, min(cs%n_events, max_listed_events)
+         associate (e => cs%events(k))
+            write (u, '(a,f10.5,a,i0,a,a,a,i0,a,i0,a)') '      t = ', e%time, ' s, step ', e%step, ': Lemke ', &
+               lemke_status_name(e%status), ', ', e%rows, ' rows, ', e%solutions, ' solutions; pairs '//e%pairs
+         end associate
+      end do
+      if (cs%n_events > max_listed_events) write (u, '(a,i0,a)') '      ... ', cs%n_events - max_listed_events, &
+         ' more in the HDF5 file (/coupled/contact/events)'
+      write (u, '(a,es10.3)') '    max natural residual ||min(z, w)|| / ||q||: ', cs%residual_max
+
+   contains
+
+      subroutine law_parameters(law)
+         type(contact_law), intent(in) :: law
+         integer :: i
+
+         select case (law%kind)
+         case (law_elastic_plastic)
+            write (u, '(16x,a,es11.4,a)') 'yield force ', law%yield_force, ' kN'
+         case (law_bilinear)
+            write (u, '(16x,a,es11.4,a,es11.4,a)') 'yield force ', law%yield_force, ' kN, second slope ', &
+               law%second_slope, ' kN/m'
+         case (law_piecewise)
+            write (u, '(16x,a,i0,a)') 'envelope through ', size(law%env_d), ' points (d [m], r [kN]):'
+            write (u, '(16x,4(a,es10.3,a,es10.3,a))') ('(', law%env_d(i), ', ', law%env_r(i), ') ', &
+               i=1, size(law%env_d))
+         case (law_parabola_cubic)
+            write (u, '(16x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)') 'rB = ', law%peak_force, ' kN, dB = ', &
+               law%peak_penetration, ' m, dF = ', law%fracture_penetration, ' m, ', law%n_segments, &
+               ' chords per curved branch'
+         end select
+         if (is_plastic(law) .and. law%fractures) write (u, '(16x,a,es11.4,a)') &
+            'fractures at d = ', law%env_d(size(law%env_d)), ' m'
+      end subroutine law_parameters
+
    end subroutine write_contact_summary
 
    !> Influence coefficients lambda = (Qc - Qu)/Qu * 100 (%), storey (floor) rows and one

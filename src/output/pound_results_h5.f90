@@ -10,10 +10,16 @@
 !>     /<analysis>/<b>/u, v, a_abs               (n_out, n_floors), only those stored
 !>     /<analysis>/<b>/drift, storey_shear       (n_out, n_storeys), only those stored
 !>     /<analysis>/<b>/peak/<q>, peak_time/<q>   (n) for every quantity q
-!>     /<analysis>/energy                        (n_out, 5): input, kinetic, strain, damping,
-!>                                               contact; attributes components, relative_error
-!>     /coupled/contact/force, closing           (n_out, n_pairs); attribute pairs
-!>     /coupled/contact/impacts, contact_time, peak_force, peak_time   (n_pairs)
+!>     /<analysis>/energy                        (n_out, 6): input, kinetic, strain, damping,
+!>                                               contact, plastic; attributes components, relative_error
+!>     /coupled/contact/force, closing, penetration, plastic   (n_out, n_pairs); attribute pairs
+!>     /coupled/contact/state                    (n_out, n_pairs) integer: 0 open, -1 elastic,
+!>                                               -2 fractured, k > 0 yielding on segment k
+!>     /coupled/contact/impacts, contact_time, peak_force, peak_time, gap, law, stiffness,
+!>                 plastic_final, peak_penetration, fractured, fracture_time   (n_pairs)
+!>     /coupled/contact/envelope/<pair>          (n_points+1, 2) the envelope used: d (m), r (kN)
+!>     /coupled/contact/events/time, step, status, rows, solutions, pairs   (n_events)
+!>                                               steps Lemke could not solve (enumeration fallback)
 !>     /influence/<b>/<q>                        (n) lambda in percent
 !>     /sweep/gap, impacts, meets                (n_gaps)
 !>     /sweep/max_abs_lambda/<b>/<q>             (n_gaps) largest |lambda| over the storeys, percent;
@@ -26,6 +32,7 @@ module pound_results_h5
    use pound_shear_building, only: shear_building
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
+   use pound_contact_law, only: law_name
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: influence_coefficient
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr
@@ -175,7 +182,8 @@ contains
          if (allocated(error)) return
          call h5_write(h5, g//'/energy', res%energy, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, g//'/energy', 'components', 'input kinetic strain damping contact', error)
+         call h5_write_attr(h5, g//'/energy', 'components', 'input kinetic strain damping contact plastic', &
+                            error)
          if (allocated(error)) return
          call h5_write_attr(h5, g//'/energy', 'relative_error', res%energy_error, error)
          if (allocated(error)) return
@@ -206,37 +214,106 @@ contains
 
       subroutine write_contact()
          character(len=:), allocatable :: labels
-         integer :: k
+         character(len=*), parameter :: c = '/coupled/contact'
+         character(len=16), allocatable :: laws(:)
+         integer :: k, ne
 
-         call h5_write(h5, '/coupled/contact/force', cpl%contact_force, error)
+         call h5_write(h5, c//'/force', cpl%contact_force, error)
          if (allocated(error)) return
-         call h5_write(h5, '/coupled/contact/closing', cpl%contact_closing, error)
+         call h5_write(h5, c//'/closing', cpl%contact_closing, error)
          if (allocated(error)) return
-         call h5_write(h5, '/coupled/contact/impacts', cs%pair(:)%impacts, error)
+         call h5_write(h5, c//'/penetration', cpl%contact_penetration, error)
          if (allocated(error)) return
-         call h5_write(h5, '/coupled/contact/contact_time', cs%pair(:)%contact_time, error)
+         call h5_write(h5, c//'/plastic', cpl%contact_plastic, error)
          if (allocated(error)) return
-         call h5_write(h5, '/coupled/contact/peak_force', cs%pair(:)%peak_force, error)
+         call h5_write(h5, c//'/state', cpl%contact_state, error)
          if (allocated(error)) return
-         call h5_write(h5, '/coupled/contact/peak_time', cs%pair(:)%peak_time, error)
+         call h5_write_attr(h5, c//'/state', 'codes', '0 open, -1 closed elastic, -2 fractured, '// &
+                            'k > 0 yielding on yield segment k of the law', error)
          if (allocated(error)) return
-         call h5_write(h5, '/coupled/contact/gap', cs%pair(:)%gap, error)
+         call h5_write(h5, c//'/impacts', cs%pair(:)%impacts, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/contact_time', cs%pair(:)%contact_time, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/peak_force', cs%pair(:)%peak_force, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/peak_time', cs%pair(:)%peak_time, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/gap', cs%pair(:)%gap, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/stiffness', [(cs%pair(k)%law%stiffness, k=1, cs%m)], error)
+         if (allocated(error)) return
+         allocate (laws(cs%m))
+         do k = 1, cs%m
+            laws(k) = law_name(cs%pair(k)%law%kind)
+         end do
+         call h5_write(h5, c//'/law', laws, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/plastic_final', cs%pair(:)%plastic, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/peak_penetration', cs%pair(:)%peak_penetration, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/fractured', [(merge(1, 0, cs%pair(k)%fractured), k=1, cs%m)], error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/fracture_time', cs%pair(:)%fracture_time, error)
+         if (allocated(error)) return
+         do k = 1, cs%m
+            associate (law => cs%pair(k)%law)
+               if (size(law%env_d) == 0) cycle
+               call h5_write(h5, c//'/envelope/'//cs%pair(k)%label, &
+                             reshape([0.0_dp, 0.0_dp, (law%env_d(ne), law%env_r(ne), ne=1, size(law%env_d))], &
+                                     [2, size(law%env_d) + 1]), error)
+               if (allocated(error)) return
+            end associate
+         end do
+         ne = cs%n_events
+         call h5_write(h5, c//'/events/time', cs%events(1:ne)%time, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/events/step', cs%events(1:ne)%step, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/events/status', cs%events(1:ne)%status, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/events/rows', cs%events(1:ne)%rows, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/events/solutions', cs%events(1:ne)%solutions, error)
+         if (allocated(error)) return
+         call h5_write(h5, c//'/events/pairs', [(event_pairs(k), k=1, ne)], error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, c//'/events', 'description', 'steps on which Lemke ended on a ray '// &
+                            '(status 2) or at its pivot cap (3); the LCP was solved by enumeration and '// &
+                            'the solution nearest the previous state taken', error)
          if (allocated(error)) return
          labels = ''
          do k = 1, cs%m
             if (k > 1) labels = labels//' '
             labels = labels//cs%pair(k)%label
          end do
-         call h5_write_attr(h5, '/coupled/contact', 'pairs', labels, error)
+         call h5_write_attr(h5, c, 'pairs', labels, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, '/coupled/contact', 'lcp_solves', cs%solves, error)
+         call h5_write_attr(h5, c, 'lcp_solves', cs%solves, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, '/coupled/contact', 'lcp_pivots_total', cs%pivots_total, error)
+         call h5_write_attr(h5, c, 'lcp_pivots_total', cs%pivots_total, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, '/coupled/contact', 'lcp_pivots_max', cs%pivots_max, error)
+         call h5_write_attr(h5, c, 'lcp_pivots_max', cs%pivots_max, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, '/coupled/contact', 'lcp_residual_max', cs%residual_max, error)
+         call h5_write_attr(h5, c, 'lcp_residual_max', cs%residual_max, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, c, 'lcp_resolves', cs%resolves, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, c, 'lcp_nonconvex_steps', cs%nonconvex, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, c, 'lcp_fallbacks', cs%fallbacks, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, c, 'lcp_largest', cs%largest_lcp, error)
       end subroutine write_contact
+
+      !> Pairs of event k, padded to a common length for the string dataset.
+      function event_pairs(k) result(text)
+         integer, intent(in) :: k
+         character(len=256) :: text
+
+         text = cs%events(k)%pairs
+      end function event_pairs
 
    end subroutine write_results_h5
 
