@@ -96,12 +96,8 @@ contains
       logical :: out
 
       res%seconds = 0.0_dp
-      res%n_steps = size(ag) - 1
+      call start_result(res, cfg, size(ag) - 1, size(models))
       every = cfg%output_every
-      res%n_out = output_steps(res%n_steps, every)
-      allocate (res%time(res%n_out), res%building(size(models)), res%energy(n_energy, res%n_out))
-      res%time = [(real((k - 1)*every, dp)*cfg%dt, k=1, res%n_out)]
-      res%energy = 0.0_dp
 
       do ib = 1, size(models)
          call newmark_init(st, models(ib), cfg%dt, ag(0), error)
@@ -118,10 +114,7 @@ contains
                                  real(step, dp)*cfg%dt, out)
             if (out) then
                k = k + 1
-               res%energy(e_input, k) = res%energy(e_input, k) + st%input_work
-               res%energy(e_kinetic, k) = res%energy(e_kinetic, k) + kinetic_energy(st, models(ib))
-               res%energy(e_strain, k) = res%energy(e_strain, k) + strain_energy(st, models(ib))
-               res%energy(e_damping, k) = res%energy(e_damping, k) + st%damping_energy
+               call add_structure_energy(res%energy(:, k), st, models(ib))
             end if
          end do
          call system_clock(c1)
@@ -207,15 +200,11 @@ contains
       st = prep%st
       cs = prep%cs
       if (present(gaps)) cs%pair(:)%gap = gaps
-      res%n_steps = size(ag) - 1
+      call start_result(res, cfg, size(ag) - 1, nb)
       every = cfg%output_every
-      res%n_out = output_steps(res%n_steps, every)
-      allocate (res%time(res%n_out), res%building(nb), res%energy(n_energy, res%n_out))
       allocate (res%contact_force(cs%m, res%n_out), res%contact_closing(cs%m, res%n_out), &
                 res%contact_penetration(cs%m, res%n_out), res%contact_plastic(cs%m, res%n_out), &
                 res%contact_state(cs%m, res%n_out))
-      res%time = [(real((k - 1)*every, dp)*cfg%dt, k=1, res%n_out)]
-      res%energy = 0.0_dp
       res%contact_force(:, 1) = 0.0_dp
       res%contact_closing(:, 1) = 0.0_dp
       res%contact_penetration(:, 1) = 0.0_dp
@@ -252,10 +241,7 @@ contains
          if (out) then
             k = k + 1
             do ib = 1, nb
-               res%energy(e_input, k) = res%energy(e_input, k) + st(ib)%input_work
-               res%energy(e_kinetic, k) = res%energy(e_kinetic, k) + kinetic_energy(st(ib), models(ib))
-               res%energy(e_strain, k) = res%energy(e_strain, k) + strain_energy(st(ib), models(ib))
-               res%energy(e_damping, k) = res%energy(e_damping, k) + st(ib)%damping_energy
+               call add_structure_energy(res%energy(:, k), st(ib), models(ib))
             end do
             res%energy(e_contact, k) = cs%element_work - cs%plastic_work
             res%energy(e_plastic, k) = cs%plastic_work
@@ -276,6 +262,40 @@ contains
       res%seconds = real(c1 - c0, dp)/real(rate, dp)
       res%contact_seconds = real(c_contact, dp)/real(rate, dp)
    end subroutine coupled_integrate
+
+   !> Sizes, output times and a zero energy history of a result for `n_steps` steps.
+   pure subroutine start_result(res, cfg, n_steps, n_buildings)
+      !> The result (set up).
+      type(analysis_result), intent(inout) :: res
+      !> `&analysis` settings.
+      type(analysis_config), intent(in) :: cfg
+      !> Number of time steps.
+      integer, intent(in) :: n_steps
+      !> Number of buildings.
+      integer, intent(in) :: n_buildings
+      integer :: k
+
+      res%n_steps = n_steps
+      res%n_out = output_steps(n_steps, cfg%output_every)
+      allocate (res%time(res%n_out), res%building(n_buildings), res%energy(n_energy, res%n_out))
+      res%time = [(real((k - 1)*cfg%output_every, dp)*cfg%dt, k=1, res%n_out)]
+      res%energy = 0.0_dp
+   end subroutine start_result
+
+   !> Add one building's input work and kinetic, strain and damping energy to an energy sample.
+   pure subroutine add_structure_energy(sample, st, b)
+      !> Energy sample (n_energy).
+      real(dp), intent(inout) :: sample(:)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+      !> The building.
+      type(shear_building), intent(in) :: b
+
+      sample(e_input) = sample(e_input) + st%input_work
+      sample(e_kinetic) = sample(e_kinetic) + kinetic_energy(st, b)
+      sample(e_strain) = sample(e_strain) + strain_energy(st, b)
+      sample(e_damping) = sample(e_damping) + st%damping_energy
+   end subroutine add_structure_energy
 
    !> Relative energy balance error: max_t |W_in - E_k - E_s - E_d - E_c - E_p| / max_t max(|W_in|, E_k + ... + E_p).
    pure function energy_balance_error(energy) result(err)
