@@ -23,6 +23,7 @@
 module pound_accelerogram
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
+   use pound_text_file, only: read_whole_file
    use pound_strings, only: str
    implicit none
    private
@@ -80,7 +81,7 @@ contains
                           "' (expected 'at2', 'columns' or 'auto')")
          return
       end if
-      call read_whole_file(path, buf, error)
+      call read_whole_file(path, 'accelerogram file', buf, error)
       if (allocated(error)) return
 
       rec%path = path
@@ -347,43 +348,6 @@ contains
    ! ---------------------------------------------------------------------------------------
    ! Text handling
 
-   !> Whole file as one string (stream access, so any line ending survives).
-   subroutine read_whole_file(path, buf, error)
-      character(len=*), intent(in) :: path
-      character(len=:), allocatable, intent(out) :: buf
-      type(error_type), allocatable, intent(out) :: error
-      logical :: exists
-      integer :: u, ios, nbytes
-      character(len=256) :: msg
-
-      inquire (file=path, exist=exists)
-      if (.not. exists) then
-         call fatal_error(error, path//': accelerogram file not found')
-         return
-      end if
-      open (newunit=u, file=path, access='stream', form='unformatted', action='read', &
-            status='old', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call fatal_error(error, path//': cannot open accelerogram file: '//trim(msg))
-         return
-      end if
-      inquire (unit=u, size=nbytes)
-      if (nbytes < 0) then
-         close (u)
-         call fatal_error(error, path//': cannot determine the size of the accelerogram file')
-         return
-      end if
-      allocate (character(len=nbytes) :: buf)
-      if (nbytes > 0) then
-         read (u, iostat=ios, iomsg=msg) buf
-         if (ios /= 0) then
-            close (u)
-            call fatal_error(error, path//': cannot read accelerogram file: '//trim(msg))
-            return
-         end if
-      end if
-      close (u)
-   end subroutine read_whole_file
 
    !> Cursor before the first line, skipping a UTF-8 byte-order mark.
    pure function start_cursor(buf) result(c)

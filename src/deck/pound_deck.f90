@@ -45,6 +45,7 @@ module pound_deck
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
+   use pound_text_file, only: read_whole_file
    use pound_strings, only: str
    use pound_config, only: deck_type, analysis_config, ground_config, building_config, &
                            contact_config, sweep_config, n_history_quantities, history_names, g_accel
@@ -225,25 +226,10 @@ contains
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: raw
-      character(len=512) :: msg
-      integer :: u, ios, n, i, j
+      integer :: i, j
 
-      msg = ' '
-      open (newunit=u, file=path, access='stream', form='unformatted', action='read', &
-            status='old', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call fatal_error(error, path//': cannot open the deck: '//trim(msg))
-         return
-      end if
-      inquire (unit=u, size=n)
-      allocate (character(len=max(n, 0)) :: raw)
-      ios = 0
-      if (n > 0) read (u, iostat=ios, iomsg=msg) raw
-      close (u)
-      if (ios /= 0 .or. n < 0) then
-         call fatal_error(error, path//': cannot read the deck: '//trim(msg))
-         return
-      end if
+      call read_whole_file(path, 'deck', raw, error)
+      if (allocated(error)) return
 
       allocate (character(len=len(raw)) :: text)
       j = 0
