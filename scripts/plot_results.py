@@ -1,0 +1,688 @@
+"""Plots of a pound results file (.h5), written as PNG and PDF beside it (called by scripts/plot).
+
+    plot_results.py FILE.h5 [--only LIST] [--outdir DIR] [--format png,pdf] [--t-max T]
+
+Plots (names for --only): displacement (facing floors, gap shaded), force (contact force
+histories), loops (force-penetration loops of each joint), shear (storey-shear envelopes, coupled
+against uncoupled), influence (influence coefficients, storeys x buildings as in the paper's
+Table 1), ground (ground motion), sweep (largest |lambda| against the joint gap, when the file
+holds a gap study). Files are named <stem>_<plot>.png / .pdf.
+
+Any problem with the file (missing, not HDF5, not a pound results file) gives one line
+"plot: error: ..." on stderr and exit status 1; usage errors exit 2. POUND_DEBUG=1 shows
+the traceback of unexpected failures.
+"""
+import argparse
+import os
+import re
+import sys
+import tempfile
+
+PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep")
+CONTACT_PLOTS = ("displacement", "force", "loops")
+QUANTITY_LABEL = {
+    "storey_shear": ("storey shear Q", "storey"),
+    "drift": ("storey drift", "storey"),
+    "u": ("floor displacement u", "floor"),
+    "v": ("floor velocity v", "floor"),
+    "a_abs": ("floor absolute acceleration", "floor"),
+}
+G = 9.80665  # m/s^2
+
+# Black-and-white friendly styles: every series differs in line style and marker, colour is extra.
+COLOURS = ("black", "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00")
+LINESTYLES = ("-", "--", ":", "-.", (0, (5, 1, 1, 1, 1, 1)), (0, (1, 1)))
+MARKERS = ("o", "s", "^", "D", "v", "x")
+HATCHES = ("", "////", "xxxx", "....", "\\\\\\\\", "++++")
+FILLS = ("0.35", "white", "0.8", "white", "0.6", "white")
+
+
+class PlotError(Exception):
+    """A problem with the input that is reported as one line."""
+
+
+# --------------------------------------------------------------------------------------------
+# Reading
+
+
+class Results:
+    """Everything the plots need, read from the file into memory."""
+
+    def __init__(self):
+        self.path = ""
+        self.title = ""
+        self.dt = None
+        self.buildings = []          # names, left to right when the deck tells
+        self.model = {}              # name -> dict of arrays
+        self.analyses = {}           # 'uncoupled'/'coupled' -> {'time', name -> {q: hist}, 'peak'}
+        self.ground = {}
+        self.contact = None          # dict or None
+        self.influence = {}          # name -> {q: array}
+        self.sweep = None            # gap study: {'gap', 'lambda': name -> {q: array}, 'target', 'safe_gap'}
+
+
+def _deck_building_order(deck_text, names):
+    """Building names in deck order (left to right), when the deck text gives them."""
+    found = []
+    for group in re.finditer(r"&building\b(.*?)(?:^\s*/|/\s*$)", deck_text, re.S | re.I | re.M):
+        m = re.search(r"\bname\s*=\s*(['\"])(.*?)\1", group.group(1), re.I)
+        if m and m.group(2).strip() in names and m.group(2).strip() not in found:
+            found.append(m.group(2).strip())
+    return found if sorted(found) == sorted(names) else sorted(names)
+
+
+def _text(value):
+    if isinstance(value, bytes):
+        return value.decode("utf-8", "replace")
+    if hasattr(value, "shape") and getattr(value, "shape", None) == ():
+        return _text(value[()])
+    if hasattr(value, "tolist") and not isinstance(value, str):
+        v = value.tolist()
+        return _text(v[0]) if isinstance(v, list) and v else str(v)
+    return str(value)
+
+
+def parse_pair(label, names):
+    """'A:1-B:3' -> ('A', 1, 'B', 3), building names checked against the model."""
+    for m in re.finditer(r"-", label):
+        left, right = label[: m.start()], label[m.end():]
+        lm = re.fullmatch(r"(.+):(\d+)", left)
+        rm = re.fullmatch(r"(.+):(\d+)", right)
+        if lm and rm and lm.group(1) in names and rm.group(1) in names:
+            return lm.group(1), int(lm.group(2)), rm.group(1), int(rm.group(2))
+    return None
+
+
+def read_results(path):
+    import h5py
+    import numpy as np
+
+    if not os.path.exists(path):
+        raise PlotError(f"{path}: no such file")
+    if os.path.isdir(path):
+        raise PlotError(f"{path}: is a directory, not a results file")
+    try:
+        f = h5py.File(path, "r")
+    except OSError as e:
+        reason = str(e).split("(")[0].strip().rstrip(",") or "cannot open"
+        raise PlotError(f"{path}: not a readable HDF5 file ({reason})") from None
+
+    def need(name):
+        if name not in f:
+            raise PlotError(f"{path}: not a pound results file (no {name})")
+        obj = f[name]
+        return obj
+
+    def arr(name, ndim=None):
+        obj = need(name)
+        if not isinstance(obj, h5py.Dataset):
+            raise PlotError(f"{path}: {name} is not a dataset")
+        try:
+            a = np.asarray(obj[()], dtype=float)
+        except (TypeError, ValueError, OSError) as e:
+            raise PlotError(f"{path}: cannot read {name}: {e}") from None
+        if ndim is not None and a.ndim != ndim:
+            raise PlotError(f"{path}: {name} has {a.ndim} dimensions, expected {ndim}")
+        return a
+
+    r = Results()
+    r.path = path
+    with f:
+        r.title = _text(f.attrs.get("title", os.path.basename(path))).strip()
+        if "dt" in f.attrs:
+            r.dt = float(np.asarray(f.attrs["dt"]).ravel()[0])
+        model = need("/model")
+        names = list(model.keys())
+        if not names:
+            raise PlotError(f"{path}: /model holds no building")
+        r.buildings = _deck_building_order(_text(f.attrs.get("deck", "")), names)
+        for b in r.buildings:
+            r.model[b] = {"height": arr(f"/model/{b}/height", 1)}
+            for k in ("periods", "mass", "storey_stiffness"):
+                if f"/model/{b}/{k}" in f:
+                    r.model[b][k] = arr(f"/model/{b}/{k}", 1)
+        r.ground["time"] = arr("/ground/time", 1)
+        r.ground["acceleration"] = arr("/ground/acceleration", 1)
+        if r.ground["time"].shape != r.ground["acceleration"].shape:
+            raise PlotError(f"{path}: /ground/time and /ground/acceleration differ in length")
+        r.ground["description"] = _text(f["/ground"].attrs.get("description", "")).strip()
+        need("/uncoupled/time")
+        for an in ("uncoupled", "coupled"):
+            if an not in f:
+                continue
+            time = arr(f"/{an}/time", 1)
+            data = {"time": time}
+            for b in r.buildings:
+                n = len(r.model[b]["height"])
+                d = {"peak": {}}
+                for q in QUANTITY_LABEL:
+                    name = f"/{an}/{b}/{q}"
+                    if name in f:
+                        h = arr(name, 2)
+                        if h.shape != (len(time), n):
+                            raise PlotError(f"{path}: {name} has shape {h.shape}, expected ({len(time)}, {n})")
+                        d[q] = h
+                    pname = f"/{an}/{b}/peak/{q}"
+                    if pname in f:
+                        d["peak"][q] = arr(pname, 1)
+                data[b] = d
+            r.analyses[an] = data
+        if "/coupled/contact/force" in f:
+            t = r.analyses["coupled"]["time"]
+            c = {"force": arr("/coupled/contact/force", 2), "closing": arr("/coupled/contact/closing", 2),
+                 "gap": arr("/coupled/contact/gap", 1)}
+            m = c["force"].shape[1]
+            if c["force"].shape[0] != len(t) or c["closing"].shape != c["force"].shape or len(c["gap"]) != m:
+                raise PlotError(f"{path}: /coupled/contact datasets have inconsistent shapes")
+            for k in ("peak_force", "peak_time", "impacts"):
+                if f"/coupled/contact/{k}" in f:
+                    c[k] = arr(f"/coupled/contact/{k}", 1)
+            labels = _text(f["/coupled/contact"].attrs.get("pairs", "")).split()
+            if len(labels) != m:
+                raise PlotError(f"{path}: /coupled/contact attribute 'pairs' names {len(labels)} pairs, "
+                                f"the histories hold {m}")
+            c["labels"] = labels
+            c["pairs"] = [parse_pair(lab, r.buildings) for lab in labels]
+            c["penetration"] = None
+            c["notes"] = []
+            if "/coupled/contact/penetration" in f:
+                obj = f["/coupled/contact/penetration"]
+                if isinstance(obj, h5py.Dataset) and obj.shape == c["force"].shape:
+                    c["penetration"] = np.asarray(obj[()], dtype=float)
+                else:
+                    c["notes"].append(f"/coupled/contact/penetration {getattr(obj, 'shape', '(group)')} "
+                                      "not used; penetration taken as closing - gap")
+            c["envelope"] = {}
+            for lab in labels:
+                name = f"/coupled/contact/envelope/{lab}"
+                if name in f and isinstance(f[name], h5py.Dataset) and f[name].ndim == 2 and f[name].shape[1] == 2:
+                    c["envelope"][lab] = np.asarray(f[name][()], dtype=float)
+            r.contact = c
+        if "/sweep/gap" in f:
+            sw = {"gap": arr("/sweep/gap", 1), "lambda": {}}
+            for b in r.buildings:
+                sw["lambda"][b] = {q: arr(f"/sweep/max_abs_lambda/{b}/{q}", 1) for q in QUANTITY_LABEL
+                                   if f"/sweep/max_abs_lambda/{b}/{q}" in f}
+            sw["target"] = float(f["/sweep"].attrs.get("target_lambda", -1.0))
+            sw["safe_gap"] = float(f["/sweep"].attrs.get("safe_gap", -1.0))
+            r.sweep = sw
+        if "/influence" in f:
+            for b in r.buildings:
+                if f"/influence/{b}" in f:
+                    r.influence[b] = {q: arr(f"/influence/{b}/{q}", 1) for q in QUANTITY_LABEL
+                                      if f"/influence/{b}/{q}" in f}
+    return r
+
+
+# --------------------------------------------------------------------------------------------
+# Plotting helpers
+
+
+def setup_matplotlib():
+    if not os.environ.get("MPLCONFIGDIR"):
+        home = os.path.expanduser("~")
+        if not os.access(home, os.W_OK):
+            os.environ["MPLCONFIGDIR"] = tempfile.mkdtemp(prefix="pound-mpl-")
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    plt.rcParams.update({
+        "font.size": 9, "axes.titlesize": 9, "axes.labelsize": 9, "legend.fontsize": 8,
+        "xtick.labelsize": 8, "ytick.labelsize": 8, "figure.titlesize": 10,
+        "axes.grid": True, "grid.color": "0.85", "grid.linewidth": 0.6,
+        "lines.linewidth": 1.2, "hatch.linewidth": 0.6, "legend.framealpha": 0.9,
+        "pdf.fonttype": 42, "savefig.bbox": "tight",
+    })
+    return plt
+
+
+def style(i):
+    return dict(color=COLOURS[i % len(COLOURS)], linestyle=LINESTYLES[i % len(LINESTYLES)])
+
+
+def contact_window(r, t_max):
+    """Time range of the contact plots: up to the last contact plus two fundamental periods."""
+    import numpy as np
+
+    t = r.analyses["coupled"]["time"]
+    if t_max is not None:
+        return t[0], min(t_max, t[-1]), f"t <= {t_max:g} s"
+    active = np.nonzero(np.any(r.contact["force"] > 0.0, axis=1))[0]
+    if len(active) == 0:
+        return t[0], t[-1], ""
+    last = t[active[-1]]
+    t1 = max(float(r.model[b]["periods"][0]) for b in r.buildings if "periods" in r.model[b]) \
+        if any("periods" in r.model[b] for b in r.buildings) else 0.1 * (t[-1] - t[0])
+    end = min(t[-1], last + 2.0 * t1)
+    note = f"last contact at {last:.3f} s; shown to {end:.3f} s" if end < t[-1] else ""
+    return t[0], end, note
+
+
+def suptitle(fig, r, what, note=""):
+    text = f"{r.title}\n{what}"
+    if note:
+        text += f"  ({note})"
+    fig.suptitle(text)
+
+
+def save(fig, r, name, args, written):
+    stem = os.path.splitext(os.path.basename(r.path))[0]
+    outdir = args.outdir or os.path.dirname(os.path.abspath(r.path))
+    for fmt in args.formats:
+        final = os.path.join(outdir, f"{stem}_{name}.{fmt}")
+        tmp = os.path.join(outdir, f".{stem}_{name}.{fmt}.partial")
+        kw = {"metadata": {"CreationDate": None}} if fmt == "pdf" else {"dpi": args.dpi}
+        try:
+            fig.savefig(tmp, format=fmt, **kw)
+            os.replace(tmp, final)
+        except OSError as e:
+            if os.path.exists(tmp):
+                os.remove(tmp)
+            raise PlotError(f"cannot write {final}: {e.strerror or e}") from None
+        written.append(final)
+
+
+def pair_caption(c, k):
+    p = c["pairs"][k]
+    gap_mm = 1e3 * c["gap"][k]
+    if p is None:
+        return f"pair {c['labels'][k]}, gap {gap_mm:.3g} mm"
+    return f"{p[0]} floor {p[1]} / {p[2]} floor {p[3]}, gap {gap_mm:.3g} mm"
+
+
+# --------------------------------------------------------------------------------------------
+# The plots
+
+
+def plot_displacement(plt, r, args, written, notes):
+    import numpy as np
+
+    c = r.contact
+    cp = r.analyses["coupled"]
+    t = cp["time"]
+    usable = [k for k, p in enumerate(c["pairs"])
+              if p is not None and "u" in cp[p[0]] and "u" in cp[p[2]]]
+    if not usable:
+        notes.append("displacement: skipped (no floor displacement history 'u' of facing floors stored; "
+                     "set history to include u)")
+        return
+    t0, t1, note = contact_window(r, args.t_max)
+    sel = (t >= t0) & (t <= t1)
+    n = len(usable)
+    fig, axes = plt.subplots(n, 1, sharex=True, figsize=(7.0, 1.2 + 1.9 * n), squeeze=False)
+    for row, k in enumerate(usable):
+        ax = axes[row, 0]
+        lb, i, rb, j = c["pairs"][k]
+        g = c["gap"][k]
+        ul = 1e3 * cp[lb]["u"][sel, i - 1]
+        ur = 1e3 * (cp[rb]["u"][sel, j - 1] + g)
+        ts = t[sel]
+        ax.fill_between(ts, ul, ur, where=ul <= ur, interpolate=True, facecolor="0.85", edgecolor="none",
+                        label="open gap")
+        ax.fill_between(ts, ul, ur, where=ul > ur, interpolate=True, facecolor="white", edgecolor="black",
+                        hatch="xxxx", linewidth=0.0, label="in contact (penetration)")
+        ax.plot(ts, ul, color="black", linestyle="-", label=f"{lb} floor {i}: u")
+        ax.plot(ts, ur, color="#D55E00", linestyle="--", label=f"{rb} floor {j}: u + gap")
+        ax.set_ylabel("displacement [mm]")
+        ax.set_title(pair_caption(c, k), loc="left")
+        ax.legend(loc="upper right", ncol=2)
+    axes[-1, 0].set_xlabel("time t [s]")
+    axes[-1, 0].set_xlim(t[sel][0], t[sel][-1])
+    suptitle(fig, r, "Facing floors: displacement relative to the ground (positive: left to right), "
+             "gap shaded", note)
+    save(fig, r, "displacement", args, written)
+    plt.close(fig)
+
+
+def plot_force(plt, r, args, written, notes):
+    import numpy as np
+
+    c = r.contact
+    t = r.analyses["coupled"]["time"]
+    t0, t1, note = contact_window(r, args.t_max)
+    sel = (t >= t0) & (t <= t1)
+    m = len(c["labels"])
+    fig, axes = plt.subplots(m, 1, sharex=True, sharey=True, figsize=(7.0, 1.2 + 1.5 * m), squeeze=False)
+    for k in range(m):
+        ax = axes[k, 0]
+        ax.plot(t[sel], c["force"][sel, k], color="black", linestyle="-", label="contact force r")
+        if "peak_force" in c and c["peak_force"][k] > 0.0:
+            pt = c["peak_time"][k] if "peak_time" in c else None
+            label = f"peak {c['peak_force'][k]:.4g} kN" + (f" at {pt:.3f} s" if pt is not None else "")
+            if pt is not None:
+                ax.plot([pt], [c["peak_force"][k]], linestyle="none", marker="v", color="black",
+                        markerfacecolor="white", label=label)
+        impacts = f", {int(c['impacts'][k])} impacts" if "impacts" in c else ""
+        ax.set_title(pair_caption(c, k) + impacts, loc="left")
+        ax.set_ylabel("force [kN]")
+        if np.any(c["force"][:, k] > 0):
+            ax.legend(loc="upper right")
+        else:
+            ax.text(0.5, 0.5, "no contact", transform=ax.transAxes, ha="center", va="center")
+    axes[-1, 0].set_xlabel("time t [s]")
+    axes[-1, 0].set_xlim(t[sel][0], t[sel][-1])
+    axes[0, 0].set_ylim(bottom=0.0)
+    suptitle(fig, r, "Contact force histories (compression positive)", note)
+    save(fig, r, "force", args, written)
+    plt.close(fig)
+
+
+def plot_loops(plt, r, args, written, notes):
+    import numpy as np
+
+    c = r.contact
+    m = len(c["labels"])
+    ncol = min(3, m)
+    nrow = (m + ncol - 1) // ncol
+    fig, axes = plt.subplots(nrow, ncol, figsize=(3.2 * ncol, 1.4 + 2.8 * nrow), squeeze=False)
+    fig.subplots_adjust(top=1.0 - 1.1 / (1.4 + 2.8 * nrow), wspace=0.3, hspace=0.45)
+    if c["penetration"] is not None:
+        pen = c["penetration"]
+        source = "penetration d as stored"
+    else:
+        pen = c["closing"] - c["gap"][None, :]
+        source = "penetration d = closing - gap"
+    notes.extend(c["notes"])
+    for k in range(nrow * ncol):
+        ax = axes[k // ncol, k % ncol]
+        if k >= m:
+            ax.set_visible(False)
+            continue
+        d = 1e3 * pen[:, k]
+        rk = c["force"][:, k]
+        ax.axhline(0.0, color="0.5", linewidth=0.6)
+        ax.axvline(0.0, color="0.5", linewidth=0.6)
+        ax.set_title(pair_caption(c, k), loc="left", fontsize=8)
+        ax.set_xlabel("penetration d [mm]")
+        if k % ncol == 0:
+            ax.set_ylabel("contact force r [kN]")
+        if not np.any(rk > 0.0):
+            ax.text(0.5, 0.5, "no contact", transform=ax.transAxes, ha="center", va="center")
+            ax.set_xlim(-0.1, 0.1)
+            ax.set_ylim(0.0, 1.0)
+            continue
+        dmax = max(float(np.max(d)), 1e-9)
+        # Keep the loops and the approach to the joint; the open branch (d << 0) runs off the axes.
+        near = d > -0.3 * dmax
+        ax.plot(np.where(near, d, np.nan), np.where(near, rk, np.nan), color="black", linestyle="-",
+                marker="o", markersize=2.0, markevery=1, linewidth=0.8, label="response")
+        ax.set_xlim(-0.3 * dmax, 1.1 * dmax)
+        ax.set_ylim(0.0, 1.1 * max(float(np.max(rk)), float(c.get("peak_force", rk)[k])))
+        env = c.get("envelope", {}).get(c["labels"][k])
+        if env is not None and len(env) > 1:
+            ax.plot(1e3 * env[:, 0], env[:, 1], color="0.45", linestyle="--", linewidth=1.2,
+                    label="envelope (as linearised)")
+            ax.set_xlim(-0.3 * dmax, 1.1 * max(dmax, 1e3 * float(env[-1, 0])))
+            ax.set_ylim(0.0, 1.1 * max(float(np.max(rk)), float(np.max(env[:, 1]))))
+        elif "peak_force" in c:
+            ax.axhline(c["peak_force"][k], color="black", linestyle=":", linewidth=0.8,
+                       label=f"peak {c['peak_force'][k]:.4g} kN")
+        ax.legend(loc="upper right", fontsize=7)
+    suptitle(fig, r, f"Force-penetration loops of the joints ({source})")
+    save(fig, r, "loops", args, written)
+    plt.close(fig)
+
+
+def _storey_profile(values):
+    """Staircase through the storeys: value j constant from floor j-1 to floor j."""
+    import numpy as np
+
+    n = len(values)
+    x = np.repeat(values, 2)
+    y = np.empty(2 * n)
+    y[0::2] = np.arange(n)
+    y[1::2] = np.arange(1, n + 1)
+    return x, y
+
+
+def plot_shear(plt, r, args, written, notes):
+    import numpy as np
+
+    names = [b for b in r.buildings if "storey_shear" in r.analyses["uncoupled"][b]["peak"]]
+    if not names:
+        notes.append("shear: skipped (no peak storey shears in the file)")
+        return
+    coupled = "coupled" in r.analyses
+    nb = len(names)
+    nmax = max(len(r.model[b]["height"]) for b in names)
+    fig, axes = plt.subplots(1, nb, figsize=(min(7.0, 1.2 + 2.9 * nb), 1.5 + 0.42 * nmax), squeeze=False)
+    for ib, b in enumerate(names):
+        ax = axes[0, ib]
+        qu = r.analyses["uncoupled"][b]["peak"]["storey_shear"]
+        n = len(qu)
+        qc = None
+        x, y = _storey_profile(qu)
+        ax.plot(x, y, color="0.45", linestyle="--", linewidth=1.2, label="uncoupled")
+        ax.plot(qu, np.arange(n) + 0.5, color="0.45", linestyle="none", marker="s", markerfacecolor="white",
+                markersize=4.5)
+        if coupled and "storey_shear" in r.analyses["coupled"][b]["peak"]:
+            qc = r.analyses["coupled"][b]["peak"]["storey_shear"]
+            x, y = _storey_profile(qc)
+            ax.plot(x, y, color="black", linestyle="-", linewidth=1.4, label="coupled (pounding)")
+            ax.plot(qc, np.arange(n) + 0.5, color="black", linestyle="none", marker="o", markersize=4.0)
+        # One legend entry per analysis with line and marker.
+        handles = [plt.Line2D([], [], color="0.45", linestyle="--", marker="s", markerfacecolor="white",
+                              label="uncoupled")]
+        if qc is not None:
+            handles.append(plt.Line2D([], [], color="black", linestyle="-", marker="o", label="coupled"))
+        ax.legend(handles=handles, loc="upper right")
+        ax.set_yticks(np.arange(n) + 0.5)
+        ax.set_yticklabels([str(j) for j in range(1, n + 1)])
+        ax.set_yticks(np.arange(n + 1), minor=True)
+        ax.grid(False, axis="y")
+        ax.grid(True, axis="y", which="minor", color="0.85")
+        ax.set_ylim(0.0, n)
+        ax.set_xlim(left=0.0, right=1.18 * max(np.max(qu), np.max(qc) if qc is not None else 0.0))
+        ax.set_xlabel("peak storey shear |Q| [kN]")
+        if ib == 0:
+            ax.set_ylabel("storey")
+        ax.set_title(f"building {b} ({n} storeys)")
+    what = "Storey-shear envelopes, coupled against uncoupled" if coupled else \
+        "Storey-shear envelopes (uncoupled only: no contact in this file)"
+    suptitle(fig, r, what)
+    save(fig, r, "shear", args, written)
+    plt.close(fig)
+
+
+def plot_influence(plt, r, args, written, notes):
+    import numpy as np
+
+    names = [b for b in r.buildings if b in r.influence and r.influence[b]]
+    if not names:
+        notes.append("influence: skipped (no /influence in the file: uncoupled-only run)")
+        return
+    qs = [q for q in QUANTITY_LABEL if all(q in r.influence[b] for b in names)]
+    same_drift = "drift" in qs and "storey_shear" in qs and all(
+        np.allclose(r.influence[b]["drift"], r.influence[b]["storey_shear"], rtol=0, atol=1e-9) for b in names)
+    if same_drift:
+        qs.remove("drift")
+    nmax = max(len(r.model[b]["height"]) for b in names)
+    nq = len(qs)
+    ncol = min(2, nq)
+    nrow = (nq + ncol - 1) // ncol
+    nb = len(names)
+    fig, axes = plt.subplots(nrow, ncol, figsize=(7.0, 0.9 + nrow * (0.8 + 0.16 * nb * nmax + 0.1 * nmax)),
+                             squeeze=False)
+    hgt = 0.8 / nb
+    for iq in range(nrow * ncol):
+        ax = axes[iq // ncol, iq % ncol]
+        if iq >= nq:
+            ax.set_visible(False)
+            continue
+        q = qs[iq]
+        vmax = max(float(np.max(np.abs(r.influence[b][q]))) for b in names) or 1.0
+        for ib, b in enumerate(names):
+            lam = r.influence[b][q]
+            pos = np.arange(1, len(lam) + 1) + (ib - (nb - 1) / 2) * hgt
+            ax.barh(pos, lam, height=hgt * 0.95, color=FILLS[ib % len(FILLS)], edgecolor="black",
+                    hatch=HATCHES[ib % len(HATCHES)], linewidth=0.6, label=f"building {b}")
+            for p, v in zip(pos, lam):
+                ax.text(v + (0.02 if v >= 0 else -0.02) * vmax, p, f"{v:.1f}", va="center",
+                        ha="left" if v >= 0 else "right", fontsize=6.5)
+        ax.axvline(0.0, color="black", linewidth=0.8)
+        title, axis = QUANTITY_LABEL[q]
+        if q == "storey_shear" and same_drift:
+            title += " (= storey drift)"
+        ax.set_title(title, loc="left")
+        ax.set_yticks(np.arange(1, nmax + 1))
+        ax.set_ylim(0.4, nmax + 0.6)
+        ax.grid(False, axis="y")
+        lo = min(0.0, min(float(np.min(r.influence[b][q])) for b in names))
+        hi = max(0.0, max(float(np.max(r.influence[b][q])) for b in names))
+        span = max(hi - lo, 1e-9)
+        ax.set_xlim(lo - (0.22 * span if lo < 0 else 0.02 * span), hi + (0.22 * span if hi > 0 else 0.02 * span))
+        ax.set_xlabel("influence coefficient lambda [%]")
+        ax.set_ylabel(axis)
+        if iq == 0:
+            ax.legend(loc="best")
+    suptitle(fig, r, "Influence coefficients lambda = (Qc - Qu) / Qu x 100 (storeys x buildings)")
+    save(fig, r, "influence", args, written)
+    plt.close(fig)
+
+
+def plot_ground(plt, r, args, written, notes):
+    import numpy as np
+
+    t, ag = r.ground["time"], r.ground["acceleration"]
+    fig, ax = plt.subplots(figsize=(7.0, 2.9))
+    ax.plot(t, ag, color="black", linestyle="-", label="ground acceleration a_g")
+    if len(ag):
+        i = int(np.argmax(np.abs(ag)))
+        ax.plot([t[i]], [ag[i]], linestyle="none", marker="o", markerfacecolor="white", color="black",
+                label=f"PGA {abs(ag[i]):.4g} m/s² = {abs(ag[i]) / G:.3g} g at {t[i]:.3f} s")
+    ax.axhline(0.0, color="0.5", linewidth=0.6)
+    ax.set_xlabel("time t [s]")
+    ax.set_ylabel("a_g [m/s²]")
+    ax.set_xlim(t[0], t[-1]) if len(t) > 1 else None
+    sec = ax.secondary_yaxis("right", functions=(lambda a: a / G, lambda x: x * G))
+    sec.set_ylabel("a_g [g]")
+    ax.legend(loc="upper right")
+    desc = r.ground.get("description", "")
+    if len(desc) > 100:
+        desc = desc[:97] + "..."
+    if desc:
+        ax.set_title(desc, loc="left", fontsize=7.5)
+    suptitle(fig, r, "Ground motion (at the output times)")
+    save(fig, r, "ground", args, written)
+    plt.close(fig)
+
+
+def plot_sweep(plt, r, args, written, notes):
+    """Largest |lambda| over the storeys against the joint gap, one panel per building."""
+    sw = r.sweep
+    names = [b for b in r.buildings if sw["lambda"].get(b)]
+    fig, axes = plt.subplots(1, len(names), figsize=(3.6 * len(names) + 0.6, 4.2), squeeze=False, sharey=True)
+    fig.subplots_adjust(top=0.80, wspace=0.08)
+    # Storey drift has the same lambda as storey shear (Q = k drift, k constant): not drawn twice.
+    order = [q for q in ("storey_shear", "u", "a_abs") if any(q in sw["lambda"][b] for b in names)]
+    labels = {"storey_shear": "storey shear Q (= storey drift)"}
+    for i, b in enumerate(names):
+        ax = axes[0, i]
+        for j, q in enumerate(order):
+            if q not in sw["lambda"][b]:
+                continue
+            y = sw["lambda"][b][q]
+            ax.plot(1e3 * sw["gap"], y, color=COLOURS[j], linestyle=LINESTYLES[j], marker=MARKERS[j],
+                    markersize=3, markevery=max(1, len(y) // 12), linewidth=1.0,
+                    label=labels.get(q, QUANTITY_LABEL[q][0]))
+        if sw["target"] > 0:
+            ax.axhline(sw["target"], color="black", linestyle=":", linewidth=0.9,
+                       label=f"target {sw['target']:.4g} %")
+        if sw["safe_gap"] >= 0:
+            ax.axvline(1e3 * sw["safe_gap"], color="black", linestyle="-.", linewidth=0.9,
+                       label=f"smallest gap meeting it: {1e3 * sw['safe_gap']:.3g} mm")
+        ax.set_yscale("symlog", linthresh=1.0)
+        ax.set_title(f"building {b}", loc="left", fontsize=9)
+        ax.set_xlabel("joint gap [mm]")
+        if i == 0:
+            ax.set_ylabel("largest |lambda| over the storeys [%]")
+        ax.grid(True, color="0.85", linewidth=0.5)
+    axes[0, -1].legend(loc="center right", fontsize=7)
+    suptitle(fig, r, "Gap study: largest influence coefficient against the seismic joint gap")
+    save(fig, r, "sweep", args, written)
+    plt.close(fig)
+
+
+PLOTTERS = {"displacement": plot_displacement, "force": plot_force, "loops": plot_loops,
+            "shear": plot_shear, "influence": plot_influence, "ground": plot_ground, "sweep": plot_sweep}
+
+
+# --------------------------------------------------------------------------------------------
+
+
+def parse_args(argv):
+    ap = argparse.ArgumentParser(prog="plot", description="Plots of a pound results file (PNG and PDF).")
+    ap.add_argument("h5file", help="results file written by pound (DECK.h5)")
+    ap.add_argument("--only", metavar="LIST",
+                    help="comma-separated subset of: " + ", ".join(PLOTS) + " (default: all)")
+    ap.add_argument("--outdir", metavar="DIR", help="where to write (default: beside the file)")
+    ap.add_argument("--format", default="png,pdf", help="comma-separated formats (default png,pdf)")
+    ap.add_argument("--t-max", type=float, metavar="T",
+                    help="end of the time axis of the contact plots in s (default: last contact + 2 T1)")
+    ap.add_argument("--dpi", type=int, default=150, help="PNG resolution (default 150)")
+    args = ap.parse_args(argv)
+    args.explicit = () if not args.only else tuple(s.strip() for s in args.only.split(",") if s.strip())
+    args.only = PLOTS if not args.only else args.explicit
+    bad = [s for s in args.only if s not in PLOTS]
+    if bad:
+        ap.error(f"--only: unknown plot {', '.join(bad)}; known: {', '.join(PLOTS)}")
+    args.formats = tuple(s.strip().lower() for s in args.format.split(",") if s.strip())
+    bad = [s for s in args.formats if s not in ("png", "pdf", "svg")]
+    if bad or not args.formats:
+        ap.error(f"--format: unknown format {', '.join(bad) or '(none)'}; use png, pdf, svg")
+    if args.outdir and not os.path.isdir(args.outdir):
+        ap.error(f"--outdir {args.outdir}: no such directory")
+    return args
+
+
+def run(argv):
+    args = parse_args(argv)
+    try:
+        import numpy  # noqa: F401
+        import h5py  # noqa: F401
+        import matplotlib  # noqa: F401
+    except ImportError as e:
+        raise PlotError(f"needs numpy, h5py and matplotlib (Debian python3-numpy python3-h5py "
+                        f"python3-matplotlib; run with /usr/bin/python3): {e}") from None
+    r = read_results(args.h5file)
+    plt = setup_matplotlib()
+    written, notes = [], []
+    for name in args.only:
+        if name in CONTACT_PLOTS and r.contact is None:
+            why = "uncoupled-only file" if "coupled" not in r.analyses else "no /coupled/contact"
+            notes.append(f"{name}: skipped ({why}: no contact pairs)")
+            continue
+        if name == "sweep" and r.sweep is None:
+            if "sweep" in args.explicit:
+                notes.append("sweep: skipped (no /sweep in this file: the deck has no &sweep)")
+            continue
+        PLOTTERS[name](plt, r, args, written, notes)
+    for w in written:
+        print(f"wrote {w}")
+    for n in notes:
+        print(f"note: {n}")
+    return 0
+
+
+def main(argv=None):
+    try:
+        return run(sys.argv[1:] if argv is None else argv)
+    except PlotError as e:
+        print(f"plot: error: {e}", file=sys.stderr)
+        return 1
+    except KeyboardInterrupt:
+        print("plot: interrupted", file=sys.stderr)
+        return 130
+    except Exception as e:  # one line, not a traceback, unless asked for
+        if os.environ.get("POUND_DEBUG"):
+            raise
+        msg = str(e).splitlines()[0] if str(e) else ""
+        print(f"plot: error: unexpected failure ({type(e).__name__}: {msg}); POUND_DEBUG=1 shows "
+              "the traceback", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
