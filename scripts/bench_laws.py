@@ -13,7 +13,7 @@ def run(exe, deck, out):
     text = subprocess.run([exe, deck, "-o", out], check=True, capture_output=True, text=True).stdout
     after = resource.getrusage(resource.RUSAGE_CHILDREN)
     cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    coupled = float(re.search(r"coupled integration:\s+([0-9.Ee+-]+) s", text).group(1))
+    coupled = float(re.search(r"(?m)^\s*coupled integration:\s+([0-9.Ee+-]+) s", text).group(1))
     return cpu, coupled
 
 

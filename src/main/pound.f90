@@ -112,8 +112,8 @@ program pound
       call write_influence_tables(u, models, unc, cpl)
       if (deck%sweep%active) call write_sweep_table(u, models, deck%sweep, sweep)
    end if
-   write (u, '(/,a,f10.4,a)') '  uncoupled integration: ', unc%seconds, ' s'
-   if (coupled) write (u, '(a,f10.4,a,f10.4,a)') '  coupled integration:   ', cpl%seconds, &
+   write (u, '(/,a,es10.3,a)') '  uncoupled integration: ', unc%seconds, ' s'
+   if (coupled) write (u, '(a,es10.3,a,es10.3,a)') '  coupled integration:   ', cpl%seconds, &
       ' s, of which contact (LCP) ', cpl%contact_seconds, ' s'
    close (u)
    if (deck%sweep%active) then
@@ -137,17 +137,17 @@ program pound
       write (output_unit, '(a,i0,a,f9.5,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
          ' storeys, T1 = ', models(ib)%period(1), ' s'
    end do
-   write (output_unit, '(a,f10.4,a,es9.2)') '  uncoupled integration: ', unc%seconds, &
+   write (output_unit, '(a,es10.3,a,es9.2)') '  uncoupled integration: ', unc%seconds, &
       ' s, energy balance error ', unc%energy_error
    if (coupled) then
-      write (output_unit, '(a,f10.4,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
+      write (output_unit, '(a,es10.3,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
          ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%pair(:)%impacts), ' impacts, ', &
          cs%pivots_total, ' LCP pivots'
-      write (output_unit, '(a,f10.4,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
+      write (output_unit, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
          ' s, LCP solves ', cs%solves, ', pivots max ', cs%pivots_max, ', steps ', cpl%n_steps
    end if
    if (deck%sweep%active) then
-      write (output_unit, '(a,i0,a,f10.4,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'
+      write (output_unit, '(a,i0,a,es10.3,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'
       if (sweep%found) write (output_unit, '(a,f10.4,a)') '  smallest gap meeting the target: ', &
          1000.0_dp*sweep%safe_gap, ' mm'
    end if

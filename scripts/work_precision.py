@@ -1,0 +1,223 @@
+"""Speed against error for a pound deck (called by scripts/work_precision).
+
+For each time step of a ladder the deck is run (dt, output_every and history replaced in
+&analysis so that every run stores u at the same output times) and compared with a reference
+run at dt_min / ref_factor. The reference is itself checked against the run at
+dt_min / (ref_factor / 2). Errors, for the coupled and the uncoupled analysis separately:
+  shear  relative error of the peak storey shears, max over storeys and buildings
+  force  relative error of the peak contact forces, max over pairs (coupled only)
+  lambda absolute error of the storey-shear influence coefficients, percentage points
+  L2     relative L2 error of the floor displacement histories (all floors, common times)
+plus the integration time (median of several runs) and the observed order between
+neighbouring steps.
+"""
+import argparse
+import math
+import os
+import re
+import statistics
+import subprocess
+import sys
+import tempfile
+
+
+def analysis_group_span(text):
+    m = re.search(r"&analysis\b", text, re.I)
+    if not m:
+        raise SystemExit("work_precision: the deck has no &analysis group")
+    i, quote = m.end(), None
+    while i < len(text):
+        ch = text[i]
+        if quote:
+            if ch == quote:
+                quote = None
+        elif ch in "'\"":
+            quote = ch
+        elif ch == "!":
+            j = text.find("\n", i)
+            i = len(text) if j < 0 else j
+            continue
+        elif ch == "/":
+            return m.end(), i
+        i += 1
+    raise SystemExit("work_precision: &analysis is not closed")
+
+
+def with_step(text, dt, output_every):
+    a, b = analysis_group_span(text)
+    body = text[a:b]
+    value = r"""('[^']*'|"[^"]*"|[^,\s/]+)"""
+    body = re.sub(r"\b(dt|output_every|history)\s*=\s*" + value + r"\s*,?", " ", body, flags=re.I)
+    body = f" dt = {dt!r}, output_every = {output_every}, history = 'u'," + body
+    return text[:a] + body + text[b:]
+
+
+def run(exe, deck_text, deck_dir, tag, outdir, dt, out_every, repeats):
+    path = os.path.join(deck_dir, f".work_precision_{tag}.nml")
+    with open(path, "w") as f:
+        f.write(with_step(deck_text, dt, out_every))
+    try:
+        times_u, times_c = [], []
+        for _ in range(repeats):
+            p = subprocess.run([exe, path, "-o", outdir], capture_output=True, text=True)
+            if p.returncode != 0:
+                raise SystemExit(f"work_precision: pound failed at dt = {dt}:\n{p.stderr}")
+            times_u.append(float(re.search(r"uncoupled integration:\s+([0-9.Ee+-]+)", p.stdout).group(1)))
+            m = re.search(r"\n\s*coupled integration:\s+([0-9.Ee+-]+)", p.stdout)
+            times_c.append(float(m.group(1)) if m else float("nan"))
+    finally:
+        os.remove(path)
+    return os.path.join(outdir, f".work_precision_{tag}.h5"), statistics.median(times_u), statistics.median(times_c)
+
+
+def load(h5path):
+    import h5py
+    import numpy as np
+
+    out = {}
+    with h5py.File(h5path, "r") as f:
+        names = list(f["/model"].keys())
+        for an in ("uncoupled", "coupled"):
+            if an not in f:
+                continue
+            d = {"shear": {}, "u": {}}
+            for b in names:
+                d["shear"][b] = np.asarray(f[f"/{an}/{b}/peak/storey_shear"][()])
+                d["u"][b] = np.asarray(f[f"/{an}/{b}/u"][()])
+            if an == "coupled" and "/coupled/contact/peak_force" in f:
+                d["force"] = np.asarray(f["/coupled/contact/peak_force"][()])
+            out[an] = d
+        out["lambda"] = {b: np.asarray(f[f"/influence/{b}/storey_shear"][()]) for b in names
+                         if f"/influence/{b}/storey_shear" in f}
+    return out
+
+
+def errors(run_, ref):
+    import numpy as np
+
+    e = {}
+    for an in ("uncoupled", "coupled"):
+        if an not in ref:
+            continue
+        r, x = ref[an], run_[an]
+        shear = max(float(np.max(np.abs(x["shear"][b] - r["shear"][b]) / np.maximum(np.abs(r["shear"][b]), 1e-300)))
+                    for b in r["shear"])
+        num = sum(float(np.sum((x["u"][b] - r["u"][b]) ** 2)) for b in r["u"])
+        den = sum(float(np.sum(r["u"][b] ** 2)) for b in r["u"])
+        e[an] = {"shear": shear, "L2": math.sqrt(num / den) if den > 0 else 0.0}
+        if an == "coupled" and "force" in r:
+            pos = r["force"] > 0
+            e[an]["force"] = float(np.max(np.abs(x["force"][pos] - r["force"][pos]) / r["force"][pos])) \
+                if np.any(pos) else 0.0
+            e[an]["lambda"] = max((float(np.max(np.abs(run_["lambda"][b] - ref["lambda"][b]))) for b in ref["lambda"]),
+                                  default=0.0)
+    return e
+
+
+def order(e1, e2, dt1, dt2):
+    if e1 <= 0 or e2 <= 0:
+        return float("nan")
+    return math.log(e1 / e2) / math.log(dt1 / dt2)
+
+
+def fmt(x, spec=".2e"):
+    return "-" if x is None or (isinstance(x, float) and math.isnan(x)) else format(x, spec)
+
+
+def main():
+    ap = argparse.ArgumentParser(prog="work_precision", description=__doc__.splitlines()[0])
+    ap.add_argument("deck")
+    ap.add_argument("--exe", required=True)
+    ap.add_argument("--dts", default="8e-3,4e-3,2e-3,1e-3,5e-4,2.5e-4,1.25e-4")
+    ap.add_argument("--ref-factor", type=int, default=8, help="reference dt = smallest dt / this (power of 2)")
+    ap.add_argument("--repeats", type=int, default=3)
+    ap.add_argument("--outdir", default="out")
+    a = ap.parse_args()
+    dts = sorted((float(s) for s in a.dts.split(",")), reverse=True)
+    if len(dts) < 2:
+        raise SystemExit("work_precision: give at least two time steps")
+    dt_ref = dts[-1] / a.ref_factor
+    dt_check = dts[-1] / (a.ref_factor // 2)
+    t_out = dts[0]
+    every = lambda dt: max(1, round(t_out / dt))
+    for dt in dts + [dt_ref, dt_check]:
+        if abs(every(dt) * dt - t_out) > 1e-9 * t_out:
+            raise SystemExit(f"work_precision: dt = {dt} does not divide the largest dt {t_out}")
+    with open(a.deck) as f:
+        text = f.read()
+    deck_dir = os.path.dirname(os.path.abspath(a.deck))
+    stem = os.path.splitext(os.path.basename(a.deck))[0]
+    os.makedirs(a.outdir, exist_ok=True)
+    with tempfile.TemporaryDirectory() as tmp:
+        ref_path, _, _ = run(a.exe, text, deck_dir, "ref", tmp, dt_ref, every(dt_ref), 1)
+        ref = load(ref_path)
+        chk_path, _, _ = run(a.exe, text, deck_dir, "check", tmp, dt_check, every(dt_check), 1)
+        check = errors(load(chk_path), ref)
+        rows = []
+        for i, dt in enumerate(dts):
+            p, tu, tc = run(a.exe, text, deck_dir, f"{i}", tmp, dt, every(dt), a.repeats)
+            rows.append((dt, tu, tc, errors(load(p), ref)))
+    coupled = "coupled" in ref
+    lines = [f"Deck `{os.path.basename(a.deck)}`; reference dt = {dt_ref:g} s; outputs compared every {t_out:g} s; "
+             f"times: median of {a.repeats} runs of the time-step loop.", ""]
+    for an in ("uncoupled", "coupled") if coupled else ("uncoupled",):
+        c = check[an]
+        note = f"reference check (dt = {dt_check:g} against {dt_ref:g}): shear {fmt(c['shear'])}, L2 {fmt(c['L2'])}"
+        if an == "coupled":
+            note += f", force {fmt(c.get('force'))}, lambda {fmt(c.get('lambda'), '.3f')} pp"
+        lines += [f"**{an}** — {note}", ""]
+        head = "| dt [s] | time [ms] | peak shear err | order | L2 u err | order |"
+        sep = "|--:|--:|--:|--:|--:|--:|"
+        if an == "coupled":
+            head += " peak force err | order | lambda err [pp] |"
+            sep += "--:|--:|--:|"
+        lines += [head, sep]
+        for i, (dt, tu, tc, e) in enumerate(rows):
+            t = tc if an == "coupled" else tu
+            prev = rows[i - 1] if i > 0 else None
+            o_s = order(prev[3][an]["shear"], e[an]["shear"], prev[0], dt) if prev else None
+            o_l = order(prev[3][an]["L2"], e[an]["L2"], prev[0], dt) if prev else None
+            line = (f"| {dt:g} | {1e3 * t:.2f} | {fmt(e[an]['shear'])} | {fmt(o_s, '.2f')} | "
+                    f"{fmt(e[an]['L2'])} | {fmt(o_l, '.2f')} |")
+            if an == "coupled":
+                o_f = order(prev[3][an]["force"], e[an]["force"], prev[0], dt) if prev else None
+                line += f" {fmt(e[an].get('force'))} | {fmt(o_f, '.2f')} | {fmt(e[an].get('lambda'), '.3f')} |"
+            lines.append(line)
+        lines.append("")
+    md = "\n".join(lines)
+    print(md)
+    with open(os.path.join(a.outdir, f"{stem}_wp.md"), "w") as f:
+        f.write(md + "\n")
+    plot(rows, coupled, os.path.join(a.outdir, f"{stem}_wp"), os.path.basename(a.deck))
+
+
+def plot(rows, coupled, base, title):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+
+    fig, ax = plt.subplots(figsize=(6.4, 4.6))
+    series = [("uncoupled", "shear", "uncoupled: peak storey shear", "-", "o"),
+              ("uncoupled", "L2", "uncoupled: L2 of u", ":", "s")]
+    if coupled:
+        series += [("coupled", "shear", "coupled: peak storey shear", "-", "^"),
+                   ("coupled", "L2", "coupled: L2 of u", ":", "D"),
+                   ("coupled", "force", "coupled: peak contact force", "--", "v")]
+    for an, key, label, ls, mk in series:
+        t = [1e3 * (r[2] if an == "coupled" else r[1]) for r in rows]
+        e = [r[3][an][key] for r in rows]
+        ax.loglog(t, e, color="black", linestyle=ls, marker=mk, markersize=4, label=label)
+    ax.set_xlabel("time of the time-step loop [ms]")
+    ax.set_ylabel("relative error against the reference")
+    ax.set_title(f"Speed against error: {title}", fontsize=10)
+    ax.grid(True, which="both", color="0.85", linewidth=0.5)
+    ax.legend(fontsize=7)
+    fig.tight_layout()
+    for ext in ("png", "pdf"):
+        fig.savefig(f"{base}.{ext}", dpi=150)
+    print(f"wrote {base}.png and {base}.pdf")
+
+
+if __name__ == "__main__":
+    main()
