@@ -189,6 +189,17 @@ def main():
     with open(os.path.join(a.outdir, f"{stem}_wp.md"), "w") as f:
         f.write(md + "\n")
     plot(rows, coupled, os.path.join(a.outdir, f"{stem}_wp"), os.path.basename(a.deck))
+    # The reference must be much closer to the limit than the finest run of the ladder.
+    status = 0
+    for an in ("uncoupled", "coupled") if coupled else ("uncoupled",):
+        finest = rows[-1][3][an]
+        for key in ("shear", "L2"):
+            if check[an][key] > 0.5 * finest[key]:
+                print(f"work_precision: warning: the reference has not converged for {an} {key}: "
+                      f"{check[an][key]:.2e} between the two finest steps, {finest[key]:.2e} at dt = {rows[-1][0]:g}",
+                      file=sys.stderr)
+                status = 3
+    return status
 
 
 def plot(rows, coupled, base, title):
@@ -220,4 +231,4 @@ def plot(rows, coupled, base, title):
 
 
 if __name__ == "__main__":
-    main()
+    sys.exit(main())
