@@ -27,7 +27,7 @@ pound_setup() {
     sudo=sudo
   fi
   $sudo apt-get update -qq >&2 || return 1
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends $missing >&2 || return 1
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $missing >&2 || return 1
 }
 
 # pound_build TYPE: configure (first time only) and build build/<type>; an up-to-date tree is left alone.
