@@ -2,7 +2,7 @@
 set(POUND_SOURCES
   # core: kinds, errors, strings, whole-file reading, version
   core/pound_kinds.f90 core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
-  core/pound_version.f90
+  core/pound_version.f90 core/pound_random.f90
   # deck: configuration types, namelist reader, accelerogram files
   deck/pound_config.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
