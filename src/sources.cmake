@@ -22,7 +22,7 @@ set(POUND_SOURCES
   analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_influence.f90
   analysis/pound_sweep.f90
   # analyses: response spectra and scaling, code separation rules
-  analysis/pound_spectrum.f90
+  analysis/pound_spectrum.f90 analysis/pound_separation.f90
   # outputs: files, HDF5 layer, results file, listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
 )
