@@ -31,6 +31,7 @@ module pound_separation
 
    !> All rules for one pair (m; rho dimensionless).
    type :: separation_t
+      !> ABS, SRSS, EC8 and DDC separations (m).
       real(dp) :: abs = 0.0_dp, srss = 0.0_dp, ec8 = 0.0_dp, ddc = 0.0_dp
       !> CQC correlation used by the DDC.
       real(dp) :: rho = 0.0_dp
