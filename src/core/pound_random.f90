@@ -32,6 +32,11 @@ module pound_random
       real(dp) :: spare = 0.0_dp
    end type random_t
 
+   !> Start a stream from an integer seed of either kind (default or int64).
+   interface random_seed_stream
+      module procedure seed_int64, seed_default
+   end interface random_seed_stream
+
    !> Uniform numbers in (0, 1): one, or an array filled in order.
    interface random_uniform
       module procedure uniform_scalar, uniform_array
@@ -56,7 +61,7 @@ contains
    !> Start a stream from an integer seed (any value, negative ones included, read as its
    !> 64-bit two's-complement pattern): the four state words are four successive splitmix64
    !> outputs from that seed.
-   pure subroutine random_seed_stream(rng, seed)
+   pure subroutine seed_int64(rng, seed)
       !> Stream to initialise.
       type(random_t), intent(out) :: rng
       !> Seed.
@@ -70,7 +75,17 @@ contains
       end do
       rng%has_spare = .false.
       rng%spare = 0.0_dp
-   end subroutine random_seed_stream
+   end subroutine seed_int64
+
+   !> `seed_int64` for a default-kind integer seed (the same stream as int(seed, int64)).
+   pure subroutine seed_default(rng, seed)
+      !> Stream to initialise.
+      type(random_t), intent(out) :: rng
+      !> Seed.
+      integer, intent(in) :: seed
+
+      call seed_int64(rng, int(seed, int64))
+   end subroutine seed_default
 
    !> One splitmix64 step: state += 0x9E3779B97F4A7C15, output = mix(state).
    pure subroutine splitmix64_next(state, x)
