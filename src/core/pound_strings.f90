@@ -6,7 +6,7 @@ module pound_strings
    implicit none
    private
 
-   public :: str, number_end, decimal_exponent, is_digit, shorten
+   public :: str, number_end, decimal_exponent, is_digit, shorten, short_real
 
    !> Shortest readable text of a number.
    interface str
@@ -190,5 +190,33 @@ contains
          t = s(1:37)//'...'
       end if
    end function shorten
+
+   !> `x` in short form for bounds: '0', '10', '1e-7', '2.5e3'.
+   pure function short_real(x) result(s)
+      !> A bound.
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=16) :: buf
+      integer :: e, k
+
+      if (.not. (abs(x) > 0.0_dp)) then
+         s = '0'
+         return
+      end if
+      write (buf, '(es16.6e3)') x
+      buf = adjustl(buf)
+      k = index(buf, 'E')
+      read (buf(k + 1:), *) e
+      s = buf(1:k - 1)
+      do while (s(len(s):len(s)) == '0')
+         s = s(1:len(s) - 1)
+      end do
+      if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+      if (e == 1) then
+         s = str(nint(x))
+      else if (e /= 0) then
+         s = s//'e'//str(e)
+      end if
+   end function short_real
 
 end module pound_strings

@@ -29,7 +29,7 @@ module pound_accelerogram
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_text_file, only: read_whole_file
-   use pound_strings, only: str, number_end, decimal_exponent, is_digit, shorten
+   use pound_strings, only: str, number_end, decimal_exponent, is_digit, shorten, short_real
    implicit none
    private
 
@@ -144,7 +144,7 @@ contains
       integer(int64) :: npts_header, room
       logical :: found
       real(dp) :: dt, x
-      character(len=:), allocatable :: hdr4
+      character(len=:), allocatable :: hdr4, shown
 
       c = start_cursor(buf)
       do i = 1, 4
@@ -169,7 +169,9 @@ contains
       ! Size checks before allocating: every value takes at least 2 bytes (digit, separator).
       room = (int(len(buf), int64) - c%pos + 2)/2
       if (npts_header > room) then
-         call fatal_error(error, path//':4: NPTS = '//str(npts_header)//' values, but the '// &
+         shown = str(npts_header)
+         if (npts_header == huge(npts_header)) shown = 'a number of more than 18 digits'
+         call fatal_error(error, path//':4: NPTS = '//shown//' values, but the '// &
                           str(max(len(buf) - c%pos + 1, 0))//' bytes after the header hold at most '// &
                           str(room)//'; the header does not match the file')
          return
@@ -186,7 +188,7 @@ contains
       end if
       if (dt < record_dt_range(1) .or. dt > record_dt_range(2)) then
          call fatal_error(error, path//':4: DT = '//str(dt)//' s, outside the plausible range '// &
-                          str(record_dt_range(1))//'..'//str(record_dt_range(2))//' s')
+                          short_real(record_dt_range(1))//'..'//short_real(record_dt_range(2))//' s')
          return
       end if
 
@@ -251,7 +253,7 @@ contains
          ! Old PEER form.
          ok = is_integer(s(b:e))
          if (ok) then
-            read (s(b:e), *) npts
+            npts = count_value(s(b:e))
             q = index(u(e + 1:), 'DT')
             ok = q > 0
          end if
@@ -266,7 +268,7 @@ contains
          call next_token(s, p, len(s), b, e, ok)
          if (ok) ok = is_integer(s(b:e))
          if (ok) then
-            read (s(b:e), *) npts
+            npts = count_value(s(b:e))
             p = e + 1
             call next_token(s, p, len(s), b, e, ok)
          end if
@@ -488,6 +490,15 @@ contains
    end subroutine to_real
 
 
+   !> The count written in digits `s`; counts of more than 18 digits read as huge.
+   pure function count_value(s) result(n)
+      character(len=*), intent(in) :: s
+      integer(int64) :: n
+
+      n = huge(n)
+      if (len(s) <= 18) read (s, *) n
+   end function count_value
+
    !> A record value must be at most `max_record_value` in magnitude.
    subroutine check_value(s, x, error)
       character(len=*), intent(in) :: s
@@ -512,7 +523,7 @@ contains
       character(len=*), intent(in) :: s
       integer :: i
 
-      is_integer = len(s) > 0 .and. len(s) <= 18
+      is_integer = len(s) > 0
       do i = 1, len(s)
          if (.not. is_integer) return
          is_integer = is_digit(s(i:i))

@@ -1,10 +1,16 @@
 !> Input deck reader: Fortran namelist groups `&analysis`, `&ground`, `&building` and `&contact`.
 !>
-!> The deck is read into memory once (kept in `deck%text` for the echo), then scanned:
-!> every group must start with `&name` and end with `/` (or `&end`), text between groups
-!> must be blank or a `!` comment, and every variable name is checked against its group
-!> before gfortran reads the group. Each group occurrence is then read on its own (from
-!> an internal file holding just that group), so the order of the groups does not matter.
+!> The deck is read into memory once (kept in `deck%text` for the echo; any line ends, a
+!> UTF-8 byte-order mark dropped, pipes read to their end), then scanned: every group must
+!> start with `&name` and end with `/` (or `&end`), text between groups must be blank or a
+!> `!` comment, and every assignment is checked before gfortran reads the group: known
+!> variable, subscript in range, each value of the variable's type (real, integer, logical,
+!> character) on its own line, repeat counts >= 1, no more values than the variable holds,
+!> no variable or element given twice, no real of magnitude 1e300 or more (so the `unset_real`
+!> marker cannot come from the deck). Each group occurrence is then read on its own (from a
+!> one-record internal file holding just that group), so the order of the groups does not
+!> matter and memory stays proportional to the deck. Raw inputs must also lie in the
+!> plausible ranges of `bounds` (README: Input bounds).
 !>
 !> * `&analysis` and `&ground` exactly once, `&building` once per building, left to right.
 !> * `&contact` zero or more times (none: the buildings are uncoupled).
@@ -46,7 +52,7 @@ module pound_deck
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_text_file, only: read_whole_file
-   use pound_strings, only: str, number_end, decimal_exponent, shorten
+   use pound_strings, only: str, number_end, decimal_exponent, shorten, short_real
    use pound_config, only: deck_type, analysis_config, ground_config, building_config, &
                            contact_config, sweep_config, n_history_quantities, history_names, g_accel
    use pound_contact_law, only: contact_law, make_piecewise
@@ -688,7 +694,7 @@ contains
             case default
                tline = toks%t(4, k)
                why = ''
-               if (toks%t(1, k) == tok_word .and. vtype /= 'c') then
+               if (toks%t(1, k) == tok_word) then
                   if (known_variable(g%name, lower(token_text(text, toks, k)))) &
                      why = "'=' is missing after the variable name '"//token_text(text, toks, k)//"'"
                end if
@@ -2495,34 +2501,6 @@ contains
                 ' must be in '//short_real(lo)//'..'//short_real(hi)//unit// &
                 ' (see the input bounds in the README)', error)
    end subroutine check_plausible
-
-   !> `x` in short form for bounds: '0', '10', '1e-7', '2.5e3'.
-   pure function short_real(x) result(s)
-      !> A bound.
-      real(dp), intent(in) :: x
-      character(len=:), allocatable :: s
-      character(len=16) :: buf
-      integer :: e, k
-
-      if (.not. (abs(x) > 0.0_dp)) then
-         s = '0'
-         return
-      end if
-      write (buf, '(es16.6e3)') x
-      buf = adjustl(buf)
-      k = index(buf, 'E')
-      read (buf(k + 1:), *) e
-      s = buf(1:k - 1)
-      do while (s(len(s):len(s)) == '0')
-         s = s(1:len(s) - 1)
-      end do
-      if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
-      if (e == 1) then
-         s = str(nint(x))
-      else if (e /= 0) then
-         s = s//'e'//str(e)
-      end if
-   end function short_real
 
    !> Whether the deck gave `x` (it is not the `unset_real` marker; safe for NaN).
    pure logical function is_set(x)
