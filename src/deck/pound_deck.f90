@@ -610,10 +610,10 @@ contains
       type(group_ref), intent(inout) :: g
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      integer, allocatable :: starts(:), eqs(:)
+      integer, allocatable :: starts(:), eqs(:), owner(:, :)
       character(len=:), allocatable :: label, left, right, designator, vname, why
       character :: vtype
-      integer :: na, k, m, neq, first, last, vsize, lo, hi_lim, line, i, rep, tline
+      integer :: na, k, m, neq, first, last, vsize, lo, hi_lim, line, i, rep, tline, iv
       integer(int64) :: positions, hi
       logical :: seen, null
 
@@ -652,7 +652,16 @@ contains
       if (g%name == 'contact' .and. len(left) > 0 .and. len(right) > 0) &
          label = label//' ('//printable(left)//', '//printable(right)//')'
 
-      ! Pass 2: each assignment.
+      ! Pass 2: each assignment. owner(e, iv): line that gave element e of variable iv.
+      select case (g%name)
+      case ('building')
+         k = max_storeys
+      case ('contact')
+         k = max(max_pairs, max_envelope_points)
+      case default
+         k = 2
+      end select
+      allocate (owner(k, size(contact_vars)), source=0)
       do m = 1, na
          k = starts(m)
          line = toks%t(4, k)
@@ -730,19 +739,20 @@ contains
             call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
             return
          end if
-         do k = 1, g%n_vars
-            if (g%vars(k)%name /= vname .or. g%vars(k)%hi < g%vars(k)%lo .or. hi < lo) cycle
-            if (g%vars(k)%lo > hi .or. lo > g%vars(k)%hi) cycle
+         iv = variable_index(g%name, vname)
+         do k = lo, int(hi)
+            if (owner(k, iv) == 0) cycle
             if (vsize > 0) then
-               why = vname//'('//str(max(lo, g%vars(k)%lo))//') is given twice (also on line '// &
-                     str(g%vars(k)%line)//'); give each value once per group'
+               why = vname//'('//str(k)//') is given twice (also on line '// &
+                     str(owner(k, iv))//'); give each value once per group'
             else
-               why = vname//' is given twice (also on line '//str(g%vars(k)%line)// &
+               why = vname//' is given twice (also on line '//str(owner(k, iv))// &
                      '); give each variable once per group'
             end if
             call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
             return
          end do
+         owner(lo:int(hi), iv) = line
          call add_var(g, vname, line, lo, int(hi))
       end do
    end subroutine check_assignments
@@ -1049,21 +1059,29 @@ contains
       !> Group name and variable name, lower case.
       character(len=*), intent(in) :: group, name
 
+      known_variable = variable_index(group, name) > 0
+   end function known_variable
+
+   !> Position of variable `name` in the list of group `group` (0: not a variable of it).
+   pure integer function variable_index(group, name) result(k)
+      !> Group name and variable name, lower case.
+      character(len=*), intent(in) :: group, name
+
       select case (group)
       case ('analysis')
-         known_variable = any(analysis_vars == name)
+         k = findloc_name(analysis_vars, name)
       case ('ground')
-         known_variable = any(ground_vars == name)
+         k = findloc_name(ground_vars, name)
       case ('building')
-         known_variable = any(building_vars == name)
+         k = findloc_name(building_vars, name)
       case ('contact')
-         known_variable = any(contact_vars == name)
+         k = findloc_name(contact_vars, name)
       case ('sweep')
-         known_variable = any(sweep_vars == name)
+         k = findloc_name(sweep_vars, name)
       case default
-         known_variable = .true.
+         k = 0
       end select
-   end function known_variable
+   end function variable_index
 
    !> The variables of `group`, comma separated.
    pure function variable_list(group) result(list)
