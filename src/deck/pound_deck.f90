@@ -2501,8 +2501,10 @@ contains
       logical :: magnitude
       integer :: k
 
-      k = findloc_name(bounds%key, at%group%name//':'//var)
-      if (k == 0) return
+      do k = 1, size(bounds)
+         if (bounds(k)%key == at%group%name//':'//var) exit
+      end do
+      if (k > size(bounds)) return
       lo = bounds(k)%lo
       hi = bounds(k)%hi
       unit = trim(bounds(k)%unit)
