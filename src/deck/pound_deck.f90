@@ -903,13 +903,11 @@ contains
       case ('i')
          call integer_problem(v, why)
       case ('l')
-         k = 1
-         if (v(1:1) == '.') k = 2
-         if (len(v) < k) then
+         select case (lower(v))
+         case ('t', 'f', '.t', '.f', '.t.', '.f.', 'true', 'false', '.true.', '.false.')
+         case default
             why = 'expected a logical: .true. or .false.'
-         else if (index('tTfF', v(k:k)) == 0 .or. v(1:1) == "'" .or. v(1:1) == '"') then
-            why = 'expected a logical: .true. or .false.'
-         end if
+         end select
       end select
    end subroutine value_problem
 
