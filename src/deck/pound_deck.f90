@@ -1919,6 +1919,9 @@ contains
          end if
          cfg%envelope_d = envelope_d(1:nd)
          cfg%envelope_r = envelope_r(1:nd)
+         call check_plausible(at, 'stiffness', probe%stiffness, &
+                              'k0 = envelope_r(1)/envelope_d(1)', error, line_of='envelope_r')
+         if (allocated(error)) return
          cfg%stiffness = probe%stiffness
       end subroutine take_points
 
@@ -1958,6 +1961,9 @@ contains
             call check_real(at, 'peak_force', peak_force, '>', 0.0_dp, error)
             if (allocated(error)) return
             k0 = 2.0_dp*peak_force/peak_penetration
+            call check_plausible(at, 'stiffness', k0, 'k0 = 2 peak_force/peak_penetration', error, &
+                                 line_of='peak_force')
+            if (allocated(error)) return
          end if
          if (n_segments == unset_int) n_segments = 8
          if (n_segments < 1 .or. n_segments > max_segments) then
@@ -2483,7 +2489,7 @@ contains
 
 
    !> `x` must lie in the plausible range of `var` (if it has one, see `bounds`).
-   pure subroutine check_plausible(at, var, x, shown, error)
+   pure subroutine check_plausible(at, var, x, shown, error, line_of)
       !> Where messages point.
       type(site), intent(in) :: at
       !> Variable name as in the deck.
@@ -2494,6 +2500,8 @@ contains
       character(len=*), intent(in) :: shown
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
+      !> Variable whose line the message names (default `var`; for derived values).
+      character(len=*), intent(in), optional :: line_of
       real(dp) :: lo, hi, v
       character(len=:), allocatable :: unit, what
       logical :: magnitude
@@ -2515,8 +2523,13 @@ contains
       end if
       if (v >= lo .and. v <= hi) return
       if (len(unit) > 0) unit = ' '//unit
+      what = what//' must be in '//short_real(lo)//'..'//short_real(hi)//unit
+      if (present(line_of)) then
+         call fail(at, line_of, shown//' = '//str(x)//unit//', outside the plausible range: '// &
+                   what//' (see the input bounds in the README)', error)
+         return
+      end if
       call fail(at, var, shown//' = '//str(x)//unit//', outside the plausible range: '//what// &
-                ' must be in '//short_real(lo)//'..'//short_real(hi)//unit// &
                 ' (see the input bounds in the README)', error)
    end subroutine check_plausible
 
