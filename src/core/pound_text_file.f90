@@ -1,6 +1,6 @@
 !> Whole input files read into memory (decks, accelerograms).
 module pound_text_file
-   use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor
+   use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor, int64
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    implicit none
@@ -31,12 +31,18 @@ contains
       !> Error state: the file is missing, cannot be opened, sized or read.
       type(error_type), allocatable, intent(out) :: error
       logical :: exists
-      integer :: u, ios, nbytes, stat
+      integer :: u, ios, stat
+      integer(int64) :: nbytes
       character(len=512) :: msg
 
       inquire (file=path, exist=exists, size=nbytes)
       if (.not. exists) then
          call fatal_error(error, path//': cannot open the '//what//': file not found')
+         return
+      end if
+      if (nbytes > huge(1)) then
+         call fatal_error(error, path//': the '//what//' has '//str(nbytes)//' bytes, more than '// &
+                          'the '//str(huge(1))//' pound reads')
          return
       end if
       msg = ' '
