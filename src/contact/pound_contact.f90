@@ -50,6 +50,7 @@
 !> it carries nothing and takes no part in the LCP for the rest of the analysis.
 !> Khat^{-1} B is computed once (one tridiagonal solve per constraint end).
 module pound_contact
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
@@ -187,18 +188,35 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(column), allocatable :: y(:, :)
       real(dp), allocatable :: f(:, :)
-      integer :: k, l, e, g, b, m
+      integer :: k, l, e, g, b, m, stat
 
       m = size(pairs)
-      allocate (y(2, m), f(m, m))
+      allocate (y(2, m), f(m, m), stat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, 'contact: cannot allocate the condensed flexibility F for '//str(m)// &
+                          ' pairs ('//str(8.0_dp*real(m, dp)**2/2.0_dp**20)//' MiB; fewer floors_left / '// &
+                          'floors_right pairs)')
+         return
+      end if
       do k = 1, m
          do e = 1, 2
             b = pairs(k)%building(e)
             if (b == 0) cycle
-            allocate (y(e, k)%x(states(b)%n))
+            allocate (y(e, k)%x(states(b)%n), stat=stat)
+            if (stat /= 0) then
+               call fatal_error(error, 'contact '//pairs(k)%label//': cannot allocate Khat^{-1} B ('// &
+                                str(states(b)%n)//' reals per pair end; fewer pairs or storeys)')
+               return
+            end if
             y(e, k)%x = 0.0_dp
             y(e, k)%x(pairs(k)%floor(e)) = 1.0_dp
             call newmark_solve(states(b), y(e, k)%x)
+            if (.not. all(ieee_is_finite(y(e, k)%x))) then
+               call fatal_error(error, 'contact '//pairs(k)%label//': Khat^{-1} B (the response of the '// &
+                                'building to a unit force at floor '//str(pairs(k)%floor(e))//') is not '// &
+                                'finite: from dt and the building''s masses, stiffnesses and damping')
+               return
+            end if
          end do
       end do
       ! F_kl = sum over ends e of k and g of l on the same building of s_e s_g y(g,l)(floor_e).
@@ -214,6 +232,13 @@ contains
                end do
             end do
          end do
+      end do
+      do k = 1, m
+         if (.not. all(ieee_is_finite(f(:, k)))) then
+            call fatal_error(error, 'contact '//pairs(k)%label//': condensed flexibility F = B^T Khat^{-1} B '// &
+                             'is not finite: from dt and the buildings'' masses, stiffnesses and damping')
+            return
+         end if
       end do
       call contact_init_flexibility(cs, pairs, f, 2.0_dp/states(1)%c2, error)
       if (allocated(error)) return
@@ -242,8 +267,11 @@ contains
       if (m == 0) return
       cs%c2 = 2.0_dp/dt
       allocate (cs%phat(m), cs%beta(m), cs%rate_a(m), cs%rate_b(m), cs%q(m), cs%vp(m), cs%r_new(m), &
-                cs%x_new(m), &
-                cs%in_lcp(m), cs%yrow(m), cs%nh(m))
+                cs%x_new(m), cs%in_lcp(m), cs%yrow(m), cs%nh(m), stat=k)
+      if (k /= 0) then
+         call fatal_error(error, 'contact: cannot allocate the joint data for '//str(m)//' pairs')
+         return
+      end if
       cs%n_max = m
       do k = 1, m
          associate (p => cs%pair(k), law => cs%pair(k)%law)
@@ -260,6 +288,13 @@ contains
             end if
             cs%phat(k) = law%stiffness + cs%rate_a(k)*law%dashpot
             cs%beta(k) = law%stiffness/cs%phat(k)
+            if (.not. (ieee_is_finite(cs%phat(k)) .and. ieee_is_finite(1.0_dp/cs%phat(k)))) then
+               call fatal_error(error, 'contact '//p%label//': joint stiffness with its dashpot, stiffness + '// &
+                                str(cs%rate_a(k))//' dashpot = '//str(cs%phat(k))//' kN/m from stiffness = '// &
+                                str(law%stiffness)//', dashpot = '//str(law%dashpot)//' and dt = '// &
+                                str(dt)//' is not finite')
+               return
+            end if
             if (is_plastic(law)) then
                ns = size(law%yp) - 1
                cs%n_max = cs%n_max + 1 + min(ns, initial_hinges)
@@ -431,6 +466,15 @@ contains
             cs%in_lcp(k) = .not. p%fractured .and. (p%r > 0.0_dp .or. cs%q(k) < 0.0_dp)
             if (.not. p%fractured) qnorm = max(qnorm, abs(cs%q(k)))
          end associate
+      end do
+      ! Guard: nothing that is not finite reaches the LCP solver.
+      do k = 1, cs%m
+         if (cs%pair(k)%fractured .or. ieee_is_finite(cs%q(k))) cycle
+         call fatal_error(error, 'contact '//cs%pair(k)%label//': the step''s LCP data is not finite at t = '// &
+                          str(t)//' s (step '//str(step)//'): predicted closing displacement '// &
+                          str(v_pred(k))//' m, joint compression '//str(cs%pair(k)%d)//' m, rate '// &
+                          str(cs%pair(k)%ddot)//' m/s, plastic penetration '//str(cs%pair(k)%plastic)//' m')
+         return
       end do
       qnorm = max(qnorm, tiny(1.0_dp))
       ! Segment ends within reach: those the plastic increment would pass if the joint alone
