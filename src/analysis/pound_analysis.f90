@@ -154,7 +154,7 @@ contains
          end do
          if (out) sample = res%energy(:, k)
          if (.not. (abs(sum(sample)) <= huge(1.0_dp))) then
-            call state_failure(st, models, none, sample, real(step, dp)*cfg%dt, step, error)
+            call state_failure(st, models, none, sample, ag, cfg%dt, step, error)
             return
          end if
          call audit(sample, resid, scale)
@@ -316,7 +316,7 @@ contains
             sample = res%energy(:, k)
          end if
          if (.not. (abs(sum(sample) + cs%work) <= huge(1.0_dp))) then
-            call state_failure(st, models, cs, sample, t, step, error)
+            call state_failure(st, models, cs, sample, ag, cfg%dt, step, error)
             return
          end if
          call audit(sample, resid, scale)
@@ -515,27 +515,42 @@ contains
    end subroutine warn_unresolved_joints
 
    !> The energy sum of a step is not finite: name the first non-finite value (building and
-   !> floor, or joint), or the energy term that overflowed.
-   subroutine state_failure(st, models, cs, sample, t, step, error)
+   !> floor, or joint), or else the building and energy term that overflowed, with the largest
+   !> ground acceleration so far.
+   subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
       type(newmark_state), intent(in) :: st(:)
       type(shear_building), intent(in) :: models(:)
       type(contact_system), intent(in) :: cs
-      real(dp), intent(in) :: sample(:), t
+      real(dp), intent(in) :: sample(:), ag(0:), dt
       integer, intent(in) :: step
       type(error_type), allocatable, intent(out) :: error
-      integer :: i
+      real(dp) :: e(4), t
+      integer :: ib, i
+      character(len=:), allocatable :: hint
 
+      t = real(step, dp)*dt
       call locate_nonfinite(st, models, cs, t, step, error)
       if (allocated(error)) return
+      hint = ': the response overflows (ground acceleration up to '//str(maxval(abs(ag(0:step))))// &
+             ' m/s^2 so far); check the size of the ground motion (&ground), the masses and the stiffnesses'
+      do ib = 1, size(st)
+         e = [st(ib)%input_work, st(ib)%kinetic, st(ib)%strain, st(ib)%damping_energy]
+         do i = 1, 4
+            if (ieee_is_finite(e(i))) cycle
+            call fatal_error(error, building_label(models(ib))//': the '//trim(energy_names(i))// &
+                             ' energy is not finite at t = '//str(t)//' s (step '//str(step)//') ('// &
+                             str(e(i))//' kJ, largest |u| '//str(maxval(abs(st(ib)%u)))//' m)'//hint)
+            return
+         end do
+      end do
       do i = 1, n_energy
          if (ieee_is_finite(sample(i))) cycle
          call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
-                          trim(energy_names(i))//' energy is not finite ('//str(sample(i))//' kJ): the '// &
-                          'response overflows; check the size of the ground motion, masses and stiffnesses')
+                          trim(energy_names(i))//' energy is not finite ('//str(sample(i))//' kJ)'//hint)
          return
       end do
       call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
-                       'energy total overflows; check the size of the ground motion, masses and stiffnesses')
+                       'energy total overflows'//hint)
    end subroutine state_failure
 
    !> Set `error` to the first value of the state that is not finite, if there is one: u, v,
@@ -563,14 +578,24 @@ contains
       if (present(predicted)) then
          if (predicted) nq = 4
       end if
-      do ib = 1, size(st)
-         do i = 1, st(ib)%n
-            x(1:4) = [st(ib)%u(i), st(ib)%v(i), st(ib)%a(i), st(ib)%du(i)]
-            do q = 1, nq
-               if (ieee_is_finite(x(q))) cycle
+      ! The state first (u, v, a of every floor), then the step's increment it feeds.
+      do q = 1, nq
+         do ib = 1, size(st)
+            do i = 1, st(ib)%n
+               select case (q)
+               case (1)
+                  x(1) = st(ib)%u(i)
+               case (2)
+                  x(1) = st(ib)%v(i)
+               case (3)
+                  x(1) = st(ib)%a(i)
+               case default
+                  x(1) = st(ib)%du(i)
+               end select
+               if (ieee_is_finite(x(1))) cycle
                if (allocated(error)) deallocate (error)
                call fatal_error(error, building_label(models(ib))//': floor '//str(i)//': '//trim(names(q))// &
-                                ' = '//str(x(q))//at//': the first value of the run that is not finite '// &
+                                ' = '//str(x(1))//at//': the first value of the run that is not finite '// &
                                 '(check the size of the ground motion, masses, stiffnesses and joints)')
                return
             end do
