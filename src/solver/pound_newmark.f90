@@ -206,28 +206,35 @@ contains
 
    !> Newmark update of u, v, a from du; C v at the new time; sum(m du) and du.(Cv_old + Cv_new);
    !> the kinetic and strain energy at the new time.
+   !>
+   !> Each sum is kept in four partial sums, element i going to partial sum mod(i, 4), so that
+   !> the loops are not bound by the latency of one chain of additions. The loops run over
+   !> blocks of four consecutive elements with one accumulator per lane (lane l of a block
+   !> starting at i0 holds partial sum mod(i0 + l, 4)), which the compiler can vectorise.
    pure subroutine commit_kernel(n, c1, c2, a0, a1, mass, kt, du, u, v, a, cv, mdu, ddamp, ek, es)
       integer, intent(in) :: n
       real(dp), intent(in) :: c1, c2, a0, a1, mass(n), kt(2, n), du(n)
       real(dp), intent(inout) :: u(n), v(n), a(n), cv(n)
       real(dp), intent(out) :: mdu, ddamp, ek, es
-      ! The sums are kept in four partial sums each, so that the loops are not bound by
-      ! the latency of one long chain of additions.
       real(dp) :: cvi, sm(0:3), sd(0:3), sk(0:3), ss(0:3)
-      integer :: i, j, last
+      integer :: i, i0, l, last
 
+      ! Lanes of blocks starting at i0 = 1, 5, 9, ...: lane l holds partial sum mod(l + 1, 4).
       sm = 0.0_dp
       sk = 0.0_dp
-      do i = 1, n
-         j = iand(i, 3)
-         a(i) = c1*du(i) - 2.0_dp*c2*v(i) - a(i)
-         v(i) = c2*du(i) - v(i)
-         u(i) = u(i) + du(i)
-         sm(j) = sm(j) + mass(i)*du(i)
-         sk(j) = sk(j) + mass(i)*v(i)*v(i)
+      do i0 = 1, n - 3, 4
+         do l = 0, 3
+            i = i0 + l
+            call update_floor(c1, c2, mass(i), du(i), u(i), v(i), a(i), sm(l), sk(l))
+         end do
       end do
-      mdu = (sm(0) + sm(1)) + (sm(2) + sm(3))
-      ek = 0.5_dp*((sk(0) + sk(1)) + (sk(2) + sk(3)))
+      do i = 4*(n/4) + 1, n
+         l = i - 4*(n/4) - 1
+         call update_floor(c1, c2, mass(i), du(i), u(i), v(i), a(i), sm(l), sk(l))
+      end do
+      ! Partial sums 0, 1, 2, 3 are lanes 3, 0, 1, 2.
+      mdu = (sm(3) + sm(0)) + (sm(1) + sm(2))
+      ek = 0.5_dp*((sk(3) + sk(0)) + (sk(1) + sk(2)))
       ! C v = a0 M v + a1 (K+G) v; (K+G) tridiagonal with kt(1, i) = (K+G)(i-1, i).
       if (n == 1) then
          cvi = (a0*mass(1) + a1*kt(2, 1))*v(1)
@@ -237,28 +244,62 @@ contains
          return
       end if
       ! Strain energy sum_j s_j drift_j^2 / 2 with the net storey stiffness s_j = -kt(1, j)
-      ! (j >= 2) and s_1 = kt(2, 1) + kt(1, 2).
+      ! (j >= 2) and s_1 = kt(2, 1) + kt(1, 2). Element 1 is partial sum 1, elements
+      ! 2..n-1 run in blocks starting at i0 = 2, 6, ... (lane l: partial sum mod(l + 2, 4)),
+      ! element n (and the rest of 2..n-1) one by one.
       sd = 0.0_dp
       ss = 0.0_dp
       cvi = a0*mass(1)*v(1) + a1*(kt(2, 1)*v(1) + kt(1, 2)*v(2))
-      sd(1) = du(1)*(cv(1) + cvi)
-      ss(1) = -(kt(2, 1) + kt(1, 2))*u(1)*u(1)
+      sd(3) = du(1)*(cv(1) + cvi)
+      ss(3) = -(kt(2, 1) + kt(1, 2))*u(1)*u(1)
       cv(1) = cvi
       last = n - 1
-      do i = 2, last
-         j = iand(i, 3)
-         cvi = a0*mass(i)*v(i) + a1*(kt(1, i)*v(i - 1) + kt(2, i)*v(i) + kt(1, i + 1)*v(i + 1))
-         sd(j) = sd(j) + du(i)*(cv(i) + cvi)
-         ss(j) = ss(j) + kt(1, i)*(u(i) - u(i - 1))**2
-         cv(i) = cvi
+      do i0 = 2, last - 3, 4
+         do l = 0, 3
+            i = i0 + l
+            call damp_floor(a0, a1, mass(i), kt(:, i), kt(1, i + 1), v(i - 1:i + 1), u(i - 1:i), du(i), &
+                            cv(i), sd(l), ss(l))
+         end do
+      end do
+      do i = 2 + 4*((last - 1)/4), last
+         l = i - 2 - 4*((last - 1)/4)
+         call damp_floor(a0, a1, mass(i), kt(:, i), kt(1, i + 1), v(i - 1:i + 1), u(i - 1:i), du(i), &
+                         cv(i), sd(l), ss(l))
       end do
       cvi = a0*mass(n)*v(n) + a1*(kt(1, n)*v(n - 1) + kt(2, n)*v(n))
-      sd(iand(n, 3)) = sd(iand(n, 3)) + du(n)*(cv(n) + cvi)
-      ss(iand(n, 3)) = ss(iand(n, 3)) + kt(1, n)*(u(n) - u(n - 1))**2
+      l = iand(n + 2, 3)
+      sd(l) = sd(l) + du(n)*(cv(n) + cvi)
+      ss(l) = ss(l) + kt(1, n)*(u(n) - u(n - 1))**2
       cv(n) = cvi
-      ddamp = (sd(0) + sd(1)) + (sd(2) + sd(3))
-      es = -0.5_dp*((ss(0) + ss(1)) + (ss(2) + ss(3)))
+      ! Partial sums 0, 1, 2, 3 are lanes 2, 3, 0, 1.
+      ddamp = (sd(2) + sd(3)) + (sd(0) + sd(1))
+      es = -0.5_dp*((ss(2) + ss(3)) + (ss(0) + ss(1)))
    end subroutine commit_kernel
+
+   !> Newmark update of one floor; its terms of sum(m du) and of 2 E_kinetic.
+   pure subroutine update_floor(c1, c2, mass, du, u, v, a, sm, sk)
+      real(dp), intent(in) :: c1, c2, mass, du
+      real(dp), intent(inout) :: u, v, a, sm, sk
+
+      a = c1*du - 2.0_dp*c2*v - a
+      v = c2*du - v
+      u = u + du
+      sm = sm + mass*du
+      sk = sk + mass*v*v
+   end subroutine update_floor
+
+   !> C v of an inner floor i (kt_i = kt(:, i), kt_up = kt(1, i+1), v3 = v(i-1:i+1),
+   !> u2 = u(i-1:i)); its terms of du.(Cv_old + Cv_new) and of -2 E_strain.
+   pure subroutine damp_floor(a0, a1, mass, kt_i, kt_up, v3, u2, du, cv, sd, ss)
+      real(dp), intent(in) :: a0, a1, mass, kt_i(2), kt_up, v3(3), u2(2), du
+      real(dp), intent(inout) :: cv, sd, ss
+      real(dp) :: cvi
+
+      cvi = a0*mass*v3(2) + a1*(kt_i(1)*v3(1) + kt_i(2)*v3(2) + kt_up*v3(3))
+      sd = sd + du*(cv + cvi)
+      ss = ss + kt_i(1)*(u2(2) - u2(1))**2
+      cv = cvi
+   end subroutine damp_floor
 
    !> Kinetic energy of the relative motion, v^T M v / 2 (kJ).
    pure function kinetic_energy(st, b) result(e)
