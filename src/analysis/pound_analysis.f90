@@ -15,7 +15,7 @@
 !> checked before the first step.
 !>
 !> **Audit warning.** When the relative residual exceeds `audit_warning_limit`, the result
-!> carries a warning (`res%warnings`, printed by the program) naming the likely cause: a
+!> carries a warning (`res%warnings`, written by `write_warnings`) naming the likely cause: a
 !> joint whose contact half-period pi sqrt(m_eff/k0) spans fewer than `resolved_steps`
 !> steps, with the dt that would resolve it.
 module pound_analysis
@@ -176,7 +176,7 @@ contains
       end do
       res%energy_error = audit_error(resid, scale)
       if (res%energy_error > audit_warning_limit) then
-         call add_warning(res, 'energy audit (uncoupled): relative residual '//str(res%energy_error)// &
+         call add_warning(res%warnings, 'energy audit (uncoupled): relative residual '//str(res%energy_error)// &
                           ' > '//str(audit_warning_limit)//' without contact: the integration is not '// &
                           'trustworthy; reduce dt')
       end if
@@ -435,10 +435,10 @@ contains
       end if
    end function audit_error
 
-   !> Append a warning to a result.
-   pure subroutine add_warning(res, text)
-      !> The result.
-      type(analysis_result), intent(inout) :: res
+   !> Append a warning to a list of warnings (e.g. `res%warnings`).
+   pure subroutine add_warning(warnings, text)
+      !> The list (unallocated: empty).
+      character(len=:), allocatable, intent(inout) :: warnings(:)
       !> One line of text.
       character(len=*), intent(in) :: text
       character(len=:), allocatable :: grown(:)
@@ -446,31 +446,32 @@ contains
 
       n = 0
       length = len(text)
-      if (allocated(res%warnings)) then
-         n = size(res%warnings)
-         length = max(length, len(res%warnings))
+      if (allocated(warnings)) then
+         n = size(warnings)
+         length = max(length, len(warnings))
       end if
       allocate (character(len=length) :: grown(n + 1))
       do i = 1, n
-         grown(i) = res%warnings(i)
+         grown(i) = warnings(i)
       end do
       grown(n + 1) = text
-      call move_alloc(grown, res%warnings)
+      call move_alloc(grown, warnings)
    end subroutine add_warning
 
-   !> Write each warning of a result as one line, `prefix` first (e.g. 'pound: warning: ').
-   subroutine write_warnings(unit, res, prefix)
+   !> Write each warning of a list (e.g. `res%warnings`, `sweep%warnings`) as one line, `prefix`
+   !> first (e.g. 'pound: warning: '); nothing for an empty or unallocated list.
+   subroutine write_warnings(unit, warnings, prefix)
       !> Open formatted unit.
       integer, intent(in) :: unit
-      !> The result.
-      type(analysis_result), intent(in) :: res
+      !> The warnings.
+      character(len=:), allocatable, intent(in) :: warnings(:)
       !> Text put before each warning.
       character(len=*), intent(in) :: prefix
       integer :: i
 
-      if (.not. allocated(res%warnings)) return
-      do i = 1, size(res%warnings)
-         write (unit, '(a)') prefix//trim(res%warnings(i))
+      if (.not. allocated(warnings)) return
+      do i = 1, size(warnings)
+         write (unit, '(a)') prefix//trim(warnings(i))
       end do
    end subroutine write_warnings
 
@@ -511,7 +512,7 @@ contains
             end if
             if (half >= resolved_steps*dt) cycle
             found = found + 1
-            call add_warning(res, head//': joint '//p%label//' (k0 = '//str(p%law%stiffness)// &
+            call add_warning(res%warnings, head//': joint '//p%label//' (k0 = '//str(p%law%stiffness)// &
                              ' kN/m, m_eff = '//str(meff)//' t of the facing floors) has a contact '// &
                              'half-period pi sqrt(m_eff/k0) = '//str(half)//' s, '//str(half/dt)// &
                              ' steps of dt = '//str(dt)//' s: not resolved by dt; dt = '//str(0.1_dp*half)// &
@@ -520,11 +521,11 @@ contains
       end do
       if (found > 0) return
       if (kw > 0) then
-         call add_warning(res, head//': the impacts are resolved (shortest contact half-period '// &
+         call add_warning(res%warnings, head//': the impacts are resolved (shortest contact half-period '// &
                           str(worst)//' s at joint '//cs%pair(kw)%label//', '//str(worst/dt)// &
                           ' steps); contact opening and closing inside the steps dominates: reduce dt')
       else
-         call add_warning(res, head//': reduce dt')
+         call add_warning(res%warnings, head//': reduce dt')
       end if
    end subroutine warn_unresolved_joints
 

@@ -138,7 +138,7 @@ contains
       end do
       write (u, '(/,a,es10.3)') '  Energy audit (input = kinetic + strain + damping + contact + plastic), '// &
          'max relative error over time: ', res%energy_error
-      call write_warnings(u, res, '  WARNING: ')
+      call write_warnings(u, res%warnings, '  WARNING: ')
       j = res%n_out
       write (u, '(a)') '  at the end [kJ]:      input     kinetic      strain     damping     contact     plastic'
       write (u, '(a,6es12.4)') '                 ', res%energy(:, j)
