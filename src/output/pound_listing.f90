@@ -5,7 +5,7 @@ module pound_listing
    use pound_config, only: deck_type
    use pound_shear_building, only: shear_building
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
-   use pound_analysis, only: analysis_result
+   use pound_analysis, only: analysis_result, write_warnings
    use pound_contact, only: contact_system
    use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic_plastic, &
                                 law_bilinear, law_piecewise, law_parabola_cubic
@@ -138,6 +138,7 @@ contains
       end do
       write (u, '(/,a,es10.3)') '  Energy audit (input = kinetic + strain + damping + contact + plastic), '// &
          'max relative error over time: ', res%energy_error
+      call write_warnings(u, res%warnings, '  WARNING: ')
       j = res%n_out
       write (u, '(a)') '  at the end [kJ]:      input     kinetic      strain     damping     contact     plastic'
       write (u, '(a,6es12.4)') '                 ', res%energy(:, j)
