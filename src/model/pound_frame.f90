@@ -113,13 +113,18 @@ contains
       type(frame_model), intent(out) :: f
       !> Set if the description breaks a rule (one message: building, variable, rule).
       type(error_type), allocatable, intent(out) :: error
-      real(dp), allocatable :: trib(:), zl(:), levels(:)
+      real(dp), allocatable :: trib(:), zl(:), levels(:), ez1(:), ez2(:)
       integer, allocatable :: last(:)
       integer :: nl, ns, j, i, k, m, nmax, emax
 
       call check_spec(spec, error)
       if (allocated(error)) return
-      f%name = spec%name
+      f%name = '(unnamed)'
+      if (allocated(spec%name)) f%name = spec%name
+      ez1 = [real(dp) ::]
+      ez2 = [real(dp) ::]
+      if (allocated(spec%extra_z_first)) ez1 = spec%extra_z_first
+      if (allocated(spec%extra_z_last)) ez2 = spec%extra_z_last
       nl = size(spec%bay) + 1
       ns = size(spec%height)
       f%n_lines = nl
@@ -133,7 +138,7 @@ contains
       do i = 2, nl
          f%line_x(i) = f%line_x(i - 1) + spec%bay(i - 1)
       end do
-      nmax = nl*(ns*spec%n_sub + 1) + size(spec%extra_z_first) + size(spec%extra_z_last)
+      nmax = nl*(ns*spec%n_sub + 1) + size(ez1) + size(ez2)
       emax = nmax + nl*ns
       allocate (f%node_x(nmax), f%node_z(nmax), f%node_line(nmax), f%node_floor(nmax))
       allocate (f%element_nodes(2, emax), f%element_kind(emax), f%element_group(emax))
@@ -145,14 +150,14 @@ contains
       do j = 1, ns
          ! Interior levels of storey j: subdivisions on every line, extra nodes on the facing lines.
          levels = [(f%floor_z(j - 1) + spec%height(j)*real(k, dp)/real(spec%n_sub, dp), k=1, spec%n_sub - 1)]
-         levels = [levels, pack(spec%extra_z_first, inside(spec%extra_z_first)), &
-                   pack(spec%extra_z_last, inside(spec%extra_z_last))]
+         levels = [levels, pack(ez1, inside(ez1)), &
+                   pack(ez2, inside(ez2))]
          levels = sorted_unique(levels)
          do k = 1, size(levels)
             do i = 1, nl
                zl = [(f%floor_z(j - 1) + spec%height(j)*real(m, dp)/real(spec%n_sub, dp), m=1, spec%n_sub - 1)]
-               if (i == 1) zl = [zl, spec%extra_z_first]
-               if (i == nl) zl = [zl, spec%extra_z_last]
+               if (i == 1) zl = [zl, ez1]
+               if (i == nl) zl = [zl, ez2]
                if (.not. any(abs(zl - levels(k)) <= z_tol)) cycle
                call add_node(f, i, levels(k), 0)
                call add_element(f, last(i), f%n_nodes, element_column, j)
