@@ -1,11 +1,12 @@
-!> Explicit interfaces to the LAPACK band routines used by the frame models
+!> Explicit interfaces to the LAPACK routines used by the frame models: band Cholesky and
+!> LU, and the small dense generalized eigenproblem of a Rayleigh-Ritz step
 !> (pound is compiled with -Wimplicit-interface).
 module pound_band_lapack
    use pound_kinds, only: dp
    implicit none
    private
 
-   public :: dpbtrf, dpbtrs, dsbgvx, dgbtrf, dgbtrs
+   public :: dpbtrf, dpbtrs, dsygv, dgbtrf, dgbtrs
 
    interface
       !> Cholesky factorization of a symmetric positive definite band matrix.
@@ -25,17 +26,15 @@ module pound_band_lapack
          real(dp), intent(inout) :: b(ldb, *)
          integer, intent(out) :: info
       end subroutine dpbtrs
-      !> Selected eigenvalues of a symmetric-definite banded generalized eigenproblem.
-      subroutine dsbgvx(jobz, range, uplo, n, ka, kb, ab, ldab, bb, ldbb, q, ldq, vl, vu, il, iu, &
-                        abstol, m, w, z, ldz, work, iwork, ifail, info)
+      !> All eigenpairs of a small dense symmetric-definite generalized eigenproblem.
+      subroutine dsygv(itype, jobz, uplo, n, a, lda, b, ldb, w, work, lwork, info)
          import :: dp
-         character, intent(in) :: jobz, range, uplo
-         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldq, il, iu, ldz
-         real(dp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
-         real(dp), intent(out) :: q(ldq, *), w(*), z(ldz, *), work(*)
-         real(dp), intent(in) :: vl, vu, abstol
-         integer, intent(out) :: m, iwork(*), ifail(*), info
-      end subroutine dsbgvx
+         integer, intent(in) :: itype, n, lda, ldb, lwork
+         character, intent(in) :: jobz, uplo
+         real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+         real(dp), intent(out) :: w(*), work(*)
+         integer, intent(out) :: info
+      end subroutine dsygv
       !> LU factorization of a general band matrix with partial pivoting.
       subroutine dgbtrf(m, n, kl, ku, ab, ldab, ipiv, info)
          import :: dp

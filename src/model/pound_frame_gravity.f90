@@ -6,17 +6,20 @@
 !> by banded Cholesky (dpbtrf/dpbtrs), element end forces and base reactions. The axial
 !> forces of the columns give G (pound_frame's `frame_geometric`, beams ignored).
 !>
-!> Buckling: the lowest factor lambda with K + lambda G singular, from the banded generalized
-!> eigenproblem (-G) phi = mu K phi (dsbgvx, K positive definite), lambda = 1/mu_max; the
-!> mode by inverse iteration names the column group (storey) whose geometric energy
-!> phi^T (-G_e) phi dominates. A frame is refused when K+G is not positive definite (dpbtrf)
+!> Buckling: the lowest factor lambda with K + lambda G singular. K + lambda G is positive
+!> definite exactly for 0 <= lambda < lambda_cr, so lambda_cr is bracketed by doubling and
+!> bisected (to 1e-13 relative) with banded Cholesky factorizations (dpbtrf, O(n kd^2)
+!> each); the mode then comes from inverse iteration at lambda_cr, its Rayleigh quotient
+!> phi^T K phi / phi^T (-G) phi is the reported factor, and the column group (storey)
+!> whose geometric energy phi^T (-G_e) phi dominates in it is named. A frame is refused when K+G is not positive definite (dpbtrf)
 !> or lambda <= 1.
 module pound_frame_gravity
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_band_lapack, only: dpbtrf, dpbtrs
-   use pound_band_eigen, only: band_largest_eigenvalues, band_inverse_iteration
+   use pound_band_eigen, only: band_inverse_iteration
+   use pound_band, only: band_symv
    use pound_frame_element, only: beam_end_forces, beam_transformation, beam_global_geometric
    use pound_frame, only: frame_spec, frame_model, build_frame, frame_stiffness, frame_geometric, &
                           frame_load_vector, frame_node_displacements, element_column
@@ -99,7 +102,7 @@ contains
 
    !> Lowest buckling factor lambda (K + lambda G singular) for the axial forces `axial`
    !> (kN per element, tension positive) and the column group (storey) that buckles;
-   !> lambda = huge and group = 0 if no column is compressed enough to buckle.
+   !> lambda = huge and group = 0 if no factor up to 1e15 makes K + lambda G singular.
    subroutine frame_buckling(f, axial, kind, factor, group, error)
       !> The frame (with its constraints).
       type(frame_model), intent(in) :: f
@@ -111,26 +114,46 @@ contains
       real(dp), intent(out) :: factor
       !> Storey of the column group with the largest geometric energy in the buckling mode.
       integer, intent(out) :: group
-      !> Set if K is not positive definite or an eigen-solver fails.
+      !> Set if K is not positive definite or the mode cannot be computed.
       type(error_type), allocatable, intent(out) :: error
-      real(dp), allocatable :: kb(:, :), gb(:, :), mu(:), x(:), d(:, :), energy(:), de(:)
-      integer :: e, n1, n2
+      real(dp), allocatable :: kb(:, :), gb(:, :), x(:), d(:, :), energy(:), de(:), kx(:), gx(:)
+      real(dp) :: lo, hi, mid
+      integer :: e, n1, n2, it
 
       factor = huge(1.0_dp)
       group = 0
       call frame_stiffness(f, kb)
       call frame_geometric(f, axial, kind, gb)
-      if (all(gb == 0.0_dp)) return
-      gb = -gb
-      call band_largest_eigenvalues(gb, kb, 1, mu, error)
-      if (allocated(error)) then
-         error%message = 'frame '//f%name//': buckling analysis: '//error%message
+      if (.not. definite(0.0_dp)) then
+         call fatal_error(error, 'frame '//f%name//': the stiffness K is not positive definite (a mechanism)')
          return
       end if
-      if (.not. (mu(1) > 0.0_dp)) return
-      factor = 1.0_dp/mu(1)
-      call band_inverse_iteration(kb, gb, factor, x, error)
+      if (all(gb == 0.0_dp)) return
+      ! Bracket, then bisect: K + lambda G is positive definite exactly for lambda < lambda_cr.
+      lo = 0.0_dp
+      hi = 1.0_dp
+      do while (definite(hi))
+         lo = hi
+         hi = 2.0_dp*hi
+         if (hi > 1.0e15_dp) return
+      end do
+      do it = 1, 200
+         mid = 0.5_dp*(lo + hi)
+         if (mid <= lo .or. mid >= hi .or. hi - lo <= 1.0e-13_dp*hi) exit
+         if (definite(mid)) then
+            lo = mid
+         else
+            hi = mid
+         end if
+      end do
+      ! Mode by inverse iteration; its Rayleigh quotient polishes the factor.
+      gb = -gb
+      call band_inverse_iteration(kb, gb, hi, x, error)
       if (allocated(error)) return
+      allocate (kx(size(x)), gx(size(x)))
+      call band_symv(kb, x, kx)
+      call band_symv(gb, x, gx)
+      factor = dot_product(x, kx)/dot_product(x, gx)
       d = frame_node_displacements(f, x)
       allocate (energy(f%n_storeys))
       energy = 0.0_dp
@@ -143,10 +166,24 @@ contains
             matmul(beam_global_geometric(axial(e), f%node_x(n1), f%node_z(n1), f%node_x(n2), f%node_z(n2), kind), de))
       end do
       group = maxloc(energy, 1)
+
+   contains
+
+      !> Whether K + lambda G is positive definite (its banded Cholesky succeeds).
+      logical function definite(lambda)
+         real(dp), intent(in) :: lambda
+         real(dp), allocatable :: ab(:, :)
+         integer :: info
+
+         ab = kb + lambda*gb
+         call dpbtrf('U', f%n_dof, f%kd, ab, f%kd + 1, info)
+         definite = info == 0
+      end function definite
+
    end subroutine frame_buckling
 
    !> Refuse a frame that buckles under its gravity axial forces: K+G must be positive
-   !> definite (dpbtrf) and the lowest buckling factor > 1.
+   !> definite (dpbtrf), i.e. the lowest buckling factor > 1.
    subroutine check_frame_stability(f, axial, kind, error)
       !> The frame (with its constraints).
       type(frame_model), intent(in) :: f
@@ -161,22 +198,14 @@ contains
       integer :: group, info
 
       call frame_stiffness(f, kb)
-      call dpbtrf('U', f%n_dof, f%kd, kb, f%kd + 1, info)
-      if (info /= 0) then
-         call fatal_error(error, 'frame '//f%name//': the stiffness K is not positive definite '// &
-                          '(a mechanism, at DOF '//str(info)//')')
-         return
-      end if
-      call frame_stiffness(f, kb)
       call frame_geometric(f, axial, kind, gb)
       kb = kb + gb
       call dpbtrf('U', f%n_dof, f%kd, kb, f%kd + 1, info)
+      if (info == 0) return
       call frame_buckling(f, axial, kind, factor, group, error)
       if (allocated(error)) return
-      if (info /= 0 .or. factor <= 1.0_dp) then
-         call fatal_error(error, 'frame '//f%name//' buckles under its gravity loads: lowest buckling factor '// &
-                          str(factor)//', must be > 1 (columns of storey '//str(group)//')')
-      end if
+      call fatal_error(error, 'frame '//f%name//' buckles under its gravity loads: lowest buckling factor '// &
+                       str(factor)//', must be > 1 (columns of storey '//str(group)//')')
    end subroutine check_frame_stability
 
 end module pound_frame_gravity
