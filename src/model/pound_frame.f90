@@ -106,7 +106,7 @@ module pound_frame
 contains
 
    !> Build the frame described by `spec`.
-   subroutine build_frame(spec, f, error)
+   pure subroutine build_frame(spec, f, error)
       !> Description.
       type(frame_spec), intent(in) :: spec
       !> The frame.
