@@ -308,6 +308,13 @@ contains
       if (.not. allocated(error)) call check_nodal(spec%node_rotary, 'node_rotary', error)
       if (.not. allocated(error)) call check_nodal(spec%node_load, 'node_load', error)
       if (allocated(error)) return
+      if (allocated(spec%floor_load)) then
+         if (size(spec%floor_load) /= ns) then
+            call fatal_error(error, who//': floor_load has '//str(size(spec%floor_load))// &
+                             ' values, needs n_storeys = '//str(ns))
+            return
+         end if
+      end if
       if (allocated(spec%node_mass) .and. allocated(spec%floor_load) .and. .not. allocated(spec%node_load)) then
          do j = 1, ns
             if (sum(spec%node_mass(:, j)) == 0.0_dp .and. spec%floor_load(j) /= 0.0_dp) then
@@ -316,13 +323,6 @@ contains
                return
             end if
          end do
-      end if
-      if (allocated(spec%floor_load)) then
-         if (size(spec%floor_load) /= ns) then
-            call fatal_error(error, who//': floor_load has '//str(size(spec%floor_load))// &
-                             ' values, needs n_storeys = '//str(ns))
-            return
-         end if
       end if
 
    contains
