@@ -25,10 +25,11 @@ module pound_analysis
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: analysis_config
-   use pound_shear_building, only: shear_building, building_label
+   use pound_structure, only: structure_model, building_label => structure_label
    use pound_ground_motion, only: check_ground_samples
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, &
-                            kinetic_energy, strain_energy
+                            kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
+                            newmark_energies, newmark_n, en_input, en_kinetic, en_strain, en_damping
    use pound_response, only: response_record, response_init, response_sample, response_finish
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit
    implicit none
@@ -102,12 +103,12 @@ contains
       output_steps = n_steps/every + 1
    end function output_steps
 
-   !> Integrate every building without contact.
+   !> Integrate every building without contact: the coupled run with no constraints.
    subroutine run_uncoupled(cfg, models, ag, res, error)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      class(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> The result.
@@ -115,11 +116,8 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       type(newmark_state), allocatable :: st(:)
-      type(contact_system) :: none
-      real(dp) :: sample(n_energy), resid, scale, win, eout
-      integer :: ib, step, k, every, nb
-      integer(int64) :: c0, c1, rate
-      logical :: out
+      type(contact_system) :: cs
+      integer :: ib, nb
 
       res%seconds = 0.0_dp
       call check_ground_samples(ag, cfg%dt, error)
@@ -127,59 +125,12 @@ contains
       nb = size(models)
       call start_result(res, cfg, size(ag) - 1, nb, error)
       if (allocated(error)) return
-      every = cfg%output_every
       allocate (st(nb))
       do ib = 1, nb
          call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error)
          if (allocated(error)) return
-         call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out, error)
-         if (allocated(error)) return
-         call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(0), 0.0_dp, .true.)
       end do
-      k = 1
-      resid = 0.0_dp
-      scale = 0.0_dp
-      call system_clock(c0, rate)
-      do step = 1, res%n_steps
-         out = mod(step, every) == 0
-         win = 0.0_dp
-         eout = 0.0_dp
-         do ib = 1, nb
-            call newmark_predict(st(ib), models(ib), ag(step) - ag(step - 1))
-            call newmark_commit(st(ib), models(ib), ag(step - 1), ag(step))
-            call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(step), &
-                                 real(step, dp)*cfg%dt, out)
-            win = win + st(ib)%input_work
-            eout = eout + ((st(ib)%kinetic + st(ib)%strain) + st(ib)%damping_energy)
-         end do
-         if (out) then
-            k = k + 1
-            do ib = 1, nb
-               call add_structure_energy(res%energy(:, k), st(ib), models(ib))
-            end do
-            win = res%energy(e_input, k)
-            eout = sum(res%energy(e_kinetic:n_energy, k))
-         end if
-         ! One test per step: every value of the state feeds these sums.
-         if (.not. (abs(win + eout) <= huge(1.0_dp))) then
-            call step_energy(st, sample)
-            call state_failure(st, models, none, sample, ag, cfg%dt, step, error)
-            return
-         end if
-         resid = max(resid, abs(win - eout))
-         scale = max(scale, abs(win), eout)
-      end do
-      call system_clock(c1)
-      res%seconds = real(c1 - c0, dp)/real(rate, dp)
-      do ib = 1, nb
-         call response_finish(res%building(ib), models(ib))
-      end do
-      res%energy_error = audit_error(resid, scale)
-      if (res%energy_error > audit_warning_limit) then
-         call add_warning(res%warnings, 'energy audit (uncoupled): relative residual '//str(res%energy_error)// &
-                          ' > '//str(audit_warning_limit)//' without contact: the integration is not '// &
-                          'trustworthy; reduce dt')
-      end if
+      call integrate(cfg, models, ag, st, cs, res, error)
    end subroutine run_uncoupled
 
    !> Integrate all buildings together with the unilateral constraints `pairs`.
@@ -187,7 +138,7 @@ contains
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      class(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> The constraints, at rest and open at t = 0.
@@ -210,7 +161,7 @@ contains
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      class(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t = 0 (m/s^2).
       real(dp), intent(in) :: ag0
       !> The constraints, at rest and open at t = 0.
@@ -228,7 +179,7 @@ contains
          call newmark_init(prep%st(ib), models(ib), cfg%dt, ag0, error)
          if (allocated(error)) return
       end do
-      call contact_init(prep%cs, pairs, prep%st, error)
+      call contact_init(prep%cs, pairs, prep%st, models, error)
    end subroutine coupled_prepare
 
    !> The coupled time integration from a prepared model (left unchanged, so that it can be
@@ -237,7 +188,7 @@ contains
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      class(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> The prepared model.
@@ -251,10 +202,7 @@ contains
       !> Gaps of the constraints (m), one per constraint.
       real(dp), intent(in), optional :: gaps(:)
       type(newmark_state), allocatable :: st(:)
-      integer :: ib, step, k, every, nb, ip
-      integer(int64) :: c0, c1, rate, ca, cb, c_contact
-      real(dp) :: t, sample(n_energy), resid, scale
-      logical :: out
+      integer :: nb
 
       nb = size(models)
       call check_ground_samples(ag, cfg%dt, error)
@@ -264,17 +212,50 @@ contains
       if (present(gaps)) cs%pair(:)%gap = gaps
       call start_result(res, cfg, size(ag) - 1, nb, error, cs%m)
       if (allocated(error)) return
-      every = cfg%output_every
       res%contact_force(:, 1) = 0.0_dp
       res%contact_closing(:, 1) = 0.0_dp
       res%contact_penetration(:, 1) = 0.0_dp
       res%contact_plastic(:, 1) = 0.0_dp
       res%contact_state(:, 1) = 0
+      call integrate(cfg, models, ag, st, cs, res, error)
+   end subroutine coupled_integrate
+
+   !> The time-step loop of every analysis, from integrators at t = 0 and a contact system
+   !> (`cs%m` = 0: no constraints, the uncoupled run): predict every building, the step's
+   !> contact forces, commit, sample the response, audit the energy, store output samples.
+   !>
+   !> Without constraints each building's kinetic, strain and damping energy are summed first
+   !> and then over the buildings (the order the uncoupled run has always used, so that its
+   !> audit residual stays bit-identical); with constraints each term is summed over the
+   !> buildings first.
+   subroutine integrate(cfg, models, ag, st, cs, res, error)
+      !> `&analysis` settings.
+      type(analysis_config), intent(in) :: cfg
+      !> The buildings.
+      class(structure_model), intent(in) :: models(:)
+      !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
+      real(dp), intent(in) :: ag(0:)
+      !> Integrators at t = 0 (advanced to the end).
+      type(newmark_state), intent(inout), target :: st(:)
+      !> The contact system at t = 0 (at the end on return).
+      type(contact_system), intent(inout) :: cs
+      !> The result, set up by `start_result` (contact histories when cs%m > 0).
+      type(analysis_result), intent(inout) :: res
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: ib, step, k, every, nb, ip
+      integer(int64) :: c0, c1, rate, ca, cb, c_contact
+      real(dp) :: t, sample(n_energy), resid, scale, e(4)
+      logical :: out, coupled
+
+      nb = size(models)
+      coupled = cs%m > 0
+      every = cfg%output_every
       do ib = 1, nb
          call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out, error)
          if (allocated(error)) return
-         call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(0), &
-                              0.0_dp, .true.)
+         call response_sample(res%building(ib), models(ib), newmark_u(st(ib)), newmark_v(st(ib)), &
+                              newmark_a(st(ib)), ag(0), 0.0_dp, .true.)
       end do
       k = 1
       resid = 0.0_dp
@@ -286,59 +267,81 @@ contains
          do ib = 1, nb
             call newmark_predict(st(ib), models(ib), ag(step) - ag(step - 1))
          end do
-         call system_clock(ca)
-         call contact_step(cs, st, t, step, error)
-         call system_clock(cb)
-         c_contact = c_contact + (cb - ca)
-         if (allocated(error)) then
-            ! A state that is not finite is named as such, not as a failed LCP.
-            call locate_nonfinite(st, models, cs, t, step, error, predicted=.true.)
-            return
+         if (coupled) then
+            call system_clock(ca)
+            call contact_step(cs, st, t, step, error)
+            call system_clock(cb)
+            c_contact = c_contact + (cb - ca)
+            if (allocated(error)) then
+               ! A state that is not finite is named as such, not as a failed LCP.
+               call locate_nonfinite(st, models, cs, t, step, error, predicted=.true.)
+               return
+            end if
          end if
          out = mod(step, every) == 0
          do ib = 1, nb
             call newmark_commit(st(ib), models(ib), ag(step - 1), ag(step))
-            call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(step), &
-                                 t, out)
+            call response_sample(res%building(ib), models(ib), newmark_u(st(ib)), newmark_v(st(ib)), &
+                                 newmark_a(st(ib)), ag(step), t, out)
          end do
-         call step_energy(st, sample)
-         call system_clock(ca)
-         call contact_commit(cs, st, t, cfg%dt)
-         call system_clock(cb)
-         c_contact = c_contact + (cb - ca)
-         sample(e_contact) = cs%element_work - cs%plastic_work
-         sample(e_plastic) = cs%plastic_work
+         if (coupled) then
+            call step_energy(st, sample)
+            call system_clock(ca)
+            call contact_commit(cs, st, t, cfg%dt)
+            call system_clock(cb)
+            c_contact = c_contact + (cb - ca)
+            sample(e_contact) = cs%element_work - cs%plastic_work
+            sample(e_plastic) = cs%plastic_work
+         else
+            sample = 0.0_dp
+            do ib = 1, nb
+               e = newmark_energies(st(ib))
+               sample(e_input) = sample(e_input) + e(en_input)
+               sample(e_kinetic) = sample(e_kinetic) + ((e(en_kinetic) + e(en_strain)) + e(en_damping))
+            end do
+         end if
          if (out) then
             k = k + 1
             do ib = 1, nb
                call add_structure_energy(res%energy(:, k), st(ib), models(ib))
             end do
-            res%energy(e_contact, k) = cs%element_work - cs%plastic_work
-            res%energy(e_plastic, k) = cs%plastic_work
-            do ip = 1, cs%m
-               res%contact_force(ip, k) = cs%pair(ip)%r
-               res%contact_closing(ip, k) = cs%pair(ip)%v
-               res%contact_penetration(ip, k) = cs%pair(ip)%d
-               res%contact_plastic(ip, k) = cs%pair(ip)%plastic
-               res%contact_state(ip, k) = cs%pair(ip)%state
-            end do
+            if (coupled) then
+               res%energy(e_contact, k) = cs%element_work - cs%plastic_work
+               res%energy(e_plastic, k) = cs%plastic_work
+               do ip = 1, cs%m
+                  res%contact_force(ip, k) = cs%pair(ip)%r
+                  res%contact_closing(ip, k) = cs%pair(ip)%v
+                  res%contact_penetration(ip, k) = cs%pair(ip)%d
+                  res%contact_plastic(ip, k) = cs%pair(ip)%plastic
+                  res%contact_state(ip, k) = cs%pair(ip)%state
+               end do
+            end if
             sample = res%energy(:, k)
          end if
+         ! One test per step: every value of the state feeds these sums.
          if (.not. (abs(sum(sample) + cs%work) <= huge(1.0_dp))) then
+            if (.not. coupled) call step_energy(st, sample)
             call state_failure(st, models, cs, sample, ag, cfg%dt, step, error)
             return
          end if
          call audit(sample, resid, scale)
       end do
+      call system_clock(c1)
+      res%seconds = real(c1 - c0, dp)/real(rate, dp)
+      res%contact_seconds = real(c_contact, dp)/real(rate, dp)
       do ib = 1, nb
          call response_finish(res%building(ib), models(ib))
       end do
       res%energy_error = audit_error(resid, scale)
-      call system_clock(c1)
-      res%seconds = real(c1 - c0, dp)/real(rate, dp)
-      res%contact_seconds = real(c_contact, dp)/real(rate, dp)
-      if (res%energy_error > audit_warning_limit) call warn_unresolved_joints(res, models, cs, cfg%dt)
-   end subroutine coupled_integrate
+      if (res%energy_error <= audit_warning_limit) return
+      if (coupled) then
+         call warn_unresolved_joints(res, models, cs, cfg%dt)
+      else
+         call add_warning(res%warnings, 'energy audit (uncoupled): relative residual '//str(res%energy_error)// &
+                          ' > '//str(audit_warning_limit)//' without contact: the integration is not '// &
+                          'trustworthy; reduce dt')
+      end if
+   end subroutine integrate
 
    !> Sizes, output times, a zero energy history and (with `n_pairs`) the contact histories
    !> of a result for `n_steps` steps; no warnings yet.
@@ -386,12 +389,15 @@ contains
       !> Integrator state.
       type(newmark_state), intent(in) :: st
       !> The building.
-      type(shear_building), intent(in) :: b
+      class(structure_model), intent(in) :: b
 
-      sample(e_input) = sample(e_input) + st%input_work
+      real(dp) :: e(4)
+
+      e = newmark_energies(st)
+      sample(e_input) = sample(e_input) + e(en_input)
       sample(e_kinetic) = sample(e_kinetic) + kinetic_energy(st, b)
       sample(e_strain) = sample(e_strain) + strain_energy(st, b)
-      sample(e_damping) = sample(e_damping) + st%damping_energy
+      sample(e_damping) = sample(e_damping) + e(en_damping)
    end subroutine add_structure_energy
 
    !> The buildings' energies at the end of the step, from the integrators' running sums
@@ -403,12 +409,15 @@ contains
       real(dp), intent(out) :: sample(:)
       integer :: ib
 
+      real(dp) :: e(4)
+
       sample = 0.0_dp
       do ib = 1, size(st)
-         sample(e_input) = sample(e_input) + st(ib)%input_work
-         sample(e_kinetic) = sample(e_kinetic) + st(ib)%kinetic
-         sample(e_strain) = sample(e_strain) + st(ib)%strain
-         sample(e_damping) = sample(e_damping) + st(ib)%damping_energy
+         e = newmark_energies(st(ib))
+         sample(e_input) = sample(e_input) + e(en_input)
+         sample(e_kinetic) = sample(e_kinetic) + e(en_kinetic)
+         sample(e_strain) = sample(e_strain) + e(en_strain)
+         sample(e_damping) = sample(e_damping) + e(en_damping)
       end do
    end subroutine step_energy
 
@@ -480,7 +489,7 @@ contains
    !> steps, and the dt that would resolve them (a tenth of the half-period).
    subroutine warn_unresolved_joints(res, models, cs, dt)
       type(analysis_result), intent(inout) :: res
-      type(shear_building), intent(in) :: models(:)
+      class(structure_model), intent(in) :: models(:)
       type(contact_system), intent(in) :: cs
       real(dp), intent(in) :: dt
       real(dp), parameter :: pi = acos(-1.0_dp)
@@ -498,7 +507,7 @@ contains
             if (p%impacts == 0) cycle
             do e = 1, 2
                m(e) = 0.0_dp
-               if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%floor(e))
+               if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%dof(e))
             end do
             if (m(1) > 0.0_dp .and. m(2) > 0.0_dp) then
                meff = m(1)*m(2)/(m(1) + m(2))
@@ -533,8 +542,8 @@ contains
    !> floor, or joint), or else the building and energy term that overflowed, with the largest
    !> ground acceleration so far.
    subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
-      type(newmark_state), intent(in) :: st(:)
-      type(shear_building), intent(in) :: models(:)
+      type(newmark_state), intent(in), target :: st(:)
+      class(structure_model), intent(in) :: models(:)
       type(contact_system), intent(in) :: cs
       real(dp), intent(in) :: sample(:), ag(0:), dt
       integer, intent(in) :: step
@@ -549,12 +558,12 @@ contains
       hint = ': the response overflows (ground acceleration up to '//str(maxval(abs(ag(0:step))))// &
              ' m/s^2 so far); check the size of the ground motion (&ground), the masses and the stiffnesses'
       do ib = 1, size(st)
-         e = [st(ib)%input_work, st(ib)%kinetic, st(ib)%strain, st(ib)%damping_energy]
+         e = newmark_energies(st(ib))
          do i = 1, 4
             if (ieee_is_finite(e(i))) cycle
             call fatal_error(error, building_label(models(ib))//': the '//trim(energy_names(i))// &
                              ' energy is not finite at t = '//str(t)//' s (step '//str(step)//') ('// &
-                             str(e(i))//' kJ, largest |u| '//str(maxval(abs(st(ib)%u)))//' m)'//hint)
+                             str(e(i))//' kJ, largest |u| '//str(maxval(abs(newmark_u(st(ib)))))//' m)'//hint)
             return
          end do
       end do
@@ -573,8 +582,8 @@ contains
    !> joint's force, compression, rate, plastic penetration and closing displacement. An
    !> `error` passed in is kept when everything is finite.
    subroutine locate_nonfinite(st, models, cs, t, step, error, predicted)
-      type(newmark_state), intent(in) :: st(:)
-      type(shear_building), intent(in) :: models(:)
+      type(newmark_state), intent(in), target :: st(:)
+      class(structure_model), intent(in) :: models(:)
       type(contact_system), intent(in) :: cs
       real(dp), intent(in) :: t
       integer, intent(in) :: step
@@ -585,6 +594,7 @@ contains
                                                  'compression rate', 'plastic penetration', &
                                                  'closing displacement']
       real(dp) :: x(5)
+      real(dp), pointer, contiguous :: col(:)
       integer :: ib, i, q, nq, k
       character(len=:), allocatable :: at
 
@@ -596,17 +606,18 @@ contains
       ! The state first (u, v, a of every floor), then the step's increment it feeds.
       do q = 1, nq
          do ib = 1, size(st)
-            do i = 1, st(ib)%n
-               select case (q)
-               case (1)
-                  x(1) = st(ib)%u(i)
-               case (2)
-                  x(1) = st(ib)%v(i)
-               case (3)
-                  x(1) = st(ib)%a(i)
-               case default
-                  x(1) = st(ib)%du(i)
-               end select
+            select case (q)
+            case (1)
+               col => newmark_u(st(ib))
+            case (2)
+               col => newmark_v(st(ib))
+            case (3)
+               col => newmark_a(st(ib))
+            case default
+               col => newmark_du(st(ib))
+            end select
+            do i = 1, newmark_n(st(ib))
+               x(1) = col(i)
                if (ieee_is_finite(x(1))) cycle
                if (allocated(error)) deallocate (error)
                call fatal_error(error, building_label(models(ib))//': floor '//str(i)//': '//trim(names(q))// &

@@ -2,15 +2,19 @@
 !>
 !> Quantities (indices match `history_names` of pound_config): floor displacement `u`,
 !> floor velocity `v` (relative to the ground), floor absolute acceleration `a_abs`,
-!> storey drift `drift` (u_j - u_{j-1}) and storey shear `storey_shear` Q_j = k_j drift_j.
-!> Peaks are absolute maxima over all steps, not only the stored ones. Histories are held
+!> storey drift `drift` and storey shear `storey_shear`, both from the model's recovery
+!> rows (a shear building: u_j - u_{j-1} and k_j drift_j). Floor quantities are taken at
+!> the model's response points (`floor_dof`). Peaks are absolute maxima over all steps, not
+!> only the stored ones; the drift peaks are tracked in the fused pass over the floors
+!> (consecutive response points), the storey-shear peaks are the shear rows' scales times
+!> the drift peaks (each shear row is its drift row scaled: see `response_finish`). Histories are held
 !> as (n, n_out) so that h5py reads them as (n_out, n).
 module pound_response
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: n_history_quantities
-   use pound_shear_building, only: shear_building
+   use pound_structure, only: structure_model, recover
    implicit none
    private
 
@@ -89,7 +93,7 @@ contains
       !> The record.
       type(response_record), intent(inout) :: rec
       !> The building.
-      type(shear_building), intent(in) :: b
+      class(structure_model), intent(in) :: b
       !> Relative displacement, velocity and acceleration.
       real(dp), intent(in) :: u(:), v(:), a(:)
       !> Ground acceleration (m/s^2).
@@ -98,7 +102,7 @@ contains
       real(dp), intent(in) :: t
       !> Whether this is an output step.
       logical, intent(in) :: output
-      integer :: k
+      integer :: k, j
 
       call track_peaks(rec%n, u, v, a, ag, t, rec%peak, rec%peak_time)
       if (.not. output) return
@@ -107,11 +111,15 @@ contains
       if (rec%store(q_u)) rec%u(:, k) = u
       if (rec%store(q_v)) rec%v(:, k) = v
       if (rec%store(q_a_abs)) rec%a_abs(:, k) = a + ag
-      if (rec%store(q_drift) .or. rec%store(q_shear)) then
-         rec%work(1) = u(1)
-         rec%work(2:) = u(2:) - u(:rec%n - 1)
-         if (rec%store(q_drift)) rec%drift(:, k) = rec%work
-         if (rec%store(q_shear)) rec%shear(:, k) = b%storey_stiffness*rec%work
+      if (rec%store(q_drift)) then
+         do j = 1, size(b%drift)
+            rec%drift(j, k) = recover(b%drift(j), u)
+         end do
+      end if
+      if (rec%store(q_shear)) then
+         do j = 1, size(b%shear)
+            rec%shear(j, k) = recover(b%shear(j), u)
+         end do
       end if
    end subroutine response_sample
 
@@ -150,14 +158,19 @@ contains
       end do
    end subroutine track_peaks
 
-   !> Derive the storey-shear peaks (Q_j = k_j drift_j, so they occur with the drift peaks).
+   !> Derive the storey-shear peaks: each shear row is its drift row times the row's scale
+   !> (a shear building: Q_j = k_j drift_j), so they occur with the drift peaks.
    pure subroutine response_finish(rec, b)
       !> The record.
       type(response_record), intent(inout) :: rec
       !> The building.
-      type(shear_building), intent(in) :: b
+      class(structure_model), intent(in) :: b
 
-      rec%peak(:, q_shear) = b%storey_stiffness*rec%peak(:, q_drift)
+      integer :: j
+
+      do j = 1, size(b%shear)
+         rec%peak(j, q_shear) = b%shear(j)%scale*rec%peak(j, q_drift)
+      end do
       rec%peak_time(:, q_shear) = rec%peak_time(:, q_drift)
    end subroutine response_finish
 

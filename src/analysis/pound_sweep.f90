@@ -12,7 +12,7 @@ module pound_sweep
    use pound_error, only: error_type
    use pound_strings, only: str
    use pound_config, only: analysis_config, sweep_config, n_history_quantities
-   use pound_shear_building, only: shear_building
+   use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result, coupled_model, coupled_prepare, coupled_integrate, &
                              add_warning, audit_warning_limit
    use pound_contact, only: contact_pair, contact_system
@@ -64,7 +64,7 @@ contains
       !> `&sweep`.
       type(sweep_config), intent(in) :: sweep
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      class(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> The constraints of the deck.

@@ -54,7 +54,9 @@ module pound_contact
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_newmark, only: newmark_state, newmark_solve
+   use pound_newmark, only: newmark_state, newmark_solve, newmark_n, newmark_dt, newmark_predicted, &
+                            newmark_u_at, newmark_add_response
+   use pound_structure, only: structure_model
    use pound_contact_law, only: contact_law, make_elastic, make_elastic_plastic, make_bilinear, &
                                 make_piecewise, make_parabola_cubic, is_plastic, yield_force, &
                                 yield_segment, rate_trapezoidal, rate_backward_euler
@@ -91,8 +93,11 @@ module pound_contact
       character(len=:), allocatable :: label
       !> Building index of each end (1 = left, 2 = right); 0 = rigid fixed neighbour.
       integer :: building(2) = 0
-      !> Floor of each end.
+      !> Floor of each end (labels, messages, listing).
       integer :: floor(2) = 0
+      !> DOF of each end in its building's model (set by `contact_init` from the model's
+      !> response points: the model says which DOF a floor is).
+      integer :: dof(2) = 0
       !> Initial gap g (m).
       real(dp) :: gap = 0.0_dp
       !> Constraint law.
@@ -177,20 +182,31 @@ module pound_contact
 contains
 
    !> Condense the structure onto the constraints: Khat^{-1} B and F.
-   subroutine contact_init(cs, pairs, states, error)
+   subroutine contact_init(cs, pairs, states, models, error)
       !> The contact system.
       type(contact_system), intent(out) :: cs
       !> The constraints (ends, gaps, laws).
       type(contact_pair), intent(in) :: pairs(:)
       !> Initialised integrators (their factored Khat).
       type(newmark_state), intent(in) :: states(:)
+      !> The structural models of the integrators (the DOF of each floor).
+      class(structure_model), intent(in) :: models(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       type(column), allocatable :: y(:, :)
+      type(contact_pair), allocatable :: located(:)
       real(dp), allocatable :: f(:, :)
       integer :: k, l, e, g, b, m, stat
 
       m = size(pairs)
+      located = pairs
+      do k = 1, m
+         do e = 1, 2
+            b = pairs(k)%building(e)
+            if (b == 0) cycle
+            located(k)%dof(e) = models(b)%floor_dof(pairs(k)%floor(e))
+         end do
+      end do
       allocate (y(2, m), f(m, m), stat=stat)
       if (stat /= 0) then
          call fatal_error(error, 'contact: cannot allocate the condensed flexibility F for '//str(m)// &
@@ -202,14 +218,14 @@ contains
          do e = 1, 2
             b = pairs(k)%building(e)
             if (b == 0) cycle
-            allocate (y(e, k)%x(states(b)%n), stat=stat)
+            allocate (y(e, k)%x(newmark_n(states(b))), stat=stat)
             if (stat /= 0) then
                call fatal_error(error, 'contact '//pairs(k)%label//': cannot allocate Khat^{-1} B ('// &
-                                str(states(b)%n)//' reals per pair end; fewer pairs or storeys)')
+                                str(newmark_n(states(b)))//' reals per pair end; fewer pairs or storeys)')
                return
             end if
             y(e, k)%x = 0.0_dp
-            y(e, k)%x(pairs(k)%floor(e)) = 1.0_dp
+            y(e, k)%x(located(k)%dof(e)) = 1.0_dp
             call newmark_solve(states(b), y(e, k)%x)
             if (.not. all(ieee_is_finite(y(e, k)%x))) then
                call fatal_error(error, 'contact '//pairs(k)%label//': Khat^{-1} B (the response of the '// &
@@ -228,7 +244,7 @@ contains
                if (b == 0) cycle
                do g = 1, 2
                   if (pairs(l)%building(g) /= b) cycle
-                  f(k, l) = f(k, l) + end_sign(e)*end_sign(g)*y(g, l)%x(pairs(k)%floor(e))
+                  f(k, l) = f(k, l) + end_sign(e)*end_sign(g)*y(g, l)%x(located(k)%dof(e))
                end do
             end do
          end do
@@ -240,7 +256,7 @@ contains
             return
          end if
       end do
-      call contact_init_flexibility(cs, pairs, f, 2.0_dp/states(1)%c2, error)
+      call contact_init_flexibility(cs, located, f, newmark_dt(states(1)), error)
       if (allocated(error)) return
       call move_alloc(y, cs%y)
    end subroutine contact_init
@@ -416,8 +432,8 @@ contains
          do e = 1, 2
             b = cs%pair(k)%building(e)
             if (b == 0) cycle
-            i = cs%pair(k)%floor(e)
-            vp = vp + end_sign(e)*(states(b)%u(i) + states(b)%du(i))
+            i = cs%pair(k)%dof(e)
+            vp = vp + end_sign(e)*newmark_predicted(states(b), i)
          end do
          cs%vp(k) = vp
       end do
@@ -434,7 +450,7 @@ contains
          do e = 1, 2
             b = cs%pair(k)%building(e)
             if (b == 0) cycle
-            states(b)%du = states(b)%du - end_sign(e)*dr*cs%y(e, k)%x
+            call newmark_add_response(states(b), -(end_sign(e)*dr), cs%y(e, k)%x)
          end do
       end do
    end subroutine contact_step
@@ -757,7 +773,7 @@ contains
          do e = 1, 2
             b = cs%pair(k)%building(e)
             if (b == 0) cycle
-            cs%vp(k) = cs%vp(k) + end_sign(e)*states(b)%u(cs%pair(k)%floor(e))
+            cs%vp(k) = cs%vp(k) + end_sign(e)*newmark_u_at(states(b), cs%pair(k)%dof(e))
          end do
       end do
       call contact_update(cs, cs%vp, t, dt)

@@ -13,25 +13,24 @@ module pound_shear_building
    use pound_strings, only: str
    use pound_config, only: building_config
    use pound_band, only: band_add_storey
+   use pound_structure, only: structure_model, structure_label, chain_rows
    implicit none
    private
 
    public :: shear_building, build_shear_building, rayleigh_coefficients, building_label
 
+   !> `&building #k (name)` when the occurrence is known, else `building name`.
+   interface building_label
+      module procedure structure_label
+   end interface building_label
+
    real(dp), parameter :: pi = acos(-1.0_dp)
 
-   !> A shear building ready for time integration.
-   type :: shear_building
-      !> Name (from the deck).
-      character(len=:), allocatable :: name
-      !> Occurrence of its `&building` group in the deck (0: not known).
-      integer :: number = 0
-      !> Number of floors = number of storeys.
-      integer :: n = 0
+   !> A shear building ready for time integration: the structural model (kd = 1, floor i
+   !> on DOF i, every DOF moved by the ground) and its storey table for the writers.
+   type, extends(structure_model) :: shear_building
       !> Storey heights (m).
       real(dp), allocatable :: height(:)
-      !> Floor masses (t).
-      real(dp), allocatable :: mass(:)
       !> First-order storey stiffness k_j (kN/m).
       real(dp), allocatable :: storey_stiffness(:)
       !> Geometric storey stiffness P_j/h_j (kN/m), subtracted from k_j; zero without P-Delta.
@@ -40,17 +39,6 @@ module pound_shear_building
       real(dp), allocatable :: axial_load(:)
       !> Whether P-Delta is modelled.
       logical :: p_delta = .false.
-      !> Tangent stiffness K+G in upper band storage, shape (2, n).
-      real(dp), allocatable :: kt(:, :)
-      !> Circular natural frequencies (rad/s), ascending.
-      real(dp), allocatable :: omega(:)
-      !> Natural periods (s), descending.
-      real(dp), allocatable :: period(:)
-      !> Damping ratio and the modes it is fitted at.
-      real(dp) :: damping_ratio = 0.0_dp
-      integer :: damping_modes(2) = [1, 2]
-      !> Rayleigh coefficients: C = a0 M + a1 (K+G).
-      real(dp) :: a0 = 0.0_dp, a1 = 0.0_dp
    end type shear_building
 
    interface
@@ -160,25 +148,17 @@ contains
       call natural_frequencies(b, cfg, error)
       if (allocated(error)) return
       call rayleigh_coefficients(b%omega, b%damping_ratio, b%damping_modes, b%a0, b%a1)
+      b%kd = 1
+      b%ground = [(1.0_dp, j=1, n)]
+      b%floor_dof = [(j, j=1, n)]
+      call chain_rows(b%floor_dof, b%storey_stiffness, b%drift, b%shear)
+      b%strain_weight = b%storey_stiffness - b%geometric_stiffness
       if (.not. (ieee_is_finite(b%a0) .and. ieee_is_finite(b%a1))) then
          call fatal_error(error, building_label(b)//': Rayleigh coefficients a0 = '//str(b%a0)//', a1 = '// &
                           str(b%a1)//' from damping_ratio, damping_modes and the natural frequencies ('// &
                           'mass, '//origin(cfg, 'stiffness')//') are not finite')
       end if
    end subroutine build_shear_building
-
-   !> `&building #k (name)` when the occurrence is known, else `building name`.
-   pure function building_label(b) result(s)
-      !> The model.
-      type(shear_building), intent(in) :: b
-      character(len=:), allocatable :: s
-
-      if (b%number > 0) then
-         s = '&building #'//str(b%number)//' ('//b%name//')'
-      else
-         s = 'building '//b%name
-      end if
-   end function building_label
 
    !> The deck variables the storey stiffnesses (`what` = 'stiffness') or the floor masses
    !> (`what` = 'mass') come from, as recorded by the reader.

@@ -1,46 +1,66 @@
-!> Newmark average-acceleration integration of one shear building, incremental form.
+!> Newmark average-acceleration integration of one structural model, incremental form.
 !>
 !> With c1 = 4/dt^2 and c2 = 2/dt the effective stiffness
-!> Khat = (K+G) + c1 M + c2 C, C = a0 M + a1 (K+G), is tridiagonal, symmetric and positive
-!> definite; it is factored once (LAPACK dpttrf, the tridiagonal L D L^T form of the banded
-!> Cholesky) and each step costs one dpttrs solve and one tridiagonal product.
+!> Khat = (K+G) + c1 M + c2 C, C = a0 M + a1 (K+G), has the band of K+G; it is factored
+!> once. Equation of motion, relative to the ground: M a + C v + (K+G) u = -M r a_g + f_ext,
+!> r the model's ground-influence vector.
 !>
-!> A step is split so that contact forces can be added between the two halves:
-!> `newmark_predict` computes the increment du for the ground motion alone,
-!> the caller may add Khat^{-1} times further load increments to `du`, and
-!> `newmark_commit` updates u, v, a and the energy accumulators.
-!> Equation of motion, relative to the ground: M a + C v + (K+G) u = -M 1 a_g + f_ext.
+!> **Two paths, one interface.** Half-bandwidth 1 with every DOF moved by the ground (the
+!> shear building) uses fused tridiagonal kernels: dpttrf's L D L^T factors, the
+!> right-hand side formed inside the forward sweep, the Newmark update, C v and the energy
+!> sums in one pass. Any other model uses the banded Cholesky factor (dpbtrf/dpbtrs) and a
+!> band product for C v. `newmark_init(..., general=.true.)` forces the general path (tests).
+!>
+!> **State is private.** A step is `newmark_predict` (the increment du for the ground motion
+!> alone), then any number of `newmark_add_response` (contact adds Khat^{-1} times its load
+!> increment, obtained once from `newmark_solve`), then `newmark_commit` (u, v, a and the
+!> energy accumulators). dt and the Newmark constants live here only (`newmark_dt`). The
+!> state is read through `newmark_u`, `newmark_v`, `newmark_a`, `newmark_du` (pointers to
+!> the state of a `target` argument, no copy), `newmark_predicted` and `newmark_energies`.
 module pound_newmark
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_shear_building, only: shear_building, building_label
+   use pound_band, only: band_symv
+   use pound_band_lapack, only: dpbtrf, dpbtrs
+   use pound_structure, only: structure_model, structure_label, structure_strain_energy
    implicit none
    private
 
    public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_solve
+   public :: newmark_add_response, newmark_set_state, newmark_dt, newmark_n
+   public :: newmark_u, newmark_v, newmark_a, newmark_du, newmark_u_at, newmark_v_at, newmark_predicted, newmark_energies
    public :: kinetic_energy, strain_energy
+   public :: en_input, en_kinetic, en_strain, en_damping
 
-   !> Integrator state of one building.
+   !> Indices of `newmark_energies`.
+   integer, parameter :: en_input = 1, en_kinetic = 2, en_strain = 3, en_damping = 4
+
+   !> Integrator state of one structural model (components private: see the module doc).
    type :: newmark_state
-      !> Number of floors.
-      integer :: n = 0
+      private
+      !> Number of DOFs and half-bandwidth.
+      integer :: n = 0, kd = 1
+      !> Whether the fused tridiagonal path is taken.
+      logical :: tridiagonal = .true.
       !> Time step and Newmark constants c1 = 4/dt^2, c2 = 2/dt.
       real(dp) :: dt = 0.0_dp, c1 = 0.0_dp, c2 = 0.0_dp
-      !> L D L^T factors of Khat: diagonal d (n) and sub-diagonal e (n-1), and 1/d.
+      !> Tridiagonal path: L D L^T factors of Khat: diagonal d (n) and sub-diagonal e (n-1), and 1/d.
       real(dp), allocatable :: d(:), e(:), dinv(:)
+      !> General path: Cholesky factor of Khat in upper band storage (kd+1, n); work vector (n).
+      real(dp), allocatable :: chol(:, :), work(:)
       !> Relative displacement, velocity and acceleration at the current time.
       real(dp), allocatable :: u(:), v(:), a(:)
       !> Displacement increment of the step in progress.
       real(dp), allocatable :: du(:)
       !> Damping force C v at the current time.
       real(dp), allocatable :: cv(:)
-      !> Work done by the ground motion (effective loads -M 1 a_g) on the relative motion (kJ).
+      !> Work done by the ground motion (effective loads -M r a_g) on the relative motion (kJ).
       real(dp) :: input_work = 0.0_dp
       !> Energy dissipated by viscous damping (kJ).
       real(dp) :: damping_energy = 0.0_dp
-      !> Kinetic and strain energy at the current time (kJ), summed in the fused update of
+      !> Kinetic and strain energy at the current time (kJ), summed in the update of
       !> `newmark_commit` for the energy audit of every step (they agree with
       !> `kinetic_energy` and `strain_energy` to round-off).
       real(dp) :: kinetic = 0.0_dp, strain = 0.0_dp
@@ -65,24 +85,33 @@ module pound_newmark
 contains
 
    !> Factor Khat and start at rest relative to the ground, in equilibrium with the
-   !> ground acceleration at t = 0: u = v = 0, M a = -M 1 a_g(0), so a = -a_g(0).
-   subroutine newmark_init(st, b, dt, ag0, error)
+   !> ground acceleration at t = 0: u = v = 0, M a = -M r a_g(0), so a = -r a_g(0).
+   subroutine newmark_init(st, b, dt, ag0, error, general)
       !> Integrator state.
       type(newmark_state), intent(out) :: st
-      !> The building.
-      type(shear_building), intent(in) :: b
+      !> The structural model.
+      class(structure_model), intent(in) :: b
       !> Time step (s).
       real(dp), intent(in) :: dt
       !> Ground acceleration at t = 0 (m/s^2).
       real(dp), intent(in) :: ag0
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Take the general banded path even for a tridiagonal model (default: .false.).
+      logical, intent(in), optional :: general
       real(dp) :: fk, fm
-      integer :: n, info, i, stat
+      integer :: n, info, i, stat, kd
       character(len=:), allocatable :: sources
 
       n = b%n
+      kd = b%kd
       st%n = n
+      st%kd = kd
+      st%tridiagonal = kd == 1
+      if (st%tridiagonal) st%tridiagonal = all(b%ground == 1.0_dp)
+      if (present(general)) then
+         if (general) st%tridiagonal = .false.
+      end if
       st%dt = dt
       st%c1 = 4.0_dp/dt**2
       st%c2 = 2.0_dp/dt
@@ -91,65 +120,131 @@ contains
       sources = ' from dt = '//str(dt)//' s, the masses, the storey stiffnesses and the damping (a0 = '// &
                 str(b%a0)//', a1 = '//str(b%a1)//')'
       if (.not. (ieee_is_finite(fk) .and. ieee_is_finite(fm))) then
-         call fatal_error(error, building_label(b)//': Newmark coefficients 1 + 2 a1/dt = '//str(fk)// &
+         call fatal_error(error, structure_label(b)//': Newmark coefficients 1 + 2 a1/dt = '//str(fk)// &
                           ' and 4/dt^2 + 2 a0/dt = '//str(fm)//sources//' are not finite')
          return
       end if
-      allocate (st%d(n), st%e(max(n - 1, 1)), st%u(n), st%v(n), st%a(n), st%du(n), st%cv(n), stat=stat)
+      allocate (st%u(n), st%v(n), st%a(n), st%du(n), st%cv(n), stat=stat)
+      if (stat == 0) then
+         if (st%tridiagonal) then
+            allocate (st%d(n), st%e(max(n - 1, 1)), stat=stat)
+         else
+            allocate (st%chol(kd + 1, n), st%work(n), stat=stat)
+         end if
+      end if
       if (stat /= 0) then
-         call fatal_error(error, building_label(b)//': cannot allocate the integrator state ('// &
-                          str(7*n)//' reals; n_storeys = '//str(n)//')')
+         call fatal_error(error, structure_label(b)//': cannot allocate the integrator state ('// &
+                          str((7 + kd)*n)//' reals; n_storeys = '//str(n)//')')
          return
       end if
-      st%d = fk*b%kt(2, :) + fm*b%mass
-      st%e = 0.0_dp
-      if (n > 1) st%e(1:n - 1) = fk*b%kt(1, 2:n)
-      do i = 1, n
-         if (.not. (ieee_is_finite(st%d(i)) .and. ieee_is_finite(st%e(min(i, size(st%e)))))) then
-            call fatal_error(error, building_label(b)//': floor '//str(i)//': effective stiffness Khat = '// &
-                             '(K+G)(1 + 2 a1/dt) + M (4/dt^2 + 2 a0/dt)'//sources//' is not finite')
+      if (st%tridiagonal) then
+         st%d = fk*b%kt(2, :) + fm*b%mass
+         st%e = 0.0_dp
+         if (n > 1) st%e(1:n - 1) = fk*b%kt(1, 2:n)
+         do i = 1, n
+            if (.not. (ieee_is_finite(st%d(i)) .and. ieee_is_finite(st%e(min(i, size(st%e)))))) then
+               call khat_not_finite(i)
+               return
+            end if
+         end do
+         call dpttrf(n, st%d, st%e, info)
+         if (info /= 0) then
+            call fatal_error(error, structure_label(b)//': effective stiffness not positive definite '// &
+                             '(dpttrf info = '//str(info)//')'//sources)
             return
          end if
-      end do
-      call dpttrf(n, st%d, st%e, info)
-      if (info /= 0) then
-         call fatal_error(error, building_label(b)//': effective stiffness not positive definite '// &
-                          '(dpttrf info = '//str(info)//')'//sources)
-         return
+         st%dinv = 1.0_dp/st%d
+         do i = 1, n
+            if (.not. (ieee_is_finite(st%d(i)) .and. ieee_is_finite(st%dinv(i)) .and. &
+                       ieee_is_finite(st%e(min(i, size(st%e)))))) then
+               call fatal_error(error, structure_label(b)//': floor '//str(i)//': factorization of the '// &
+                                'effective stiffness Khat out of range (pivot '//str(st%d(i))//')'//sources)
+               return
+            end if
+         end do
+      else
+         st%chol = fk*b%kt
+         st%chol(kd + 1, :) = st%chol(kd + 1, :) + fm*b%mass
+         do i = 1, n
+            if (.not. all(ieee_is_finite(st%chol(:, i)))) then
+               call khat_not_finite(i)
+               return
+            end if
+         end do
+         call dpbtrf('U', n, kd, st%chol, kd + 1, info)
+         if (info /= 0) then
+            call fatal_error(error, structure_label(b)//': effective stiffness not positive definite '// &
+                             '(dpbtrf info = '//str(info)//')'//sources)
+            return
+         end if
+         do i = 1, n
+            if (.not. (all(ieee_is_finite(st%chol(:, i))) .and. st%chol(kd + 1, i) > 0.0_dp)) then
+               call fatal_error(error, structure_label(b)//': DOF '//str(i)//': factorization of the '// &
+                                'effective stiffness Khat out of range (pivot '//str(st%chol(kd + 1, i))//')'// &
+                                sources)
+               return
+            end if
+         end do
       end if
-      st%dinv = 1.0_dp/st%d
-      do i = 1, n
-         if (.not. (ieee_is_finite(st%d(i)) .and. ieee_is_finite(st%dinv(i)) .and. &
-                    ieee_is_finite(st%e(min(i, size(st%e)))))) then
-            call fatal_error(error, building_label(b)//': floor '//str(i)//': factorization of the '// &
-                             'effective stiffness Khat out of range (pivot '//str(st%d(i))//')'//sources)
-            return
-         end if
-      end do
       st%u = 0.0_dp
       st%v = 0.0_dp
-      st%a = -ag0
+      st%a = -ag0*b%ground
       st%du = 0.0_dp
       st%cv = 0.0_dp
       st%input_work = 0.0_dp
       st%damping_energy = 0.0_dp
       st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
       st%strain = 0.0_dp
+
+   contains
+
+      subroutine khat_not_finite(i)
+         integer, intent(in) :: i
+
+         call fatal_error(error, structure_label(b)//': floor '//str(i)//': effective stiffness Khat = '// &
+                          '(K+G)(1 + 2 a1/dt) + M (4/dt^2 + 2 a0/dt)'//sources//' is not finite')
+      end subroutine khat_not_finite
    end subroutine newmark_init
+
+   !> Overwrite the state (tests: initial conditions other than rest). `a` defaults to
+   !> unchanged; C v is recomputed from the new v.
+   subroutine newmark_set_state(st, b, u, v, a)
+      !> Integrator state.
+      type(newmark_state), intent(inout) :: st
+      !> The structural model.
+      class(structure_model), intent(in) :: b
+      !> Displacement, velocity and acceleration (n each).
+      real(dp), intent(in), optional :: u(:), v(:), a(:)
+
+      if (present(u)) st%u = u
+      if (present(v)) st%v = v
+      if (present(a)) st%a = a
+      call band_symv(b%kt, st%v, st%cv)
+      st%cv = b%a0*b%mass*st%v + b%a1*st%cv
+      st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
+      st%strain = structure_strain_energy(b, st%u)
+   end subroutine newmark_set_state
 
    !> Increment du of the step for the ground acceleration increment `dag` alone.
    !>
-   !> The right-hand side is formed inside the forward sweep of the L D L^T solve and the
-   !> back sweep multiplies by the stored 1/d: two passes over the floors, no division.
+   !> Tridiagonal path: the right-hand side is formed inside the forward sweep of the
+   !> L D L^T solve and the back sweep multiplies by the stored 1/d: two passes over the
+   !> floors, no division. General path: the right-hand side, then dpbtrs.
    subroutine newmark_predict(st, b, dag)
       !> Integrator state; `du` is set.
       type(newmark_state), intent(inout) :: st
-      !> The building.
-      type(shear_building), intent(in) :: b
+      !> The structural model.
+      class(structure_model), intent(in) :: b
       !> Ground acceleration increment a_g(t+dt) - a_g(t) (m/s^2).
       real(dp), intent(in) :: dag
+      integer :: info
 
-      call predict_kernel(st%n, 2.0_dp*st%c2, dag, b%mass, st%v, st%a, st%cv, st%e, st%dinv, st%du)
+      if (st%tridiagonal) then
+         call predict_kernel(st%n, 2.0_dp*st%c2, dag, b%mass, st%v, st%a, st%cv, st%e, st%dinv, st%du)
+      else
+         st%du = b%mass*(2.0_dp*st%c2*st%v + 2.0_dp*st%a - b%ground*dag) + 2.0_dp*st%cv
+         call dpbtrs('U', st%n, st%kd, 1, st%chol, st%kd + 1, st%du, st%n, info)
+      end if
    end subroutine newmark_predict
 
    !> du = Khat^{-1} (M (4/dt v + 2 a - 1 dag) + 2 C v) with Khat = L D L^T.
@@ -172,7 +267,7 @@ contains
       end do
    end subroutine predict_kernel
 
-   !> Overwrite x with Khat^{-1} x (one tridiagonal solve).
+   !> Overwrite x with Khat^{-1} x (one tridiagonal or banded solve).
    subroutine newmark_solve(st, x)
       !> Integrator state (factors).
       type(newmark_state), intent(in) :: st
@@ -180,26 +275,61 @@ contains
       real(dp), intent(inout) :: x(:)
       integer :: info
 
-      call dpttrs(st%n, 1, st%d, st%e, x, st%n, info)
+      if (st%tridiagonal) then
+         call dpttrs(st%n, 1, st%d, st%e, x, st%n, info)
+      else
+         call dpbtrs('U', st%n, st%kd, 1, st%chol, st%kd + 1, x, st%n, info)
+      end if
    end subroutine newmark_solve
+
+   !> du = du + s x: the response to a load increment s f of the step, x = Khat^{-1} f
+   !> (from `newmark_solve`, computed once when f does not change).
+   pure subroutine newmark_add_response(st, s, x)
+      !> Integrator state with the predicted `du`.
+      type(newmark_state), intent(inout) :: st
+      !> Factor of the load increment.
+      real(dp), intent(in) :: s
+      !> Khat^{-1} f (n).
+      real(dp), intent(in) :: x(:)
+
+      st%du = st%du + s*x
+   end subroutine newmark_add_response
 
    !> Complete the step with the increment `du` and account the energy.
    !>
    !> `ag_old` and `ag_new` are the ground accelerations at the start and end of the step;
-   !> the input work increment is du . (p_old + p_new)/2 with p = -M 1 a_g, the damping
+   !> the input work increment is du . (p_old + p_new)/2 with p = -M r a_g, the damping
    !> increment du . (C v_old + C v_new)/2: the trapezoidal sums under which the average
    !> acceleration method balances energy exactly for a linear system.
    subroutine newmark_commit(st, b, ag_old, ag_new)
       !> Integrator state.
       type(newmark_state), intent(inout) :: st
-      !> The building.
-      type(shear_building), intent(in) :: b
+      !> The structural model.
+      class(structure_model), intent(in) :: b
       !> Ground acceleration at the start and end of the step (m/s^2).
       real(dp), intent(in) :: ag_old, ag_new
       real(dp) :: mdu, ddamp
 
-      call commit_kernel(st%n, st%c1, st%c2, b%a0, b%a1, b%mass, b%kt, st%du, st%u, st%v, st%a, &
-                         st%cv, mdu, ddamp, st%kinetic, st%strain)
+      if (st%tridiagonal) then
+         call commit_kernel(st%n, st%c1, st%c2, b%a0, b%a1, b%mass, b%kt, st%du, st%u, st%v, st%a, &
+                            st%cv, mdu, ddamp, st%kinetic, st%strain)
+      else
+         st%a = st%c1*st%du - 2.0_dp*st%c2*st%v - st%a
+         st%v = st%c2*st%du - st%v
+         st%u = st%u + st%du
+         mdu = sum(b%mass*b%ground*st%du)
+         call band_symv(b%kt, st%v, st%work)
+         st%work = b%a0*b%mass*st%v + b%a1*st%work
+         ddamp = dot_product(st%du, st%cv + st%work)
+         st%cv = st%work
+         st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
+         if (allocated(b%strain_weight)) then
+            st%strain = structure_strain_energy(b, st%u)
+         else
+            call band_symv(b%kt, st%u, st%work)
+            st%strain = 0.5_dp*dot_product(st%u, st%work)
+         end if
+      end if
       st%damping_energy = st%damping_energy + 0.5_dp*ddamp
       st%input_work = st%input_work - 0.5_dp*(ag_old + ag_new)*mdu
    end subroutine newmark_commit
@@ -301,35 +431,119 @@ contains
       cv = cvi
    end subroutine damp_floor
 
+   !> Number of DOFs.
+   pure integer function newmark_n(st)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+
+      newmark_n = st%n
+   end function newmark_n
+
+   !> The time step (s).
+   pure real(dp) function newmark_dt(st)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+
+      newmark_dt = st%dt
+   end function newmark_dt
+
+   !> Relative displacements at the current time (a view of the state: `st` must be a target).
+   function newmark_u(st) result(p)
+      !> Integrator state.
+      type(newmark_state), intent(in), target :: st
+      real(dp), pointer, contiguous :: p(:)
+
+      p => st%u
+   end function newmark_u
+
+   !> Relative velocities at the current time (a view of the state).
+   function newmark_v(st) result(p)
+      !> Integrator state.
+      type(newmark_state), intent(in), target :: st
+      real(dp), pointer, contiguous :: p(:)
+
+      p => st%v
+   end function newmark_v
+
+   !> Relative accelerations at the current time (a view of the state).
+   function newmark_a(st) result(p)
+      !> Integrator state.
+      type(newmark_state), intent(in), target :: st
+      real(dp), pointer, contiguous :: p(:)
+
+      p => st%a
+   end function newmark_a
+
+   !> Displacement increment of the step in progress (a view of the state).
+   function newmark_du(st) result(p)
+      !> Integrator state.
+      type(newmark_state), intent(in), target :: st
+      real(dp), pointer, contiguous :: p(:)
+
+      p => st%du
+   end function newmark_du
+
+   !> u of DOF i at the current time.
+   pure real(dp) function newmark_u_at(st, i)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+      !> DOF.
+      integer, intent(in) :: i
+
+      newmark_u_at = st%u(i)
+   end function newmark_u_at
+
+   !> v of DOF i at the current time.
+   pure real(dp) function newmark_v_at(st, i)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+      !> DOF.
+      integer, intent(in) :: i
+
+      newmark_v_at = st%v(i)
+   end function newmark_v_at
+
+   !> u + du of DOF i: the displacement at the end of the step in progress as predicted so far.
+   pure real(dp) function newmark_predicted(st, i)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+      !> DOF.
+      integer, intent(in) :: i
+
+      newmark_predicted = st%u(i) + st%du(i)
+   end function newmark_predicted
+
+   !> The running energies of the integrator (kJ): input work, kinetic, strain and damping
+   !> energy at the current time (indices `en_input`, `en_kinetic`, `en_strain`, `en_damping`).
+   pure function newmark_energies(st) result(e)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+      real(dp) :: e(4)
+
+      e = [st%input_work, st%kinetic, st%strain, st%damping_energy]
+   end function newmark_energies
+
    !> Kinetic energy of the relative motion, v^T M v / 2 (kJ).
    pure function kinetic_energy(st, b) result(e)
       !> Integrator state.
       type(newmark_state), intent(in) :: st
-      !> The building.
-      type(shear_building), intent(in) :: b
+      !> The structural model.
+      class(structure_model), intent(in) :: b
       real(dp) :: e
 
       e = 0.5_dp*sum(b%mass*st%v**2)
    end function kinetic_energy
 
-   !> Strain energy including the geometric term, u^T (K+G) u / 2 (kJ).
+   !> Strain energy including the geometric term, u^T (K+G) u / 2 (kJ): see
+   !> `structure_strain_energy`.
    pure function strain_energy(st, b) result(e)
       !> Integrator state.
       type(newmark_state), intent(in) :: st
-      !> The building.
-      type(shear_building), intent(in) :: b
-      real(dp) :: e, drift
-      integer :: j
+      !> The structural model.
+      class(structure_model), intent(in) :: b
+      real(dp) :: e
 
-      e = 0.0_dp
-      do j = 1, st%n
-         if (j == 1) then
-            drift = st%u(1)
-         else
-            drift = st%u(j) - st%u(j - 1)
-         end if
-         e = e + 0.5_dp*(b%storey_stiffness(j) - b%geometric_stiffness(j))*drift**2
-      end do
+      e = structure_strain_energy(b, st%u)
    end function strain_energy
 
 end module pound_newmark

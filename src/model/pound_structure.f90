@@ -1,0 +1,188 @@
+!> The structural model every model builder produces, as data.
+!>
+!> A `structure_model` is what the integrator, contact, response and the writers see of a
+!> building, whatever built it: n degrees of freedom, the tangent stiffness K+G in LAPACK
+!> upper band storage of half-bandwidth kd (`ab(kd+1+i-j, j) = (K+G)(i, j)`, see
+!> pound_band), lumped masses (zero allowed, e.g. massless rotations), Rayleigh damping
+!> C = a0 M + a1 (K+G), the ground-influence vector r (the equation of motion relative to
+!> the ground is M a + C v + (K+G) u = -M r a_g: r = 1 on lateral DOFs, 0 on rotations),
+!> the named response points (the DOF of each floor's lateral displacement) and the storey
+!> quantities as linear recovery operators over the DOFs (`recovery_row`).
+!>
+!> **Strain energy.** When the builder can write K+G = sum_j w_j d_j d_j^T with d_j the
+!> storey-drift rows (a shear building: w_j = k_j - P_j/h_j), it stores the weights
+!> `strain_weight` and the strain energy is sum_j w_j (d_j . u)^2 / 2, storey by storey;
+!> otherwise it is u^T (K+G) u / 2 from the band.
+!>
+!> **A plain data type.** The components are public: a model is written once by its
+!> builder and then only read, every reader needs most of it, and accessors for a dozen
+!> arrays would add nothing but calls inside the time-step kernels. The invariants (sizes
+!> n, kd+1; one drift and one shear row per storey; `floor_dof` within 1..n) are the
+!> builder's to keep and are checked by `structure_check`. Builder-specific data (e.g. the
+!> shear building's storey table of heights, storey stiffnesses and axial loads) lives in
+!> an extension of this type (`shear_building` extends it), so writers can still reach it.
+module pound_structure
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   use pound_band, only: band_symv
+   implicit none
+   private
+
+   public :: structure_model, recovery_row, recover, structure_label, structure_strain_energy
+   public :: structure_check, chain_rows
+
+   !> One linear recovery operator over the DOFs: value = scale * sum_i coef(i) u(dof(i)),
+   !> the sum taken in the order of the entries (e.g. a storey drift: dof = [j-1, j],
+   !> coef = [-1, 1], scale 1; its storey shear: the same with scale k_j; a storey shear
+   !> over several columns: one entry per column end, scale 1).
+   type :: recovery_row
+      !> DOFs (1..n) and their coefficients.
+      integer, allocatable :: dof(:)
+      real(dp), allocatable :: coef(:)
+      !> Factor applied to the sum.
+      real(dp) :: scale = 1.0_dp
+   end type recovery_row
+
+   !> A structural model ready for time integration (a plain data type: see the module doc).
+   type :: structure_model
+      !> Name (from the deck).
+      character(len=:), allocatable :: name
+      !> Occurrence of its group in the deck (0: not known), for messages.
+      integer :: number = 0
+      !> Number of degrees of freedom.
+      integer :: n = 0
+      !> Half-bandwidth of K+G (1: tridiagonal).
+      integer :: kd = 1
+      !> Tangent stiffness K+G in upper band storage, shape (kd+1, n).
+      real(dp), allocatable :: kt(:, :)
+      !> Lumped masses (t or t m^2), >= 0.
+      real(dp), allocatable :: mass(:)
+      !> Ground-influence vector r (n): 1 where the ground moves the DOF, 0 where not.
+      real(dp), allocatable :: ground(:)
+      !> Rayleigh coefficients: C = a0 M + a1 (K+G).
+      real(dp) :: a0 = 0.0_dp, a1 = 0.0_dp
+      !> Damping ratio and the modes it is fitted at.
+      real(dp) :: damping_ratio = 0.0_dp
+      integer :: damping_modes(2) = [1, 2]
+      !> Circular natural frequencies (rad/s), ascending, and natural periods (s), descending.
+      real(dp), allocatable :: omega(:), period(:)
+      !> Response points: the DOF of each floor's lateral displacement (n_floors).
+      integer, allocatable :: floor_dof(:)
+      !> Storey drift and storey shear recovery rows (n_storeys each, storey 1 at the bottom).
+      type(recovery_row), allocatable :: drift(:), shear(:)
+      !> Weights w_j of K+G = sum_j w_j d_j d_j^T over the drift rows d_j, when the builder
+      !> has that form (then the strain energy is taken storey by storey); else unallocated.
+      real(dp), allocatable :: strain_weight(:)
+   end type structure_model
+
+contains
+
+   !> The value of a recovery row for the DOF vector u.
+   pure real(dp) function recover(row, u) result(x)
+      !> The row.
+      type(recovery_row), intent(in) :: row
+      !> DOF values (n).
+      real(dp), intent(in) :: u(:)
+      integer :: i
+
+      x = 0.0_dp
+      do i = 1, size(row%dof)
+         x = x + row%coef(i)*u(row%dof(i))
+      end do
+      x = row%scale*x
+   end function recover
+
+   !> `&building #k (name)` when the occurrence is known, else `building name`.
+   pure function structure_label(m) result(s)
+      !> The model.
+      class(structure_model), intent(in) :: m
+      character(len=:), allocatable :: s
+
+      if (m%number > 0) then
+         s = '&building #'//str(m%number)//' ('//m%name//')'
+      else
+         s = 'building '//m%name
+      end if
+   end function structure_label
+
+   !> Strain energy including the geometric term, u^T (K+G) u / 2 (kJ): storey by storey
+   !> from `strain_weight` and the drift rows when the model has them, else from the band.
+   pure function structure_strain_energy(m, u) result(e)
+      !> The model.
+      class(structure_model), intent(in) :: m
+      !> Displacements (n).
+      real(dp), intent(in) :: u(:)
+      real(dp) :: e, y(size(u)), drift
+      integer :: j
+
+      e = 0.0_dp
+      if (allocated(m%strain_weight)) then
+         do j = 1, size(m%strain_weight)
+            drift = recover(m%drift(j), u)
+            e = e + 0.5_dp*m%strain_weight(j)*drift**2
+         end do
+      else
+         call band_symv(m%kt, u, y)
+         e = 0.5_dp*dot_product(u, y)
+      end if
+   end function structure_strain_energy
+
+   !> Drift rows of a chain of floors on DOFs `dofs` (storey j joins floor j-1 and floor j,
+   !> floor 0 the fixed ground), and shear rows with the storey stiffnesses `k` as scales.
+   pure subroutine chain_rows(dofs, k, drift, shear)
+      !> DOF of each floor (n_storeys).
+      integer, intent(in) :: dofs(:)
+      !> Storey stiffness of each storey (kN/m).
+      real(dp), intent(in) :: k(:)
+      !> Storey drift and storey shear rows.
+      type(recovery_row), allocatable, intent(out) :: drift(:), shear(:)
+      integer :: j
+
+      allocate (drift(size(dofs)), shear(size(dofs)))
+      if (size(dofs) == 0) return
+      drift(1)%dof = [dofs(1)]
+      drift(1)%coef = [1.0_dp]
+      do j = 2, size(dofs)
+         drift(j)%dof = dofs(j - 1:j)
+         drift(j)%coef = [-1.0_dp, 1.0_dp]
+      end do
+      do j = 1, size(dofs)
+         shear(j) = drift(j)
+         shear(j)%scale = k(j)
+      end do
+   end subroutine chain_rows
+
+   !> Check the sizes and index ranges of a model (a builder's invariants).
+   pure subroutine structure_check(m, error)
+      !> The model.
+      class(structure_model), intent(in) :: m
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: j
+
+      if (.not. (allocated(m%kt) .and. allocated(m%mass) .and. allocated(m%ground) .and. &
+                 allocated(m%floor_dof) .and. allocated(m%drift) .and. allocated(m%shear))) then
+         call fatal_error(error, structure_label(m)//': incomplete structural model')
+         return
+      end if
+      if (size(m%kt, 1) /= m%kd + 1 .or. size(m%kt, 2) /= m%n .or. size(m%mass) /= m%n .or. &
+          size(m%ground) /= m%n .or. m%kd < 1) then
+         call fatal_error(error, structure_label(m)//': structural model of '//str(m%n)//' DOFs and '// &
+                          'half-bandwidth '//str(m%kd)//' has arrays of the wrong size')
+         return
+      end if
+      if (any(m%floor_dof < 1) .or. any(m%floor_dof > m%n) .or. size(m%drift) /= size(m%shear)) then
+         call fatal_error(error, structure_label(m)//': response points or storey rows out of range')
+         return
+      end if
+      do j = 1, size(m%drift)
+         if (any(m%drift(j)%dof < 1) .or. any(m%drift(j)%dof > m%n) .or. any(m%shear(j)%dof < 1) .or. &
+             any(m%shear(j)%dof > m%n)) then
+            call fatal_error(error, structure_label(m)//': storey '//str(j)//': recovery row out of range')
+            return
+         end if
+      end do
+   end subroutine structure_check
+
+end module pound_structure
