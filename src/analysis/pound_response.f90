@@ -14,7 +14,7 @@ module pound_response
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: n_history_quantities
-   use pound_structure, only: structure_model, recover
+   use pound_structure, only: structure_model, recover_all
    implicit none
    private
 
@@ -102,7 +102,7 @@ contains
       real(dp), intent(in) :: t
       !> Whether this is an output step.
       logical, intent(in) :: output
-      integer :: k, j
+      integer :: k
 
       call track_peaks(rec%n, u, v, a, ag, t, rec%peak, rec%peak_time)
       if (.not. output) return
@@ -111,16 +111,8 @@ contains
       if (rec%store(q_u)) rec%u(:, k) = u
       if (rec%store(q_v)) rec%v(:, k) = v
       if (rec%store(q_a_abs)) rec%a_abs(:, k) = a + ag
-      if (rec%store(q_drift)) then
-         do j = 1, size(b%drift)
-            rec%drift(j, k) = recover(b%drift(j), u)
-         end do
-      end if
-      if (rec%store(q_shear)) then
-         do j = 1, size(b%shear)
-            rec%shear(j, k) = recover(b%shear(j), u)
-         end do
-      end if
+      if (rec%store(q_drift)) call recover_all(b%drift, u, rec%drift(:, k))
+      if (rec%store(q_shear)) call recover_all(b%shear, u, rec%shear(:, k))
    end subroutine response_sample
 
    !> Running absolute maxima of u, v, a_abs and drift in one pass over the floors
@@ -168,8 +160,8 @@ contains
 
       integer :: j
 
-      do j = 1, size(b%shear)
-         rec%peak(j, q_shear) = b%shear(j)%scale*rec%peak(j, q_drift)
+      do j = 1, b%shear%n
+         rec%peak(j, q_shear) = b%shear%scale(j)*rec%peak(j, q_drift)
       end do
       rec%peak_time(:, q_shear) = rec%peak_time(:, q_drift)
    end subroutine response_finish

@@ -29,20 +29,25 @@ module pound_structure
    implicit none
    private
 
-   public :: structure_model, recovery_row, recover, structure_label, structure_strain_energy
+   public :: structure_model, recovery_rows, recover, recover_all, structure_label, structure_strain_energy
    public :: structure_check, chain_rows
 
-   !> One linear recovery operator over the DOFs: value = scale * sum_i coef(i) u(dof(i)),
-   !> the sum taken in the order of the entries (e.g. a storey drift: dof = [j-1, j],
-   !> coef = [-1, 1], scale 1; its storey shear: the same with scale k_j; a storey shear
-   !> over several columns: one entry per column end, scale 1).
-   type :: recovery_row
-      !> DOFs (1..n) and their coefficients.
+   !> Linear recovery operators over the DOFs, one per row, in compressed sparse rows: row j
+   !> is value_j = scale(j) * sum_i coef(i) u(dof(i)), i = start(j) .. start(j+1)-1, the sum
+   !> taken in the order of the entries (e.g. a storey drift: dof = [j-1, j], coef = [-1, 1],
+   !> scale 1; its storey shear: the same with scale k_j; a storey shear over several
+   !> columns: one entry per column end, scale 1).
+   type :: recovery_rows
+      !> Number of rows.
+      integer :: n = 0
+      !> First entry of each row (n+1; start(n+1) = number of entries + 1).
+      integer, allocatable :: start(:)
+      !> DOF (1..n_dofs) and coefficient of each entry.
       integer, allocatable :: dof(:)
       real(dp), allocatable :: coef(:)
-      !> Factor applied to the sum.
-      real(dp) :: scale = 1.0_dp
-   end type recovery_row
+      !> Factor applied to each row's sum (n).
+      real(dp), allocatable :: scale(:)
+   end type recovery_rows
 
    !> A structural model ready for time integration (a plain data type: see the module doc).
    type :: structure_model
@@ -70,7 +75,7 @@ module pound_structure
       !> Response points: the DOF of each floor's lateral displacement (n_floors).
       integer, allocatable :: floor_dof(:)
       !> Storey drift and storey shear recovery rows (n_storeys each, storey 1 at the bottom).
-      type(recovery_row), allocatable :: drift(:), shear(:)
+      type(recovery_rows) :: drift, shear
       !> Weights w_j of K+G = sum_j w_j d_j d_j^T over the drift rows d_j, when the builder
       !> has that form (then the strain energy is taken storey by storey); else unallocated.
       real(dp), allocatable :: strain_weight(:)
@@ -78,20 +83,51 @@ module pound_structure
 
 contains
 
-   !> The value of a recovery row for the DOF vector u.
-   pure real(dp) function recover(row, u) result(x)
-      !> The row.
-      type(recovery_row), intent(in) :: row
+   !> The value of row j of `rows` for the DOF vector u.
+   pure real(dp) function recover(rows, j, u) result(x)
+      !> The rows.
+      type(recovery_rows), intent(in) :: rows
+      !> Row.
+      integer, intent(in) :: j
       !> DOF values (n).
       real(dp), intent(in) :: u(:)
       integer :: i
 
       x = 0.0_dp
-      do i = 1, size(row%dof)
-         x = x + row%coef(i)*u(row%dof(i))
+      do i = rows%start(j), rows%start(j + 1) - 1
+         x = x + rows%coef(i)*u(rows%dof(i))
       end do
-      x = row%scale*x
+      x = rows%scale(j)*x
    end function recover
+
+   !> The values of all rows for the DOF vector u.
+   pure subroutine recover_all(rows, u, y)
+      !> The rows.
+      type(recovery_rows), intent(in) :: rows
+      !> DOF values (n).
+      real(dp), intent(in) :: u(:)
+      !> Row values (rows%n).
+      real(dp), intent(out) :: y(:)
+
+      call rows_kernel(rows%n, size(rows%dof), size(u), rows%start, rows%dof, rows%coef, rows%scale, u, y)
+   end subroutine recover_all
+
+   !> `recover_all` on explicit-shape arrays (one pass, no calls per row).
+   pure subroutine rows_kernel(n, nnz, nu, start, dof, coef, scale, u, y)
+      integer, intent(in) :: n, nnz, nu, start(n + 1), dof(nnz)
+      real(dp), intent(in) :: coef(nnz), scale(n), u(nu)
+      real(dp), intent(out) :: y(n)
+      real(dp) :: x
+      integer :: i, j
+
+      do j = 1, n
+         x = 0.0_dp
+         do i = start(j), start(j + 1) - 1
+            x = x + coef(i)*u(dof(i))
+         end do
+         y(j) = scale(j)*x
+      end do
+   end subroutine rows_kernel
 
    !> `&building #k (name)` when the occurrence is known, else `building name`.
    pure function structure_label(m) result(s)
@@ -119,7 +155,7 @@ contains
       e = 0.0_dp
       if (allocated(m%strain_weight)) then
          do j = 1, size(m%strain_weight)
-            drift = recover(m%drift(j), u)
+            drift = recover(m%drift, j, u)
             e = e + 0.5_dp*m%strain_weight(j)*drift**2
          end do
       else
@@ -136,21 +172,27 @@ contains
       !> Storey stiffness of each storey (kN/m).
       real(dp), intent(in) :: k(:)
       !> Storey drift and storey shear rows.
-      type(recovery_row), allocatable, intent(out) :: drift(:), shear(:)
-      integer :: j
+      type(recovery_rows), intent(out) :: drift, shear
+      integer :: j, n
 
-      allocate (drift(size(dofs)), shear(size(dofs)))
-      if (size(dofs) == 0) return
-      drift(1)%dof = [dofs(1)]
-      drift(1)%coef = [1.0_dp]
-      do j = 2, size(dofs)
-         drift(j)%dof = dofs(j - 1:j)
-         drift(j)%coef = [-1.0_dp, 1.0_dp]
+      n = size(dofs)
+      drift%n = n
+      allocate (drift%start(n + 1), drift%dof(max(2*n - 1, 0)), drift%coef(max(2*n - 1, 0)), drift%scale(n))
+      drift%start(1) = 1
+      do j = 1, n
+         if (j == 1) then
+            drift%dof(1) = dofs(1)
+            drift%coef(1) = 1.0_dp
+            drift%start(2) = 2
+         else
+            drift%dof(2*j - 2:2*j - 1) = [dofs(j - 1), dofs(j)]
+            drift%coef(2*j - 2:2*j - 1) = [-1.0_dp, 1.0_dp]
+            drift%start(j + 1) = 2*j
+         end if
       end do
-      do j = 1, size(dofs)
-         shear(j) = drift(j)
-         shear(j)%scale = k(j)
-      end do
+      drift%scale = 1.0_dp
+      shear = drift
+      shear%scale = k
    end subroutine chain_rows
 
    !> Check the sizes and index ranges of a model (a builder's invariants).
@@ -159,10 +201,8 @@ contains
       class(structure_model), intent(in) :: m
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: j
-
       if (.not. (allocated(m%kt) .and. allocated(m%mass) .and. allocated(m%ground) .and. &
-                 allocated(m%floor_dof) .and. allocated(m%drift) .and. allocated(m%shear))) then
+                 allocated(m%floor_dof) .and. allocated(m%drift%start) .and. allocated(m%shear%start))) then
          call fatal_error(error, structure_label(m)//': incomplete structural model')
          return
       end if
@@ -172,17 +212,11 @@ contains
                           'half-bandwidth '//str(m%kd)//' has arrays of the wrong size')
          return
       end if
-      if (any(m%floor_dof < 1) .or. any(m%floor_dof > m%n) .or. size(m%drift) /= size(m%shear)) then
+      if (any(m%floor_dof < 1) .or. any(m%floor_dof > m%n) .or. m%drift%n /= m%shear%n .or. &
+          any(m%drift%dof < 1) .or. any(m%drift%dof > m%n) .or. any(m%shear%dof < 1) .or. &
+          any(m%shear%dof > m%n)) then
          call fatal_error(error, structure_label(m)//': response points or storey rows out of range')
-         return
       end if
-      do j = 1, size(m%drift)
-         if (any(m%drift(j)%dof < 1) .or. any(m%drift(j)%dof > m%n) .or. any(m%shear(j)%dof < 1) .or. &
-             any(m%shear(j)%dof > m%n)) then
-            call fatal_error(error, structure_label(m)//': storey '//str(j)//': recovery row out of range')
-            return
-         end if
-      end do
    end subroutine structure_check
 
 end module pound_structure

@@ -1,0 +1,135 @@
+!> The fused kernels of the tridiagonal Newmark path (pound_newmark): the right-hand side
+!> formed inside the forward sweep of the L D L^T solve, and the Newmark update with C v and
+!> the energy sums in one pass.
+!>
+!> A module of their own: compiled apart from the integrator's state handling, the kernels
+!> see only explicit-shape arrays that Fortran guarantees not to alias, so the compiler
+!> vectorises them as it did before the integrator took any structural model (inlined into
+!> `newmark_commit`, whose dummies hold the arrays behind descriptors, it did not).
+module pound_newmark_kernels
+   use pound_kinds, only: dp
+   implicit none
+   private
+
+   public :: predict_kernel, commit_kernel
+
+contains
+
+   !> du = Khat^{-1} (M (4/dt v + 2 a - 1 dag) + 2 C v) with Khat = L D L^T.
+   pure subroutine predict_kernel(n, c4, dag, mass, v, a, cv, e, dinv, du)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: c4, dag, mass(n), v(n), a(n), cv(n), e(max(n - 1, 1)), dinv(n)
+      real(dp), intent(out) :: du(n)
+      real(dp) :: y
+      integer :: i
+
+      y = mass(1)*(c4*v(1) + 2.0_dp*a(1) - dag) + 2.0_dp*cv(1)
+      du(1) = y
+      do i = 2, n
+         y = mass(i)*(c4*v(i) + 2.0_dp*a(i) - dag) + 2.0_dp*cv(i) - e(i - 1)*y
+         du(i) = y
+      end do
+      du(n) = du(n)*dinv(n)
+      do i = n - 1, 1, -1
+         du(i) = du(i)*dinv(i) - e(i)*du(i + 1)
+      end do
+   end subroutine predict_kernel
+
+   !> Newmark update of u, v, a from du; C v at the new time; sum(m du) and du.(Cv_old + Cv_new);
+   !> the kinetic and strain energy at the new time.
+   !>
+   !> Each sum is kept in four partial sums, element i going to partial sum mod(i, 4), so that
+   !> the loops are not bound by the latency of one chain of additions. The loops run over
+   !> blocks of four consecutive elements with one accumulator per lane (lane l of a block
+   !> starting at i0 holds partial sum mod(i0 + l, 4)), which the compiler can vectorise.
+   pure subroutine commit_kernel(n, c1, c2, a0, a1, mass, kt, du, u, v, a, cv, mdu, ddamp, ek, es)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: c1, c2, a0, a1, mass(n), kt(2, n), du(n)
+      real(dp), intent(inout) :: u(n), v(n), a(n), cv(n)
+      real(dp), intent(out) :: mdu, ddamp, ek, es
+      real(dp) :: cvi, sm(0:3), sd(0:3), sk(0:3), ss(0:3)
+      integer :: i, i0, l, last
+
+      ! Lanes of blocks starting at i0 = 1, 5, 9, ...: lane l holds partial sum mod(l + 1, 4).
+      sm = 0.0_dp
+      sk = 0.0_dp
+      do i0 = 1, n - 3, 4
+         do l = 0, 3
+            i = i0 + l
+            call update_floor(c1, c2, mass(i), du(i), u(i), v(i), a(i), sm(l), sk(l))
+         end do
+      end do
+      do i = 4*(n/4) + 1, n
+         l = i - 4*(n/4) - 1
+         call update_floor(c1, c2, mass(i), du(i), u(i), v(i), a(i), sm(l), sk(l))
+      end do
+      ! Partial sums 0, 1, 2, 3 are lanes 3, 0, 1, 2.
+      mdu = (sm(3) + sm(0)) + (sm(1) + sm(2))
+      ek = 0.5_dp*((sk(3) + sk(0)) + (sk(1) + sk(2)))
+      ! C v = a0 M v + a1 (K+G) v; (K+G) tridiagonal with kt(1, i) = (K+G)(i-1, i).
+      if (n == 1) then
+         cvi = (a0*mass(1) + a1*kt(2, 1))*v(1)
+         ddamp = du(1)*(cv(1) + cvi)
+         cv(1) = cvi
+         es = 0.5_dp*kt(2, 1)*u(1)*u(1)
+         return
+      end if
+      ! Strain energy sum_j s_j drift_j^2 / 2 with the net storey stiffness s_j = -kt(1, j)
+      ! (j >= 2) and s_1 = kt(2, 1) + kt(1, 2). Element 1 is partial sum 1, elements
+      ! 2..n-1 run in blocks starting at i0 = 2, 6, ... (lane l: partial sum mod(l + 2, 4)),
+      ! element n (and the rest of 2..n-1) one by one.
+      sd = 0.0_dp
+      ss = 0.0_dp
+      cvi = a0*mass(1)*v(1) + a1*(kt(2, 1)*v(1) + kt(1, 2)*v(2))
+      sd(3) = du(1)*(cv(1) + cvi)
+      ss(3) = -(kt(2, 1) + kt(1, 2))*u(1)*u(1)
+      cv(1) = cvi
+      last = n - 1
+      do i0 = 2, last - 3, 4
+         do l = 0, 3
+            i = i0 + l
+            call damp_floor(a0, a1, mass(i), kt(:, i), kt(1, i + 1), v(i - 1:i + 1), u(i - 1:i), du(i), &
+                            cv(i), sd(l), ss(l))
+         end do
+      end do
+      do i = 2 + 4*((last - 1)/4), last
+         l = i - 2 - 4*((last - 1)/4)
+         call damp_floor(a0, a1, mass(i), kt(:, i), kt(1, i + 1), v(i - 1:i + 1), u(i - 1:i), du(i), &
+                         cv(i), sd(l), ss(l))
+      end do
+      cvi = a0*mass(n)*v(n) + a1*(kt(1, n)*v(n - 1) + kt(2, n)*v(n))
+      l = iand(n + 2, 3)
+      sd(l) = sd(l) + du(n)*(cv(n) + cvi)
+      ss(l) = ss(l) + kt(1, n)*(u(n) - u(n - 1))**2
+      cv(n) = cvi
+      ! Partial sums 0, 1, 2, 3 are lanes 2, 3, 0, 1.
+      ddamp = (sd(2) + sd(3)) + (sd(0) + sd(1))
+      es = -0.5_dp*((ss(2) + ss(3)) + (ss(0) + ss(1)))
+   end subroutine commit_kernel
+
+   !> Newmark update of one floor; its terms of sum(m du) and of 2 E_kinetic.
+   pure subroutine update_floor(c1, c2, mass, du, u, v, a, sm, sk)
+      real(dp), intent(in) :: c1, c2, mass, du
+      real(dp), intent(inout) :: u, v, a, sm, sk
+
+      a = c1*du - 2.0_dp*c2*v - a
+      v = c2*du - v
+      u = u + du
+      sm = sm + mass*du
+      sk = sk + mass*v*v
+   end subroutine update_floor
+
+   !> C v of an inner floor i (kt_i = kt(:, i), kt_up = kt(1, i+1), v3 = v(i-1:i+1),
+   !> u2 = u(i-1:i)); its terms of du.(Cv_old + Cv_new) and of -2 E_strain.
+   pure subroutine damp_floor(a0, a1, mass, kt_i, kt_up, v3, u2, du, cv, sd, ss)
+      real(dp), intent(in) :: a0, a1, mass, kt_i(2), kt_up, v3(3), u2(2), du
+      real(dp), intent(inout) :: cv, sd, ss
+      real(dp) :: cvi
+
+      cvi = a0*mass*v3(2) + a1*(kt_i(1)*v3(1) + kt_i(2)*v3(2) + kt_up*v3(3))
+      sd = sd + du*(cv + cvi)
+      ss = ss + kt_i(1)*(u2(2) - u2(1))**2
+      cv = cvi
+   end subroutine damp_floor
+
+end module pound_newmark_kernels
