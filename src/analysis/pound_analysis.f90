@@ -31,7 +31,8 @@ module pound_analysis
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
                             newmark_energies, newmark_n, en_input, en_kinetic, en_strain, en_damping
    use pound_response, only: response_record, response_init, response_sample, response_finish
-   use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit
+   use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
+                            joint_history, joint_history_init, joint_history_record
    implicit none
    private
 
@@ -69,12 +70,9 @@ module pound_analysis
       !> Warnings for the user (e.g. a large audit residual and its likely cause), one per
       !> element (trailing blanks not significant); size 0 when there are none.
       character(len=:), allocatable :: warnings(:)
-      !> Contact force, closing displacement, joint compression (penetration) and plastic
-      !> penetration histories (n_pairs, n_out); coupled only.
-      real(dp), allocatable :: contact_force(:, :), contact_closing(:, :)
-      real(dp), allocatable :: contact_penetration(:, :), contact_plastic(:, :)
-      !> Joint state history (n_pairs, n_out): see `pound_contact` (state_open, ...).
-      integer, allocatable :: contact_state(:, :)
+      !> Joint histories (force, closing displacement, compression, plastic penetration,
+      !> state; n_pairs x n_out); allocated in the coupled analysis only.
+      type(joint_history) :: joints
       !> Wall-clock time of the time-step loops (s; set-up and output excluded), and the part
       !> of it spent on contact
       !> (forming and solving the step's LCP, applying and committing the forces).
@@ -90,6 +88,11 @@ module pound_analysis
       !> Contact system at t = 0.
       type(contact_system) :: cs
    end type coupled_model
+
+   !> The integrator's u, v, a of one building, taken once before the time loop.
+   type :: state_view
+      real(dp), pointer, contiguous :: u(:) => null(), v(:) => null(), a(:) => null()
+   end type state_view
 
 contains
 
@@ -212,11 +215,6 @@ contains
       if (present(gaps)) cs%pair(:)%gap = gaps
       call start_result(res, cfg, size(ag) - 1, nb, error, cs%m)
       if (allocated(error)) return
-      res%contact_force(:, 1) = 0.0_dp
-      res%contact_closing(:, 1) = 0.0_dp
-      res%contact_penetration(:, 1) = 0.0_dp
-      res%contact_plastic(:, 1) = 0.0_dp
-      res%contact_state(:, 1) = 0
       call integrate(cfg, models, ag, st, cs, res, error)
    end subroutine coupled_integrate
 
@@ -243,19 +241,24 @@ contains
       type(analysis_result), intent(inout) :: res
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: ib, step, k, every, nb, ip
+      integer :: ib, step, k, every, nb
       integer(int64) :: c0, c1, rate, ca, cb, c_contact
-      real(dp) :: t, sample(n_energy), resid, scale, e(4)
-      logical :: out, coupled
+      real(dp) :: t, sample(n_energy), resid, scale, e(4), win, eout
+      type(state_view), allocatable :: view(:)
+      logical :: out, coupled, finite
 
       nb = size(models)
+      allocate (view(nb))
       coupled = cs%m > 0
       every = cfg%output_every
       do ib = 1, nb
          call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out, error)
          if (allocated(error)) return
-         call response_sample(res%building(ib), models(ib), newmark_u(st(ib)), newmark_v(st(ib)), &
-                              newmark_a(st(ib)), ag(0), 0.0_dp, .true.)
+         view(ib)%u => newmark_u(st(ib))
+         view(ib)%v => newmark_v(st(ib))
+         view(ib)%a => newmark_a(st(ib))
+         call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, ag(0), &
+                              0.0_dp, .true.)
       end do
       k = 1
       resid = 0.0_dp
@@ -281,8 +284,8 @@ contains
          out = mod(step, every) == 0
          do ib = 1, nb
             call newmark_commit(st(ib), models(ib), ag(step - 1), ag(step))
-            call response_sample(res%building(ib), models(ib), newmark_u(st(ib)), newmark_v(st(ib)), &
-                                 newmark_a(st(ib)), ag(step), t, out)
+            call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
+                                 ag(step), t, out)
          end do
          if (coupled) then
             call step_energy(st, sample)
@@ -293,11 +296,12 @@ contains
             sample(e_contact) = cs%element_work - cs%plastic_work
             sample(e_plastic) = cs%plastic_work
          else
-            sample = 0.0_dp
+            win = 0.0_dp
+            eout = 0.0_dp
             do ib = 1, nb
                e = newmark_energies(st(ib))
-               sample(e_input) = sample(e_input) + e(en_input)
-               sample(e_kinetic) = sample(e_kinetic) + ((e(en_kinetic) + e(en_strain)) + e(en_damping))
+               win = win + e(en_input)
+               eout = eout + ((e(en_kinetic) + e(en_strain)) + e(en_damping))
             end do
          end if
          if (out) then
@@ -308,23 +312,27 @@ contains
             if (coupled) then
                res%energy(e_contact, k) = cs%element_work - cs%plastic_work
                res%energy(e_plastic, k) = cs%plastic_work
-               do ip = 1, cs%m
-                  res%contact_force(ip, k) = cs%pair(ip)%r
-                  res%contact_closing(ip, k) = cs%pair(ip)%v
-                  res%contact_penetration(ip, k) = cs%pair(ip)%d
-                  res%contact_plastic(ip, k) = cs%pair(ip)%plastic
-                  res%contact_state(ip, k) = cs%pair(ip)%state
-               end do
+               call joint_history_record(res%joints, k, cs)
             end if
             sample = res%energy(:, k)
          end if
+         if (coupled .or. out) then
+            win = sample(e_input)
+            eout = sum(sample(e_kinetic:n_energy))
+         end if
          ! One test per step: every value of the state feeds these sums.
-         if (.not. (abs(sum(sample) + cs%work) <= huge(1.0_dp))) then
+         if (coupled) then
+            finite = abs(sum(sample) + cs%work) <= huge(1.0_dp)
+         else
+            finite = abs(win + eout) <= huge(1.0_dp)
+         end if
+         if (.not. finite) then
             if (.not. coupled) call step_energy(st, sample)
             call state_failure(st, models, cs, sample, ag, cfg%dt, step, error)
             return
          end if
-         call audit(sample, resid, scale)
+         resid = max(resid, abs(win - eout))
+         scale = max(scale, abs(win), eout)
       end do
       call system_clock(c1)
       res%seconds = real(c1 - c0, dp)/real(rate, dp)
@@ -367,10 +375,7 @@ contains
       if (present(n_pairs)) m = n_pairs
       allocate (character(len=1) :: res%warnings(0))
       allocate (res%time(n), res%building(n_buildings), res%energy(n_energy, n), stat=stat)
-      if (stat == 0 .and. present(n_pairs)) then
-         allocate (res%contact_force(m, n), res%contact_closing(m, n), res%contact_penetration(m, n), &
-                   res%contact_plastic(m, n), res%contact_state(m, n), stat=stat)
-      end if
+      if (stat == 0 .and. present(n_pairs)) call joint_history_init(res%joints, m, n, stat)
       if (stat /= 0) then
          call fatal_error(error, 'cannot allocate the time, energy and contact histories: '// &
                           str(n)//' output samples x '//str(1 + n_energy + 5*m)//' values = '// &
@@ -420,18 +425,6 @@ contains
          sample(e_damping) = sample(e_damping) + e(en_damping)
       end do
    end subroutine step_energy
-
-   !> Take one step's energies into the audit: the largest residual
-   !> |W_in - E_k - E_s - E_d - E_c - E_p| and the largest scale max(|W_in|, E_k + ... + E_p).
-   pure subroutine audit(sample, resid, scale)
-      !> Energies (n_energy) at the end of the step.
-      real(dp), intent(in) :: sample(:)
-      !> Largest residual and scale so far.
-      real(dp), intent(inout) :: resid, scale
-
-      resid = max(resid, abs(sample(e_input) - sum(sample(e_kinetic:n_energy))))
-      scale = max(scale, abs(sample(e_input)), sum(sample(e_kinetic:n_energy)))
-   end subroutine audit
 
    !> Relative energy balance error max_t |residual| / max_t scale (0 when nothing moved).
    pure real(dp) function audit_error(resid, scale) result(err)

@@ -71,6 +71,7 @@ module pound_contact
    public :: contact_step, contact_solve, contact_commit, contact_update
    public :: residual_limit, fallback_max_rows, initial_hinges, pairs_from_config
    public :: state_open, state_elastic, state_fractured
+   public :: joint_history, joint_history_init, joint_history_record
 
    !> Largest accepted natural residual of a step's LCP, relative to ||q||.
    real(dp), parameter :: residual_limit = 1.0e-10_dp
@@ -121,6 +122,16 @@ module pound_contact
       !> Largest compression d reached (m).
       real(dp) :: peak_penetration = 0.0_dp
    end type contact_pair
+
+   !> Histories of every joint at the output samples, (n_pairs, n_out) each: what a
+   !> result holds of the joints (filled by `joint_history_record`, not field by field).
+   type :: joint_history
+      !> Contact force r (kN), closing displacement v (m), joint compression d (m) and
+      !> plastic penetration d_p (m).
+      real(dp), allocatable :: force(:, :), closing(:, :), penetration(:, :), plastic(:, :)
+      !> Joint state (`state_open`, `state_elastic`, `state_fractured` or the yield segment).
+      integer, allocatable :: state(:, :)
+   end type joint_history
 
    !> A step whose LCP Lemke could not solve, and what was done.
    type :: contact_event
@@ -860,6 +871,49 @@ contains
          end associate
       end do
    end subroutine contact_update
+
+   !> Histories for `m` joints and `n` output samples, the first sample (t = 0) at rest and
+   !> open. `stat` /= 0 when the memory cannot be had (nothing is kept then).
+   pure subroutine joint_history_init(h, m, n, stat)
+      !> The histories.
+      type(joint_history), intent(out) :: h
+      !> Number of joints and of output samples.
+      integer, intent(in) :: m, n
+      !> Allocation status.
+      integer, intent(out) :: stat
+
+      allocate (h%force(m, n), h%closing(m, n), h%penetration(m, n), h%plastic(m, n), h%state(m, n), &
+                stat=stat)
+      if (stat /= 0) then
+         h = joint_history()
+         return
+      end if
+      if (n < 1) return
+      h%force(:, 1) = 0.0_dp
+      h%closing(:, 1) = 0.0_dp
+      h%penetration(:, 1) = 0.0_dp
+      h%plastic(:, 1) = 0.0_dp
+      h%state(:, 1) = state_open
+   end subroutine joint_history_init
+
+   !> Store the joints' state as output sample k.
+   pure subroutine joint_history_record(h, k, cs)
+      !> The histories.
+      type(joint_history), intent(inout) :: h
+      !> Output sample.
+      integer, intent(in) :: k
+      !> The contact system after the step.
+      type(contact_system), intent(in) :: cs
+      integer :: ip
+
+      do ip = 1, cs%m
+         h%force(ip, k) = cs%pair(ip)%r
+         h%closing(ip, k) = cs%pair(ip)%v
+         h%penetration(ip, k) = cs%pair(ip)%d
+         h%plastic(ip, k) = cs%pair(ip)%plastic
+         h%state(ip, k) = cs%pair(ip)%state
+      end do
+   end subroutine joint_history_record
 
    !> Labels of the listed constraints, comma separated.
    function labels(cs, idx) result(s)

@@ -218,15 +218,15 @@ contains
          character(len=16), allocatable :: laws(:)
          integer :: k, ne
 
-         call h5_write(h5, c//'/force', cpl%contact_force, error)
+         call h5_write(h5, c//'/force', cpl%joints%force, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/closing', cpl%contact_closing, error)
+         call h5_write(h5, c//'/closing', cpl%joints%closing, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/penetration', cpl%contact_penetration, error)
+         call h5_write(h5, c//'/penetration', cpl%joints%penetration, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/plastic', cpl%contact_plastic, error)
+         call h5_write(h5, c//'/plastic', cpl%joints%plastic, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/state', cpl%contact_state, error)
+         call h5_write(h5, c//'/state', cpl%joints%state, error)
          if (allocated(error)) return
          call h5_write_attr(h5, c//'/state', 'codes', '0 open, -1 closed elastic, -2 fractured, '// &
                             'k > 0 yielding on yield segment k of the law', error)
