@@ -54,6 +54,7 @@ module pound_h5
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
+   use pound_posix, only: posix_errno, posix_set_errno, posix_strerror
    implicit none
    private
 
@@ -159,12 +160,12 @@ contains
       if (allocated(error)) return
       call file_access_list(path, fapl, error)
       if (allocated(error)) return
+      call posix_set_errno(0)
       call h5fcreate_f(path, H5F_ACC_TRUNC_F, file%id, hdferr, access_prp=fapl)
       call h5pclose_f(fapl, ignore)
       if (hdferr /= 0) then
          file%id = -1_hid_t
-         call fatal_error(error, "cannot create HDF5 file '"//path// &
-                          "': h5fcreate_f failed (missing directory or no write permission?)")
+         call fatal_error(error, "cannot create HDF5 file '"//path//"': h5fcreate_f failed"//system_reason())
          return
       end if
       file%name = path
@@ -217,7 +218,8 @@ contains
       file%id = -1_hid_t
       file%writable = .false.
       if (hdferr /= 0) then
-         call fatal_error(error, "cannot close HDF5 file '"//file_name(file)//"': h5fclose_f failed")
+         call fatal_error(error, "cannot close HDF5 file '"//file_name(file)//"': h5fclose_f failed"// &
+                          system_reason())
       end if
    end subroutine h5_close
 
@@ -1495,8 +1497,21 @@ contains
       character(len=*), intent(in) :: action, what, path, detail
 
       call fatal_error(error, "HDF5 file '"//file_name(file)//"': cannot "//action//" "//what// &
-                       " '"//path//"': "//detail)
+                       " '"//path//"': "//detail//system_reason())
    end subroutine fail
+
+   !> ': <strerror>' when errno holds a storage or permission failure (no space, quota,
+   !> file too large, permission, read-only file system, I/O error), '' otherwise: HDF5
+   !> reports a failed write only as a failed call, the system's reason is in errno.
+   function system_reason() result(text)
+      character(len=:), allocatable :: text
+      integer, parameter :: storage_errors(7) = [1, 5, 13, 27, 28, 30, 122]
+      integer :: e
+
+      e = posix_errno()
+      text = ''
+      if (any(storage_errors == e)) text = ': '//posix_strerror(e)
+   end function system_reason
 
    !> File name of a handle, for messages.
    pure function file_name(file) result(name)
