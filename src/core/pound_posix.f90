@@ -11,11 +11,11 @@ module pound_posix
    implicit none
    private
 
-   public :: posix_errno, posix_set_errno, posix_strerror, posix_getpid
+   public :: posix_errno, posix_set_errno, posix_strerror, posix_getpid, posix_storage_error
    public :: posix_rename, posix_unlink, posix_mkdir, posix_file_id, posix_is_directory
    public :: posix_lock_directory, posix_unlock_directory, posix_exit_now
    public :: posix_ignore_signal, posix_set_handler, posix_std_fd_open, posix_reserve_fd
-   public :: posix_address_space_limit, posix_unlink_c, posix_write_stderr_c, posix_write
+   public :: posix_address_space_limit, posix_unlink_c, posix_write_stderr_c, posix_write, posix_sleep
    public :: sig_int, sig_term, sig_xfsz, errno_enoent, errno_eexist, errno_eintr
 
    !> Signal numbers (Linux).
@@ -138,6 +138,12 @@ module pound_posix
          integer(c_intptr_t) :: written
       end function c_write
 
+      function c_sleep(seconds) bind(C, name='sleep') result(left)
+         import :: c_int
+         integer(c_int), value :: seconds
+         integer(c_int) :: left
+      end function c_sleep
+
       function c_getrlimit(resource, rlim) bind(C, name='getrlimit') result(stat)
          import :: c_int, c_int64_t
          integer(c_int), value :: resource
@@ -188,6 +194,19 @@ contains
          text(i:i) = chars(i)
       end do
    end function posix_strerror
+
+   !> strerror(errno) when errno holds a storage or permission failure (EPERM, EIO, EACCES,
+   !> EFBIG, ENOSPC, EROFS, EDQUOT), '' otherwise: for libraries that report a failed write
+   !> only as a failed call.
+   function posix_storage_error() result(text)
+      character(len=:), allocatable :: text
+      integer, parameter :: storage_errors(7) = [1, 5, 13, 27, 28, 30, 122]
+      integer :: e
+
+      e = posix_errno()
+      text = ''
+      if (any(storage_errors == e)) text = posix_strerror(e)
+   end function posix_storage_error
 
    !> Process id.
    function posix_getpid() result(pid)
@@ -261,6 +280,15 @@ contains
          done = done + n
       end do
    end function posix_write
+
+   !> Sleep `seconds` (a signal may end the sleep early).
+   subroutine posix_sleep(seconds)
+      !> Whole seconds.
+      integer, intent(in) :: seconds
+      integer(c_int) :: left
+
+      left = c_sleep(int(seconds, c_int))
+   end subroutine posix_sleep
 
    !> mkdir(2) with mode 0777 (less the umask): 0 on success, else errno.
    function posix_mkdir(path) result(e)

@@ -22,13 +22,14 @@ program pound
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
                             write_contact_summary, write_influence_tables, write_sweep_table, &
-                            listing_io_error
+                            open_listing, close_listing
    use pound_sweep, only: sweep_result, run_sweep
    use pound_results_h5, only: write_results_h5
    use pound_files, only: output_set, plan_outputs, publish_outputs, discard_outputs, &
                           install_signal_cleanup
    use pound_memory, only: estimate_memory, memory_available, memory_refusal
-   use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror
+   use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror, &
+                          posix_sleep
    use pound_strings, only: str
    implicit none
 
@@ -111,6 +112,7 @@ program pound
    ! Outputs: this run's temporaries first, published together when both are complete.
    call write_listing(outputs%listing_tmp, error)
    call check(error)
+   call test_pause()
    if (deck%sweep%active) then
       call write_results_h5(outputs%h5_tmp, deck, models, trim(ground_text(1)), ag_out, unc, error, &
                             cpl, cs, sweep)
@@ -136,8 +138,9 @@ contains
       call stop_with(err%message, 1)
    end subroutine check
 
-   !> Write `message` to standard error and end the process with `status`. Exit handlers
-   !> (HDF5's among them) are not run: after a failed write they have nothing left to do.
+   !> Write `message` to standard error and end the process with `status` by _exit, after
+   !> flushing the standard units. Exit handlers are not run: they have nothing left to do,
+   !> and HDF5's would crash on a dataset whose close failed when the disk filled up.
    subroutine stop_with(message, status)
       character(len=*), intent(in) :: message
       integer, intent(in) :: status
@@ -172,14 +175,10 @@ contains
    subroutine write_listing(path, err)
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: err
-      character(len=512) :: msg
       integer :: u, ios
 
-      open (newunit=u, file=path, status='replace', action='write', iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call fatal_error(err, 'cannot write the listing '//path//': '//trim(msg))
-         return
-      end if
+      call open_listing(path, u, err)
+      if (allocated(err)) return
       call write_listing_header(u, deck, ground_text)
       call write_model_summary(u, models)
       call write_peak_tables(u, 'Uncoupled', models, unc)
@@ -192,13 +191,7 @@ contains
       write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', unc%seconds, ' s'
       if (coupled .and. ios == 0) write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) '  coupled integration:   ', &
          cpl%seconds, ' s, of which contact (LCP) ', cpl%contact_seconds, ' s'
-      call listing_io_error(path, err)
-      if (allocated(err)) then
-         close (u, iostat=ios)
-         return
-      end if
-      close (u, iostat=ios, iomsg=msg)
-      if (ios /= 0) call fatal_error(err, 'cannot write the listing '//path//': '//trim(msg))
+      call close_listing(u, path, err)
    end subroutine write_listing
 
    !> The summary on standard output, written unbuffered: a failed write (standard output
@@ -243,6 +236,19 @@ contains
       if (e /= 0) call stop_with('cannot write the summary to standard output: '//posix_strerror(e)// &
                                  ' (the results were written to '//outputs%listing//' and '//outputs%h5//')', 1)
    end subroutine write_summary
+
+   !> Test hook: with POUND_TEST_PAUSE_WRITING=<seconds> in the environment, the run sleeps
+   !> after its listing is written and before its HDF5 file is (so that a test can signal
+   !> it while it writes).
+   subroutine test_pause()
+      character(len=16) :: value
+      integer :: seconds, stat
+
+      call get_environment_variable('POUND_TEST_PAUSE_WRITING', value, status=stat)
+      if (stat /= 0) return
+      read (value, *, iostat=stat) seconds
+      if (stat == 0 .and. seconds > 0) call posix_sleep(seconds)
+   end subroutine test_pause
 
    !> Keep closed standard descriptors (0, 1, 2) from being reused by the run's files: they
    !> are occupied by /dev/null, and a closed standard output is remembered as a failure.

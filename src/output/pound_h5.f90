@@ -54,7 +54,7 @@ module pound_h5
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_posix, only: posix_errno, posix_set_errno, posix_strerror
+   use pound_posix, only: posix_set_errno, posix_storage_error
    implicit none
    private
 
@@ -1500,17 +1500,13 @@ contains
                        " '"//path//"': "//detail//system_reason())
    end subroutine fail
 
-   !> ': <strerror>' when errno holds a storage or permission failure (no space, quota,
-   !> file too large, permission, read-only file system, I/O error), '' otherwise: HDF5
+   !> ': <strerror>' when errno holds a storage or permission failure, '' otherwise: HDF5
    !> reports a failed write only as a failed call, the system's reason is in errno.
    function system_reason() result(text)
       character(len=:), allocatable :: text
-      integer, parameter :: storage_errors(7) = [1, 5, 13, 27, 28, 30, 122]
-      integer :: e
 
-      e = posix_errno()
-      text = ''
-      if (any(storage_errors == e)) text = ': '//posix_strerror(e)
+      text = posix_storage_error()
+      if (len(text) > 0) text = ': '//text
    end function system_reason
 
    !> File name of a handle, for messages.

@@ -4,7 +4,9 @@
 !> and reported by `listing_io_error`, which the caller asks after the last write.
 module pound_listing
    use pound_kinds, only: dp
+   use, intrinsic :: iso_fortran_env, only: int64
    use pound_error, only: error_type, fatal_error
+   use pound_posix, only: posix_set_errno, posix_storage_error
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_shear_building, only: shear_building
@@ -22,7 +24,7 @@ module pound_listing
 
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
    public :: write_contact_summary, write_influence_tables, write_sweep_table
-   public :: listing_io_error
+   public :: listing_io_error, open_listing, close_listing
 
    !> Modes listed in the model summary (all are in the HDF5 file).
    integer, parameter :: max_listed_modes = 12
@@ -48,6 +50,57 @@ contains
       first_msg = ''
       ios = 0
    end subroutine listing_io_error
+
+   !> Open `path` (created or truncated) for the listing, as a formatted stream so that
+   !> `close_listing` can check that every byte reached the file.
+   subroutine open_listing(path, u, error)
+      !> File.
+      character(len=*), intent(in) :: path
+      !> Unit opened.
+      integer, intent(out) :: u
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      first_ios = 0
+      ios = 0
+      call posix_set_errno(0)
+      open (newunit=u, file=path, status='replace', action='write', access='stream', form='formatted', &
+            iostat=ios, iomsg=msg)
+      if (ios /= 0) call fatal_error(error, 'cannot write the listing '//path//': '//trim(msg))
+   end subroutine open_listing
+
+   !> Close the listing and check it: a failed write, or a file shorter than what was
+   !> written (the Fortran run-time can drop a buffer the system refused: no space, file
+   !> too large), is an error naming the system's reason.
+   subroutine close_listing(u, path, error)
+      !> Unit of `open_listing`.
+      integer, intent(in) :: u
+      !> Its file.
+      character(len=*), intent(in) :: path
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      integer(int64) :: written, size_on_disk
+      character(len=:), allocatable :: reason
+      character(len=80) :: counts
+
+      call listing_io_error(path, error)
+      inquire (unit=u, pos=written, iostat=stat)
+      if (stat /= 0) written = -1
+      close (u, iostat=ios, iomsg=msg)
+      if (allocated(error)) return
+      if (ios /= 0) then
+         call fatal_error(error, 'cannot write the listing '//path//': '//trim(msg))
+         return
+      end if
+      inquire (file=path, size=size_on_disk, iostat=stat)
+      if (stat /= 0 .or. written < 1 .or. size_on_disk /= written - 1) then
+         reason = posix_storage_error()
+         if (len(reason) == 0) reason = 'the file system did not take every byte'
+         write (counts, '(a,i0,a,i0,a)') ' (the file holds ', size_on_disk, ' of ', written - 1, ' bytes)'
+         call fatal_error(error, 'cannot write the listing '//path//': '//reason//trim(counts))
+      end if
+   end subroutine close_listing
 
    !> Keep the first failed write.
    subroutine note_io()
