@@ -34,7 +34,7 @@ pound_setup() {
 pound_build() {
   local type="$1" dir="$POUND_ROOT/build/${1,,}"
   if [ ! -f "$dir/CMakeCache.txt" ]; then
-    cmake -S "$POUND_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE="$type" >/dev/null || return 1
+    cmake -S "$POUND_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE="$type" -DPOUND_NATIVE=ON >/dev/null || return 1
   fi
   cmake --build "$dir" -j "$(nproc)" -- --no-print-directory >"$dir/build.log" 2>&1 || {
     cat "$dir/build.log" >&2

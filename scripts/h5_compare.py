@@ -1,0 +1,81 @@
+#!/usr/bin/env python3
+"""Compare two pound HDF5 files dataset by dataset, bit for bit.
+
+    scripts/h5_compare A.h5 B.h5 [--ignore-attr NAME ...]
+
+Every group, dataset and attribute of either file must exist in the other with the same
+shape, type and bytes (NaN compares equal to NaN at the same place). Attributes that carry
+the run's date or wall-clock timings (names ending in "seconds") are ignored. Exit 0 when identical, 1 with one line per
+difference otherwise, 2 on a usage error or an unreadable file.
+"""
+import sys
+
+import h5py
+import numpy as np
+
+DEFAULT_IGNORED = {"date", "created"}
+# Wall-clock timings differ between runs by nature.
+TIMING_SUFFIX = "seconds"
+
+
+def walk(f):
+    out = {}
+
+    def visit(name, obj):
+        out[name] = obj
+
+    f.visititems(visit)
+    out["/"] = f
+    return out
+
+
+def same(a, b):
+    a, b = np.ascontiguousarray(a), np.ascontiguousarray(b)
+    if a.shape != b.shape or a.dtype != b.dtype:
+        return False
+    if a.dtype.kind in "fc":
+        return a.tobytes() == b.tobytes()
+    return bool(np.array_equal(a, b))
+
+
+def main(argv):
+    args = [a for a in argv if not a.startswith("--")]
+    ignored = set(DEFAULT_IGNORED)
+    for i, a in enumerate(argv):
+        if a == "--ignore-attr" and i + 1 < len(argv):
+            ignored.add(argv[i + 1])
+            args.remove(argv[i + 1])
+    if len(args) != 2:
+        print(__doc__.strip().splitlines()[2].strip(), file=sys.stderr)
+        return 2
+    try:
+        fa, fb = h5py.File(args[0], "r"), h5py.File(args[1], "r")
+    except OSError as e:
+        print(f"h5_compare: error: {e}", file=sys.stderr)
+        return 2
+    ia, ib = walk(fa), walk(fb)
+    diffs = []
+    for name in sorted(set(ia) | set(ib)):
+        if name not in ia or name not in ib:
+            diffs.append(f"{name}: only in {args[0] if name in ia else args[1]}")
+            continue
+        oa, ob = ia[name], ib[name]
+        if isinstance(oa, h5py.Dataset) != isinstance(ob, h5py.Dataset):
+            diffs.append(f"{name}: group in one file, dataset in the other")
+            continue
+        if isinstance(oa, h5py.Dataset) and not same(oa[()], ob[()]):
+            diffs.append(f"{name}: data differ")
+        for k in sorted(set(oa.attrs) | set(ob.attrs)):
+            if k in ignored or k.endswith(TIMING_SUFFIX):
+                continue
+            if k not in oa.attrs or k not in ob.attrs:
+                diffs.append(f"{name}@{k}: attribute in one file only")
+            elif not same(oa.attrs[k], ob.attrs[k]):
+                diffs.append(f"{name}@{k}: attribute differs")
+    for d in diffs:
+        print(d)
+    return 1 if diffs else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
