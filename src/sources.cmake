@@ -1,8 +1,8 @@
 # The library's sources, by step (paths relative to src/). The program is src/main/pound.f90.
 set(POUND_SOURCES
-  # core: kinds, errors, strings, whole-file reading, version
+  # core: kinds, errors, strings, whole-file reading, version, POSIX calls
   core/pound_kinds.f90 core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
-  core/pound_version.f90
+  core/pound_version.f90 core/pound_posix.f90
   # deck: configuration types, namelist reader, accelerogram files
   deck/pound_config.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
@@ -14,7 +14,7 @@ set(POUND_SOURCES
   contact/pound_lcp_enumerate.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_influence.f90
-  analysis/pound_sweep.f90
+  analysis/pound_sweep.f90 analysis/pound_memory.f90
   # outputs: files, HDF5 layer, results file, listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
 )

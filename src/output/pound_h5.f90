@@ -24,9 +24,12 @@
 !>
 !> Every HDF5 return code is checked; a failure comes back as an `error_type` naming the
 !> file, the object and the HDF5 call. HDF5's automatic error-stack printing is switched
-!> off, so a failure is reported once, by the caller. The library is initialised on the
-!> first `h5_create`/`h5_open` (with floating-point traps held off during `h5open_f`) and
-!> shut down by HDF5 itself at program exit.
+!> off, so a failure is reported once, by the caller; a failure that comes from the system
+!> (no space left, file too large, no permission) carries its reason from errno. The library
+!> is initialised on the first `h5_create`/`h5_open` (with floating-point traps held off
+!> during `h5open_f`) and shut down by HDF5 itself at program exit. After a write failed
+!> because the disk filled up, HDF5 1.10's exit handler can crash on the dataset whose close
+!> failed: the program should then end with `_exit` (as pound does).
 module pound_h5
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_f_pointer, &
                                           c_size_t, c_int, c_int64_t, c_long_long, c_null_ptr, &
@@ -54,7 +57,7 @@ module pound_h5
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_posix, only: posix_set_errno, posix_storage_error
+   use pound_posix, only: posix_errno, posix_set_errno, posix_strerror, posix_storage_error
    implicit none
    private
 
@@ -165,7 +168,7 @@ contains
       call h5pclose_f(fapl, ignore)
       if (hdferr /= 0) then
          file%id = -1_hid_t
-         call fatal_error(error, "cannot create HDF5 file '"//path//"': h5fcreate_f failed"//system_reason())
+         call fatal_error(error, "cannot create HDF5 file '"//path//"': h5fcreate_f failed"//create_reason())
          return
       end if
       file%name = path
@@ -506,8 +509,10 @@ contains
       if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .true., error)
       if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
       if (.not. allocated(error)) then
-         allocate (values(dims(1)))
-         if (size(values) > 0) then
+         allocate (values(dims(1)), stat=hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', 'dataset', p, no_memory(product(dims)))
+         else if (size(values) > 0) then
             call h5dread_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
             if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
          end if
@@ -534,8 +539,10 @@ contains
       if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .true., error)
       if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
       if (.not. allocated(error)) then
-         allocate (values(dims(1), dims(2)))
-         if (size(values) > 0) then
+         allocate (values(dims(1), dims(2)), stat=hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', 'dataset', p, no_memory(product(dims)))
+         else if (size(values) > 0) then
             call h5dread_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
             if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
          end if
@@ -562,8 +569,10 @@ contains
       if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .false., error)
       if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
       if (.not. allocated(error)) then
-         allocate (values(dims(1)))
-         if (size(values) > 0) then
+         allocate (values(dims(1)), stat=hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', 'dataset', p, no_memory(product(dims)))
+         else if (size(values) > 0) then
             call h5dread_f(ids%obj, H5T_NATIVE_INTEGER, values, dims, hdferr)
             if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
          end if
@@ -796,8 +805,10 @@ contains
       if (.not. allocated(error)) call check_class(ids, file, 'read', what, path, .true., error)
       if (.not. allocated(error)) call space_dims(ids%space, file, 'read', what, path, dims, error)
       if (.not. allocated(error)) then
-         allocate (value(dims(1)))
-         if (size(value) > 0) then
+         allocate (value(dims(1)), stat=hdferr)
+         if (hdferr /= 0) then
+            call fail(error, file, 'read', what, path, no_memory(product(dims)))
+         else if (size(value) > 0) then
             call h5aread_f(ids%attr, H5T_NATIVE_DOUBLE, value, dims, hdferr)
             if (hdferr /= 0) call fail(error, file, 'read', what, path, 'h5aread_f failed')
          end if
@@ -1500,6 +1511,14 @@ contains
                        " '"//path//"': "//detail//system_reason())
    end subroutine fail
 
+   !> ': <strerror>' for any errno left by a failed create (errno is cleared before it).
+   function create_reason() result(text)
+      character(len=:), allocatable :: text
+
+      text = ''
+      if (posix_errno() /= 0) text = ': '//posix_strerror(posix_errno())
+   end function create_reason
+
    !> ': <strerror>' when errno holds a storage or permission failure, '' otherwise: HDF5
    !> reports a failed write only as a failed call, the system's reason is in errno.
    function system_reason() result(text)
@@ -1508,6 +1527,16 @@ contains
       text = posix_storage_error()
       if (len(text) > 0) text = ': '//text
    end function system_reason
+
+   !> 'not enough memory for <n> values'.
+   pure function no_memory(n) result(text)
+      integer(hsize_t), intent(in) :: n
+      character(len=:), allocatable :: text
+      character(len=24) :: buf
+
+      write (buf, '(i0)') n
+      text = 'not enough memory for '//trim(buf)//' values'
+   end function no_memory
 
    !> File name of a handle, for messages.
    pure function file_name(file) result(name)
