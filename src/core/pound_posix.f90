@@ -16,10 +16,10 @@ module pound_posix
    public :: posix_lock_directory, posix_unlock_directory, posix_exit_now
    public :: posix_ignore_signal, posix_set_handler, posix_std_fd_open, posix_reserve_fd
    public :: posix_address_space_limit, posix_unlink_c, posix_write_stderr_c, posix_write, posix_sleep
-   public :: sig_int, sig_term, sig_xfsz, errno_enoent, errno_eexist, errno_eintr
+   public :: sig_int, sig_term, sig_xfsz, sig_pipe, errno_enoent, errno_eexist, errno_eintr
 
    !> Signal numbers (Linux).
-   integer, parameter :: sig_int = 2, sig_term = 15, sig_xfsz = 25
+   integer, parameter :: sig_int = 2, sig_pipe = 13, sig_term = 15, sig_xfsz = 25
    !> errno values used by the callers (Linux).
    integer, parameter :: errno_enoent = 2, errno_eintr = 4, errno_eexist = 17
 

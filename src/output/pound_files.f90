@@ -24,7 +24,7 @@ module pound_files
    use pound_posix, only: posix_rename, posix_unlink, posix_unlink_c, posix_mkdir, posix_file_id, &
                           posix_is_directory, posix_lock_directory, posix_unlock_directory, &
                           posix_exit_now, posix_strerror, posix_getpid, posix_set_handler, &
-                          posix_ignore_signal, posix_write_stderr_c, sig_int, sig_term, sig_xfsz, &
+                          posix_ignore_signal, posix_write_stderr_c, sig_int, sig_term, sig_xfsz, sig_pipe, &
                           errno_enoent, errno_eexist
    implicit none
    private
@@ -253,13 +253,15 @@ contains
 
    ! ------------------------------------------------------------------ signals
 
-   !> Ignore SIGXFSZ (a write beyond `ulimit -f` then fails with EFBIG and is reported) and
-   !> make SIGINT and SIGTERM remove this run's temporaries and exit with 128 + signal.
+   !> Ignore SIGXFSZ and SIGPIPE (a write beyond `ulimit -f` then fails with EFBIG, a write to
+   !> a pipe whose reader is gone with EPIPE, and both are reported) and make SIGINT and
+   !> SIGTERM remove this run's temporaries and exit with 128 + signal.
    subroutine install_signal_cleanup()
       type(c_funptr), volatile :: handler
 
       handler = c_funloc(on_signal)
       call posix_ignore_signal(sig_xfsz)
+      call posix_ignore_signal(sig_pipe)
       call posix_set_handler(sig_int, handler)
       call posix_set_handler(sig_term, handler)
    end subroutine install_signal_cleanup
