@@ -14,7 +14,9 @@
 !>
 !> So runs writing the same stem into one folder publish one after the other: the final
 !> pair always comes from one run (the last to publish), and a run either publishes both of
-!> its files or none and fails. SIGINT and SIGTERM remove the temporaries and end the run
+!> its files or none and fails. Where the file system offers no flock the renames are made
+!> without the lock: each run still publishes both or none, but two runs publishing at the
+!> same instant may then interleave. SIGINT and SIGTERM remove the temporaries and end the run
 !> with status 130 or 143; a signal that arrives during the renames is acted on after them.
 !> SIGKILL cannot be caught: it may leave `.<stem>.*.partial` files in the output folder.
 module pound_files
@@ -121,13 +123,9 @@ contains
       integer :: e
       logical :: had_previous
 
+      ! Without flock (some network file systems) the pair is still published as a pair,
+      ! only not serialised with other runs.
       call posix_lock_directory(set%dir, lock, e)
-      if (e /= 0) then
-         call fatal_error(error, 'cannot lock the output folder '//set%dir//' for publishing: '// &
-                          posix_strerror(e))
-         call discard_outputs(set)
-         return
-      end if
       critical = .true.
       call check_targets(set, error)
       if (.not. allocated(error)) then
