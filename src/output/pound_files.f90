@@ -240,8 +240,10 @@ contains
       integer :: i
       character(len=6) :: t
 
+      ! Clock ticks mixed by a multiplicative step that stays within 64 bits; uniqueness
+      ! comes from the pid and the exclusive creation, the tag only makes reuse unlikely.
       call system_clock(count)
-      x = abs(count*2654435761_c_int64_t + int(attempt, c_int64_t)*97_c_int64_t)
+      x = mod(abs(count), 2147483647_c_int64_t)*48271_c_int64_t + int(attempt, c_int64_t)*7919_c_int64_t
       do i = 1, len(t)
          t(i:i) = digits(mod(x, 36_c_int64_t) + 1:mod(x, 36_c_int64_t) + 1)
          x = x/36
