@@ -13,8 +13,9 @@
 !> - models and contact systems: a few hundred bytes per floor and per joint (banded
 !>   matrices), plus a fixed 64 MiB for the program, its libraries and HDF5.
 !>
-!> The memory available is the smallest of: MemAvailable of /proc/meminfo, the cgroup's
-!> memory limit less its current use (cgroup v2 memory.max, or v1 memory.limit_in_bytes),
+!> The memory available is the smallest of: MemAvailable of /proc/meminfo, the memory
+!> limit less the current use of the process's cgroup and of each of its ancestors
+!> (cgroup v2 memory.max, v1 memory.limit_in_bytes; the mount's root inside a container),
 !> and the address-space limit (RLIMIT_AS, `ulimit -v`) less the address space already in
 !> use (VmSize). A run may use `usable_fraction` (80 %) of it.
 module pound_memory
@@ -105,19 +106,10 @@ contains
       source = 'no limit found'
       call read_keyed_kib('/proc/meminfo', 'MemAvailable:', value, found)
       if (found) call lower(value, 'MemAvailable (/proc/meminfo)')
-      call read_number('/sys/fs/cgroup/memory.max', value, found)
-      if (found) then
-         call read_number('/sys/fs/cgroup/memory.current', used, found)
-         if (.not. found) used = 0.0_dp
-         call lower(value - used, 'the cgroup memory limit (memory.max)')
-      else
-         call read_number('/sys/fs/cgroup/memory/memory.limit_in_bytes', value, found)
-         if (found) then
-            call read_number('/sys/fs/cgroup/memory/memory.usage_in_bytes', used, found)
-            if (.not. found) used = 0.0_dp
-            call lower(value - used, 'the cgroup memory limit (memory.limit_in_bytes)')
-         end if
-      end if
+      call cgroup_limit('', '/sys/fs/cgroup', 'memory.max', 'memory.current', &
+                        'the cgroup memory limit (memory.max)')
+      call cgroup_limit('memory', '/sys/fs/cgroup/memory', 'memory.limit_in_bytes', 'memory.usage_in_bytes', &
+                        'the cgroup memory limit (memory.limit_in_bytes)')
       limit = posix_address_space_limit()
       if (limit >= 0) then
          call read_keyed_kib('/proc/self/status', 'VmSize:', used, found)
@@ -126,6 +118,30 @@ contains
       end if
 
    contains
+
+      !> The tightest limit less use of the process's cgroup and its ancestors (the group's
+      !> path from /proc/self/cgroup for controllers `controllers`, under `root`; the root
+      !> itself when the path is not visible, as inside a container).
+      subroutine cgroup_limit(controllers, root, limit_file, usage_file, name)
+         character(len=*), intent(in) :: controllers, root, limit_file, usage_file, name
+         character(len=:), allocatable :: group
+         real(dp) :: cap, use
+         logical :: has_cap, has_use
+         integer :: slash
+
+         group = cgroup_path(controllers)
+         do
+            call read_number(root//group//'/'//limit_file, cap, has_cap)
+            if (has_cap) then
+               call read_number(root//group//'/'//usage_file, use, has_use)
+               if (.not. has_use) use = 0.0_dp
+               call lower(cap - use, name)
+            end if
+            if (len(group) == 0) exit
+            slash = index(group, '/', back=.true.)
+            group = group(:max(slash - 1, 0))
+         end do
+      end subroutine cgroup_limit
 
       subroutine lower(candidate, name)
          real(dp), intent(in) :: candidate
@@ -251,6 +267,32 @@ contains
       label = ''
       if (allocated(deck%path)) label = deck%path//': '
    end function deck_label
+
+   !> The cgroup path ('' for the root, else '/a/b') of this process in /proc/self/cgroup
+   !> (lines id:controllers:path) for `controllers` ('' is cgroup v2, 'memory' v1).
+   function cgroup_path(controllers) result(path)
+      character(len=*), intent(in) :: controllers
+      character(len=:), allocatable :: path
+      character(len=4096) :: line
+      integer :: u, ios, c1, c2
+
+      path = ''
+      open (newunit=u, file='/proc/self/cgroup', status='old', action='read', iostat=ios)
+      if (ios /= 0) return
+      do
+         read (u, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         c1 = index(line, ':')
+         if (c1 == 0) cycle
+         c2 = index(line(c1 + 1:), ':') + c1
+         if (c2 == c1) cycle
+         if (line(c1 + 1:c2 - 1) /= controllers) cycle
+         path = trim(line(c2 + 1:))
+         if (path == '/') path = ''
+         exit
+      end do
+      close (u, iostat=ios)
+   end function cgroup_path
 
    !> Value (kiB, returned in bytes) of the line starting with `key` in a /proc file.
    subroutine read_keyed_kib(path, key, bytes, found)
