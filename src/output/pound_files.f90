@@ -223,7 +223,7 @@ contains
          if (there) then
             call fatal_error(error, 'cannot create '//path//': it exists')
          else
-            call fatal_error(error, 'cannot write in the output folder: '//trim(msg))
+            call fatal_error(error, 'cannot write in the output folder '//directory_of(path)//': '//trim(msg))
          end if
          return
       end if
