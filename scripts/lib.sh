@@ -30,15 +30,71 @@ pound_setup() {
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq $missing >&2 || return 1
 }
 
-# pound_build TYPE: configure (first time only) and build build/<type>; an up-to-date tree is left alone.
+# shared/ beside the project (records, pFUnit sources); the real pFUnit's cache, one per machine.
+POUND_SHARED_DIR="${POUND_SHARED_DIR:-$POUND_ROOT/../shared}"
+POUND_PFUNIT_CACHE="${XDG_CACHE_HOME:-${HOME:-/root}/.cache}/pfunit-4.14"
+
+# pound_pfunit: make the real pFUnit 4.14 available if it can be had: a finished install in
+# the cache is used as it is; otherwise, when $POUND_SHARED_DIR/pfunit/install.sh exists, it
+# is built there once (about 3 minutes; under a lock, so concurrent callers wait for one
+# build). Prints the prefix, or nothing (then the tests run under tests/pfunit_lite).
+# Status 1 if the build failed.
+pound_pfunit() {
+  local install="$POUND_SHARED_DIR/pfunit/install.sh" log="$POUND_PFUNIT_CACHE.log"
+  if [ ! -f "$POUND_PFUNIT_CACHE/.complete" ]; then
+    [ -f "$install" ] || return 0
+    echo "pound: building pFUnit 4.14 into $POUND_PFUNIT_CACHE (once per machine), log: $log" >&2
+    mkdir -p "$(dirname "$POUND_PFUNIT_CACHE")"
+    if command -v flock >/dev/null 2>&1; then
+      flock "$POUND_PFUNIT_CACHE.lock" bash "$install" "$POUND_PFUNIT_CACHE" >>"$log" 2>&1
+    else
+      bash "$install" "$POUND_PFUNIT_CACHE" >>"$log" 2>&1
+    fi || {
+      tail -20 "$log" >&2
+      echo "pound: building pFUnit failed, log: $log" >&2
+      return 1
+    }
+  fi
+  echo "$POUND_PFUNIT_CACHE"
+}
+
+# The CMake arguments that choose the test runner: the real pFUnit when a finished install is
+# in the cache (see pound_pfunit); none otherwise (pfunit_lite).
+pound_runner_args() {
+  [ -f "$POUND_PFUNIT_CACHE/.complete" ] && echo "-DCMAKE_PREFIX_PATH=$POUND_PFUNIT_CACHE"
+  return 0
+}
+
+# pound_build TYPE [NAME [CMAKE_ARG...]]: configure (first time only) and build build/<NAME>
+# (default: build/<type>) with pound_runner_args and the extra arguments; an up-to-date tree
+# is left alone. A build directory configured with other such arguments (e.g. before the real
+# pFUnit was installed) is removed and configured afresh, so that no stale cache is reused.
+# The tests find shared/ at $POUND_SHARED_DIR (reconfigured when it changes).
 pound_build() {
-  local type="$1" dir="$POUND_ROOT/build/${1,,}"
+  local type="$1" name="${2:-${1,,}}"
+  shift; [ $# -gt 0 ] && shift
+  local dir="$POUND_ROOT/build/$name" args
+  mapfile -t args < <(pound_runner_args)
+  args+=("$@")
+  if [ -f "$dir/CMakeCache.txt" ] && [ "$(cat "$dir/pound-cmake-args" 2>/dev/null)" != "${args[*]}" ]; then
+    echo "pound: build/$name was configured for another test runner: configuring it afresh" >&2
+    rm -rf "$dir"
+  fi
   if [ ! -f "$dir/CMakeCache.txt" ]; then
-    cmake -S "$POUND_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE="$type" -DPOUND_NATIVE=ON >/dev/null || return 1
+    cmake -S "$POUND_ROOT" -B "$dir" -DCMAKE_BUILD_TYPE="$type" -DPOUND_NATIVE=ON -DPOUND_SHARED_DIR="$POUND_SHARED_DIR" \
+      "${args[@]}" >/dev/null || return 1
+    echo "${args[*]}" >"$dir/pound-cmake-args"
+  elif [ "$(sed -n 's/^POUND_SHARED_DIR:PATH=//p' "$dir/CMakeCache.txt")" != "$POUND_SHARED_DIR" ]; then
+    cmake "$dir" -DPOUND_SHARED_DIR="$POUND_SHARED_DIR" >/dev/null || return 1
   fi
   cmake --build "$dir" -j "$(nproc)" -- --no-print-directory >"$dir/build.log" 2>&1 || {
     cat "$dir/build.log" >&2
     echo "pound: build failed ($type), log: $dir/build.log" >&2
     return 1
   }
+}
+
+# pound_test_runner DIR: the runner of the .pf tests in a configured build directory.
+pound_test_runner() {
+  sed -n 's/^POUND_TEST_RUNNER:INTERNAL=//p' "$1/CMakeCache.txt" 2>/dev/null
 }

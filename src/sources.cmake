@@ -3,18 +3,26 @@ set(POUND_SOURCES
   # core: kinds, errors, strings, whole-file reading, version, POSIX calls
   core/pound_kinds.f90 core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
   core/pound_version.f90 core/pound_posix.f90
+  # core: pound's own pseudo-random numbers
+  core/pound_random.f90
   # deck: configuration types, namelist reader, accelerogram files
   deck/pound_config.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
   model/pound_band.f90 model/pound_shear_building.f90 model/pound_ground_motion.f90
+  # models: synthetic ground motions (filtered white noise)
+  model/pound_synthetic_motion.f90
   # solver: Newmark average acceleration
   solver/pound_newmark.f90
+  # solver: exact step of a linear oscillator under piecewise-linear forcing
+  solver/pound_sdof.f90
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
   contact/pound_contact_law.f90 contact/pound_contact.f90 contact/pound_lemke.f90
   contact/pound_lcp_enumerate.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_influence.f90
   analysis/pound_sweep.f90 analysis/pound_memory.f90
+  # analyses: response spectra and scaling, code separation rules
+  analysis/pound_spectrum.f90 analysis/pound_separation.f90
   # outputs: files, HDF5 layer, results file, listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
 )

@@ -189,8 +189,10 @@ contains
    end function anyExceptions
 
    !> Read the command line: no argument runs every test, `<test>` (or `<module>.<test>`)
-   !> runs one, `--list` prints the test names.
-   subroutine funit_lite_init()
+   !> runs one, `--list` prints the test names. `initialize` (pFUnit's EXTRA_INITIALIZE)
+   !> is called before any test runs, not when listing.
+   subroutine funit_lite_init(initialize)
+      procedure(funit_lite_procedure), optional :: initialize
       integer :: n, length
 
       n = command_argument_count()
@@ -211,6 +213,7 @@ contains
             call usage_error('unknown option ' // selection)
          end if
       end if
+      if (present(initialize) .and. .not. listing) call initialize()
    end subroutine funit_lite_init
 
    !> Run one test (if selected): @before, the test unless @before failed, @after.
@@ -245,11 +248,13 @@ contains
    end subroutine funit_lite_run
 
    !> Print the summary and end the program: status 1 if a test failed, 2 if the
-   !> requested test does not exist.
-   subroutine funit_lite_finish()
+   !> requested test does not exist. `finalize` (pFUnit's EXTRA_FINALIZE) is called first.
+   subroutine funit_lite_finish(finalize)
+      procedure(funit_lite_procedure), optional :: finalize
       character(len=32) :: a, b
 
       if (listing) call stop_with(0)
+      if (present(finalize)) call finalize()
       if (allocated(selection) .and. n_run == 0) then
          write (error_unit, '(a)') "pfunit_lite: no test named '" // selection // "' (try --list)"
          call stop_with(2)

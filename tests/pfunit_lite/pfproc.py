@@ -5,22 +5,35 @@ Standard library only.  Three sub-commands (used by pfunit_lite.cmake):
 
   pfproc.py list   A.pf [B.pf ...]              print the @test names, one per line
   pfproc.py module A.pf OUT.F90                 the test module, directives expanded
-  pfproc.py driver --out DRIVER.F90 A.pf [...]  a main program running the tests
+  pfproc.py driver --out DRIVER.F90 [--extra-use M] [--extra-initialize P]
+                   [--extra-finalize P] A.pf [...]   a main program running the tests
+
+As in pFUnit's driver, --extra-use names a module the driver uses, --extra-initialize a
+subroutine without arguments called before any test runs (not for --list), and
+--extra-finalize one called after the last test.
 
 Supported subset of the pFUnit syntax:
   * one ``module <name>`` per file, named after the file (as pFUnit assumes);
   * ``@test`` / ``@test(...)`` (options ignored), ``@before``, ``@after``, each
     followed by a module subroutine without arguments;
-  * assertion macros at any indentation, alone on their line, possibly continued
-    with ``&`` and followed by a comment: @assertEqual, @assertNotEqual,
-    @assertRelativelyEqual, @assertTrue, @assertFalse, @assertLessThan,
+  * assertion macros at any indentation, alone on their line: @assertEqual,
+    @assertNotEqual, @assertRelativelyEqual, @assertTrue, @assertFalse, @assertLessThan,
     @assertLessThanOrEqual, @assertGreaterThan, @assertGreaterThanOrEqual,
     @assertFail, @assertIsFinite, @assertIsNaN, @assertIsInfinite, @assertAll,
     @assertAny, @assertNone, @assertNotAll.
 Each macro becomes ``call assertX(<args>, location=SourceLocation('<file>', <line>))``
-followed by ``if (anyExceptions()) return``, exactly like pFUnit.  The argument lines
-are kept as they are and ``#line`` directives map everything back to the .pf file, so
-compiler messages point at the right .pf line.  Any other ``@`` directive is an error.
+followed by ``if (anyExceptions()) return``, exactly like pFUnit.  ``#line`` directives
+map everything back to the .pf file, so compiler messages point at the right .pf line.
+Any other ``@`` directive is an error.
+
+Refused exactly where pFUnit 4.14 refuses (its funitproc passes such a line through
+unchanged, or writes a line gfortran rejects, or stops), each with one message
+``<file>.pf:<line>: error: ...`` and exit status 1:
+  * a directive continued with ``&`` (funitproc recognises a directive on one line only);
+  * a ``! comment`` after a directive (the line then no longer ends with ``)``);
+  * a directive whose generated Fortran line is longer than 132 columns (funitproc
+    writes ``  call assert<name>(<arguments>, &`` from it, without the indentation);
+  * a module not named after its file (ignoring case).
 """
 
 import os
@@ -90,14 +103,6 @@ def split_comment(line):
             return line[:i], line[i:]
         i += 1
     return line, ''
-
-
-def is_comment_or_blank(line):
-    return split_comment(line)[0].strip() == ''
-
-
-def code_continues(line):
-    return split_comment(line)[0].rstrip().endswith('&')
 
 
 def top_level_args(text):
@@ -197,27 +202,26 @@ class TestFile:
                 m = DIRECTIVE_RE.match(stripped)
                 word = m.group(1) if m else ''
                 key = word.lower()
-                last = self._continuation_end(i)
+                self._check_one_line(i, word)
                 if not in_module:
                     self.error(lineno, "directive '@%s' outside the test module" % word)
                 if pending:
                     self.error(pending[1], "@%s is not followed by a subroutine" % pending[0])
                 if key in MARKERS:
-                    rest = self._joined(i, last)[1 + len(word):].strip()
+                    rest = stripped.strip()[1 + len(word):].strip()
                     if rest and not (rest.startswith('(') and matching_paren(rest, 0) == len(rest) - 1):
                         self.error(lineno, "malformed @%s directive: '%s'" % (key, stripped.strip()))
                     if not after_contains:
                         self.error(lineno, "@%s before the module's 'contains'" % key)
                     pending = (key, lineno)
-                    for k in range(i, last + 1):
-                        out.append('!' + lines[k])
+                    out.append('!' + raw)
                 elif key in ASSERTIONS:
-                    self._expand_assertion(i, last, word, key)
+                    self._expand_assertion(i, word, key)
                 elif key in UNSUPPORTED:
                     self.error(lineno, "pFUnit directive '@%s' is not supported by pfunit_lite" % word)
                 else:
                     self.error(lineno, "unknown directive '@%s'" % word)
-                i = last + 1
+                i += 1
                 continue
 
             code = split_comment(raw)[0]
@@ -290,39 +294,37 @@ class TestFile:
                 self.error(lineno, 'only one @after procedure is allowed')
             self.after = name
 
-    def _continuation_end(self, i):
-        """Index of the last physical line of the statement starting at line i."""
-        j = i
-        while code_continues(self.lines[j]):
-            j += 1
-            while j < len(self.lines) and is_comment_or_blank(self.lines[j]):
-                j += 1
-            if j >= len(self.lines):
-                self.error(i + 1, 'continuation runs past the end of the file')
-        return j
+    def _check_one_line(self, i, word):
+        """Refuse what pFUnit's funitproc does not recognise as a directive: a continued
+        line or a comment after it (its patterns need the line to end in the directive)."""
+        code, comment = split_comment(self.lines[i])
+        if code.rstrip().endswith('&'):
+            self.error(i + 1, "@%s is continued with '&': pFUnit recognises a directive only "
+                       "on one line (put long operands in local variables)" % word)
+        if comment:
+            self.error(i + 1, "comment after @%s: pFUnit does not recognise a directive "
+                       "followed by '%s' (put the comment on the line above)"
+                       % (word, comment.strip()[:40]))
 
-    def _joined(self, i, last):
-        """The statement on lines i..last as one line (comments and '&' removed)."""
-        parts = []
-        for k in range(i, last + 1):
-            code = split_comment(self.lines[k])[0]
-            if not code.strip():
-                continue
-            code = code.rstrip()
-            if k > i:
-                s = code.lstrip()
-                code = s[1:] if s.startswith('&') else code
-            if code.endswith('&'):
-                code = code[:-1]
-            parts.append(code)
-        return ''.join(parts).strip()
+    def _check_generated_length(self, lineno, word, args):
+        """Refuse a directive whose lines as written by pFUnit's funitproc exceed 132
+        columns: '  call assert<name>(<args>, &', then the location lines."""
+        lines = ['  call %s(%s%s&' % (word, args, ', ' if args.strip() else ''),
+                 " & location=SourceLocation( &",
+                 " & '%s', &" % self.name,
+                 ' & %d) )' % lineno]
+        for text in lines:
+            if len(text) > MAX_LINE:
+                self.error(lineno, "@%s generates a Fortran line of %d columns under pFUnit "
+                           "(limit %d): '%s...'; put long operands in local variables"
+                           % (word, len(text), MAX_LINE, text.strip()[:40]))
 
     # -- assertion expansion -------------------------------------------------------
-    def _expand_assertion(self, i, last, word, key):
+    def _expand_assertion(self, i, word, key):
+        """The assertion on line i, laid out as pFUnit's funitproc writes it."""
         lineno = i + 1
         proc, min_args = ASSERTIONS[key]
-        text = self._joined(i, last)
-        rest = text[1 + len(word):]
+        rest = self.lines[i].strip()[1 + len(word):]
         open_at = len(rest) - len(rest.lstrip())
         if not rest[open_at:].startswith('('):
             self.error(lineno, "@%s needs a parenthesised argument list" % word)
@@ -331,57 +333,23 @@ class TestFile:
             self.error(lineno, "unbalanced parentheses in @%s" % word)
         if rest[close_at + 1:].strip():
             self.error(lineno, "unexpected text after @%s(...): '%s'" % (word, rest[close_at + 1:].strip()))
-        args = top_level_args(rest[open_at + 1:close_at])
+        inner = rest[open_at + 1:close_at]
+        args = top_level_args(inner)
         if any(not a.strip() for a in args):
             self.error(lineno, "empty argument in @%s" % word)
         if len(args) < min_args:
             self.error(lineno, "@%s needs at least %d argument%s"
                        % (word, min_args, '' if min_args == 1 else 's'))
+        self._check_generated_length(lineno, word, inner)
 
         out = self.output
-        code_lines = [k for k in range(i, last + 1) if not is_comment_or_blank(self.lines[k])]
-        final = code_lines[-1]
-        first_raw = self.lines[i]
-        indent = first_raw[:len(first_raw) - len(first_raw.lstrip())]
-        at = first_raw.index('@')
-
-        body = {}
-        for k in range(i, last + 1):
-            body[k] = self.lines[k]
-        # Replace the closing ')' of the macro by a continuation '&' (same length).
-        code, comment = split_comment(body[final])
-        stripped = code.rstrip()
-        if not stripped.endswith(')'):
-            self.error(final + 1, "@%s: the last line must end with ')'" % word)
-        body[final] = stripped[:-1] + '&' + code[len(stripped):] + comment
-
-        first = body[i]
-        after_name = first[at + 1 + len(word):]
-        call_line = indent + 'call ' + proc + after_name
         self._line_directive(lineno)
-        if len(call_line) > MAX_LINE:
-            call_line = 'call ' + proc + after_name
-        if len(call_line) > MAX_LINE:
-            # 'call name' on a line of its own; both lines are numbered as the .pf line.
-            out.append(indent + 'call ' + proc + ' &')
-            self._line_directive(lineno, force=True)
-            call_line = after_name
-        out.append(call_line)
-        for k in range(i + 1, last + 1):
-            out.append(body[k])
-        # The added lines carry the number of the macro's last line, so that errors
-        # reported at the end of the statement (e.g. no matching specific procedure)
-        # point into the macro, not below it.
-        self._line_directive(final + 1, force=True)
-        sep = ', ' if args else ''
-        loc = "%s   & %slocation=SourceLocation(%s, %d))" % (indent, sep, fortran_string(self.name), lineno)
-        if len(loc) > MAX_LINE:
-            out.append('%s   & %slocation=SourceLocation( &' % (indent, sep))
-            out.append('%s   & %s, %d))' % (indent, fortran_string(self.name), lineno))
-        else:
-            out.append(loc)
-        out.append(indent + 'if (anyExceptions()) return')
-        self._line_directive(last + 2)
+        out.append('  call %s(%s%s&' % (proc, inner, ', ' if args else ''))
+        out.append(' & location=SourceLocation( &')
+        out.append(' & %s, &' % fortran_string(self.name))
+        out.append(' & %d) )' % lineno)
+        out.append('  if (anyExceptions()) return')
+        self._line_directive(lineno + 1)
 
     def _line_directive(self, number, force=False):
         """Emit '#line number', unless the previous output line is the same directive."""
@@ -413,11 +381,14 @@ def check_unique(files):
             seen[key] = tf.name
 
 
-def driver_text(files):
+def driver_text(files, extra=None):
+    extra = extra or {}
     lines = ['! Generated by pfunit_lite/pfproc.py from %s -- do not edit.'
              % ', '.join(tf.name for tf in files),
              'program pfunit_lite_driver',
              '   use funit, only: funit_lite_init, funit_lite_run, funit_lite_finish']
+    if extra.get('use'):
+        lines.append('   use %s' % extra['use'])
     calls = []
     for n, tf in enumerate(files, 1):
         renames = []
@@ -448,9 +419,15 @@ def driver_text(files):
             calls.extend(call)
     lines.append('   implicit none')
     lines.append('')
-    lines.append('   call funit_lite_init()')
+    if extra.get('initialize'):
+        lines.append('   call funit_lite_init(%s)' % extra['initialize'])
+    else:
+        lines.append('   call funit_lite_init()')
     lines.extend(calls)
-    lines.append('   call funit_lite_finish()')
+    if extra.get('finalize'):
+        lines.append('   call funit_lite_finish(%s)' % extra['finalize'])
+    else:
+        lines.append('   call funit_lite_finish()')
     lines.append('end program pfunit_lite_driver')
     return '\n'.join(lines) + '\n'
 
@@ -474,13 +451,20 @@ def main(argv):
         elif cmd == 'module' and len(args) == 2:
             write_file(args[1], module_text(TestFile(args[0])))
         elif cmd == 'driver' and len(args) >= 3 and args[0] == '--out':
-            files = [TestFile(p) for p in args[2:]]
+            out, rest, extra = args[1], args[2:], {}
+            while len(rest) >= 2 and rest[0] in ('--extra-use', '--extra-initialize',
+                                                 '--extra-finalize'):
+                extra[rest[0][len('--extra-'):]] = rest[1]
+                rest = rest[2:]
+            if not rest:
+                return usage()
+            files = [TestFile(p) for p in rest]
             check_unique(files)
-            write_file(args[1], driver_text(files))
+            write_file(out, driver_text(files, extra))
         else:
             return usage()
     except PfError as e:
-        sys.stderr.write('pfunit_lite: %s\n' % e)
+        sys.stderr.write('%s\n' % e)
         return 1
     except OSError as e:
         sys.stderr.write('pfunit_lite: %s\n' % e)

@@ -5,16 +5,20 @@
 #                    TEST_SOURCES <file.pf>...
 #                    [LINK_LIBRARIES <lib>...]
 #                    [OTHER_SOURCES <src>...]
+#                    [EXTRA_USE <module>] [EXTRA_INITIALIZE <sub>] [EXTRA_FINALIZE <sub>]
+#                    [LABELS <label>...]
 #                    [WORKING_DIRECTORY <dir>])
 #
 # Each .pf file is turned into a Fortran module (pfproc.py, at build time, so editing a
 # .pf regenerates it) and all of them into one executable <name> with a generated driver.
 # Every @test becomes its own CTest test `<name>.<test>` running `<name> <test>`; the
 # executable without arguments runs all its tests, with `--list` prints their names.
-# It exits non-zero if an assertion failed.
+# It exits non-zero if an assertion failed. pfproc.py refuses (file.pf:LINE: error: ...)
+# what the real pFUnit refuses: see pfproc.py.
 #
-# REGISTRY, MAX_PES, EXTRA_USE, EXTRA_INITIALIZE and EXTRA_FINALIZE of the real
-# add_pfunit_ctest are accepted and ignored (with a warning).
+# As in the real pFUnit, the driver uses EXTRA_USE and calls EXTRA_INITIALIZE before the
+# tests (in every test's own run) and EXTRA_FINALIZE after them. REGISTRY and MAX_PES of
+# the real add_pfunit_ctest are accepted and ignored (with a warning).
 
 include_guard(GLOBAL)
 
@@ -37,14 +41,14 @@ endif()
 function(add_pfunit_ctest name)
   cmake_parse_arguments(PF_TEST ""
     "REGISTRY;MAX_PES;EXTRA_USE;EXTRA_INITIALIZE;EXTRA_FINALIZE;WORKING_DIRECTORY"
-    "TEST_SOURCES;OTHER_SOURCES;LINK_LIBRARIES" ${ARGN})
+    "TEST_SOURCES;OTHER_SOURCES;LINK_LIBRARIES;LABELS" ${ARGN})
   if(PF_TEST_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "add_pfunit_ctest(${name}): unexpected arguments: ${PF_TEST_UNPARSED_ARGUMENTS}")
   endif()
   if(NOT PF_TEST_TEST_SOURCES)
     message(FATAL_ERROR "add_pfunit_ctest(${name}): TEST_SOURCES is required")
   endif()
-  foreach(opt REGISTRY MAX_PES EXTRA_USE EXTRA_INITIALIZE EXTRA_FINALIZE)
+  foreach(opt REGISTRY MAX_PES)
     if(PF_TEST_${opt})
       message(WARNING "add_pfunit_ctest(${name}): ${opt} is ignored by pfunit_lite")
     endif()
@@ -65,9 +69,16 @@ function(add_pfunit_ctest name)
       VERBATIM)
     list(APPEND generated ${gen_dir}/${stem}.F90)
   endforeach()
+  set(extra)
+  foreach(opt USE INITIALIZE FINALIZE)
+    if(PF_TEST_EXTRA_${opt})
+      string(TOLOWER ${opt} lower)
+      list(APPEND extra --extra-${lower} ${PF_TEST_EXTRA_${opt}})
+    endif()
+  endforeach()
   add_custom_command(
     OUTPUT ${gen_dir}/${name}_driver.F90
-    COMMAND ${Python3_EXECUTABLE} ${PFUNIT_LITE_PFPROC} driver --out ${gen_dir}/${name}_driver.F90 ${pf_files}
+    COMMAND ${Python3_EXECUTABLE} ${PFUNIT_LITE_PFPROC} driver --out ${gen_dir}/${name}_driver.F90 ${extra} ${pf_files}
     DEPENDS ${pf_files} ${PFUNIT_LITE_PFPROC}
     COMMENT "pfunit_lite: generating the driver of ${name}"
     VERBATIM)
@@ -97,6 +108,9 @@ function(add_pfunit_ctest name)
     add_test(NAME ${name}.${test} COMMAND ${name} ${test})
     if(PF_TEST_WORKING_DIRECTORY)
       set_tests_properties(${name}.${test} PROPERTIES WORKING_DIRECTORY ${PF_TEST_WORKING_DIRECTORY})
+    endif()
+    if(PF_TEST_LABELS)
+      set_tests_properties(${name}.${test} PROPERTIES LABELS "${PF_TEST_LABELS}")
     endif()
   endforeach()
 endfunction()
