@@ -5,14 +5,28 @@
 !> (pound_contact). The response record keeps peaks at every step and histories at
 !> output steps, and the energy balance
 !> W_input = E_kinetic + E_strain + E_damping + E_contact + E_plastic is audited at every
-!> output step (E_contact: energy stored in the joints' springs and dissipated by their
+!> step (E_contact: energy stored in the joints' springs and dissipated by their
 !> dashpots; E_plastic: dissipated by the joints' plastic flow).
+!>
+!> **Nothing non-finite passes.** The energy sums of every step take in every displacement,
+!> velocity, contact force and joint state, so one test per step on their total catches the
+!> first NaN or Infinity of the run; only then is the culprit located (building and floor,
+!> or joint) and the run stops, naming time and step. The ground acceleration samples are
+!> checked before the first step.
+!>
+!> **Audit warning.** When the relative residual exceeds `audit_warning_limit`, the result
+!> carries a warning (`res%warnings`, written by `write_warnings`) naming the likely cause: a
+!> joint whose contact half-period pi sqrt(m_eff/k0) spans fewer than `resolved_steps`
+!> steps, with the dt that would resolve it.
 module pound_analysis
    use iso_fortran_env, only: int64
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
-   use pound_error, only: error_type
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
    use pound_config, only: analysis_config
-   use pound_shear_building, only: shear_building
+   use pound_shear_building, only: shear_building, building_label
+   use pound_ground_motion, only: check_ground_samples
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, &
                             kinetic_energy, strain_energy
    use pound_response, only: response_record, response_init, response_sample, response_finish
@@ -23,6 +37,13 @@ module pound_analysis
    public :: analysis_result, run_uncoupled, run_coupled, output_steps
    public :: coupled_model, coupled_prepare, coupled_integrate
    public :: e_input, e_kinetic, e_strain, e_damping, e_contact, e_plastic, n_energy, energy_names
+   public :: add_warning, write_warnings, audit_warning_limit, resolved_steps
+
+   !> Relative energy residual above which the result carries a warning.
+   real(dp), parameter :: audit_warning_limit = 1.0e-2_dp
+   !> A joint is resolved when its contact half-period spans at least this many steps; the
+   !> warning recommends a dt of a tenth of the half-period.
+   real(dp), parameter :: resolved_steps = 5.0_dp
 
    !> Energy history components.
    integer, parameter :: e_input = 1, e_kinetic = 2, e_strain = 3, e_damping = 4, e_contact = 5
@@ -42,8 +63,11 @@ module pound_analysis
       type(response_record), allocatable :: building(:)
       !> Energy history (n_energy, n_out), summed over the buildings (kJ).
       real(dp), allocatable :: energy(:, :)
-      !> Audit: max over output steps of |W_in - sum of the other terms| / max energy scale.
+      !> Audit: max over all steps of |W_in - sum of the other terms| / max energy scale.
       real(dp) :: energy_error = 0.0_dp
+      !> Warnings for the user (e.g. a large audit residual and its likely cause), one per
+      !> element (trailing blanks not significant); size 0 when there are none.
+      character(len=:), allocatable :: warnings(:)
       !> Contact force, closing displacement, joint compression (penetration) and plastic
       !> penetration histories (n_pairs, n_out); coupled only.
       real(dp), allocatable :: contact_force(:, :), contact_closing(:, :)
@@ -90,38 +114,72 @@ contains
       type(analysis_result), intent(out) :: res
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      type(newmark_state) :: st
-      integer :: ib, step, k, every
+      type(newmark_state), allocatable :: st(:)
+      type(contact_system) :: none
+      real(dp) :: sample(n_energy), resid, scale, win, eout
+      integer :: ib, step, k, every, nb
       integer(int64) :: c0, c1, rate
       logical :: out
 
       res%seconds = 0.0_dp
-      call start_result(res, cfg, size(ag) - 1, size(models))
+      call check_ground_samples(ag, cfg%dt, error)
+      if (allocated(error)) return
+      nb = size(models)
+      call start_result(res, cfg, size(ag) - 1, nb, error)
+      if (allocated(error)) return
       every = cfg%output_every
-
-      do ib = 1, size(models)
-         call newmark_init(st, models(ib), cfg%dt, ag(0), error)
+      allocate (st(nb))
+      do ib = 1, nb
+         call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error)
          if (allocated(error)) return
-         call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out)
-         call response_sample(res%building(ib), models(ib), st%u, st%v, st%a, ag(0), 0.0_dp, .true.)
-         k = 1
-         call system_clock(c0, rate)
-         do step = 1, res%n_steps
-            call newmark_predict(st, models(ib), ag(step) - ag(step - 1))
-            call newmark_commit(st, models(ib), ag(step - 1), ag(step))
-            out = mod(step, every) == 0
-            call response_sample(res%building(ib), models(ib), st%u, st%v, st%a, ag(step), &
+         call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out, error)
+         if (allocated(error)) return
+         call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(0), 0.0_dp, .true.)
+      end do
+      k = 1
+      resid = 0.0_dp
+      scale = 0.0_dp
+      call system_clock(c0, rate)
+      do step = 1, res%n_steps
+         out = mod(step, every) == 0
+         win = 0.0_dp
+         eout = 0.0_dp
+         do ib = 1, nb
+            call newmark_predict(st(ib), models(ib), ag(step) - ag(step - 1))
+            call newmark_commit(st(ib), models(ib), ag(step - 1), ag(step))
+            call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(step), &
                                  real(step, dp)*cfg%dt, out)
-            if (out) then
-               k = k + 1
-               call add_structure_energy(res%energy(:, k), st, models(ib))
-            end if
+            win = win + st(ib)%input_work
+            eout = eout + ((st(ib)%kinetic + st(ib)%strain) + st(ib)%damping_energy)
          end do
-         call system_clock(c1)
-         res%seconds = res%seconds + real(c1 - c0, dp)/real(rate, dp)
+         if (out) then
+            k = k + 1
+            do ib = 1, nb
+               call add_structure_energy(res%energy(:, k), st(ib), models(ib))
+            end do
+            win = res%energy(e_input, k)
+            eout = sum(res%energy(e_kinetic:n_energy, k))
+         end if
+         ! One test per step: every value of the state feeds these sums.
+         if (.not. (abs(win + eout) <= huge(1.0_dp))) then
+            call step_energy(st, sample)
+            call state_failure(st, models, none, sample, ag, cfg%dt, step, error)
+            return
+         end if
+         resid = max(resid, abs(win - eout))
+         scale = max(scale, abs(win), eout)
+      end do
+      call system_clock(c1)
+      res%seconds = real(c1 - c0, dp)/real(rate, dp)
+      do ib = 1, nb
          call response_finish(res%building(ib), models(ib))
       end do
-      res%energy_error = energy_balance_error(res%energy)
+      res%energy_error = audit_error(resid, scale)
+      if (res%energy_error > audit_warning_limit) then
+         call add_warning(res%warnings, 'energy audit (uncoupled): relative residual '//str(res%energy_error)// &
+                          ' > '//str(audit_warning_limit)//' without contact: the integration is not '// &
+                          'trustworthy; reduce dt')
+      end if
    end subroutine run_uncoupled
 
    !> Integrate all buildings together with the unilateral constraints `pairs`.
@@ -164,6 +222,8 @@ contains
       integer :: ib
 
       allocate (prep%st(size(models)))
+      call check_ground_samples([ag0], cfg%dt, error)
+      if (allocated(error)) return
       do ib = 1, size(models)
          call newmark_init(prep%st(ib), models(ib), cfg%dt, ag0, error)
          if (allocated(error)) return
@@ -193,29 +253,32 @@ contains
       type(newmark_state), allocatable :: st(:)
       integer :: ib, step, k, every, nb, ip
       integer(int64) :: c0, c1, rate, ca, cb, c_contact
-      real(dp) :: t
+      real(dp) :: t, sample(n_energy), resid, scale
       logical :: out
 
       nb = size(models)
+      call check_ground_samples(ag, cfg%dt, error)
+      if (allocated(error)) return
       st = prep%st
       cs = prep%cs
       if (present(gaps)) cs%pair(:)%gap = gaps
-      call start_result(res, cfg, size(ag) - 1, nb)
+      call start_result(res, cfg, size(ag) - 1, nb, error, cs%m)
+      if (allocated(error)) return
       every = cfg%output_every
-      allocate (res%contact_force(cs%m, res%n_out), res%contact_closing(cs%m, res%n_out), &
-                res%contact_penetration(cs%m, res%n_out), res%contact_plastic(cs%m, res%n_out), &
-                res%contact_state(cs%m, res%n_out))
       res%contact_force(:, 1) = 0.0_dp
       res%contact_closing(:, 1) = 0.0_dp
       res%contact_penetration(:, 1) = 0.0_dp
       res%contact_plastic(:, 1) = 0.0_dp
       res%contact_state(:, 1) = 0
       do ib = 1, nb
-         call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out)
+         call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out, error)
+         if (allocated(error)) return
          call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(0), &
                               0.0_dp, .true.)
       end do
       k = 1
+      resid = 0.0_dp
+      scale = 0.0_dp
       c_contact = 0
       call system_clock(c0, rate)
       do step = 1, res%n_steps
@@ -227,17 +290,24 @@ contains
          call contact_step(cs, st, t, step, error)
          call system_clock(cb)
          c_contact = c_contact + (cb - ca)
-         if (allocated(error)) return
+         if (allocated(error)) then
+            ! A state that is not finite is named as such, not as a failed LCP.
+            call locate_nonfinite(st, models, cs, t, step, error, predicted=.true.)
+            return
+         end if
          out = mod(step, every) == 0
          do ib = 1, nb
             call newmark_commit(st(ib), models(ib), ag(step - 1), ag(step))
             call response_sample(res%building(ib), models(ib), st(ib)%u, st(ib)%v, st(ib)%a, ag(step), &
                                  t, out)
          end do
+         call step_energy(st, sample)
          call system_clock(ca)
          call contact_commit(cs, st, t, cfg%dt)
          call system_clock(cb)
          c_contact = c_contact + (cb - ca)
+         sample(e_contact) = cs%element_work - cs%plastic_work
+         sample(e_plastic) = cs%plastic_work
          if (out) then
             k = k + 1
             do ib = 1, nb
@@ -252,19 +322,27 @@ contains
                res%contact_plastic(ip, k) = cs%pair(ip)%plastic
                res%contact_state(ip, k) = cs%pair(ip)%state
             end do
+            sample = res%energy(:, k)
          end if
+         if (.not. (abs(sum(sample) + cs%work) <= huge(1.0_dp))) then
+            call state_failure(st, models, cs, sample, ag, cfg%dt, step, error)
+            return
+         end if
+         call audit(sample, resid, scale)
       end do
       do ib = 1, nb
          call response_finish(res%building(ib), models(ib))
       end do
-      res%energy_error = energy_balance_error(res%energy)
+      res%energy_error = audit_error(resid, scale)
       call system_clock(c1)
       res%seconds = real(c1 - c0, dp)/real(rate, dp)
       res%contact_seconds = real(c_contact, dp)/real(rate, dp)
+      if (res%energy_error > audit_warning_limit) call warn_unresolved_joints(res, models, cs, cfg%dt)
    end subroutine coupled_integrate
 
-   !> Sizes, output times and a zero energy history of a result for `n_steps` steps.
-   pure subroutine start_result(res, cfg, n_steps, n_buildings)
+   !> Sizes, output times, a zero energy history and (with `n_pairs`) the contact histories
+   !> of a result for `n_steps` steps; no warnings yet.
+   pure subroutine start_result(res, cfg, n_steps, n_buildings, error, n_pairs)
       !> The result (set up).
       type(analysis_result), intent(inout) :: res
       !> `&analysis` settings.
@@ -273,12 +351,31 @@ contains
       integer, intent(in) :: n_steps
       !> Number of buildings.
       integer, intent(in) :: n_buildings
-      integer :: k
+      !> Error state: the histories cannot be allocated.
+      type(error_type), allocatable, intent(out) :: error
+      !> Number of contact pairs (coupled analysis).
+      integer, intent(in), optional :: n_pairs
+      integer :: k, stat, n, m
 
       res%n_steps = n_steps
       res%n_out = output_steps(n_steps, cfg%output_every)
-      allocate (res%time(res%n_out), res%building(n_buildings), res%energy(n_energy, res%n_out))
-      res%time = [(real((k - 1)*cfg%output_every, dp)*cfg%dt, k=1, res%n_out)]
+      n = res%n_out
+      m = 0
+      if (present(n_pairs)) m = n_pairs
+      allocate (character(len=1) :: res%warnings(0))
+      allocate (res%time(n), res%building(n_buildings), res%energy(n_energy, n), stat=stat)
+      if (stat == 0 .and. present(n_pairs)) then
+         allocate (res%contact_force(m, n), res%contact_closing(m, n), res%contact_penetration(m, n), &
+                   res%contact_plastic(m, n), res%contact_state(m, n), stat=stat)
+      end if
+      if (stat /= 0) then
+         call fatal_error(error, 'cannot allocate the time, energy and contact histories: '// &
+                          str(n)//' output samples x '//str(1 + n_energy + 5*m)//' values = '// &
+                          str(8.0_dp*real(n, dp)*real(1 + n_energy + 5*m, dp)/2.0_dp**20)// &
+                          ' MiB; store less often (output_every) or shorten the run (t_end, dt)')
+         return
+      end if
+      res%time = [(real((k - 1)*cfg%output_every, dp)*cfg%dt, k=1, n)]
       res%energy = 0.0_dp
    end subroutine start_result
 
@@ -297,23 +394,241 @@ contains
       sample(e_damping) = sample(e_damping) + st%damping_energy
    end subroutine add_structure_energy
 
-   !> Relative energy balance error: max_t |W_in - E_k - E_s - E_d - E_c - E_p| / max_t max(|W_in|, E_k + ... + E_p).
-   pure function energy_balance_error(energy) result(err)
-      real(dp), intent(in) :: energy(:, :)
-      real(dp) :: err, scale, resid
-      integer :: k
+   !> The buildings' energies at the end of the step, from the integrators' running sums
+   !> (contact and plastic terms zero).
+   pure subroutine step_energy(st, sample)
+      !> Integrator states.
+      type(newmark_state), intent(in) :: st(:)
+      !> Energy sample (n_energy).
+      real(dp), intent(out) :: sample(:)
+      integer :: ib
 
-      scale = 0.0_dp
-      resid = 0.0_dp
-      do k = 1, size(energy, 2)
-         resid = max(resid, abs(energy(e_input, k) - sum(energy(e_kinetic:n_energy, k))))
-         scale = max(scale, abs(energy(e_input, k)), sum(energy(e_kinetic:n_energy, k)))
+      sample = 0.0_dp
+      do ib = 1, size(st)
+         sample(e_input) = sample(e_input) + st(ib)%input_work
+         sample(e_kinetic) = sample(e_kinetic) + st(ib)%kinetic
+         sample(e_strain) = sample(e_strain) + st(ib)%strain
+         sample(e_damping) = sample(e_damping) + st(ib)%damping_energy
       end do
+   end subroutine step_energy
+
+   !> Take one step's energies into the audit: the largest residual
+   !> |W_in - E_k - E_s - E_d - E_c - E_p| and the largest scale max(|W_in|, E_k + ... + E_p).
+   pure subroutine audit(sample, resid, scale)
+      !> Energies (n_energy) at the end of the step.
+      real(dp), intent(in) :: sample(:)
+      !> Largest residual and scale so far.
+      real(dp), intent(inout) :: resid, scale
+
+      resid = max(resid, abs(sample(e_input) - sum(sample(e_kinetic:n_energy))))
+      scale = max(scale, abs(sample(e_input)), sum(sample(e_kinetic:n_energy)))
+   end subroutine audit
+
+   !> Relative energy balance error max_t |residual| / max_t scale (0 when nothing moved).
+   pure real(dp) function audit_error(resid, scale) result(err)
+      real(dp), intent(in) :: resid, scale
+
       if (scale > 0.0_dp) then
          err = resid/scale
       else
          err = 0.0_dp
       end if
-   end function energy_balance_error
+   end function audit_error
+
+   !> Append a warning to a list of warnings (e.g. `res%warnings`).
+   pure subroutine add_warning(warnings, text)
+      !> The list (unallocated: empty).
+      character(len=:), allocatable, intent(inout) :: warnings(:)
+      !> One line of text.
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: grown(:)
+      integer :: i, n, length
+
+      n = 0
+      length = len(text)
+      if (allocated(warnings)) then
+         n = size(warnings)
+         length = max(length, len(warnings))
+      end if
+      allocate (character(len=length) :: grown(n + 1))
+      do i = 1, n
+         grown(i) = warnings(i)
+      end do
+      grown(n + 1) = text
+      call move_alloc(grown, warnings)
+   end subroutine add_warning
+
+   !> Write each warning of a list (e.g. `res%warnings`, `sweep%warnings`) as one line, `prefix`
+   !> first (e.g. 'pound: warning: '); nothing for an empty or unallocated list.
+   subroutine write_warnings(unit, warnings, prefix)
+      !> Open formatted unit.
+      integer, intent(in) :: unit
+      !> The warnings.
+      character(len=:), allocatable, intent(in) :: warnings(:)
+      !> Text put before each warning.
+      character(len=*), intent(in) :: prefix
+      integer :: i
+
+      if (.not. allocated(warnings)) return
+      do i = 1, size(warnings)
+         write (unit, '(a)') prefix//trim(warnings(i))
+      end do
+   end subroutine write_warnings
+
+   !> The audit residual is large: name the joints whose contact half-period pi sqrt(m_eff/k0)
+   !> (m_eff = m1 m2/(m1 + m2) of the facing floor masses) spans fewer than `resolved_steps`
+   !> steps, and the dt that would resolve them (a tenth of the half-period).
+   subroutine warn_unresolved_joints(res, models, cs, dt)
+      type(analysis_result), intent(inout) :: res
+      type(shear_building), intent(in) :: models(:)
+      type(contact_system), intent(in) :: cs
+      real(dp), intent(in) :: dt
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      real(dp) :: m(2), meff, half, worst
+      integer :: k, e, found, kw
+      character(len=:), allocatable :: head
+
+      head = 'energy audit (coupled): relative residual '//str(res%energy_error)//' > '// &
+             str(audit_warning_limit)
+      found = 0
+      worst = huge(1.0_dp)
+      kw = 0
+      do k = 1, cs%m
+         associate (p => cs%pair(k))
+            if (p%impacts == 0) cycle
+            do e = 1, 2
+               m(e) = 0.0_dp
+               if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%floor(e))
+            end do
+            if (m(1) > 0.0_dp .and. m(2) > 0.0_dp) then
+               meff = m(1)*m(2)/(m(1) + m(2))
+            else
+               meff = max(m(1), m(2))
+            end if
+            half = pi*sqrt(meff/p%law%stiffness)
+            if (half < worst) then
+               worst = half
+               kw = k
+            end if
+            if (half >= resolved_steps*dt) cycle
+            found = found + 1
+            call add_warning(res%warnings, head//': joint '//p%label//' (k0 = '//str(p%law%stiffness)// &
+                             ' kN/m, m_eff = '//str(meff)//' t of the facing floors) has a contact '// &
+                             'half-period pi sqrt(m_eff/k0) = '//str(half)//' s, '//str(half/dt)// &
+                             ' steps of dt = '//str(dt)//' s: not resolved by dt; dt = '//str(0.1_dp*half)// &
+                             ' s (a tenth of it) would resolve it')
+         end associate
+      end do
+      if (found > 0) return
+      if (kw > 0) then
+         call add_warning(res%warnings, head//': the impacts are resolved (shortest contact half-period '// &
+                          str(worst)//' s at joint '//cs%pair(kw)%label//', '//str(worst/dt)// &
+                          ' steps); contact opening and closing inside the steps dominates: reduce dt')
+      else
+         call add_warning(res%warnings, head//': reduce dt')
+      end if
+   end subroutine warn_unresolved_joints
+
+   !> The energy sum of a step is not finite: name the first non-finite value (building and
+   !> floor, or joint), or else the building and energy term that overflowed, with the largest
+   !> ground acceleration so far.
+   subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
+      type(newmark_state), intent(in) :: st(:)
+      type(shear_building), intent(in) :: models(:)
+      type(contact_system), intent(in) :: cs
+      real(dp), intent(in) :: sample(:), ag(0:), dt
+      integer, intent(in) :: step
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: e(4), t
+      integer :: ib, i
+      character(len=:), allocatable :: hint
+
+      t = real(step, dp)*dt
+      call locate_nonfinite(st, models, cs, t, step, error)
+      if (allocated(error)) return
+      hint = ': the response overflows (ground acceleration up to '//str(maxval(abs(ag(0:step))))// &
+             ' m/s^2 so far); check the size of the ground motion (&ground), the masses and the stiffnesses'
+      do ib = 1, size(st)
+         e = [st(ib)%input_work, st(ib)%kinetic, st(ib)%strain, st(ib)%damping_energy]
+         do i = 1, 4
+            if (ieee_is_finite(e(i))) cycle
+            call fatal_error(error, building_label(models(ib))//': the '//trim(energy_names(i))// &
+                             ' energy is not finite at t = '//str(t)//' s (step '//str(step)//') ('// &
+                             str(e(i))//' kJ, largest |u| '//str(maxval(abs(st(ib)%u)))//' m)'//hint)
+            return
+         end do
+      end do
+      do i = 1, n_energy
+         if (ieee_is_finite(sample(i))) cycle
+         call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
+                          trim(energy_names(i))//' energy is not finite ('//str(sample(i))//' kJ)'//hint)
+         return
+      end do
+      call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
+                       'energy total overflows'//hint)
+   end subroutine state_failure
+
+   !> Set `error` to the first value of the state that is not finite, if there is one: u, v,
+   !> a (and, if `predicted`, the step's increment du) of every building by floor, then every
+   !> joint's force, compression, rate, plastic penetration and closing displacement. An
+   !> `error` passed in is kept when everything is finite.
+   subroutine locate_nonfinite(st, models, cs, t, step, error, predicted)
+      type(newmark_state), intent(in) :: st(:)
+      type(shear_building), intent(in) :: models(:)
+      type(contact_system), intent(in) :: cs
+      real(dp), intent(in) :: t
+      integer, intent(in) :: step
+      type(error_type), allocatable, intent(inout) :: error
+      logical, intent(in), optional :: predicted
+      character(len=*), parameter :: names(4) = ['u ', 'v ', 'a ', 'du']
+      character(len=*), parameter :: joint(5) = [character(len=20) :: 'force r', 'compression d', &
+                                                 'compression rate', 'plastic penetration', &
+                                                 'closing displacement']
+      real(dp) :: x(5)
+      integer :: ib, i, q, nq, k
+      character(len=:), allocatable :: at
+
+      at = ' is not finite at t = '//str(t)//' s (step '//str(step)//')'
+      nq = 3
+      if (present(predicted)) then
+         if (predicted) nq = 4
+      end if
+      ! The state first (u, v, a of every floor), then the step's increment it feeds.
+      do q = 1, nq
+         do ib = 1, size(st)
+            do i = 1, st(ib)%n
+               select case (q)
+               case (1)
+                  x(1) = st(ib)%u(i)
+               case (2)
+                  x(1) = st(ib)%v(i)
+               case (3)
+                  x(1) = st(ib)%a(i)
+               case default
+                  x(1) = st(ib)%du(i)
+               end select
+               if (ieee_is_finite(x(1))) cycle
+               if (allocated(error)) deallocate (error)
+               call fatal_error(error, building_label(models(ib))//': floor '//str(i)//': '//trim(names(q))// &
+                                ' = '//str(x(1))//at//': the first value of the run that is not finite '// &
+                                '(check the size of the ground motion, masses, stiffnesses and joints)')
+               return
+            end do
+         end do
+      end do
+      do k = 1, cs%m
+         associate (p => cs%pair(k))
+            x = [p%r, p%d, p%ddot, p%plastic, p%v]
+            do q = 1, 5
+               if (ieee_is_finite(x(q))) cycle
+               if (allocated(error)) deallocate (error)
+               call fatal_error(error, 'contact '//p%label//': joint '//trim(joint(q))//' = '//str(x(q))//at// &
+                                ': the first value of the run that is not finite (check the joint''s '// &
+                                'stiffness, dashpot and law)')
+               return
+            end do
+         end associate
+      end do
+   end subroutine locate_nonfinite
 
 end module pound_analysis

@@ -7,6 +7,8 @@
 !> as (n, n_out) so that h5py reads them as (n_out, n).
 module pound_response
    use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
    use pound_config, only: n_history_quantities
    use pound_shear_building, only: shear_building
    implicit none
@@ -39,7 +41,10 @@ module pound_response
 contains
 
    !> Prepare a record for `capacity` output samples.
-   pure subroutine response_init(rec, n, store, capacity)
+   !>
+   !> Fails (nothing allocated is kept) when the memory cannot be had, with the size asked
+   !> for and the deck variables that set it.
+   pure subroutine response_init(rec, n, store, capacity, error)
       !> The record.
       type(response_record), intent(out) :: rec
       !> Number of floors.
@@ -48,18 +53,33 @@ contains
       logical, intent(in) :: store(n_history_quantities)
       !> Number of output samples that will be taken.
       integer, intent(in) :: capacity
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat(6)
+      real(dp) :: mib
 
       rec%n = n
       rec%store = store
       rec%capacity = capacity
       rec%n_out = 0
+      stat = 0
       ! Histories are zeroed here, so that their memory is touched before the time loop.
-      if (store(q_u)) allocate (rec%u(n, capacity), source=0.0_dp)
-      if (store(q_v)) allocate (rec%v(n, capacity), source=0.0_dp)
-      if (store(q_a_abs)) allocate (rec%a_abs(n, capacity), source=0.0_dp)
-      if (store(q_drift)) allocate (rec%drift(n, capacity), source=0.0_dp)
-      if (store(q_shear)) allocate (rec%shear(n, capacity), source=0.0_dp)
-      allocate (rec%peak(n, n_history_quantities), rec%peak_time(n, n_history_quantities), rec%work(n))
+      if (store(q_u)) allocate (rec%u(n, capacity), source=0.0_dp, stat=stat(1))
+      if (store(q_v)) allocate (rec%v(n, capacity), source=0.0_dp, stat=stat(2))
+      if (store(q_a_abs)) allocate (rec%a_abs(n, capacity), source=0.0_dp, stat=stat(3))
+      if (store(q_drift)) allocate (rec%drift(n, capacity), source=0.0_dp, stat=stat(4))
+      if (store(q_shear)) allocate (rec%shear(n, capacity), source=0.0_dp, stat=stat(5))
+      allocate (rec%peak(n, n_history_quantities), rec%peak_time(n, n_history_quantities), rec%work(n), &
+                stat=stat(6))
+      if (any(stat /= 0)) then
+         mib = 8.0_dp*real(n, dp)*real(capacity, dp)*real(count(store), dp)/2.0_dp**20
+         rec = response_record()
+         call fatal_error(error, 'cannot allocate the response histories: '//str(count(store))// &
+                          ' quantities x '//str(n)//' floors x '//str(capacity)//' output samples = '// &
+                          str(mib)//' MiB; store fewer or less often (history, output_every) or '// &
+                          'shorten the run (t_end, dt)')
+         return
+      end if
       rec%peak = 0.0_dp
       rec%peak_time = 0.0_dp
    end subroutine response_init

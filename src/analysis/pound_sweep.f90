@@ -13,7 +13,8 @@ module pound_sweep
    use pound_strings, only: str
    use pound_config, only: analysis_config, sweep_config, n_history_quantities
    use pound_shear_building, only: shear_building
-   use pound_analysis, only: analysis_result, coupled_model, coupled_prepare, coupled_integrate
+   use pound_analysis, only: analysis_result, coupled_model, coupled_prepare, coupled_integrate, &
+                             add_warning, audit_warning_limit
    use pound_contact, only: contact_pair, contact_system
    use pound_influence, only: influence_coefficient
    implicit none
@@ -37,6 +38,9 @@ module pound_sweep
       logical :: found = .false.
       !> Wall-clock time of all coupled runs (s).
       real(dp) :: seconds = 0.0_dp
+      !> Warnings (one line each): the gaps whose energy audit exceeds `audit_warning_limit`,
+      !> with the first warning of the worst one.
+      character(len=:), allocatable :: warnings(:)
    end type sweep_result
 
 contains
@@ -75,8 +79,9 @@ contains
       type(coupled_model) :: prep
       type(analysis_result) :: cpl
       type(contact_system) :: cs
-      real(dp) :: gaps(size(pairs))
-      integer :: i, ib, q
+      real(dp) :: gaps(size(pairs)), worst
+      integer :: i, ib, q, n_bad
+      character(len=:), allocatable :: worst_text
       integer(int64) :: c0, c1, rate
 
       call system_clock(c0, rate)
@@ -86,6 +91,9 @@ contains
       res%gap = sweep_gaps(sweep)
       allocate (res%max_abs_lambda(n_history_quantities, size(models), sweep%n_gaps), &
                 res%impacts(sweep%n_gaps), res%meets(sweep%n_gaps))
+      allocate (character(len=1) :: res%warnings(0))
+      n_bad = 0
+      worst = 0.0_dp
       call coupled_prepare(quiet, models, ag(0), pairs, prep, error)
       if (allocated(error)) return
       do i = 1, sweep%n_gaps
@@ -94,6 +102,13 @@ contains
          if (allocated(error)) then
             error%message = 'gap sweep, gap = '//str(res%gap(i))//' m: '//error%message
             return
+         end if
+         if (size(cpl%warnings) > 0) then
+            n_bad = n_bad + 1
+            if (cpl%energy_error > worst) then
+               worst = cpl%energy_error
+               worst_text = 'gap = '//str(res%gap(i))//' m: '//trim(cpl%warnings(1))
+            end if
          end if
          res%impacts(i) = sum(cs%pair(:)%impacts)
          do ib = 1, size(models)
@@ -115,6 +130,10 @@ contains
             res%safe_gap = res%gap(i)
             res%found = .true.
          end do
+      end if
+      if (n_bad > 0) then
+         call add_warning(res%warnings, 'gap sweep: the energy audit exceeds '//str(audit_warning_limit)// &
+                          ' at '//str(n_bad)//' of '//str(sweep%n_gaps)//' gaps; the worst, '//worst_text)
       end if
       call system_clock(c1)
       res%seconds = real(c1 - c0, dp)/real(rate, dp)

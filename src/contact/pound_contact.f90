@@ -50,6 +50,7 @@
 !> it carries nothing and takes no part in the LCP for the rest of the analysis.
 !> Khat^{-1} B is computed once (one tridiagonal solve per constraint end).
 module pound_contact
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
@@ -66,15 +67,16 @@ module pound_contact
 
    public :: contact_pair, contact_system, contact_event, contact_init, contact_init_flexibility
    public :: contact_step, contact_solve, contact_commit, contact_update
-   public :: residual_limit, fallback_max_rows, max_hinges, pairs_from_config
+   public :: residual_limit, fallback_max_rows, initial_hinges, pairs_from_config
    public :: state_open, state_elastic, state_fractured
 
    !> Largest accepted natural residual of a step's LCP, relative to ||q||.
    real(dp), parameter :: residual_limit = 1.0e-10_dp
    !> Largest LCP (rows) solved by enumeration when Lemke ends on a ray.
    integer, parameter :: fallback_max_rows = 16
-   !> Largest number of segment ends one joint may pass in one step.
-   integer, parameter :: max_hinges = 32
+   !> Segment ends per joint modelled up front (rows held by the initial workspace); a step
+   !> that passes more models them on demand and grows the workspace (no fixed limit).
+   integer, parameter :: initial_hinges = 32
    !> Joint state codes (per step; > 0: yielding on that yield segment, 1-based).
    integer, parameter :: state_open = 0, state_elastic = -1, state_fractured = -2
 
@@ -186,18 +188,35 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(column), allocatable :: y(:, :)
       real(dp), allocatable :: f(:, :)
-      integer :: k, l, e, g, b, m
+      integer :: k, l, e, g, b, m, stat
 
       m = size(pairs)
-      allocate (y(2, m), f(m, m))
+      allocate (y(2, m), f(m, m), stat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, 'contact: cannot allocate the condensed flexibility F for '//str(m)// &
+                          ' pairs ('//str(8.0_dp*real(m, dp)**2/2.0_dp**20)//' MiB; fewer floors_left / '// &
+                          'floors_right pairs)')
+         return
+      end if
       do k = 1, m
          do e = 1, 2
             b = pairs(k)%building(e)
             if (b == 0) cycle
-            allocate (y(e, k)%x(states(b)%n))
+            allocate (y(e, k)%x(states(b)%n), stat=stat)
+            if (stat /= 0) then
+               call fatal_error(error, 'contact '//pairs(k)%label//': cannot allocate Khat^{-1} B ('// &
+                                str(states(b)%n)//' reals per pair end; fewer pairs or storeys)')
+               return
+            end if
             y(e, k)%x = 0.0_dp
             y(e, k)%x(pairs(k)%floor(e)) = 1.0_dp
             call newmark_solve(states(b), y(e, k)%x)
+            if (.not. all(ieee_is_finite(y(e, k)%x))) then
+               call fatal_error(error, 'contact '//pairs(k)%label//': Khat^{-1} B (the response of the '// &
+                                'building to a unit force at floor '//str(pairs(k)%floor(e))//') is not '// &
+                                'finite: from dt and the building''s masses, stiffnesses and damping')
+               return
+            end if
          end do
       end do
       ! F_kl = sum over ends e of k and g of l on the same building of s_e s_g y(g,l)(floor_e).
@@ -213,6 +232,13 @@ contains
                end do
             end do
          end do
+      end do
+      do k = 1, m
+         if (.not. all(ieee_is_finite(f(:, k)))) then
+            call fatal_error(error, 'contact '//pairs(k)%label//': condensed flexibility F = B^T Khat^{-1} B '// &
+                             'is not finite: from dt and the buildings'' masses, stiffnesses and damping')
+            return
+         end if
       end do
       call contact_init_flexibility(cs, pairs, f, 2.0_dp/states(1)%c2, error)
       if (allocated(error)) return
@@ -241,8 +267,11 @@ contains
       if (m == 0) return
       cs%c2 = 2.0_dp/dt
       allocate (cs%phat(m), cs%beta(m), cs%rate_a(m), cs%rate_b(m), cs%q(m), cs%vp(m), cs%r_new(m), &
-                cs%x_new(m), &
-                cs%in_lcp(m), cs%yrow(m), cs%nh(m))
+                cs%x_new(m), cs%in_lcp(m), cs%yrow(m), cs%nh(m), stat=k)
+      if (k /= 0) then
+         call fatal_error(error, 'contact: cannot allocate the joint data for '//str(m)//' pairs')
+         return
+      end if
       cs%n_max = m
       do k = 1, m
          associate (p => cs%pair(k), law => cs%pair(k)%law)
@@ -259,22 +288,47 @@ contains
             end if
             cs%phat(k) = law%stiffness + cs%rate_a(k)*law%dashpot
             cs%beta(k) = law%stiffness/cs%phat(k)
+            if (.not. (ieee_is_finite(cs%phat(k)) .and. ieee_is_finite(1.0_dp/cs%phat(k)))) then
+               call fatal_error(error, 'contact '//p%label//': joint stiffness with its dashpot, stiffness + '// &
+                                str(cs%rate_a(k))//' dashpot = '//str(cs%phat(k))//' kN/m from stiffness = '// &
+                                str(law%stiffness)//', dashpot = '//str(law%dashpot)//' and dt = '// &
+                                str(dt)//' is not finite')
+               return
+            end if
             if (is_plastic(law)) then
                ns = size(law%yp) - 1
-               cs%n_max = cs%n_max + 1 + min(ns, max_hinges)
+               cs%n_max = cs%n_max + 1 + min(ns, initial_hinges)
             end if
          end associate
       end do
-      associate (n => cs%n_max)
-         allocate (cs%mat(n, n), cs%qa(n), cs%za(n), cs%wa(n), cs%zref(n), cs%act(n), cs%guess(n))
-      end associate
       cs%nh = 0
       cs%yrow = 0
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
       allocate (cs%events(0))
-      call lemke_init(cs%ws, cs%n_max)
+      call lcp_workspace(cs, cs%n_max, error)
    end subroutine contact_init_flexibility
+
+   !> (Re)allocate the LCP work arrays and Lemke's workspace for `n` rows.
+   subroutine lcp_workspace(cs, n, error)
+      type(contact_system), intent(inout) :: cs
+      integer, intent(in) :: n
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+
+      if (allocated(cs%mat)) deallocate (cs%mat, cs%qa, cs%za, cs%wa, cs%zref, cs%act, cs%guess)
+      allocate (cs%mat(n, n), cs%qa(n), cs%za(n), cs%wa(n), cs%zref(n), cs%act(n), cs%guess(n), &
+                stat=stat)
+      if (stat == 0) call lemke_init(cs%ws, n)
+      if (stat /= 0 .or. .not. allocated(cs%ws%binv)) then
+         call fatal_error(error, 'contact: cannot allocate the LCP workspace for '//str(n)//' rows ('// &
+                          str(3.0_dp*8.0_dp*real(n, dp)**2/2.0_dp**20)//' MiB): too many joints or '// &
+                          'envelope segments in one step (reduce dt, the number of &contact pairs or '// &
+                          'of envelope points / n_segments)')
+         return
+      end if
+      cs%n_max = n
+   end subroutine lcp_workspace
 
    !> One constraint per facing floor pair of the deck's `&contact` groups, in deck order.
    function pairs_from_config(contacts, names, error) result(pairs)
@@ -413,6 +467,15 @@ contains
             if (.not. p%fractured) qnorm = max(qnorm, abs(cs%q(k)))
          end associate
       end do
+      ! Guard: nothing that is not finite reaches the LCP solver.
+      do k = 1, cs%m
+         if (cs%pair(k)%fractured .or. ieee_is_finite(cs%q(k))) cycle
+         call fatal_error(error, 'contact '//cs%pair(k)%label//': the step''s LCP data is not finite at t = '// &
+                          str(t)//' s (step '//str(step)//'): predicted closing displacement '// &
+                          str(v_pred(k))//' m, joint compression '//str(cs%pair(k)%d)//' m, rate '// &
+                          str(cs%pair(k)%ddot)//' m/s, plastic penetration '//str(cs%pair(k)%plastic)//' m')
+         return
+      end do
       qnorm = max(qnorm, tiny(1.0_dp))
       ! Segment ends within reach: those the plastic increment would pass if the joint alone
       ! took up all of its predicted penetration -q plastically (more are added on demand).
@@ -422,7 +485,7 @@ contains
          associate (law => cs%pair(k)%law, pl => cs%pair(k)%plastic)
             reach = pl + max(0.0_dp, -cs%q(k))/cs%beta(k)
             nxt = yield_segment(law, pl) + 1
-            do while (nxt <= size(law%yp) - 1 .and. cs%nh(k) < max_hinges)
+            do while (nxt <= size(law%yp) - 1 .and. cs%nh(k) < initial_hinges)
                if (law%yp(nxt) >= reach) exit
                cs%nh(k) = cs%nh(k) + 1
                nxt = nxt + 1
@@ -434,7 +497,8 @@ contains
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
       do
-         call assemble(cs, na, n, nonconvex)
+         call assemble(cs, na, n, nonconvex, error)
+         if (allocated(error)) return
          if (n == 0) exit
          cs%largest_lcp = max(cs%largest_lcp, n)
          if (cs%pivot_cap > 0) then
@@ -495,12 +559,6 @@ contains
                   nxt = nxt + 1
                end do
             end associate
-            if (cs%nh(k) > max_hinges) then
-               call fatal_error(error, 'contact '//cs%pair(k)%label//' at t = '//str(t)//' s (step '// &
-                                str(step)//'): the joint passes more than '//str(max_hinges)// &
-                                ' segment ends of its law in one step; reduce dt or n_segments')
-               return
-            end if
          end do
          if (.not. added) exit
          cs%resolves = cs%resolves + 1
@@ -534,11 +592,12 @@ contains
    !> Assemble the LCP of the constraints in `cs%in_lcp` (contact rows 1..na, then per
    !> plastic joint its yield row and `cs%nh` hinge rows), the warm-start guess and the
    !> reference point (previous forces, no plastic flow).
-   subroutine assemble(cs, na, n, nonconvex)
+   subroutine assemble(cs, na, n, nonconvex, error)
       type(contact_system), intent(inout) :: cs
       integer, intent(out) :: na, n
       logical, intent(inout) :: nonconvex
-      integer :: i, j, k, l, seg, iy
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i, j, k, l, seg, iy, n_full
       real(dp) :: k0, rs
 
       na = 0
@@ -557,6 +616,22 @@ contains
          n = n + cs%nh(k)
       end do
       if (n == 0) return
+      if (n > cs%n_max) then
+         ! More segment ends passed in one step than the workspace holds: grow it (rare).
+         n_full = cs%m
+         do k = 1, cs%m
+            if (is_plastic(cs%pair(k)%law)) n_full = n_full + size(cs%pair(k)%law%yp)
+         end do
+         call lcp_workspace(cs, max(n, min(2*cs%n_max, n_full)), error)
+         if (allocated(error)) return
+         ! act(1:na) was set above in the old arrays.
+         na = 0
+         do k = 1, cs%m
+            if (.not. cs%in_lcp(k)) cycle
+            na = na + 1
+            cs%act(na) = k
+         end do
+      end if
       cs%mat(1:n, 1:n) = 0.0_dp
       do j = 1, na
          do i = 1, na
@@ -608,7 +683,7 @@ contains
       added = .false.
       do j = 1, na
          k = cs%act(j)
-         if (cs%yrow(k) == 0 .or. cs%nh(k) >= max_hinges) cycle
+         if (cs%yrow(k) == 0) cycle
          if (yield_segment(cs%pair(k)%law, cs%pair(k)%plastic) + cs%nh(k) >= size(cs%pair(k)%law%yp) - 1) cycle
          cs%nh(k) = cs%nh(k) + 1
          added = .true.

@@ -132,18 +132,25 @@ contains
       type(lemke_workspace), intent(out) :: ws
       !> Largest number of constraints that will be solved (>= 0).
       integer, intent(in) :: m_max
-      !> Set if `m_max` is negative.
+      !> Set if `m_max` is negative or the storage cannot be allocated.
       type(error_type), allocatable, intent(out), optional :: error
-      integer :: n
+      integer :: n, stat
 
       if (m_max < 0) then
          if (present(error)) call fatal_error(error, 'lemke_init: m_max must be >= 0, got '//str(m_max))
          return
       end if
       n = max(m_max, 1)
-      ws%m_max = m_max
       allocate (ws%binv(n, n), ws%lu(n, n), ws%xb(n), ws%col(n), ws%rnorm(n), ws%rhs(n), &
-                ws%zp(n), ws%wp(n), ws%basis(n), ws%cand(n), ws%idx(n), ws%ipiv(n), ws%active(n))
+                ws%zp(n), ws%wp(n), ws%basis(n), ws%cand(n), ws%idx(n), ws%ipiv(n), ws%active(n), &
+                stat=stat)
+      if (stat /= 0) then
+         if (allocated(ws%binv)) deallocate (ws%binv)
+         if (present(error)) call fatal_error(error, 'lemke_init: cannot allocate the workspace for '// &
+                                              str(m_max)//' rows')
+         return
+      end if
+      ws%m_max = m_max
    end subroutine lemke_init
 
    !> Solve LCP(mat(1:m,1:m), q(1:m)) by Lemke's method (covering vector e).

@@ -1,15 +1,16 @@
 !> Number-to-text conversion for messages and listings.
 module pound_strings
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+   use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    implicit none
    private
 
-   public :: str
+   public :: str, number_end, decimal_exponent, is_digit, shorten, short_real
 
    !> Shortest readable text of a number.
    interface str
-      module procedure str_int, str_real, str_logical
+      module procedure str_int, str_int64, str_real, str_logical
    end interface str
 
 contains
@@ -19,11 +20,20 @@ contains
       !> Value to format.
       integer, intent(in) :: i
       character(len=:), allocatable :: s
+
+      s = str_int64(int(i, int64))
+   end function str_int
+
+   !> 64-bit integer as text, no blanks.
+   pure function str_int64(i) result(s)
+      !> Value to format.
+      integer(int64), intent(in) :: i
+      character(len=:), allocatable :: s
       character(len=24) :: buf
 
       write (buf, '(i0)') i
       s = trim(buf)
-   end function str_int
+   end function str_int64
 
    !> Real as text: `g0` with up to 7 significant digits, no blanks.
    pure function str_real(x) result(s)
@@ -52,5 +62,161 @@ contains
          s = 'F'
       end if
    end function str_logical
+
+   !> Length of the longest Fortran real constant at the start of `s` (0 if none):
+   !> [sign] digits [. digits] [(E|D) [sign] digits | sign digits], at least one mantissa digit.
+   pure function number_end(s) result(q)
+      !> Text to scan.
+      character(len=*), intent(in) :: s
+      integer :: q
+      integer :: i, j, nd, n
+
+      n = len(s)
+      q = 0
+      i = 1
+      if (i <= n) then
+         if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
+      end if
+      nd = 0
+      do while (i <= n)
+         if (.not. is_digit(s(i:i))) exit
+         i = i + 1
+         nd = nd + 1
+      end do
+      if (i <= n) then
+         if (s(i:i) == '.') then
+            i = i + 1
+            do while (i <= n)
+               if (.not. is_digit(s(i:i))) exit
+               i = i + 1
+               nd = nd + 1
+            end do
+         end if
+      end if
+      if (nd == 0) return
+      q = i - 1
+      if (i > n) return
+      j = i
+      if (index('EeDd', s(j:j)) > 0) j = j + 1
+      if (j <= n) then
+         if (s(j:j) == '+' .or. s(j:j) == '-') then
+            j = j + 1
+         else if (j == i) then
+            return
+         end if
+      end if
+      nd = 0
+      do while (j <= n)
+         if (.not. is_digit(s(j:j))) exit
+         j = j + 1
+         nd = nd + 1
+      end do
+      if (nd > 0) q = j - 1
+   end function number_end
+
+   !> Decimal exponent of the leading significant digit of a valid real constant `s`
+   !> (-huge for zero; +-huge when the exponent field has more than 6 significant digits).
+   pure function decimal_exponent(s) result(e10)
+      !> A real constant accepted by `number_end`.
+      character(len=*), intent(in) :: s
+      integer :: e10
+      integer :: i, n, ndigits, nbefore, kfirst, nexp, expo, sgn
+      logical :: seen_point
+
+      n = len(s)
+      i = 1
+      if (s(1:1) == '+' .or. s(1:1) == '-') i = 2
+      seen_point = .false.
+      ndigits = 0
+      nbefore = -1
+      kfirst = 0
+      do while (i <= n)
+         if (s(i:i) == '.') then
+            seen_point = .true.
+            nbefore = ndigits
+         else if (is_digit(s(i:i))) then
+            ndigits = ndigits + 1
+            if (kfirst == 0 .and. s(i:i) /= '0') kfirst = ndigits
+         else
+            exit
+         end if
+         i = i + 1
+      end do
+      if (kfirst == 0) then
+         e10 = -huge(1)
+         return
+      end if
+      if (.not. seen_point) nbefore = ndigits
+      ! The first nonzero mantissa digit is digit kfirst; nbefore digits precede the point.
+      e10 = nbefore - kfirst
+      expo = 0
+      if (i <= n) then
+         if (index('EeDd', s(i:i)) > 0) i = i + 1
+         sgn = 1
+         if (s(i:i) == '-') sgn = -1
+         if (s(i:i) == '-' .or. s(i:i) == '+') i = i + 1
+         do while (i < n)
+            if (s(i:i) /= '0') exit
+            i = i + 1
+         end do
+         nexp = n - i + 1
+         if (nexp > 6) then
+            e10 = sgn*huge(1)
+            return
+         end if
+         read (s(i:n), *) expo
+         expo = sgn*expo
+      end if
+      e10 = e10 + expo
+   end function decimal_exponent
+
+   !> Whether `ch` is a decimal digit.
+   pure logical function is_digit(ch)
+      !> Character to classify.
+      character, intent(in) :: ch
+
+      is_digit = ch >= '0' .and. ch <= '9'
+   end function is_digit
+
+   !> At most 40 characters of `s`, for messages (longer text ends in '...').
+   pure function shorten(s) result(t)
+      !> Text to show.
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: t
+
+      if (len(s) <= 40) then
+         t = s
+      else
+         t = s(1:37)//'...'
+      end if
+   end function shorten
+
+   !> `x` in short form for bounds: '0', '10', '1e-7', '2.5e3'.
+   pure function short_real(x) result(s)
+      !> A bound.
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=16) :: buf
+      integer :: e, k
+
+      if (.not. (abs(x) > 0.0_dp)) then
+         s = '0'
+         return
+      end if
+      write (buf, '(es16.6e3)') x
+      buf = adjustl(buf)
+      k = index(buf, 'E')
+      read (buf(k + 1:), *) e
+      s = buf(1:k - 1)
+      do while (s(len(s):len(s)) == '0')
+         s = s(1:len(s) - 1)
+      end do
+      if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+      if (e == 1) then
+         s = str(nint(x))
+      else if (e /= 0) then
+         s = s//'e'//str(e)
+      end if
+   end function short_real
 
 end module pound_strings

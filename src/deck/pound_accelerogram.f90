@@ -15,22 +15,35 @@
 !>
 !> Values are separated by blanks, tabs or commas and may be written in any Fortran real
 !> form: `-.6028715E-02`, `0.0123`, `1.5D-3`, `.1234-100` (exponent without letter).
-!> Every value must be a finite number below 1e301 in magnitude.
+!> Every acceleration must be at most 1e6 in magnitude (`max_record_value`: in g, or in the
+!> file's unit converted by the deck's scale), every other value a finite number below 1e301.
+!> Sizes are checked before anything is allocated: an AT2 header's NPTS must fit in the
+!> bytes that follow it (at least two per value) and be at most `max_record_points`; DT must
+!> lie in 1e-5..10 s.
 !>
 !> Line endings: LF, CR LF, CR CR LF (as in some PEER files) and a lone CR all end one line;
 !> a missing newline after the last line and trailing blanks are accepted. Line numbers in
 !> messages count lines in that sense (so CR CR LF is one line end, not two).
 module pound_accelerogram
+   use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_text_file, only: read_whole_file
-   use pound_strings, only: str
+   use pound_strings, only: str, number_end, decimal_exponent, is_digit, shorten, short_real
    implicit none
    private
 
    public :: accelerogram_t, read_accelerogram, accelerogram_format
 
    character(len=*), parameter :: cr = achar(13), lf = achar(10), tab = achar(9)
+
+   !> Largest magnitude of a record value: in g, or in the file's own unit when the deck's
+   !> `scale` converts (1e6 covers 100 g written in mm/s^2).
+   real(dp), parameter, public :: max_record_value = 1.0e6_dp
+   !> Plausible range of an AT2 file's DT (s).
+   real(dp), parameter, public :: record_dt_range(2) = [1.0e-5_dp, 10.0_dp]
+   !> Largest number of samples in a record (800 MB of values).
+   integer, parameter, public :: max_record_points = 100000000
 
    !> An accelerogram as read from its file.
    type :: accelerogram_t
@@ -127,10 +140,11 @@ contains
       type(accelerogram_t), intent(inout) :: rec
       type(error_type), allocatable, intent(out) :: error
       type(line_cursor) :: c
-      integer :: i, npts, count, p, q, b, e
+      integer :: i, npts, count, p, q, b, e, stat
+      integer(int64) :: npts_header, room
       logical :: found
       real(dp) :: dt, x
-      character(len=:), allocatable :: hdr4
+      character(len=:), allocatable :: hdr4, shown
 
       c = start_cursor(buf)
       do i = 1, 4
@@ -143,23 +157,49 @@ contains
          if (i == 1) rec%title = trim(buf(c%first:c%last))
       end do
       hdr4 = buf(c%first:c%last)
-      call parse_at2_counts(hdr4, npts, dt, error)
+      call parse_at2_counts(hdr4, npts_header, dt, error)
       if (allocated(error)) then
          error%message = path//':4: '//error%message
          return
       end if
-      if (npts < 2) then
-         call fatal_error(error, path//':4: NPTS = '//str(npts)//'; at least 2 samples are needed')
+      if (npts_header < 2) then
+         call fatal_error(error, path//':4: NPTS = '//str(npts_header)//'; at least 2 samples are needed')
          return
       end if
+      ! Size checks before allocating: every value takes at least 2 bytes (digit, separator).
+      room = (int(len(buf), int64) - c%pos + 2)/2
+      if (npts_header > room) then
+         shown = str(npts_header)
+         if (npts_header == huge(npts_header)) shown = 'a number of more than 18 digits'
+         call fatal_error(error, path//':4: NPTS = '//shown//' values, but the '// &
+                          str(max(len(buf) - c%pos + 1, 0))//' bytes after the header hold at most '// &
+                          str(room)//'; the header does not match the file')
+         return
+      end if
+      if (npts_header > max_record_points) then
+         call fatal_error(error, path//':4: NPTS = '//str(npts_header)//' values, more than '// &
+                          'the '//str(max_record_points)//' a record may have')
+         return
+      end if
+      npts = int(npts_header)
       if (.not. (dt > 0.0_dp)) then
          call fatal_error(error, path//':4: DT = '//str(dt)//' s; DT must be > 0')
+         return
+      end if
+      if (dt < record_dt_range(1) .or. dt > record_dt_range(2)) then
+         call fatal_error(error, path//':4: DT = '//str(dt)//' s, outside the plausible range '// &
+                          short_real(record_dt_range(1))//'..'//short_real(record_dt_range(2))//' s')
          return
       end if
 
       rec%npts = npts
       rec%dt = dt
-      allocate (rec%accel(npts))
+      allocate (rec%accel(npts), stat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, path//': cannot allocate memory for NPTS = '//str(npts)//' values ('// &
+                          str(npts/131072)//' MiB)')
+         return
+      end if
       count = 0
       do
          call next_line(buf, c, found)
@@ -174,6 +214,7 @@ contains
                return
             end if
             call to_real(buf(b:e), x, error)
+            if (.not. allocated(error)) call check_value(buf(b:e), x, error)
             if (allocated(error)) then
                error%message = path//':'//str(c%line)//': '//error%message
                return
@@ -195,7 +236,7 @@ contains
    !> `NPTS` is followed by `=`) or else NGA form (`n dt NPTS, DT`: the first two fields).
    subroutine parse_at2_counts(s, npts, dt, error)
       character(len=*), intent(in) :: s
-      integer, intent(out) :: npts
+      integer(int64), intent(out) :: npts
       real(dp), intent(out) :: dt
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: u
@@ -212,7 +253,7 @@ contains
          ! Old PEER form.
          ok = is_integer(s(b:e))
          if (ok) then
-            read (s(b:e), *) npts
+            npts = count_value(s(b:e))
             q = index(u(e + 1:), 'DT')
             ok = q > 0
          end if
@@ -227,7 +268,7 @@ contains
          call next_token(s, p, len(s), b, e, ok)
          if (ok) ok = is_integer(s(b:e))
          if (ok) then
-            read (s(b:e), *) npts
+            npts = count_value(s(b:e))
             p = e + 1
             call next_token(s, p, len(s), b, e, ok)
          end if
@@ -273,7 +314,7 @@ contains
       type(line_cursor) :: c
       real(dp), allocatable :: t(:), a(:), tmp(:)
       real(dp) :: x(2)
-      integer :: n, p, b, e, ntok, first, prev_line
+      integer :: n, p, b, e, ntok, first, prev_line, stat
       logical :: found
       character :: ch
 
@@ -301,6 +342,7 @@ contains
                   return
                end if
                call to_real(buf(b:e), x(ntok), error)
+               if (ntok == 2 .and. .not. allocated(error)) call check_value(buf(b:e), x(ntok), error)
                if (allocated(error)) then
                   error%message = path//':'//str(c%line)//': '//error%message
                   return
@@ -322,10 +364,22 @@ contains
             end if
          end if
          if (n == size(t)) then
-            allocate (tmp(2*n))
-            tmp(1:n) = t
-            call move_alloc(tmp, t)
-            allocate (tmp(2*n))
+            if (n >= max_record_points) then
+               call fatal_error(error, path//':'//str(c%line)//': more than '//str(max_record_points)// &
+                                ' samples, more than a record may have')
+               return
+            end if
+            allocate (tmp(2*n), stat=stat)
+            if (stat == 0) then
+               tmp(1:n) = t
+               call move_alloc(tmp, t)
+               allocate (tmp(2*n), stat=stat)
+            end if
+            if (stat /= 0) then
+               call fatal_error(error, path//': cannot allocate memory for '//str(2*n)//' samples ('// &
+                                str(n/32768)//' MiB)')
+               return
+            end if
             tmp(1:n) = a
             call move_alloc(tmp, a)
          end if
@@ -415,55 +469,6 @@ contains
       found = .true.
    end subroutine next_token
 
-   !> Length of the longest Fortran real constant at the start of `s` (0 if none):
-   !> [sign] digits [. digits] [(E|D) [sign] digits | sign digits], at least one mantissa digit.
-   pure function number_end(s) result(q)
-      character(len=*), intent(in) :: s
-      integer :: q
-      integer :: i, j, nd, n
-
-      n = len(s)
-      q = 0
-      i = 1
-      if (i <= n) then
-         if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
-      end if
-      nd = 0
-      do while (i <= n)
-         if (.not. is_digit(s(i:i))) exit
-         i = i + 1
-         nd = nd + 1
-      end do
-      if (i <= n) then
-         if (s(i:i) == '.') then
-            i = i + 1
-            do while (i <= n)
-               if (.not. is_digit(s(i:i))) exit
-               i = i + 1
-               nd = nd + 1
-            end do
-         end if
-      end if
-      if (nd == 0) return
-      q = i - 1
-      if (i > n) return
-      j = i
-      if (index('EeDd', s(j:j)) > 0) j = j + 1
-      if (j <= n) then
-         if (s(j:j) == '+' .or. s(j:j) == '-') then
-            j = j + 1
-         else if (j == i) then
-            return
-         end if
-      end if
-      nd = 0
-      do while (j <= n)
-         if (.not. is_digit(s(j:j))) exit
-         j = j + 1
-         nd = nd + 1
-      end do
-      if (nd > 0) q = j - 1
-   end function number_end
 
    !> Convert a token already checked by `number_end`; reject magnitudes of 1e301 and more
    !> before converting (the conversion itself would overflow).
@@ -484,60 +489,26 @@ contains
       end if
    end subroutine to_real
 
-   !> Decimal exponent of the leading significant digit of a valid real constant `s`
-   !> (-huge for zero; +-huge when the exponent field has more than 6 significant digits).
-   pure function decimal_exponent(s) result(e10)
-      character(len=*), intent(in) :: s
-      integer :: e10
-      integer :: i, n, ndigits, nbefore, kfirst, nexp, expo, sgn
-      logical :: seen_point
 
-      n = len(s)
-      i = 1
-      if (s(1:1) == '+' .or. s(1:1) == '-') i = 2
-      seen_point = .false.
-      ndigits = 0
-      nbefore = -1
-      kfirst = 0
-      do while (i <= n)
-         if (s(i:i) == '.') then
-            seen_point = .true.
-            nbefore = ndigits
-         else if (is_digit(s(i:i))) then
-            ndigits = ndigits + 1
-            if (kfirst == 0 .and. s(i:i) /= '0') kfirst = ndigits
-         else
-            exit
-         end if
-         i = i + 1
-      end do
-      if (kfirst == 0) then
-         e10 = -huge(1)
-         return
-      end if
-      if (.not. seen_point) nbefore = ndigits
-      ! The first nonzero mantissa digit is digit kfirst; nbefore digits precede the point.
-      e10 = nbefore - kfirst
-      expo = 0
-      if (i <= n) then
-         if (index('EeDd', s(i:i)) > 0) i = i + 1
-         sgn = 1
-         if (s(i:i) == '-') sgn = -1
-         if (s(i:i) == '-' .or. s(i:i) == '+') i = i + 1
-         do while (i < n)
-            if (s(i:i) /= '0') exit
-            i = i + 1
-         end do
-         nexp = n - i + 1
-         if (nexp > 6) then
-            e10 = sgn*huge(1)
-            return
-         end if
-         read (s(i:n), *) expo
-         expo = sgn*expo
-      end if
-      e10 = e10 + expo
-   end function decimal_exponent
+   !> The count written in digits `s`; counts of more than 18 digits read as huge.
+   pure function count_value(s) result(n)
+      character(len=*), intent(in) :: s
+      integer(int64) :: n
+
+      n = huge(n)
+      if (len(s) <= 18) read (s, *) n
+   end function count_value
+
+   !> A record value must be at most `max_record_value` in magnitude.
+   subroutine check_value(s, x, error)
+      character(len=*), intent(in) :: s
+      real(dp), intent(in) :: x
+      type(error_type), allocatable, intent(out) :: error
+
+      if (abs(x) <= max_record_value) return
+      call fatal_error(error, "acceleration '"//shorten(s)//"' is outside the plausible range: "// &
+                       '|value| <= 1e6 (in g, or in the file''s unit converted by the deck''s scale)')
+   end subroutine check_value
 
    subroutine bad_token(path, line, token, error)
       character(len=*), intent(in) :: path, token
@@ -547,34 +518,17 @@ contains
       call fatal_error(error, path//':'//str(line)//": '"//shorten(token)//"' is not a number")
    end subroutine bad_token
 
-   pure logical function is_digit(ch)
-      character, intent(in) :: ch
-
-      is_digit = ch >= '0' .and. ch <= '9'
-   end function is_digit
 
    pure logical function is_integer(s)
       character(len=*), intent(in) :: s
       integer :: i
 
-      is_integer = len(s) > 0 .and. len(s) <= 9
+      is_integer = len(s) > 0
       do i = 1, len(s)
          if (.not. is_integer) return
          is_integer = is_digit(s(i:i))
       end do
    end function is_integer
-
-   !> At most 40 characters of `s`, for messages.
-   pure function shorten(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=:), allocatable :: t
-
-      if (len(s) <= 40) then
-         t = s
-      else
-         t = s(1:37)//'...'
-      end if
-   end function shorten
 
    pure function lower(s) result(t)
       character(len=*), intent(in) :: s

@@ -1,10 +1,16 @@
 !> Input deck reader: Fortran namelist groups `&analysis`, `&ground`, `&building` and `&contact`.
 !>
-!> The deck is read into memory once (kept in `deck%text` for the echo), then scanned:
-!> every group must start with `&name` and end with `/` (or `&end`), text between groups
-!> must be blank or a `!` comment, and every variable name is checked against its group
-!> before gfortran reads the group. Each group occurrence is then read on its own (from
-!> an internal file holding just that group), so the order of the groups does not matter.
+!> The deck is read into memory once (kept in `deck%text` for the echo; any line ends, a
+!> UTF-8 byte-order mark dropped, pipes read to their end), then scanned: every group must
+!> start with `&name` and end with `/` (or `&end`), text between groups must be blank or a
+!> `!` comment, and every assignment is checked before gfortran reads the group: known
+!> variable, subscript in range, each value of the variable's type (real, integer, logical,
+!> character) on its own line, repeat counts >= 1, no more values than the variable holds,
+!> no variable or element given twice, no real of magnitude 1e300 or more (so the `unset_real`
+!> marker cannot come from the deck). Each group occurrence is then read on its own (from a
+!> one-record internal file holding just that group), so the order of the groups does not
+!> matter and memory stays proportional to the deck. Raw inputs must also lie in the
+!> plausible ranges of `bounds` (README: Input bounds).
 !>
 !> * `&analysis` and `&ground` exactly once, `&building` once per building, left to right.
 !> * `&contact` zero or more times (none: the buildings are uncoupled).
@@ -46,7 +52,7 @@ module pound_deck
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_text_file, only: read_whole_file
-   use pound_strings, only: str
+   use pound_strings, only: str, number_end, decimal_exponent, shorten, short_real
    use pound_config, only: deck_type, analysis_config, ground_config, building_config, &
                            contact_config, sweep_config, n_history_quantities, history_names, g_accel
    use pound_contact_law, only: contact_law, make_piecewise
@@ -67,11 +73,22 @@ module pound_deck
    !> Marks namelist integers the deck did not give.
    integer, parameter :: unset_int = -huge(1)
 
+   !> Largest number of columns in one storey.
+   integer, parameter :: max_columns = 100000
+
    !> Largest number of time steps t_end/dt.
    integer, parameter :: max_steps = 1000000000
 
    !> Lengths of the character buffers the namelist reads into.
    integer, parameter :: title_len = 1024, path_len = 4096, word_len = 256
+
+   character(len=*), parameter :: lf = achar(10), cr = achar(13), tab = achar(9)
+   !> UTF-8 byte-order mark, dropped from the start of a deck.
+   character(len=*), parameter :: bom = char(239)//char(187)//char(191)
+   !> Characters that end a value or name in a group.
+   character(len=*), parameter :: word_stops = ' ,/=!&'//tab//"'"//'"'
+   !> Token kinds of a group's body.
+   integer, parameter :: tok_word = 1, tok_quoted = 2, tok_equals = 3, tok_comma = 4
 
    character(len=*), parameter :: known_groups(5) = &
       [character(len=8) :: 'analysis', 'ground', 'building', 'contact', 'sweep']
@@ -103,7 +120,17 @@ module pound_deck
       character(len=:), allocatable :: name
       !> Deck line of the assignment.
       integer :: line = 0
+      !> Elements assigned: lo..hi (scalars 1..1; hi < lo: only null values).
+      integer :: lo = 1, hi = 0
    end type var_ref
+
+   !> Tokens of a group's body: kind, first and last position, line (one column each).
+   type :: token_list
+      !> Number of tokens.
+      integer :: n = 0
+      !> Token data, (4, capacity).
+      integer, allocatable :: t(:, :)
+   end type token_list
 
    !> One occurrence of a namelist group in the deck.
    type :: group_ref
@@ -111,10 +138,10 @@ module pound_deck
       character(len=:), allocatable :: name
       !> 1 for the first occurrence of this group name, 2 for the second, ...
       integer :: occurrence = 0
-      !> Line and column of the `&` that opens the group.
-      integer :: line1 = 0, col1 = 0
-      !> Line and column of the `/` (or `&end`) that closes the group.
-      integer :: line2 = 0, col2 = 0
+      !> Line and position in the deck text of the `&` that opens the group.
+      integer :: line1 = 0, pos1 = 0
+      !> Line and position of the `/` (or `&end`) that closes the group.
+      integer :: line2 = 0, pos2 = 0
       !> Number of assignments seen.
       integer :: n_vars = 0
       !> Assignments seen (first `n_vars` used).
@@ -130,6 +157,49 @@ module pound_deck
       !> The group occurrence (for the line of a variable).
       type(group_ref) :: group
    end type site
+
+   !> Plausible engineering range of a deck variable (README: Input bounds).
+   type :: bound_t
+      !> 'group:variable'.
+      character(len=28) :: key
+      !> Smallest and largest value.
+      real(dp) :: lo, hi
+      !> Unit, for messages.
+      character(len=8) :: unit
+      !> Whether the bounds apply to |x|.
+      logical :: magnitude
+   end type bound_t
+
+   !> The ranges: generous enough for any real structure and record, tight enough that every
+   !> value inside gives finite derived quantities (12EI/h^3, masses, periods, forces).
+   type(bound_t), parameter :: bounds(27) = [ &
+      bound_t('analysis:dt', 1.0e-7_dp, 1.0_dp, 's', .false.), &
+      bound_t('analysis:t_end', 0.0_dp, 1.0e4_dp, 's', .false.), &
+      bound_t('ground:x0', 1.0e-9_dp, 10.0_dp, 'm', .true.), &
+      bound_t('ground:a', 0.0_dp, 1.0e3_dp, '1/s', .false.), &
+      bound_t('ground:b', 1.0e-3_dp, 1.0e4_dp, 'rad/s', .false.), &
+      bound_t('ground:scale', 1.0e-6_dp, 1.0e3_dp, '', .true.), &
+      bound_t('building:height', 0.1_dp, 1.0e3_dp, 'm', .false.), &
+      bound_t('building:mass', 1.0e-6_dp, 1.0e9_dp, 't', .false.), &
+      bound_t('building:load_coeff', 1.0e-3_dp, 1.0e3_dp, '', .false.), &
+      bound_t('building:ref_floor_load', 1.0e-2_dp, 1.0e8_dp, 'kN', .false.), &
+      bound_t('building:stiffness', 1.0e-3_dp, 1.0e12_dp, 'kN/m', .false.), &
+      bound_t('building:e_modulus', 1.0e2_dp, 1.0e10_dp, 'kN/m^2', .false.), &
+      bound_t('building:inertia', 1.0e-12_dp, 1.0e4_dp, 'm^4', .false.), &
+      bound_t('building:gravity_load', 0.0_dp, 1.0e10_dp, 'kN', .false.), &
+      bound_t('contact:stiffness', 1.0e-3_dp, 1.0e13_dp, 'kN/m', .false.), &
+      bound_t('contact:dashpot', 0.0_dp, 1.0e10_dp, 'kN s/m', .false.), &
+      bound_t('contact:gap', 0.0_dp, 10.0_dp, 'm', .false.), &
+      bound_t('sweep:gap_from', 0.0_dp, 10.0_dp, 'm', .false.), &
+      bound_t('sweep:gap_to', 0.0_dp, 10.0_dp, 'm', .false.), &
+      bound_t('contact:yield_force', 1.0e-3_dp, 1.0e10_dp, 'kN', .false.), &
+      bound_t('contact:peak_force', 1.0e-3_dp, 1.0e10_dp, 'kN', .false.), &
+      bound_t('contact:second_slope', 0.0_dp, 1.0e13_dp, 'kN/m', .true.), &
+      bound_t('contact:envelope_d', 1.0e-9_dp, 10.0_dp, 'm', .false.), &
+      bound_t('contact:peak_penetration', 1.0e-9_dp, 10.0_dp, 'm', .false.), &
+      bound_t('contact:fracture_penetration', 1.0e-9_dp, 10.0_dp, 'm', .false.), &
+      bound_t('contact:envelope_r', 0.0_dp, 1.0e10_dp, 'kN', .false.), &
+      bound_t('sweep:target_lambda', 0.0_dp, 1.0e6_dp, '%', .false.)]
 
 contains
 
@@ -149,32 +219,27 @@ contains
 
       call load_deck(path, text, error)
       if (allocated(error)) return
-      call parse_deck(path, text, longest_line(text), d, error)
+      call parse_deck(path, text, d, error)
       if (allocated(error)) return
       deck = d
    end subroutine read_deck
 
-   !> Scan, read, validate and resolve the deck whose file text is `text` (longest line `line_len`).
-   subroutine parse_deck(path, text, line_len, d, error)
+   !> Scan, read, validate and resolve the deck whose file text is `text`.
+   subroutine parse_deck(path, text, d, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
       character(len=*), intent(in) :: text
-      !> Length of the longest line.
-      integer, intent(in) :: line_len
       !> The resolved deck.
       type(deck_type), intent(out) :: d
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      character(len=line_len), allocatable :: lines(:)
       type(group_ref), allocatable :: groups(:)
       integer :: n_groups, i, k, nb, ia, ig
 
       d%path = path
       d%text = text
-      allocate (lines(count_lines(text)))
-      call split_lines(text, lines)
-      call scan_groups(path, lines, groups, n_groups, error)
+      call scan_groups(path, text, groups, n_groups, error)
       if (allocated(error)) return
 
       call find_single(path, groups(1:n_groups), 'analysis', &
@@ -190,16 +255,16 @@ contains
          return
       end if
 
-      call read_analysis(path, lines, groups(ia), d%analysis, error)
+      call read_analysis(path, text, groups(ia), d%analysis, error)
       if (allocated(error)) return
-      call read_ground(path, lines, groups(ig), d%ground, error)
+      call read_ground(path, text, groups(ig), d%ground, error)
       if (allocated(error)) return
       allocate (d%buildings(nb))
       k = 0
       do i = 1, n_groups
          if (groups(i)%name /= 'building') cycle
          k = k + 1
-         call read_building(path, lines, groups(i), d%buildings(1:k - 1), d%buildings(k), error)
+         call read_building(path, text, groups(i), d%buildings(1:k - 1), d%buildings(k), error)
          if (allocated(error)) return
       end do
       allocate (d%contacts(count([(groups(i)%name == 'contact', i=1, n_groups)])))
@@ -207,17 +272,18 @@ contains
       do i = 1, n_groups
          if (groups(i)%name /= 'contact') cycle
          k = k + 1
-         call read_contact(path, lines, groups(i), d%buildings, d%contacts(k), error)
+         call read_contact(path, text, groups(i), d%buildings, d%contacts(k), error)
          if (allocated(error)) return
       end do
       k = count([(groups(i)%name == 'sweep', i=1, n_groups)])
       if (k == 0) return
       call find_single(path, groups(1:n_groups), 'sweep', 'gap_from, gap_to, n_gaps', i, error)
       if (allocated(error)) return
-      call read_sweep(path, lines, groups(i), size(d%contacts), d%sweep, error)
+      call read_sweep(path, text, groups(i), size(d%contacts), d%sweep, error)
    end subroutine parse_deck
 
-   !> Read the whole deck file; its text without CRs and without the final newline.
+   !> Read the whole deck file; its text with LF line ends, without a UTF-8 byte-order mark
+   !> and without the final newline.
    subroutine load_deck(path, text, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
@@ -226,85 +292,84 @@ contains
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
       character(len=:), allocatable :: raw
-      integer :: i, j
 
       call read_whole_file(path, 'deck', raw, error)
       if (allocated(error)) return
-
-      allocate (character(len=len(raw)) :: text)
-      j = 0
-      do i = 1, len(raw)
-         if (raw(i:i) == achar(13)) cycle
-         j = j + 1
-         text(j:j) = raw(i:i)
-      end do
-      if (j > 0) then
-         if (text(j:j) == achar(10)) j = j - 1
-      end if
-      text = text(1:j)
+      call normalize_text(raw, text)
    end subroutine load_deck
 
-   !> Number of lines in `text` (lines separated by LF).
-   pure integer function count_lines(text) result(n)
-      !> Deck text, lines separated by LF.
-      character(len=*), intent(in) :: text
-      integer :: i
+   !> `raw` with every line end made one LF: LF, CR LF, CR CR LF (a run of CRs before an LF)
+   !> and a lone CR (old Mac files: each CR ends a line); a leading UTF-8 byte-order mark and
+   !> the final line end are dropped.
+   pure subroutine normalize_text(raw, text)
+      !> The file's bytes.
+      character(len=*), intent(in) :: raw
+      !> The text, lines separated by LF.
+      character(len=:), allocatable, intent(out) :: text
+      integer :: i, j, k, n
 
-      n = 1
-      do i = 1, len(text)
-         if (text(i:i) == achar(10)) n = n + 1
-      end do
-   end function count_lines
-
-   !> Length of the longest line of `text` (at least 1).
-   pure integer function longest_line(text) result(n)
-      !> Deck text, lines separated by LF.
-      character(len=*), intent(in) :: text
-      integer :: i, start
-
-      n = 1
-      start = 1
-      do i = 1, len(text)
-         if (text(i:i) == achar(10)) then
-            n = max(n, i - start)
-            start = i + 1
+      n = len(raw)
+      allocate (character(len=n) :: text)
+      i = 1
+      if (n >= 3) then
+         if (raw(1:3) == bom) i = 4
+      end if
+      j = 0
+      do while (i <= n)
+         if (raw(i:i) == cr) then
+            k = i
+            do while (k <= n)
+               if (raw(k:k) /= cr) exit
+               k = k + 1
+            end do
+            if (k <= n) then
+               if (raw(k:k) == lf) then
+                  ! CR...CR LF: one line end.
+                  j = j + 1
+                  text(j:j) = lf
+                  i = k + 1
+                  cycle
+               end if
+            end if
+            ! Lone CRs: one line end each.
+            text(j + 1:j + k - i) = repeat(lf, k - i)
+            j = j + k - i
+            i = k
+            cycle
          end if
+         j = j + 1
+         text(j:j) = raw(i:i)
+         i = i + 1
       end do
-      n = max(n, len(text) - start + 1)
-   end function longest_line
+      if (j > 0) then
+         if (text(j:j) == lf) j = j - 1
+      end if
+      text = text(1:j)
+   end subroutine normalize_text
 
-   !> Split `text` into `lines` (tabs become blanks).
-   pure subroutine split_lines(text, lines)
+   !> Position of the LF that ends the line holding position `i` (len(text) + 1 if none).
+   pure integer function line_end(text, i) result(k)
       !> Deck text, lines separated by LF.
       character(len=*), intent(in) :: text
-      !> The lines, sized by `count_lines`.
-      character(len=*), intent(out) :: lines(:)
-      integer :: i, j, nl, start
+      !> A position in `text`.
+      integer, intent(in) :: i
 
-      nl = 0
-      start = 1
-      do i = 1, len(text) + 1
-         if (i <= len(text)) then
-            if (text(i:i) /= achar(10)) cycle
-         end if
-         nl = nl + 1
-         lines(nl) = text(start:i - 1)
-         start = i + 1
-      end do
-      do i = 1, size(lines)
-         do j = 1, len_trim(lines(i))
-            if (lines(i) (j:j) == achar(9)) lines(i) (j:j) = ' '
-         end do
-      end do
-   end subroutine split_lines
+      k = index(text(i:), lf)
+      if (k == 0) then
+         k = len(text) + 1
+      else
+         k = i + k - 1
+      end if
+   end function line_end
 
    !> Find the groups, their extent and their assignments; reject text outside groups,
-   !> unknown groups, unclosed groups and unknown variables.
-   pure subroutine scan_groups(path, lines, groups, n_groups, error)
+   !> unknown groups, unclosed groups, unknown variables and values that do not fit their
+   !> variable (see `scan_body`).
+   pure subroutine scan_groups(path, text, groups, n_groups, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
-      !> Deck lines.
-      character(len=*), intent(in) :: lines(:)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
       !> Groups found, in deck order (first `n_groups` used).
       type(group_ref), allocatable, intent(out) :: groups(:)
       !> Number of groups found.
@@ -312,104 +377,643 @@ contains
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
       type(group_ref), allocatable :: tmp(:)
-      character(len=:), allocatable :: gname, vname
-      character :: c, quote
-      logical :: in_group
-      integer :: il, ic, j, last, i
+      character(len=:), allocatable :: gname
+      character :: c
+      integer :: i, j, k, line
 
       allocate (groups(8))
       n_groups = 0
-      in_group = .false.
-      quote = ' '
-      do il = 1, size(lines)
-         last = len_trim(lines(il))
-         ic = 1
-         do while (ic <= last)
-            c = lines(il) (ic:ic)
-            if (quote /= ' ') then
-               if (c == quote) quote = ' '
-            else if (.not. in_group) then
-               if (c == '!') exit
-               if (c == '&') then
-                  j = name_end(lines(il), ic + 1)
-                  gname = lower(lines(il) (ic + 1:j))
-                  if (.not. any(known_groups == gname) .or. len(gname) == 0) then
-                     call fatal_error(error, path//':'//str(il)//": unknown namelist group '&"// &
-                                      lines(il) (ic + 1:j)//"'; known groups: &analysis, "// &
-                                      '&ground, &building, &contact, &sweep')
-                     return
-                  end if
-                  if (n_groups == size(groups)) then
-                     allocate (tmp(2*size(groups)))
-                     tmp(1:n_groups) = groups(1:n_groups)
-                     call move_alloc(tmp, groups)
-                  end if
-                  n_groups = n_groups + 1
-                  groups(n_groups)%name = gname
-                  groups(n_groups)%occurrence = count([(groups(i)%name == gname, i=1, n_groups)])
-                  groups(n_groups)%line1 = il
-                  groups(n_groups)%col1 = ic
-                  allocate (groups(n_groups)%vars(16))
-                  in_group = .true.
-                  ic = j + 1
+      i = 1
+      line = 1
+      do while (i <= len(text))
+         c = text(i:i)
+         if (c == lf) then
+            line = line + 1
+         else if (c == '!') then
+            i = line_end(text, i)
+            cycle
+         else if (c == '&') then
+            j = name_end(text, i + 1)
+            gname = lower(text(i + 1:j))
+            if (.not. any(known_groups == gname) .or. len(gname) == 0) then
+               call fatal_error(error, path//':'//str(line)//": unknown namelist group '&"// &
+                                printable(text(i + 1:j))//"'; known groups: &analysis, "// &
+                                '&ground, &building, &contact, &sweep')
+               return
+            end if
+            if (n_groups == size(groups)) then
+               allocate (tmp(2*size(groups)))
+               tmp(1:n_groups) = groups(1:n_groups)
+               call move_alloc(tmp, groups)
+            end if
+            n_groups = n_groups + 1
+            groups(n_groups)%name = gname
+            groups(n_groups)%occurrence = count([(groups(k)%name == gname, k=1, n_groups)])
+            groups(n_groups)%line1 = line
+            groups(n_groups)%pos1 = i
+            allocate (groups(n_groups)%vars(16))
+            call scan_body(path, text, j + 1, line, groups(n_groups), i, error)
+            if (allocated(error)) return
+            cycle
+         else if (c /= ' ' .and. c /= tab) then
+            call fatal_error(error, path//':'//str(line)//": text outside a namelist group: '"// &
+                             printable(trim(text(i:min(line_end(text, i) - 1, i + 39))))// &
+                             "'; groups start with &name and end with /, comments start with !")
+            return
+         end if
+         i = i + 1
+      end do
+   end subroutine scan_groups
+
+   !> The body of group `g` from `start` to its closing `/` or `&end`: split into tokens
+   !> (names, values, quoted values, `=`, `,`), then checked by `check_assignments`.
+   !> On return `next` is the position after the close and `line` its line.
+   pure subroutine scan_body(path, text, start, line, g, next, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> First position after the group name.
+      integer, intent(in) :: start
+      !> Current line (updated).
+      integer, intent(inout) :: line
+      !> The group occurrence (extent and assignments filled in).
+      type(group_ref), intent(inout) :: g
+      !> Position after the group's close.
+      integer, intent(out) :: next
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      type(token_list) :: toks
+      character :: c
+      integer :: i, j, k, n, depth, nl
+
+      n = len(text)
+      i = start
+      next = n + 1
+      do while (i <= n)
+         c = text(i:i)
+         select case (c)
+         case (lf)
+            line = line + 1
+            i = i + 1
+         case (' ', tab)
+            i = i + 1
+         case ('!')
+            i = line_end(text, i)
+         case ('/')
+            g%pos2 = i
+            g%line2 = line
+            next = i + 1
+            exit
+         case ('&')
+            j = name_end(text, i + 1)
+            if (lower(text(i + 1:j)) /= 'end') then
+               call fatal_error(error, path//':'//str(g%line1)//': '//group_label(g)// &
+                                " is not closed with '/' before line "//str(line))
+               return
+            end if
+            g%pos2 = i
+            g%line2 = line
+            next = j + 1
+            exit
+         case ('=')
+            call push_token(toks, tok_equals, i, i, line)
+            i = i + 1
+         case (',')
+            call push_token(toks, tok_comma, i, i, line)
+            i = i + 1
+         case ("'", '"')
+            call quoted_end(text, i, j, nl)
+            if (j == 0) then
+               call fatal_error(error, path//':'//str(g%line1)//': '//group_label(g)// &
+                                ': a character value opened with '//c//' is not closed')
+               return
+            end if
+            call push_token(toks, tok_quoted, i, j, line)
+            line = line + nl
+            i = j + 1
+         case default
+            j = i
+            depth = 0
+            do while (j <= n)
+               c = text(j:j)
+               if (c == lf) exit
+               if (c == '(') depth = depth + 1
+               if (c == ')') depth = max(0, depth - 1)
+               if (depth == 0 .and. index(word_stops, c) > 0) exit
+               j = j + 1
+            end do
+            nl = 0
+            if (j <= n .and. j > i) then
+               ! A repeat count followed by a quoted value: 3*'text'.
+               if (text(j - 1:j - 1) == '*' .and. (text(j:j) == "'" .or. text(j:j) == '"')) then
+                  call quoted_end(text, j, k, nl)
+                  if (k > 0) j = k + 1
+               end if
+            end if
+            call push_token(toks, tok_word, i, j - 1, line)
+            line = line + nl
+            i = j
+         end select
+      end do
+      if (next > n .and. g%pos2 == 0) then
+         call fatal_error(error, path//':'//str(g%line1)//': '//group_label(g)// &
+                          " is not closed with '/'")
+         return
+      end if
+      call check_assignments(path, text, toks, g, error)
+   end subroutine scan_body
+
+   !> End `j` of the quoted value starting at `i` (0 if not closed); `nl` line ends inside.
+   pure subroutine quoted_end(text, i, j, nl)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> Position of the opening quote.
+      integer, intent(in) :: i
+      !> Position of the closing quote, 0 if none.
+      integer, intent(out) :: j
+      !> Number of line ends inside the value.
+      integer, intent(out) :: nl
+      integer :: k
+
+      nl = 0
+      k = i + 1
+      do while (k <= len(text))
+         if (text(k:k) == text(i:i)) then
+            if (k < len(text)) then
+               if (text(k + 1:k + 1) == text(i:i)) then
+                  k = k + 2
                   cycle
-               else if (c /= ' ') then
-                  call fatal_error(error, path//':'//str(il)//": text outside a namelist group: '"// &
-                                   trim(lines(il) (ic:min(last, ic + 39)))//"'; groups start with "// &
-                                   '&name and end with /, comments start with !')
+               end if
+            end if
+            j = k
+            return
+         end if
+         if (text(k:k) == lf) nl = nl + 1
+         k = k + 1
+      end do
+      j = 0
+   end subroutine quoted_end
+
+   !> Append a token to `toks`.
+   pure subroutine push_token(toks, kind, first, last, line)
+      !> Tokens of a group.
+      type(token_list), intent(inout) :: toks
+      !> Token kind (`tok_word`, ...), its first and last position and its line.
+      integer, intent(in) :: kind, first, last, line
+      integer, allocatable :: tmp(:, :)
+
+      if (.not. allocated(toks%t)) allocate (toks%t(4, 64))
+      if (toks%n == size(toks%t, 2)) then
+         allocate (tmp(4, 2*toks%n))
+         tmp(:, 1:toks%n) = toks%t(:, 1:toks%n)
+         call move_alloc(tmp, toks%t)
+      end if
+      toks%n = toks%n + 1
+      toks%t(:, toks%n) = [kind, first, last, line]
+   end subroutine push_token
+
+   !> Index of the `=` when token `k` starts an assignment (`name =` or
+   !> `name (subscript) =`), else 0.
+   pure integer function assignment_eq(text, toks, k) result(neq)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> Tokens of a group.
+      type(token_list), intent(in) :: toks
+      !> Token index.
+      integer, intent(in) :: k
+
+      neq = 0
+      if (k + 1 > toks%n) return
+      if (toks%t(1, k) /= tok_word) return
+      if (toks%t(1, k + 1) == tok_equals) then
+         neq = k + 1
+      else if (k + 2 <= toks%n .and. toks%t(1, k + 1) == tok_word) then
+         if (text(toks%t(2, k + 1):toks%t(2, k + 1)) /= '(') return
+         if (toks%t(1, k + 2) /= tok_equals) return
+         neq = k + 2
+      end if
+   end function assignment_eq
+
+   !> Check every assignment of group `g` against its variable: known name, subscript in
+   !> range, each value of the variable's type (real, integer, logical, character), repeat
+   !> counts >= 1, no more values than the variable holds, no variable (or element) given
+   !> twice. Records the assignments in `g%vars`.
+   pure subroutine check_assignments(path, text, toks, g, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> Tokens of the group's body.
+      type(token_list), intent(in) :: toks
+      !> The group occurrence.
+      type(group_ref), intent(inout) :: g
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer, allocatable :: starts(:), eqs(:), owner(:, :)
+      character(len=:), allocatable :: label, left, right, designator, vname, why
+      character :: vtype
+      integer :: na, k, m, neq, first, last, vsize, lo, hi_lim, line, i, rep, tline, iv
+      integer(int64) :: positions, hi
+      logical :: seen, null
+
+      ! Pass 1: where the assignments start; the building's or the contact's names.
+      allocate (starts(toks%n + 1), eqs(toks%n + 1))
+      na = 0
+      left = ''
+      right = ''
+      label = group_label(g)
+      k = 1
+      do while (k <= toks%n)
+         neq = assignment_eq(text, toks, k)
+         if (neq > 0) then
+            na = na + 1
+            starts(na) = k
+            eqs(na) = neq
+            if (neq + 1 <= toks%n) then
+               if (toks%t(1, neq + 1) == tok_quoted) then
+                  vname = lower(text(toks%t(2, k):toks%t(3, k)))
+                  why = text(toks%t(2, neq + 1) + 1:toks%t(3, neq + 1) - 1)
+                  if (vname == 'name' .or. vname == 'left') left = why
+                  if (vname == 'right') right = why
+               end if
+            end if
+            k = neq + 1
+         else if (na == 0) then
+            call fatal_error(error, path//':'//str(toks%t(4, k))//': '//label//": expected "// &
+                             "'name = value', found '"//token_text(text, toks, k)//"'")
+            return
+         else
+            k = k + 1
+         end if
+      end do
+      starts(na + 1) = toks%n + 1
+      if (g%name == 'building' .and. len(left) > 0) label = label//' ('//printable(left)//')'
+      if (g%name == 'contact' .and. len(left) > 0 .and. len(right) > 0) &
+         label = label//' ('//printable(left)//', '//printable(right)//')'
+
+      ! Pass 2: each assignment. owner(e, iv): line that gave element e of variable iv.
+      select case (g%name)
+      case ('building')
+         k = max_storeys
+      case ('contact')
+         k = max(max_pairs, max_envelope_points)
+      case default
+         k = 2
+      end select
+      allocate (owner(k, size(contact_vars)), source=0)
+      do m = 1, na
+         k = starts(m)
+         line = toks%t(4, k)
+         first = toks%t(2, k)
+         last = toks%t(3, eqs(m) - 1)
+         designator = text(first:last)
+         i = index(designator, '(')
+         if (i > 0) then
+            vname = lower(trim(designator(1:i - 1)))
+         else
+            vname = lower(designator)
+         end if
+         if (.not. known_variable(g%name, vname)) then
+            call fatal_error(error, path//':'//str(line)//': '//label//": unknown variable '"// &
+                             printable(vname)//"'; known: "//variable_list(g%name))
+            return
+         end if
+         call variable_type(g%name, vname, vtype, vsize)
+         lo = 1
+         hi_lim = max(vsize, 1)
+         if (i > 0) then
+            call parse_subscript(designator(i:), vname, vsize, lo, hi_lim, why)
+            if (len(why) > 0) then
+               call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
+               return
+            end if
+         end if
+         positions = 0
+         seen = .false.
+         do k = eqs(m) + 1, starts(m + 1) - 1
+            select case (toks%t(1, k))
+            case (tok_comma)
+               if (.not. seen) positions = positions + 1
+               seen = .false.
+            case (tok_equals)
+               call fatal_error(error, path//':'//str(toks%t(4, k))//': '//label//': '//vname// &
+                                ": unexpected '='; write "//vname//' = value')
+               return
+            case default
+               tline = toks%t(4, k)
+               why = ''
+               if (toks%t(1, k) == tok_word) then
+                  if (known_variable(g%name, lower(token_text(text, toks, k)))) &
+                     why = "'=' is missing after the variable name '"//token_text(text, toks, k)//"'"
+               end if
+               if (len(why) == 0) call value_problem(token_text(text, toks, k), vtype, rep, null, why)
+               if (len(why) > 0) then
+                  if (vsize > 0) then
+                     designator = vname//'('//str(int(lo + positions))//')'
+                  else
+                     designator = vname
+                  end if
+                  call fatal_error(error, path//':'//str(tline)//': '//label//': '//designator// &
+                                   ' = '//shorten(printable(token_text(text, toks, k)))//': '//why)
                   return
                end if
-            else
-               select case (c)
-               case ("'", '"')
-                  quote = c
-               case ('!')
-                  exit
-               case ('/')
-                  groups(n_groups)%line2 = il
-                  groups(n_groups)%col2 = ic
-                  in_group = .false.
-               case ('&')
-                  j = name_end(lines(il), ic + 1)
-                  if (lower(lines(il) (ic + 1:j)) == 'end') then
-                     groups(n_groups)%line2 = il
-                     groups(n_groups)%col2 = ic
-                     in_group = .false.
-                     ic = j
-                  else
-                     call fatal_error(error, path//':'//str(groups(n_groups)%line1)//': '// &
-                                      group_label(groups(n_groups))//" is not closed with '/' "// &
-                                      'before line '//str(il))
-                     return
-                  end if
-               case ('=')
-                  call name_before(lines(il), ic, vname)
-                  if (len(vname) > 0) then
-                     if (.not. known_variable(groups(n_groups)%name, vname)) then
-                        call fatal_error(error, path//':'//str(il)//': '// &
-                                         group_label(groups(n_groups))//": unknown variable '"// &
-                                         vname//"'; known: "// &
-                                         variable_list(groups(n_groups)%name))
-                        return
-                     end if
-                     call add_var(groups(n_groups), vname, il)
-                  end if
-               end select
-            end if
-            ic = ic + 1
+               positions = positions + rep
+               seen = .true.
+            end select
          end do
+         hi = lo + positions - 1
+         if (vsize == 0 .and. positions > 1) then
+            call fatal_error(error, path//':'//str(line)//': '//label//': '//vname//' has '// &
+                             str(int(min(positions, int(huge(1), int64))))//' values, takes one')
+            return
+         end if
+         if (hi > hi_lim) then
+            if (i > 0) then
+               why = vname//' from element '//str(lo)//' has '//str(int(min(positions, int(huge(1), int64))))// &
+                     ' values, ending beyond element '//str(hi_lim)
+            else
+               why = vname//' has '//str(int(min(positions, int(huge(1), int64))))// &
+                     ' values, must have at most '//str(hi_lim)
+            end if
+            call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
+            return
+         end if
+         iv = variable_index(g%name, vname)
+         do k = lo, int(hi)
+            if (owner(k, iv) == 0) cycle
+            if (vsize > 0) then
+               why = vname//'('//str(k)//') is given twice (also on line '// &
+                     str(owner(k, iv))//'); give each value once per group'
+            else
+               why = vname//' is given twice (also on line '//str(owner(k, iv))// &
+                     '); give each variable once per group'
+            end if
+            call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
+            return
+         end do
+         owner(lo:int(hi), iv) = line
+         call add_var(g, vname, line, lo, int(hi))
       end do
-      if (in_group) then
-         if (quote /= ' ') then
-            call fatal_error(error, path//':'//str(groups(n_groups)%line1)//': '// &
-                             group_label(groups(n_groups))//': a character value opened with '// &
-                             quote//' is not closed')
-         else
-            call fatal_error(error, path//':'//str(groups(n_groups)%line1)//': '// &
-                             group_label(groups(n_groups))//" is not closed with '/'")
+   end subroutine check_assignments
+
+   !> Text of token `k`.
+   pure function token_text(text, toks, k) result(s)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> Tokens of a group.
+      type(token_list), intent(in) :: toks
+      !> Token index.
+      integer, intent(in) :: k
+      character(len=:), allocatable :: s
+
+      s = text(toks%t(2, k):toks%t(3, k))
+   end function token_text
+
+   !> Subscript `(i)` or `(i:j)` of array `vname` (`vsize` elements): first element `lo` and
+   !> last allowed `hi`; `why` is '' or what is wrong.
+   pure subroutine parse_subscript(sub, vname, vsize, lo, hi, why)
+      !> Text from the `(` on.
+      character(len=*), intent(in) :: sub
+      !> Variable name, lower case.
+      character(len=*), intent(in) :: vname
+      !> Number of elements (0: scalar).
+      integer, intent(in) :: vsize
+      !> First element and last allowed element.
+      integer, intent(inout) :: lo, hi
+      !> Empty when the subscript is fine.
+      character(len=:), allocatable, intent(out) :: why
+      character(len=:), allocatable :: inner
+      integer :: colon, e
+
+      why = ''
+      if (vsize == 0) then
+         why = vname//' is not an array; write '//vname//' = value'
+         return
+      end if
+      e = index(sub, ')', back=.true.)
+      if (e == 0) e = len(sub) + 1
+      inner = trim(adjustl(sub(2:e - 1)))
+      colon = index(inner, ':')
+      if (colon == 0) then
+         call subscript_int(inner, lo, why)
+         if (len(why) == 0) hi = vsize
+      else
+         call subscript_int(trim(adjustl(inner(1:colon - 1))), lo, why)
+         if (len(why) == 0) call subscript_int(trim(adjustl(inner(colon + 1:))), hi, why)
+      end if
+      if (len(why) > 0) then
+         why = vname//printable(sub)//': the subscript must be an integer or i:j'
+         return
+      end if
+      if (lo < 1 .or. lo > vsize) then
+         why = vname//'('//str(lo)//'): index '//str(lo)//' is out of range, must be in 1..'//str(vsize)
+      else if (hi < lo .or. hi > vsize) then
+         why = vname//printable(sub)//': index '//str(hi)//' is out of range, must be in '// &
+               str(lo)//'..'//str(vsize)
+      end if
+   end subroutine parse_subscript
+
+   !> A subscript integer (at most 9 digits, optional sign).
+   pure subroutine subscript_int(s, i, why)
+      !> Text of the integer.
+      character(len=*), intent(in) :: s
+      !> Its value.
+      integer, intent(out) :: i
+      !> Empty when `s` is an integer.
+      character(len=:), allocatable, intent(out) :: why
+      integer :: b
+
+      why = 'bad'
+      i = 0
+      b = 1
+      if (len(s) == 0) return
+      if (s(1:1) == '-' .or. s(1:1) == '+') b = 2
+      if (len(s) < b .or. len(s) - b + 1 > 9) return
+      if (verify(s(b:), '0123456789') /= 0) return
+      read (s, *) i
+      why = ''
+   end subroutine subscript_int
+
+   !> What is wrong with value token `t` for a variable of type `vtype` ('r' real,
+   !> 'i' integer, 'l' logical, 'c' character): `why` is '' when nothing; `rep` the
+   !> values it stands for (repeat count), `null` when it is `r*` alone (r null values).
+   pure subroutine value_problem(t, vtype, rep, null, why)
+      !> The token as written.
+      character(len=*), intent(in) :: t
+      !> Variable type.
+      character, intent(in) :: vtype
+      !> Number of values the token stands for.
+      integer, intent(out) :: rep
+      !> Whether it stands for null values (the variable keeps its default).
+      logical, intent(out) :: null
+      !> Empty when the token fits; otherwise the rule broken.
+      character(len=:), allocatable, intent(out) :: why
+      character(len=:), allocatable :: v, r
+      integer :: star, k
+
+      rep = 1
+      null = .false.
+      why = ''
+      do k = 1, len(t)
+         if (iachar(t(k:k)) < 32 .or. iachar(t(k:k)) == 127) then
+            if (iachar(t(k:k)) == 0) then
+               why = 'contains a NUL byte (character code 0) at character '//str(k)// &
+                     '; a deck is plain text'
+            else
+               why = 'contains the control character code '//str(iachar(t(k:k)))// &
+                     ' at character '//str(k)//'; a deck is plain text'
+            end if
+            return
+         end if
+      end do
+      v = t
+      star = 0
+      if (t(1:1) /= "'" .and. t(1:1) /= '"') star = index(t, '*')
+      if (star > 0) then
+         r = t(1:star - 1)
+         if (len(r) > 0 .and. verify(r, '0123456789') == 0) then
+            if (len(r) - verify(r, '0') + 1 > 9 .and. verify(r, '0') > 0) then
+               why = 'repeat count '//r//' is too large'
+               return
+            end if
+            read (r, *) rep
+            if (rep == 0) then
+               why = 'repeat count 0, must be >= 1 (r*value stands for r equal values)'
+               return
+            end if
+            v = t(star + 1:)
+            if (len(v) == 0) then
+               null = .true.
+               return
+            end if
          end if
       end if
-   end subroutine scan_groups
+      select case (vtype)
+      case ('r')
+         if (v(1:1) == "'" .or. v(1:1) == '"' .or. star > 0 .and. len(v) == len(t)) then
+            why = 'expected a real number'
+         else if (number_end(v) == len(v)) then
+            if (decimal_exponent(v) >= 300) then
+               why = 'out of range, the magnitude of a deck value must be below 1e300'
+            end if
+         else if (.not. is_special_real(v)) then
+            why = 'expected a real number'
+         end if
+      case ('i')
+         call integer_problem(v, why)
+      case ('l')
+         select case (lower(v))
+         case ('t', 'f', '.t', '.f', '.t.', '.f.', 'true', 'false', '.true.', '.false.')
+         case default
+            why = 'expected a logical: .true. or .false.'
+         end select
+      end select
+   end subroutine value_problem
+
+   !> What is wrong with `v` as a deck integer: '' when it is one in -999999999..2147483647.
+   pure subroutine integer_problem(v, why)
+      !> The value as written (repeat count removed).
+      character(len=*), intent(in) :: v
+      !> Empty when `v` fits.
+      character(len=:), allocatable, intent(out) :: why
+      character(len=:), allocatable :: digits
+      integer :: b
+
+      why = ''
+      b = 1
+      if (v(1:1) == '+' .or. v(1:1) == '-') b = 2
+      if (len(v) < b .or. verify(v(b:), '0123456789') /= 0) then
+         why = 'expected an integer'
+         return
+      end if
+      digits = v(b:)
+      if (verify(digits, '0') == 0) return
+      digits = digits(verify(digits, '0'):)
+      if (v(1:1) == '-') then
+         if (len(digits) > 9) why = 'integer out of range, must be >= -999999999'
+      else if (len(digits) > 10 .or. (len(digits) == 10 .and. digits > '2147483647')) then
+         why = 'integer out of range, must be <= 2147483647'
+      end if
+   end subroutine integer_problem
+
+   !> Whether `v` spells an IEEE special value the namelist read accepts (Inf, Infinity,
+   !> NaN, with an optional sign); the range checks then refuse it by name.
+   pure logical function is_special_real(v)
+      !> The value as written.
+      character(len=*), intent(in) :: v
+      character(len=:), allocatable :: s
+
+      s = lower(v)
+      if (s(1:1) == '+' .or. s(1:1) == '-') s = s(2:)
+      is_special_real = s == 'inf' .or. s == 'infinity' .or. s == 'nan'
+   end function is_special_real
+
+   !> Type ('r', 'i', 'l', 'c') and number of elements (0: scalar) of variable `name` of
+   !> group `group`.
+   pure subroutine variable_type(group, name, vtype, vsize)
+      !> Group name and variable name, lower case.
+      character(len=*), intent(in) :: group, name
+      !> Type letter.
+      character, intent(out) :: vtype
+      !> Number of elements, 0 for a scalar.
+      integer, intent(out) :: vsize
+
+      vsize = 0
+      select case (name)
+      case ('title', 'history', 'kind', 'file', 'format', 'name', 'column_ends', 'left', 'right', &
+            'law', 'dashpot_rate', 'target_quantities')
+         vtype = 'c'
+      case ('output_every', 'n_storeys', 'n_segments', 'n_gaps')
+         vtype = 'i'
+      case ('n_columns')
+         vtype = 'i'
+         vsize = max_storeys
+      case ('damping_modes')
+         vtype = 'i'
+         vsize = 2
+      case ('floors_left', 'floors_right')
+         vtype = 'i'
+         vsize = max_pairs
+      case ('p_delta')
+         vtype = 'l'
+      case ('height', 'mass', 'load_coeff', 'e_modulus', 'inertia', 'gravity_load')
+         vtype = 'r'
+         vsize = max_storeys
+      case ('gap')
+         vtype = 'r'
+         vsize = max_pairs
+      case ('envelope_d', 'envelope_r')
+         vtype = 'r'
+         vsize = max_envelope_points
+      case ('stiffness')
+         vtype = 'r'
+         if (group == 'building') vsize = max_storeys
+      case default
+         vtype = 'r'
+      end select
+   end subroutine variable_type
+
+   !> `s` with control characters shown as `<NUL>` or `<0xNN>`.
+   pure function printable(s) result(t)
+      !> Text from the deck.
+      character(len=*), intent(in) :: s
+      character(len=:), allocatable :: t
+      character(len=*), parameter :: hex = '0123456789ABCDEF'
+      integer :: i, code
+
+      t = ''
+      do i = 1, len(s)
+         code = iachar(s(i:i))
+         if (code == 0) then
+            t = t//'<NUL>'
+         else if (code < 32 .or. code == 127) then
+            t = t//'<0x'//hex(code/16 + 1:code/16 + 1)//hex(mod(code, 16) + 1:mod(code, 16) + 1)//'>'
+         else
+            t = t//s(i:i)
+         end if
+      end do
+   end function printable
 
    !> Last position of the name starting at `from` in `line` (`from - 1` if none).
    pure integer function name_end(line, from) result(j)
@@ -419,59 +1023,21 @@ contains
       integer, intent(in) :: from
 
       j = from - 1
-      do while (j + 1 <= len_trim(line))
+      do while (j + 1 <= len(line))
          if (.not. is_name_char(line(j + 1:j + 1))) exit
          j = j + 1
       end do
    end function name_end
 
-   !> The variable name (lower case, subscript removed) in front of the `=` at `eq`.
-   pure subroutine name_before(line, eq, name)
-      !> One deck line.
-      character(len=*), intent(in) :: line
-      !> Position of the `=`.
-      integer, intent(in) :: eq
-      !> Variable name, lower case ('' if none).
-      character(len=:), allocatable, intent(out) :: name
-      integer :: k, last, depth
-
-      name = ''
-      k = eq - 1
-      do while (k >= 1)
-         if (line(k:k) /= ' ') exit
-         k = k - 1
-      end do
-      if (k < 1) return
-      if (line(k:k) == ')') then
-         depth = 0
-         do while (k >= 1)
-            if (line(k:k) == ')') depth = depth + 1
-            if (line(k:k) == '(') depth = depth - 1
-            if (depth == 0) exit
-            k = k - 1
-         end do
-         k = k - 1
-         do while (k >= 1)
-            if (line(k:k) /= ' ') exit
-            k = k - 1
-         end do
-      end if
-      last = k
-      do while (k >= 1)
-         if (.not. is_name_char(line(k:k))) exit
-         k = k - 1
-      end do
-      if (last >= k + 1) name = lower(line(k + 1:last))
-   end subroutine name_before
-
-   !> Record an assignment of `name` on `line` in group `g`.
-   pure subroutine add_var(g, name, line)
+   !> Record an assignment of `name` on `line` in group `g`, covering elements `lo`..`hi`
+   !> (scalars: 1..1; `hi < lo` when only null values were given).
+   pure subroutine add_var(g, name, line, lo, hi)
       !> Group the assignment belongs to.
       type(group_ref), intent(inout) :: g
-      !> Name to look up / record.
+      !> Variable name, lower case.
       character(len=*), intent(in) :: name
-      !> Deck line number.
-      integer, intent(in) :: line
+      !> Deck line number, first and last element assigned.
+      integer, intent(in) :: line, lo, hi
       type(var_ref), allocatable :: tmp(:)
 
       if (g%n_vars == size(g%vars)) then
@@ -482,6 +1048,8 @@ contains
       g%n_vars = g%n_vars + 1
       g%vars(g%n_vars)%name = name
       g%vars(g%n_vars)%line = line
+      g%vars(g%n_vars)%lo = lo
+      g%vars(g%n_vars)%hi = hi
    end subroutine add_var
 
    !> Whether `name` is a variable of group `group` (groups read elsewhere accept anything).
@@ -489,21 +1057,29 @@ contains
       !> Group name and variable name, lower case.
       character(len=*), intent(in) :: group, name
 
+      known_variable = variable_index(group, name) > 0
+   end function known_variable
+
+   !> Position of variable `name` in the list of group `group` (0: not a variable of it).
+   pure integer function variable_index(group, name) result(k)
+      !> Group name and variable name, lower case.
+      character(len=*), intent(in) :: group, name
+
       select case (group)
       case ('analysis')
-         known_variable = any(analysis_vars == name)
+         k = findloc_name(analysis_vars, name)
       case ('ground')
-         known_variable = any(ground_vars == name)
+         k = findloc_name(ground_vars, name)
       case ('building')
-         known_variable = any(building_vars == name)
+         k = findloc_name(building_vars, name)
       case ('contact')
-         known_variable = any(contact_vars == name)
+         k = findloc_name(contact_vars, name)
       case ('sweep')
-         known_variable = any(sweep_vars == name)
+         k = findloc_name(sweep_vars, name)
       case default
-         known_variable = .true.
+         k = 0
       end select
-   end function known_variable
+   end function variable_index
 
    !> The variables of `group`, comma separated.
    pure function variable_list(group) result(list)
@@ -584,21 +1160,47 @@ contains
                                      name//' is required ('//contents//')')
    end subroutine find_single
 
-   !> Just the text of group `g`, as an internal file for a namelist read.
-   pure subroutine group_text(lines, g, buf)
-      !> Deck lines.
-      character(len=*), intent(in) :: lines(:)
+   !> Just the text of group `g`, as a one-record internal file for a namelist read:
+   !> comments blanked, line ends read as blanks (inside a quoted value: as nothing, a
+   !> continued character value), tabs as blanks, closed with '/'. Its length is the group's.
+   pure subroutine group_text(text, g, buf)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
       !> The group occurrence.
       type(group_ref), intent(in) :: g
       !> Internal file with just the group's text.
-      character(len=*), allocatable, intent(out) :: buf(:)
-      integer :: n
+      character(len=:), allocatable, intent(out) :: buf
+      character :: c, quote
+      integer :: i, j
 
-      n = g%line2 - g%line1 + 1
-      allocate (buf(n))
-      buf = lines(g%line1:g%line2)
-      buf(n) (g%col2:) = '/'
-      buf(1) (1:g%col1 - 1) = ' '
+      allocate (character(len=g%pos2 - g%pos1 + 1) :: buf)
+      quote = ' '
+      j = 0
+      i = g%pos1
+      do while (i < g%pos2)
+         c = text(i:i)
+         if (quote /= ' ') then
+            if (c == lf) then
+               i = i + 1
+               cycle
+            end if
+            if (c == quote) quote = ' '
+         else if (c == "'" .or. c == '"') then
+            quote = c
+         else if (c == '!') then
+            i = line_end(text, i)
+            cycle
+         else if (c == lf) then
+            c = ' '
+         end if
+         if (c == tab) c = ' '
+         j = j + 1
+         buf(j:j) = c
+         i = i + 1
+      end do
+      j = j + 1
+      buf(j:j) = '/'
+      buf = buf(1:j)
    end subroutine group_text
 
    !> Site of a group occurrence, labelled without a building name.
@@ -649,11 +1251,11 @@ contains
    end subroutine read_failed
 
    !> `&analysis`: title, time step, duration, history output.
-   subroutine read_analysis(path, lines, g, cfg, error)
+   subroutine read_analysis(path, text, g, cfg, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
-      !> Deck lines.
-      character(len=*), intent(in) :: lines(:)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
       !> The group occurrence.
       type(group_ref), intent(in) :: g
       !> Resolved `&analysis`.
@@ -664,7 +1266,7 @@ contains
       character(len=path_len) :: history
       real(dp) :: dt, t_end
       integer :: output_every, ios
-      character(len=len(lines)), allocatable :: buf(:)
+      character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
       namelist /analysis/ title, dt, t_end, output_every, history
@@ -675,7 +1277,7 @@ contains
       t_end = unset_real
       output_every = 1
       at = site_of(path, g)
-      call group_text(lines, g, buf)
+      call group_text(text, g, buf)
       msg = ' '
       read (buf, nml=analysis, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
@@ -784,11 +1386,11 @@ contains
    end function findloc_name
 
    !> `&ground`: a pulse or a record file.
-   subroutine read_ground(path, lines, g, cfg, error)
+   subroutine read_ground(path, text, g, cfg, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
-      !> Deck lines.
-      character(len=*), intent(in) :: lines(:)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
       !> The group occurrence.
       type(group_ref), intent(in) :: g
       !> Resolved `&ground`.
@@ -800,7 +1402,7 @@ contains
       real(dp) :: x0, a, b, scale
       integer :: ios
       logical :: exists
-      character(len=len(lines)), allocatable :: buf(:)
+      character(len=:), allocatable :: buf
       character(len=:), allocatable :: resolved
       character(len=512) :: msg
       type(site) :: at
@@ -814,7 +1416,7 @@ contains
       b = unset_real
       scale = unset_real
       at = site_of(path, g)
-      call group_text(lines, g, buf)
+      call group_text(text, g, buf)
       msg = ' '
       read (buf, nml=ground, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
@@ -922,11 +1524,11 @@ contains
    end function base_name
 
    !> `&building`: one shear building.
-   subroutine read_building(path, lines, g, previous, cfg, error)
+   subroutine read_building(path, text, g, previous, cfg, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
-      !> Deck lines.
-      character(len=*), intent(in) :: lines(:)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
       !> The group occurrence.
       type(group_ref), intent(in) :: g
       !> Buildings read before this one.
@@ -942,7 +1544,7 @@ contains
       real(dp), allocatable :: height(:), mass(:), load_coeff(:), stiffness(:), e_modulus(:), &
                                inertia(:), gravity_load(:)
       integer, allocatable :: n_columns(:)
-      character(len=len(lines)), allocatable :: buf(:)
+      character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
       integer :: ios, n
@@ -969,7 +1571,7 @@ contains
       gravity_load = unset_real
       n_columns = unset_int
       at = site_of(path, g)
-      call group_text(lines, g, buf)
+      call group_text(text, g, buf)
       msg = ' '
       read (buf, nml=building, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
@@ -1063,11 +1665,11 @@ contains
    end subroutine check_name
 
    !> `&contact`: unilateral constraints between facing floors of two buildings.
-   subroutine read_contact(path, lines, g, buildings, cfg, error)
+   subroutine read_contact(path, text, g, buildings, cfg, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
-      !> Deck lines.
-      character(len=*), intent(in) :: lines(:)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
       !> The group occurrence.
       type(group_ref), intent(in) :: g
       !> All buildings of the deck (already resolved).
@@ -1082,7 +1684,7 @@ contains
       real(dp) :: stiffness, dashpot, yield_force, second_slope, peak_force, peak_penetration, &
                   fracture_penetration
       integer :: n_segments
-      character(len=len(lines)), allocatable :: buf(:)
+      character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
       integer :: ios, n, k, i
@@ -1111,7 +1713,7 @@ contains
       n_segments = unset_int
       dashpot = 0.0_dp
       at = site_of(path, g)
-      call group_text(lines, g, buf)
+      call group_text(text, g, buf)
       msg = ' '
       read (buf, nml=contact, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
@@ -1126,6 +1728,12 @@ contains
       if (cfg%left_index == cfg%right_index) then
          call fail(at, 'right', "right = '"//trim(adjustl(right))//"' is the same building as left = '"// &
                    trim(adjustl(left))//"'; a contact joins two different buildings", error)
+         return
+      end if
+      if (cfg%left_index > cfg%right_index) then
+         call fail(at, 'left', "left = '"//cfg%left//"' stands right of right = '"//cfg%right// &
+                   "': the buildings stand left to right in deck order ("// &
+                   building_names(buildings)//"); swap left and right", error)
          return
       end if
       at%label = at%label//' ('//cfg%left//', '//cfg%right//')'
@@ -1225,6 +1833,8 @@ contains
                          'stiffness = '//str(stiffness), error)
                return
             end if
+            call check_plausible(at, 'second_slope', second_slope, 'second_slope', error)
+            if (allocated(error)) return
             cfg%second_slope = second_slope
          end if
       case ('piecewise')
@@ -1309,6 +1919,9 @@ contains
          end if
          cfg%envelope_d = envelope_d(1:nd)
          cfg%envelope_r = envelope_r(1:nd)
+         call check_plausible(at, 'stiffness', probe%stiffness, &
+                              'k0 = envelope_r(1)/envelope_d(1)', error, line_of='envelope_r')
+         if (allocated(error)) return
          cfg%stiffness = probe%stiffness
       end subroutine take_points
 
@@ -1348,6 +1961,9 @@ contains
             call check_real(at, 'peak_force', peak_force, '>', 0.0_dp, error)
             if (allocated(error)) return
             k0 = 2.0_dp*peak_force/peak_penetration
+            call check_plausible(at, 'stiffness', k0, 'k0 = 2 peak_force/peak_penetration', error, &
+                                 line_of='peak_force')
+            if (allocated(error)) return
          end if
          if (n_segments == unset_int) n_segments = 8
          if (n_segments < 1 .or. n_segments > max_segments) then
@@ -1365,11 +1981,11 @@ contains
    end subroutine read_contact
 
    !> `&sweep`: range of seismic-joint gaps and the optional target for |lambda|.
-   subroutine read_sweep(path, lines, g, n_contacts, cfg, error)
+   subroutine read_sweep(path, text, g, n_contacts, cfg, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
-      !> Deck lines.
-      character(len=*), intent(in) :: lines(:)
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
       !> The group occurrence.
       type(group_ref), intent(in) :: g
       !> Number of `&contact` groups in the deck.
@@ -1381,7 +1997,7 @@ contains
       real(dp) :: gap_from, gap_to, target_lambda
       integer :: n_gaps, ios
       character(len=path_len) :: target_quantities
-      character(len=len(lines)), allocatable :: buf(:)
+      character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
       namelist /sweep/ gap_from, gap_to, n_gaps, target_lambda, target_quantities
@@ -1392,7 +2008,7 @@ contains
       n_gaps = unset_int
       target_quantities = 'u a_abs drift storey_shear'
       at = site_of(path, g)
-      call group_text(lines, g, buf)
+      call group_text(text, g, buf)
       msg = ' '
       read (buf, nml=sweep, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
@@ -1455,10 +2071,7 @@ contains
       integer :: i
 
       idx = 0
-      names = buildings(1)%name
-      do i = 2, size(buildings)
-         names = names//', '//buildings(i)%name
-      end do
+      names = building_names(buildings)
       name = trim(adjustl(raw))
       if (len(name) == 0) then
          call fail(at, var, var//' is missing or blank (name of '//what//'; buildings: '// &
@@ -1474,6 +2087,19 @@ contains
       call fail(at, var, var//" = '"//name//"' is not a building of the deck; buildings: "// &
                 names, error)
    end subroutine find_building
+
+   !> The buildings' names in deck order, comma separated.
+   pure function building_names(buildings) result(names)
+      !> All buildings of the deck.
+      type(building_config), intent(in) :: buildings(:)
+      character(len=:), allocatable :: names
+      integer :: i
+
+      names = buildings(1)%name
+      do i = 2, size(buildings)
+         names = names//', '//buildings(i)%name
+      end do
+   end function building_names
 
    !> Floors of building `b` in each pair: 1..`max_pairs` values, none missing, each in
    !> 1..n_storeys of `b`.
@@ -1762,6 +2388,11 @@ contains
             call fail(at, var, var//'('//str(i)//') = '//str(raw(i))//', must be >= 1', error)
             return
          end if
+         if (raw(i) > max_columns) then
+            call fail(at, var, var//'('//str(i)//') = '//str(raw(i))//', outside the plausible '// &
+                      'range: must be <= '//str(max_columns)//' (see the input bounds in the README)', error)
+            return
+         end if
       end do
       values = raw(1:n)
    end subroutine take_ints
@@ -1842,7 +2473,10 @@ contains
       case default
          ok = x > bound .or. x < bound
       end select
-      if (ok) return
+      if (ok) then
+         call check_plausible(at, var, x, shown, error)
+         return
+      end if
       if (present(bound_text)) then
          limit = bound_text
       else if (.not. (abs(bound) > 0.0_dp)) then
@@ -1852,6 +2486,52 @@ contains
       end if
       call fail(at, var, shown//' = '//str(x)//', must be '//rule//' '//limit, error)
    end subroutine check_real
+
+
+   !> `x` must lie in the plausible range of `var` (if it has one, see `bounds`).
+   pure subroutine check_plausible(at, var, x, shown, error, line_of)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Value read.
+      real(dp), intent(in) :: x
+      !> How to show the variable, e.g. 'height(3)'.
+      character(len=*), intent(in) :: shown
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      !> Variable whose line the message names (default `var`; for derived values).
+      character(len=*), intent(in), optional :: line_of
+      real(dp) :: lo, hi, v
+      character(len=:), allocatable :: unit, what
+      logical :: magnitude
+      integer :: k
+
+      do k = 1, size(bounds)
+         if (bounds(k)%key == at%group%name//':'//var) exit
+      end do
+      if (k > size(bounds)) return
+      lo = bounds(k)%lo
+      hi = bounds(k)%hi
+      unit = trim(bounds(k)%unit)
+      magnitude = bounds(k)%magnitude
+      v = x
+      what = shown
+      if (magnitude) then
+         v = abs(x)
+         what = '|'//shown//'|'
+      end if
+      if (v >= lo .and. v <= hi) return
+      if (len(unit) > 0) unit = ' '//unit
+      what = what//' must be in '//short_real(lo)//'..'//short_real(hi)//unit
+      if (present(line_of)) then
+         call fail(at, line_of, shown//' = '//str(x)//unit//', outside the plausible range: '// &
+                   what//' (see the input bounds in the README)', error)
+         return
+      end if
+      call fail(at, var, shown//' = '//str(x)//unit//', outside the plausible range: '//what// &
+                ' (see the input bounds in the README)', error)
+   end subroutine check_plausible
 
    !> Whether the deck gave `x` (it is not the `unset_real` marker; safe for NaN).
    pure logical function is_set(x)

@@ -227,6 +227,9 @@ contains
             text = text//trim(line)//new_line('a')
          end if
       end if
+      call add_warnings(text, unc%warnings)
+      if (coupled) call add_warnings(text, cpl%warnings)
+      if (deck%sweep%active) call add_warnings(text, sweep%warnings)
       text = text//'  wrote '//outputs%listing//' and '//outputs%h5//new_line('a')
       if (stdout_closed) then
          call stop_with('cannot write the summary: standard output is closed (the results were written to '// &
@@ -236,6 +239,18 @@ contains
       if (e /= 0) call stop_with('cannot write the summary to standard output: '//posix_strerror(e)// &
                                  ' (the results were written to '//outputs%listing//' and '//outputs%h5//')', 1)
    end subroutine write_summary
+
+   !> Append the warnings of an analysis or sweep to the summary text, one line each.
+   subroutine add_warnings(text, warnings)
+      character(len=:), allocatable, intent(inout) :: text
+      character(len=:), allocatable, intent(in) :: warnings(:)
+      integer :: i
+
+      if (.not. allocated(warnings)) return
+      do i = 1, size(warnings)
+         text = text//'  WARNING: '//trim(warnings(i))//new_line('a')
+      end do
+   end subroutine add_warnings
 
    !> Test hook: with POUND_TEST_PAUSE_WRITING=<seconds> in the environment, the run sleeps
    !> after its listing is written and before its HDF5 file is (so that a test can signal

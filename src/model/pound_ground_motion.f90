@@ -26,7 +26,7 @@ module pound_ground_motion
    private
 
    public :: ground_motion_t, standard_gravity
-   public :: pulse_motion, record_motion, sample_ground, ground_accel
+   public :: pulse_motion, record_motion, sample_ground, ground_accel, check_ground_samples
    public :: pulse_displacement, pulse_velocity, pulse_acceleration
    public :: peak_ground_accel, describe_ground
 
@@ -108,7 +108,8 @@ contains
    end subroutine record_motion
 
    !> Ground acceleration at the solver's steps: ag(n) = a_g(n dt), n = 0..n_steps.
-   pure subroutine sample_ground(gm, dt, n_steps, ag)
+   !> With `error`, the samples are checked (`check_ground_samples`).
+   pure subroutine sample_ground(gm, dt, n_steps, ag, error)
       !> Ground motion.
       type(ground_motion_t), intent(in) :: gm
       !> Solver time step (s).
@@ -118,12 +119,49 @@ contains
       !> Preallocated with lower bound 0 and at least n_steps+1 elements; on return
       !> ag(0:n_steps) holds a_g(t_n) (m/s^2). Elements beyond n_steps are left alone.
       real(dp), intent(inout) :: ag(0:)
+      !> Error state: a sample that is not finite.
+      type(error_type), allocatable, intent(out), optional :: error
       integer :: n
 
       do n = 0, n_steps
          ag(n) = ground_accel(gm, real(n, dp)*dt)
       end do
+      if (present(error)) call check_ground_samples(ag(0:n_steps), dt, error, gm)
    end subroutine sample_ground
+
+   !> Fail on the first ground acceleration sample that is not finite, naming its time and
+   !> the `&ground` variables it comes from (those of `gm` when given).
+   pure subroutine check_ground_samples(ag, dt, error, gm)
+      !> Samples a_g(n dt), n = 0.. (m/s^2).
+      real(dp), intent(in) :: ag(0:)
+      !> Solver time step (s).
+      real(dp), intent(in) :: dt
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      !> The ground motion the samples came from.
+      type(ground_motion_t), intent(in), optional :: gm
+      character(len=:), allocatable :: origin
+      integer :: n
+
+      do n = 0, ubound(ag, 1)
+         if (ieee_is_finite(ag(n))) cycle
+         origin = 'x0, a, b (pulse) or the record''s values times scale'
+         if (present(gm)) then
+            select case (gm%kind)
+            case ('pulse')
+               origin = 'x0 = '//str(gm%x0)//' m, a = '//str(gm%a)//' 1/s, b = '//str(gm%b)// &
+                        ' rad/s (x0 exp(-a t) ((a^2 - b^2) sin(b t) - 2 a b cos(b t)))'
+            case ('record')
+               origin = 'the values of record '//gm%path//' (in g) times scale = '//str(gm%scale)// &
+                        ' times 9.81 m/s^2'
+            end select
+         end if
+         call fatal_error(error, '&ground: the ground acceleration at t = '//str(real(n, dp)*dt)// &
+                          ' s (step '//str(n)//') is not finite ('//str(ag(n))//' m/s^2): it comes from '// &
+                          origin)
+         return
+      end do
+   end subroutine check_ground_samples
 
    !> Ground acceleration a_g(t) (m/s^2).
    elemental function ground_accel(gm, t) result(ag)

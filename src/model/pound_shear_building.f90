@@ -7,6 +7,7 @@
 !> periods come from the banded generalized eigenproblem (K+G) phi = omega^2 M phi (dsbgv),
 !> and Rayleigh damping C = a0 M + a1 (K+G) is fitted at two chosen modes.
 module pound_shear_building
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
@@ -15,7 +16,7 @@ module pound_shear_building
    implicit none
    private
 
-   public :: shear_building, build_shear_building, rayleigh_coefficients
+   public :: shear_building, build_shear_building, rayleigh_coefficients, building_label
 
    real(dp), parameter :: pi = acos(-1.0_dp)
 
@@ -23,6 +24,8 @@ module pound_shear_building
    type :: shear_building
       !> Name (from the deck).
       character(len=:), allocatable :: name
+      !> Occurrence of its `&building` group in the deck (0: not known).
+      integer :: number = 0
       !> Number of floors = number of storeys.
       integer :: n = 0
       !> Storey heights (m).
@@ -67,19 +70,30 @@ contains
    !>
    !> Fails if K+G is not positive definite: the building buckles under its own gravity
    !> loads (the message names the storey and its load ratio theta_j = P_j / (h_j k_j)).
-   subroutine build_shear_building(cfg, b, error)
+   !>
+   !> Every derived quantity is checked where it is computed (masses, storey stiffnesses,
+   !> axial loads, P/h, the entries of K+G, the frequencies and the Rayleigh coefficients):
+   !> a value that is not finite (or not positive where it must be) fails with a message
+   !> naming the building, the storey or floor and the deck variables it came from, before
+   !> any solver sees it.
+   subroutine build_shear_building(cfg, b, error, number)
       !> Validated deck entry.
       type(building_config), intent(in) :: cfg
       !> The model.
       type(shear_building), intent(out) :: b
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Occurrence of the `&building` group in the deck, for messages.
+      integer, intent(in), optional :: number
       integer :: n, j, jmax
       real(dp) :: theta, theta_max
 
       n = cfg%n_storeys
       b%name = cfg%name
+      if (present(number)) b%number = number
       b%n = n
+      call check_inputs(cfg, b, error)
+      if (allocated(error)) return
       b%height = cfg%height
       b%mass = cfg%mass
       b%storey_stiffness = cfg%stiffness
@@ -95,6 +109,18 @@ contains
             b%axial_load(j) = b%axial_load(j + 1) + cfg%gravity_load(j)
          end do
          b%geometric_stiffness = b%axial_load/b%height
+         do j = 1, n
+            if (.not. ieee_is_finite(b%axial_load(j))) then
+               call not_finite(error, b, 'storey '//str(j)//': axial load P (the gravity loads at and above '// &
+                               'floor '//str(j)//') from gravity_load', b%axial_load(j))
+               return
+            end if
+            if (.not. ieee_is_finite(b%geometric_stiffness(j))) then
+               call not_finite(error, b, 'storey '//str(j)//': geometric stiffness P/h from gravity_load, '// &
+                               'height', b%geometric_stiffness(j))
+               return
+            end if
+         end do
       end if
 
       ! Stability under gravity: K+G = D^T diag(k_j - P_j/h_j) D with D the (invertible)
@@ -121,31 +147,151 @@ contains
       do j = 1, n
          call band_add_storey(b%kt, j, b%storey_stiffness(j) - b%geometric_stiffness(j))
       end do
+      do j = 1, n
+         if (.not. (ieee_is_finite(b%kt(1, j)) .and. ieee_is_finite(b%kt(2, j)))) then
+            call not_finite(error, b, 'floor '//str(j)//': stiffness matrix entry K+G (k - P/h of the '// &
+                            'storeys below and above) from '//origin(cfg, 'stiffness')//trim(merge( &
+                            ', height, gravity_load', '                      ', b%p_delta)), &
+                            merge(b%kt(1, j), b%kt(2, j), .not. ieee_is_finite(b%kt(1, j))))
+            return
+         end if
+      end do
 
-      call natural_frequencies(b, error)
+      call natural_frequencies(b, cfg, error)
       if (allocated(error)) return
       call rayleigh_coefficients(b%omega, b%damping_ratio, b%damping_modes, b%a0, b%a1)
+      if (.not. (ieee_is_finite(b%a0) .and. ieee_is_finite(b%a1))) then
+         call fatal_error(error, building_label(b)//': Rayleigh coefficients a0 = '//str(b%a0)//', a1 = '// &
+                          str(b%a1)//' from damping_ratio, damping_modes and the natural frequencies ('// &
+                          'mass, '//origin(cfg, 'stiffness')//') are not finite')
+      end if
    end subroutine build_shear_building
 
+   !> `&building #k (name)` when the occurrence is known, else `building name`.
+   pure function building_label(b) result(s)
+      !> The model.
+      type(shear_building), intent(in) :: b
+      character(len=:), allocatable :: s
+
+      if (b%number > 0) then
+         s = '&building #'//str(b%number)//' ('//b%name//')'
+      else
+         s = 'building '//b%name
+      end if
+   end function building_label
+
+   !> The deck variables the storey stiffnesses (`what` = 'stiffness') or the floor masses
+   !> (`what` = 'mass') come from, as recorded by the reader.
+   pure function origin(cfg, what) result(s)
+      type(building_config), intent(in) :: cfg
+      character(len=*), intent(in) :: what
+      character(len=:), allocatable :: s
+
+      s = what
+      if (what == 'mass' .and. allocated(cfg%mass_source)) then
+         if (cfg%mass_source == 'load_coeff') s = 'load_coeff, ref_floor_load'
+      else if (what == 'stiffness' .and. allocated(cfg%stiffness_source)) then
+         if (cfg%stiffness_source == 'columns') s = 'n_columns, e_modulus, inertia, height'
+      end if
+   end function origin
+
+   !> Error: `what` (a derived quantity and the deck variables it came from) is `x`, not finite.
+   pure subroutine not_finite(error, b, what, x)
+      type(error_type), allocatable, intent(out) :: error
+      type(shear_building), intent(in) :: b
+      character(len=*), intent(in) :: what
+      real(dp), intent(in) :: x
+
+      call fatal_error(error, building_label(b)//': '//what//' is not finite ('//str(x)//')')
+   end subroutine not_finite
+
+   !> The storey and floor data as derived by the reader: masses positive and finite,
+   !> stiffnesses positive and finite, gravity loads finite.
+   pure subroutine check_inputs(cfg, b, error)
+      type(building_config), intent(in) :: cfg
+      type(shear_building), intent(in) :: b
+      type(error_type), allocatable, intent(out) :: error
+      integer :: j
+
+      do j = 1, cfg%n_storeys
+         if (.not. (cfg%mass(j) > 0.0_dp .and. ieee_is_finite(cfg%mass(j)))) then
+            call fatal_error(error, building_label(b)//': floor '//str(j)//': mass from '//origin(cfg, 'mass')// &
+                             ' is not positive and finite ('//str(cfg%mass(j))//' t)')
+            return
+         end if
+         if (.not. (cfg%stiffness(j) > 0.0_dp .and. ieee_is_finite(cfg%stiffness(j)))) then
+            if (origin(cfg, 'stiffness') == 'stiffness') then
+               call fatal_error(error, building_label(b)//': storey '//str(j)//': stiffness is not '// &
+                                'positive and finite ('//str(cfg%stiffness(j))//' kN/m)')
+            else
+               call fatal_error(error, building_label(b)//': storey '//str(j)//': stiffness n_columns '// &
+                                '12 E I / h^3 (3 E I / h^3 fixed-pinned) from n_columns, e_modulus, inertia, '// &
+                                'height is not positive and finite ('//str(cfg%stiffness(j))//' kN/m)')
+            end if
+            return
+         end if
+         if (cfg%p_delta) then
+            if (.not. ieee_is_finite(cfg%gravity_load(j))) then
+               call fatal_error(error, building_label(b)//': floor '//str(j)//': gravity_load (default: '// &
+                                'the floor load from '//origin(cfg, 'mass')//') is not finite ('// &
+                                str(cfg%gravity_load(j))//' kN)')
+               return
+            end if
+         end if
+      end do
+   end subroutine check_inputs
+
    !> Natural frequencies from the banded generalized eigenproblem (K+G, M) by dsbgv.
-   subroutine natural_frequencies(b, error)
+   !>
+   !> Guarded: the largest omega^2 is bounded by max_i sum_j |(K+G)_ij| / m_i (Gershgorin);
+   !> if that bound overflows, or the frequencies come out zero (underflow) or not finite,
+   !> the message names the masses and stiffnesses instead of the solver.
+   subroutine natural_frequencies(b, cfg, error)
       type(shear_building), intent(inout) :: b
+      type(building_config), intent(in) :: cfg
       type(error_type), allocatable, intent(out) :: error
       real(dp), allocatable :: ab(:, :), bb(:, :), w(:), work(:)
-      real(dp) :: z(1, 1)
-      integer :: info
+      real(dp) :: z(1, 1), bound
+      integer :: info, i, stat
+      character(len=:), allocatable :: sources
 
-      allocate (ab(2, b%n), bb(1, b%n), w(b%n), work(3*b%n))
+      sources = 'mass ('//origin(cfg, 'mass')//') and storey stiffness ('//origin(cfg, 'stiffness')//')'
+      do i = 1, b%n
+         bound = abs(b%kt(2, i))
+         if (i > 1) bound = bound + abs(b%kt(1, i))
+         if (i < b%n) bound = bound + abs(b%kt(1, i + 1))
+         bound = bound/b%mass(i)
+         if (.not. ieee_is_finite(bound)) then
+            call fatal_error(error, building_label(b)//': floor '//str(i)//': the natural frequencies '// &
+                             'overflow: (K+G)/M up to '//str(bound)//' 1/s^2 from '//sources)
+            return
+         end if
+      end do
+      allocate (ab(2, b%n), bb(1, b%n), w(b%n), work(3*b%n), stat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, building_label(b)//': cannot allocate the eigenvalue workspace ('// &
+                          str(6*b%n)//' reals; n_storeys = '//str(b%n)//')')
+         return
+      end if
       ab = b%kt
       bb(1, :) = b%mass
       call dsbgv('N', 'U', b%n, 1, 0, ab, 2, bb, 1, w, z, 1, work, info)
-      if (info /= 0 .or. any(w <= 0.0_dp)) then
-         call fatal_error(error, 'building '//b%name//': eigenvalue solver dsbgv failed (info = '// &
-                          str(info)//')')
+      if (info /= 0) then
+         call fatal_error(error, building_label(b)//': eigenvalue solver dsbgv failed (info = '// &
+                          str(info)//'); check '//sources)
+         return
+      end if
+      if (.not. (w(1) > 0.0_dp .and. ieee_is_finite(w(b%n)))) then
+         call fatal_error(error, building_label(b)//': natural frequencies out of range (omega^2 from '// &
+                          str(w(1))//' to '//str(w(b%n))//' 1/s^2) from '//sources)
          return
       end if
       b%omega = sqrt(w)
       b%period = 2.0_dp*pi/b%omega
+      if (.not. (ieee_is_finite(b%period(1)) .and. b%period(b%n) > 0.0_dp)) then
+         call fatal_error(error, building_label(b)//': natural periods out of range ('//str(b%period(b%n))// &
+                          ' to '//str(b%period(1))//' s) from '//sources)
+      end if
    end subroutine natural_frequencies
 
    !> Rayleigh coefficients giving damping ratio `zeta` at modes i and j.

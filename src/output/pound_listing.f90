@@ -102,6 +102,21 @@ contains
       end if
    end subroutine close_listing
 
+   !> Warnings of an analysis or a sweep, one line each after '  WARNING: '.
+   subroutine write_warning_lines(u, warnings)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> The warnings (none when unallocated).
+      character(len=:), allocatable, intent(in) :: warnings(:)
+      integer :: i
+
+      if (.not. allocated(warnings)) return
+      do i = 1, size(warnings)
+         write (u, '(a)', iostat=ios, iomsg=msg) '  WARNING: '//trim(warnings(i))
+         call note_io()
+      end do
+   end subroutine write_warning_lines
+
    !> Keep the first failed write.
    subroutine note_io()
       if (ios /= 0 .and. first_ios == 0) then
@@ -256,6 +271,7 @@ contains
          '  Energy audit (input = kinetic + strain + damping + contact + plastic), '// &
          'max relative error over time: ', res%energy_error
       call note_io()
+      call write_warning_lines(u, res%warnings)
       j = res%n_out
       write (u, '(a)', iostat=ios, iomsg=msg) &
          '  at the end [kJ]:      input     kinetic      strain     damping     contact     plastic'
@@ -506,6 +522,7 @@ contains
             call note_io()
          end if
       end if
+      call write_warning_lines(u, res%warnings)
    end subroutine write_sweep_table
 
 end module pound_listing

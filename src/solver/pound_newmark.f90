@@ -11,10 +11,11 @@
 !> `newmark_commit` updates u, v, a and the energy accumulators.
 !> Equation of motion, relative to the ground: M a + C v + (K+G) u = -M 1 a_g + f_ext.
 module pound_newmark
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_shear_building, only: shear_building
+   use pound_shear_building, only: shear_building, building_label
    implicit none
    private
 
@@ -39,6 +40,10 @@ module pound_newmark
       real(dp) :: input_work = 0.0_dp
       !> Energy dissipated by viscous damping (kJ).
       real(dp) :: damping_energy = 0.0_dp
+      !> Kinetic and strain energy at the current time (kJ), summed in the fused update of
+      !> `newmark_commit` for the energy audit of every step (they agree with
+      !> `kinetic_energy` and `strain_energy` to round-off).
+      real(dp) :: kinetic = 0.0_dp, strain = 0.0_dp
    end type newmark_state
 
    interface
@@ -73,7 +78,8 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: fk, fm
-      integer :: n, info
+      integer :: n, info, i, stat
+      character(len=:), allocatable :: sources
 
       n = b%n
       st%n = n
@@ -82,18 +88,44 @@ contains
       st%c2 = 2.0_dp/dt
       fk = 1.0_dp + st%c2*b%a1
       fm = st%c1 + st%c2*b%a0
-      allocate (st%d(n), st%e(max(n - 1, 1)))
+      sources = ' from dt = '//str(dt)//' s, the masses, the storey stiffnesses and the damping (a0 = '// &
+                str(b%a0)//', a1 = '//str(b%a1)//')'
+      if (.not. (ieee_is_finite(fk) .and. ieee_is_finite(fm))) then
+         call fatal_error(error, building_label(b)//': Newmark coefficients 1 + 2 a1/dt = '//str(fk)// &
+                          ' and 4/dt^2 + 2 a0/dt = '//str(fm)//sources//' are not finite')
+         return
+      end if
+      allocate (st%d(n), st%e(max(n - 1, 1)), st%u(n), st%v(n), st%a(n), st%du(n), st%cv(n), stat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, building_label(b)//': cannot allocate the integrator state ('// &
+                          str(7*n)//' reals; n_storeys = '//str(n)//')')
+         return
+      end if
       st%d = fk*b%kt(2, :) + fm*b%mass
       st%e = 0.0_dp
       if (n > 1) st%e(1:n - 1) = fk*b%kt(1, 2:n)
+      do i = 1, n
+         if (.not. (ieee_is_finite(st%d(i)) .and. ieee_is_finite(st%e(min(i, size(st%e)))))) then
+            call fatal_error(error, building_label(b)//': floor '//str(i)//': effective stiffness Khat = '// &
+                             '(K+G)(1 + 2 a1/dt) + M (4/dt^2 + 2 a0/dt)'//sources//' is not finite')
+            return
+         end if
+      end do
       call dpttrf(n, st%d, st%e, info)
       if (info /= 0) then
-         call fatal_error(error, 'building '//b%name//': effective stiffness not positive definite '// &
-                          '(dpttrf info = '//str(info)//')')
+         call fatal_error(error, building_label(b)//': effective stiffness not positive definite '// &
+                          '(dpttrf info = '//str(info)//')'//sources)
          return
       end if
       st%dinv = 1.0_dp/st%d
-      allocate (st%u(n), st%v(n), st%a(n), st%du(n), st%cv(n))
+      do i = 1, n
+         if (.not. (ieee_is_finite(st%d(i)) .and. ieee_is_finite(st%dinv(i)) .and. &
+                    ieee_is_finite(st%e(min(i, size(st%e)))))) then
+            call fatal_error(error, building_label(b)//': floor '//str(i)//': factorization of the '// &
+                             'effective stiffness Khat out of range (pivot '//str(st%d(i))//')'//sources)
+            return
+         end if
+      end do
       st%u = 0.0_dp
       st%v = 0.0_dp
       st%a = -ag0
@@ -101,6 +133,8 @@ contains
       st%cv = 0.0_dp
       st%input_work = 0.0_dp
       st%damping_energy = 0.0_dp
+      st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
+      st%strain = 0.0_dp
    end subroutine newmark_init
 
    !> Increment du of the step for the ground acceleration increment `dag` alone.
@@ -165,54 +199,107 @@ contains
       real(dp) :: mdu, ddamp
 
       call commit_kernel(st%n, st%c1, st%c2, b%a0, b%a1, b%mass, b%kt, st%du, st%u, st%v, st%a, &
-                         st%cv, mdu, ddamp)
+                         st%cv, mdu, ddamp, st%kinetic, st%strain)
       st%damping_energy = st%damping_energy + 0.5_dp*ddamp
       st%input_work = st%input_work - 0.5_dp*(ag_old + ag_new)*mdu
    end subroutine newmark_commit
 
-   !> Newmark update of u, v, a from du; C v at the new time; sum(m du) and du.(Cv_old + Cv_new).
-   pure subroutine commit_kernel(n, c1, c2, a0, a1, mass, kt, du, u, v, a, cv, mdu, ddamp)
+   !> Newmark update of u, v, a from du; C v at the new time; sum(m du) and du.(Cv_old + Cv_new);
+   !> the kinetic and strain energy at the new time.
+   !>
+   !> Each sum is kept in four partial sums, element i going to partial sum mod(i, 4), so that
+   !> the loops are not bound by the latency of one chain of additions. The loops run over
+   !> blocks of four consecutive elements with one accumulator per lane (lane l of a block
+   !> starting at i0 holds partial sum mod(i0 + l, 4)), which the compiler can vectorise.
+   pure subroutine commit_kernel(n, c1, c2, a0, a1, mass, kt, du, u, v, a, cv, mdu, ddamp, ek, es)
       integer, intent(in) :: n
       real(dp), intent(in) :: c1, c2, a0, a1, mass(n), kt(2, n), du(n)
       real(dp), intent(inout) :: u(n), v(n), a(n), cv(n)
-      real(dp), intent(out) :: mdu, ddamp
-      ! The two sums are kept in four partial sums each, so that the loops are not bound by
-      ! the latency of one long chain of additions.
-      real(dp) :: cvi, sm(0:3), sd(0:3)
-      integer :: i, j, last
+      real(dp), intent(out) :: mdu, ddamp, ek, es
+      real(dp) :: cvi, sm(0:3), sd(0:3), sk(0:3), ss(0:3)
+      integer :: i, i0, l, last
 
+      ! Lanes of blocks starting at i0 = 1, 5, 9, ...: lane l holds partial sum mod(l + 1, 4).
       sm = 0.0_dp
-      do i = 1, n
-         j = iand(i, 3)
-         a(i) = c1*du(i) - 2.0_dp*c2*v(i) - a(i)
-         v(i) = c2*du(i) - v(i)
-         u(i) = u(i) + du(i)
-         sm(j) = sm(j) + mass(i)*du(i)
+      sk = 0.0_dp
+      do i0 = 1, n - 3, 4
+         do l = 0, 3
+            i = i0 + l
+            call update_floor(c1, c2, mass(i), du(i), u(i), v(i), a(i), sm(l), sk(l))
+         end do
       end do
-      mdu = (sm(0) + sm(1)) + (sm(2) + sm(3))
+      do i = 4*(n/4) + 1, n
+         l = i - 4*(n/4) - 1
+         call update_floor(c1, c2, mass(i), du(i), u(i), v(i), a(i), sm(l), sk(l))
+      end do
+      ! Partial sums 0, 1, 2, 3 are lanes 3, 0, 1, 2.
+      mdu = (sm(3) + sm(0)) + (sm(1) + sm(2))
+      ek = 0.5_dp*((sk(3) + sk(0)) + (sk(1) + sk(2)))
       ! C v = a0 M v + a1 (K+G) v; (K+G) tridiagonal with kt(1, i) = (K+G)(i-1, i).
       if (n == 1) then
          cvi = (a0*mass(1) + a1*kt(2, 1))*v(1)
          ddamp = du(1)*(cv(1) + cvi)
          cv(1) = cvi
+         es = 0.5_dp*kt(2, 1)*u(1)*u(1)
          return
       end if
+      ! Strain energy sum_j s_j drift_j^2 / 2 with the net storey stiffness s_j = -kt(1, j)
+      ! (j >= 2) and s_1 = kt(2, 1) + kt(1, 2). Element 1 is partial sum 1, elements
+      ! 2..n-1 run in blocks starting at i0 = 2, 6, ... (lane l: partial sum mod(l + 2, 4)),
+      ! element n (and the rest of 2..n-1) one by one.
       sd = 0.0_dp
+      ss = 0.0_dp
       cvi = a0*mass(1)*v(1) + a1*(kt(2, 1)*v(1) + kt(1, 2)*v(2))
-      sd(1) = du(1)*(cv(1) + cvi)
+      sd(3) = du(1)*(cv(1) + cvi)
+      ss(3) = -(kt(2, 1) + kt(1, 2))*u(1)*u(1)
       cv(1) = cvi
       last = n - 1
-      do i = 2, last
-         j = iand(i, 3)
-         cvi = a0*mass(i)*v(i) + a1*(kt(1, i)*v(i - 1) + kt(2, i)*v(i) + kt(1, i + 1)*v(i + 1))
-         sd(j) = sd(j) + du(i)*(cv(i) + cvi)
-         cv(i) = cvi
+      do i0 = 2, last - 3, 4
+         do l = 0, 3
+            i = i0 + l
+            call damp_floor(a0, a1, mass(i), kt(:, i), kt(1, i + 1), v(i - 1:i + 1), u(i - 1:i), du(i), &
+                            cv(i), sd(l), ss(l))
+         end do
+      end do
+      do i = 2 + 4*((last - 1)/4), last
+         l = i - 2 - 4*((last - 1)/4)
+         call damp_floor(a0, a1, mass(i), kt(:, i), kt(1, i + 1), v(i - 1:i + 1), u(i - 1:i), du(i), &
+                         cv(i), sd(l), ss(l))
       end do
       cvi = a0*mass(n)*v(n) + a1*(kt(1, n)*v(n - 1) + kt(2, n)*v(n))
-      sd(iand(n, 3)) = sd(iand(n, 3)) + du(n)*(cv(n) + cvi)
+      l = iand(n + 2, 3)
+      sd(l) = sd(l) + du(n)*(cv(n) + cvi)
+      ss(l) = ss(l) + kt(1, n)*(u(n) - u(n - 1))**2
       cv(n) = cvi
-      ddamp = (sd(0) + sd(1)) + (sd(2) + sd(3))
+      ! Partial sums 0, 1, 2, 3 are lanes 2, 3, 0, 1.
+      ddamp = (sd(2) + sd(3)) + (sd(0) + sd(1))
+      es = -0.5_dp*((ss(2) + ss(3)) + (ss(0) + ss(1)))
    end subroutine commit_kernel
+
+   !> Newmark update of one floor; its terms of sum(m du) and of 2 E_kinetic.
+   pure subroutine update_floor(c1, c2, mass, du, u, v, a, sm, sk)
+      real(dp), intent(in) :: c1, c2, mass, du
+      real(dp), intent(inout) :: u, v, a, sm, sk
+
+      a = c1*du - 2.0_dp*c2*v - a
+      v = c2*du - v
+      u = u + du
+      sm = sm + mass*du
+      sk = sk + mass*v*v
+   end subroutine update_floor
+
+   !> C v of an inner floor i (kt_i = kt(:, i), kt_up = kt(1, i+1), v3 = v(i-1:i+1),
+   !> u2 = u(i-1:i)); its terms of du.(Cv_old + Cv_new) and of -2 E_strain.
+   pure subroutine damp_floor(a0, a1, mass, kt_i, kt_up, v3, u2, du, cv, sd, ss)
+      real(dp), intent(in) :: a0, a1, mass, kt_i(2), kt_up, v3(3), u2(2), du
+      real(dp), intent(inout) :: cv, sd, ss
+      real(dp) :: cvi
+
+      cvi = a0*mass*v3(2) + a1*(kt_i(1)*v3(1) + kt_i(2)*v3(2) + kt_up*v3(3))
+      sd = sd + du*(cv + cvi)
+      ss = ss + kt_i(1)*(u2(2) - u2(1))**2
+      cv = cvi
+   end subroutine damp_floor
 
    !> Kinetic energy of the relative motion, v^T M v / 2 (kJ).
    pure function kinetic_energy(st, b) result(e)
