@@ -1,0 +1,57 @@
+!> Explicit interfaces to the LAPACK routines used by the frame models: band Cholesky and
+!> LU, and the small dense generalized eigenproblem of a Rayleigh-Ritz step
+!> (pound is compiled with -Wimplicit-interface).
+module pound_band_lapack
+   use pound_kinds, only: dp
+   implicit none
+   private
+
+   public :: dpbtrf, dpbtrs, dsygv, dgbtrf, dgbtrs
+
+   interface
+      !> Cholesky factorization of a symmetric positive definite band matrix.
+      subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, kd, ldab
+         real(dp), intent(inout) :: ab(ldab, *)
+         integer, intent(out) :: info
+      end subroutine dpbtrf
+      !> Solve with the Cholesky factor of dpbtrf.
+      subroutine dpbtrs(uplo, n, kd, nrhs, ab, ldab, b, ldb, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, kd, nrhs, ldab, ldb
+         real(dp), intent(in) :: ab(ldab, *)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dpbtrs
+      !> All eigenpairs of a small dense symmetric-definite generalized eigenproblem.
+      subroutine dsygv(itype, jobz, uplo, n, a, lda, b, ldb, w, work, lwork, info)
+         import :: dp
+         integer, intent(in) :: itype, n, lda, ldb, lwork
+         character, intent(in) :: jobz, uplo
+         real(dp), intent(inout) :: a(lda, *), b(ldb, *)
+         real(dp), intent(out) :: w(*), work(*)
+         integer, intent(out) :: info
+      end subroutine dsygv
+      !> LU factorization of a general band matrix with partial pivoting.
+      subroutine dgbtrf(m, n, kl, ku, ab, ldab, ipiv, info)
+         import :: dp
+         integer, intent(in) :: m, n, kl, ku, ldab
+         real(dp), intent(inout) :: ab(ldab, *)
+         integer, intent(out) :: ipiv(*), info
+      end subroutine dgbtrf
+      !> Solve with the LU factors of dgbtrf.
+      subroutine dgbtrs(trans, n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
+         import :: dp
+         character, intent(in) :: trans
+         integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
+         real(dp), intent(in) :: ab(ldab, *)
+         integer, intent(in) :: ipiv(*)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dgbtrs
+   end interface
+
+end module pound_band_lapack
