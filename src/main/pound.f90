@@ -30,7 +30,7 @@ program pound
    use pound_memory, only: estimate_memory, memory_available, memory_refusal
    use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror, &
                           posix_sleep
-   use pound_strings, only: str
+   use pound_strings, only: str, fixed_cell
    implicit none
 
    character(len=:), allocatable :: deck_path, out_dir, record_path
@@ -203,8 +203,8 @@ contains
 
       text = program_name//' '//program_version//': '//deck%analysis%title//new_line('a')
       do ib = 1, size(models)
-         write (line, '(a,i0,a,f9.5,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
-            ' storeys, T1 = ', models(ib)%period(1), ' s'
+         write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
+            ' storeys, T1 = ', fixed_cell(models(ib)%period(1), 9, 5, .true.), ' s'
          text = text//trim(line)//new_line('a')
       end do
       write (line, '(a,es10.3,a,es9.2)') '  uncoupled integration: ', unc%seconds, &

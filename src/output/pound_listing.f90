@@ -4,6 +4,7 @@
 !> and reported by `listing_io_error`, which the caller asks after the last write.
 module pound_listing
    use pound_kinds, only: dp
+   use pound_strings, only: fixed_cell
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_error, only: error_type, fatal_error
    use pound_posix, only: posix_set_errno, posix_storage_error
@@ -208,17 +209,17 @@ contains
                '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
             call note_io()
             do j = 1, b%n
-               write (u, '(2x,i6,f9.3,f12.4,es13.5,es12.4,es13.5,f14.5)', iostat=ios, iomsg=msg) &
-                  j, b%height(j), b%mass(j), &
+               write (u, '(2x,i6,a9,a12,es13.5,es12.4,es13.5,a14)', iostat=ios, iomsg=msg) &
+                  j, fixed_cell(b%height(j), 9, 3, .true.), fixed_cell(b%mass(j), 12, 4, .true.), &
                   b%storey_stiffness(j), b%axial_load(j), b%geometric_stiffness(j), &
-                  b%geometric_stiffness(j)/b%storey_stiffness(j)
+                  fixed_cell(b%geometric_stiffness(j)/b%storey_stiffness(j), 14, 5)
                call note_io()
             end do
             write (u, '(a)', iostat=ios, iomsg=msg) '    mode      T [s]      f [Hz]  omega [rad/s]'
             call note_io()
             do j = 1, min(b%n, max_listed_modes)
-               write (u, '(2x,i6,f11.5,f12.5,f15.4)', iostat=ios, iomsg=msg) &
-                  j, b%period(j), 1.0_dp/b%period(j), b%omega(j)
+               write (u, '(2x,i6,a11,a12,a15)', iostat=ios, iomsg=msg) j, fixed_cell(b%period(j), 11, 5, .true.), &
+                  fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), fixed_cell(b%omega(j), 15, 4, .true.)
                call note_io()
             end do
             if (b%n > max_listed_modes) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '    (', b%n - max_listed_modes, &
@@ -253,16 +254,16 @@ contains
                '   floor     |u| [m]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]'
             call note_io()
             do j = b%n, 1, -1
-               write (u, '(2x,i6,es12.4,f9.3,es12.4,f9.3,es16.4,f9.3)', iostat=ios, iomsg=msg) &
-                  j, p(j, q_u), t(j, q_u), &
-                  p(j, q_v), t(j, q_v), p(j, q_a_abs), t(j, q_a_abs)
+               write (u, '(2x,i6,es12.4,a9,es12.4,a9,es16.4,a9)', iostat=ios, iomsg=msg) &
+                  j, p(j, q_u), fixed_cell(t(j, q_u), 9, 3), &
+                  p(j, q_v), fixed_cell(t(j, q_v), 9, 3), p(j, q_a_abs), fixed_cell(t(j, q_a_abs), 9, 3)
                call note_io()
             end do
             write (u, '(a)', iostat=ios, iomsg=msg) '  storey   |drift| [m]    t [s]   |Q| [kN]     t [s]'
             call note_io()
             do j = b%n, 1, -1
-               write (u, '(2x,i6,es14.4,f9.3,es11.4,f9.3)', iostat=ios, iomsg=msg) j, p(j, q_drift), t(j, q_drift), &
-                  p(j, q_shear), t(j, q_shear)
+               write (u, '(2x,i6,es14.4,a9,es11.4,a9)', iostat=ios, iomsg=msg) j, p(j, q_drift), &
+                  fixed_cell(t(j, q_drift), 9, 3), p(j, q_shear), fixed_cell(t(j, q_shear), 9, 3)
                call note_io()
             end do
          end associate
@@ -446,7 +447,7 @@ contains
                   if (lambda >= huge(1.0_dp)) then
                      cell = '           inf'
                   else
-                     write (cell, '(f14.2)') lambda
+                     cell = fixed_cell(lambda, 14, 2)
                   end if
                end if
                line = line//cell
@@ -500,7 +501,7 @@ contains
                if (res%max_abs_lambda(shown(k), ib, i) >= huge(1.0_dp)) then
                   cell = '       inf'
                else
-                  write (cell, '(f10.2)') res%max_abs_lambda(shown(k), ib, i)
+                  cell = fixed_cell(res%max_abs_lambda(shown(k), ib, i), 10, 2)
                end if
                line = line//cell
             end do
