@@ -204,7 +204,7 @@ contains
       text = program_name//' '//program_version//': '//deck%analysis%title//new_line('a')
       do ib = 1, size(models)
          write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
-            ' storeys, T1 = ', fixed_cell(models(ib)%period(1), 9, 5, .true.), ' s'
+            ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
          text = text//trim(line)//new_line('a')
       end do
       write (line, '(a,es10.3,a,es9.2)') '  uncoupled integration: ', unc%seconds, &
