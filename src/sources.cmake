@@ -5,6 +5,8 @@ set(POUND_SOURCES
   core/pound_version.f90
   # core: pound's own pseudo-random numbers
   core/pound_random.f90
+  # core: the rules of a joint envelope (shared by the deck reader and the contact law)
+  core/pound_envelope_rules.f90
   # deck: configuration types, namelist reader, accelerogram files
   deck/pound_config.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion

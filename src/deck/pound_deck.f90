@@ -39,7 +39,8 @@
 !> 'elastic' (stiffness), 'elastic_plastic' (stiffness, yield_force), 'bilinear' (stiffness,
 !> yield_force, second_slope < stiffness), 'piecewise' (envelope_d, envelope_r: points after the
 !> origin), 'parabola_cubic' (peak_penetration, fracture_penetration, peak_force or stiffness,
-!> n_segments = 8); see pound_contact_law. A variable the chosen law does not use is an error.
+!> n_segments = 8); see pound_contact_law (envelope rules: pound_envelope_rules). A variable the chosen
+!> law does not use is an error.
 !>
 !> Every value is validated and resolved (masses from load coefficients, storey stiffness
 !> from columns, default gravity loads, record path relative to the deck's directory).
@@ -55,7 +56,7 @@ module pound_deck
    use pound_strings, only: str, number_end, decimal_exponent, shorten, short_real
    use pound_config, only: deck_type, analysis_config, ground_config, building_config, &
                            contact_config, sweep_config, n_history_quantities, history_names, g_accel
-   use pound_contact_law, only: contact_law, make_piecewise
+   use pound_envelope_rules, only: check_piecewise_envelope, max_law_points
    implicit none
    private
 
@@ -110,7 +111,7 @@ module pound_deck
    character(len=*), parameter :: law_names = &
       "'elastic', 'elastic_plastic', 'bilinear', 'piecewise' or 'parabola_cubic'"
    !> Largest number of envelope points of a `piecewise` law.
-   integer, parameter :: max_envelope_points = 1000
+   integer, parameter :: max_envelope_points = max_law_points
    !> Largest number of chords per curved branch of `parabola_cubic`.
    integer, parameter :: max_segments = 64
 
@@ -1876,8 +1877,8 @@ contains
       !> `piecewise`: the envelope points, checked by the law's own rules.
       subroutine take_points(error)
          type(error_type), allocatable, intent(out) :: error
-         type(contact_law) :: probe
          character(len=:), allocatable :: why
+         real(dp) :: k0
          integer :: nd, nr, j
 
          nd = given_count(envelope_d)
@@ -1911,7 +1912,7 @@ contains
             call check_real(at, 'envelope_r', envelope_r(j), '>=', 0.0_dp, error, name='envelope_r('//str(j)//')')
             if (allocated(error)) return
          end do
-         call make_piecewise(probe, envelope_d(1:nd), envelope_r(1:nd), 0.0_dp, error)
+         call check_piecewise_envelope(envelope_d(1:nd), envelope_r(1:nd), k0, error)
          if (allocated(error)) then
             why = error%message
             call fail(at, 'envelope_r', 'envelope points: '//why, error)
@@ -1919,10 +1920,10 @@ contains
          end if
          cfg%envelope_d = envelope_d(1:nd)
          cfg%envelope_r = envelope_r(1:nd)
-         call check_plausible(at, 'stiffness', probe%stiffness, &
+         call check_plausible(at, 'stiffness', k0, &
                               'k0 = envelope_r(1)/envelope_d(1)', error, line_of='envelope_r')
          if (allocated(error)) return
-         cfg%stiffness = probe%stiffness
+         cfg%stiffness = k0
       end subroutine take_points
 
       !> `parabola_cubic`: dB, dF, and k0 or rB (k0 = 2 rB/dB), chords per branch.
