@@ -10,7 +10,8 @@ set(POUND_SOURCES
   # deck: configuration types, namelist reader, accelerogram files
   deck/pound_config.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
-  model/pound_band.f90 model/pound_shear_building.f90 model/pound_ground_motion.f90
+  model/pound_band.f90 model/pound_storey_properties.f90 model/pound_shear_building.f90
+  model/pound_ground_motion.f90
   # models: synthetic ground motions (filtered white noise)
   model/pound_synthetic_motion.f90
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)

@@ -1600,7 +1600,7 @@ contains
 
       call resolve_masses(at, n, mass, load_coeff, ref_floor_load, cfg, error)
       if (allocated(error)) return
-      call resolve_stiffness(at, n, cfg%height, stiffness, n_columns, e_modulus, inertia, &
+      call resolve_stiffness(at, n, stiffness, n_columns, e_modulus, inertia, &
                              column_ends, cfg, error)
       if (allocated(error)) return
 
@@ -2159,7 +2159,8 @@ contains
       end if
    end function values_text
 
-   !> Floor masses from `mass` or from `load_coeff` * `ref_floor_load`; default gravity loads.
+   !> Floor masses as `mass`, or as `load_coeff` with `ref_floor_load` (the masses and the default
+   !> gravity loads are derived by the model: pound_storey_properties).
    pure subroutine resolve_masses(at, n, mass, load_coeff, ref_floor_load, cfg, error)
       !> Where messages point.
       type(site), intent(in) :: at
@@ -2171,7 +2172,6 @@ contains
       type(building_config), intent(inout) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      real(dp), allocatable :: coeff(:)
 
       if (given_count(mass) > 0 .and. given_count(load_coeff) > 0) then
          call fail(at, 'load_coeff', 'give either mass or load_coeff (with ref_floor_load), '// &
@@ -2184,18 +2184,16 @@ contains
          end if
          call take_reals(at, 'mass', mass, n, '>', cfg%mass, error)
          if (allocated(error)) return
-         cfg%gravity_load = cfg%mass*g_accel
          cfg%mass_source = 'mass'
       else if (given_count(load_coeff) > 0) then
-         call take_reals(at, 'load_coeff', load_coeff, n, '>', coeff, error)
+         call take_reals(at, 'load_coeff', load_coeff, n, '>', cfg%load_coeff, error)
          if (allocated(error)) return
          call require_real(at, 'ref_floor_load', ref_floor_load, &
                            'floor load m0 g in kN that load_coeff multiplies', error)
          if (allocated(error)) return
          call check_real(at, 'ref_floor_load', ref_floor_load, '>', 0.0_dp, error)
          if (allocated(error)) return
-         cfg%gravity_load = coeff*ref_floor_load
-         cfg%mass = cfg%gravity_load/g_accel
+         cfg%ref_floor_load = ref_floor_load
          cfg%mass_source = 'load_coeff'
       else
          call fail(at, 'mass', 'floor masses are missing: give mass (t) or load_coeff with '// &
@@ -2203,15 +2201,16 @@ contains
       end if
    end subroutine resolve_masses
 
-   !> Storey stiffness from `stiffness` or from the columns (rigid beams).
-   pure subroutine resolve_stiffness(at, n, height, stiffness, n_columns, e_modulus, inertia, &
+   !> Storey stiffness as `stiffness`, or the columns (rigid beams) it is derived from by the
+   !> model (pound_storey_properties).
+   pure subroutine resolve_stiffness(at, n, stiffness, n_columns, e_modulus, inertia, &
                                      column_ends, cfg, error)
       !> Where messages point.
       type(site), intent(in) :: at
       !> Number of storeys.
       integer, intent(in) :: n
-      !> Storey heights (resolved) and namelist arrays as read.
-      real(dp), intent(in) :: height(:), stiffness(:), e_modulus(:), inertia(:)
+      !> Namelist arrays as read.
+      real(dp), intent(in) :: stiffness(:), e_modulus(:), inertia(:)
       !> Namelist array as read (`unset_int` where not given).
       integer, intent(in) :: n_columns(:)
       !> `column_ends` as read.
@@ -2220,10 +2219,7 @@ contains
       type(building_config), intent(inout) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      real(dp), allocatable :: e(:), moment(:)
-      integer, allocatable :: nc(:)
       character(len=:), allocatable :: ends
-      real(dp) :: factor
       logical :: columns
 
       columns = given_count(e_modulus) > 0 .or. given_count(inertia) > 0 .or. &
@@ -2235,24 +2231,23 @@ contains
          call take_reals(at, 'stiffness', stiffness, n, '>', cfg%stiffness, error)
          cfg%stiffness_source = 'stiffness'
       else if (columns) then
-         call take_ints(at, 'n_columns', n_columns, n, nc, error)
+         call take_ints(at, 'n_columns', n_columns, n, cfg%n_columns, error)
          if (allocated(error)) return
-         call take_reals(at, 'e_modulus', e_modulus, n, '>', e, error)
+         call take_reals(at, 'e_modulus', e_modulus, n, '>', cfg%e_modulus, error)
          if (allocated(error)) return
-         call take_reals(at, 'inertia', inertia, n, '>', moment, error)
+         call take_reals(at, 'inertia', inertia, n, '>', cfg%inertia, error)
          if (allocated(error)) return
          ends = lower(trim(adjustl(column_ends)))
          select case (ends)
          case ('', 'fixed-fixed')
-            factor = 12.0_dp
+            cfg%column_ends = 'fixed-fixed'
          case ('fixed-pinned')
-            factor = 3.0_dp
+            cfg%column_ends = 'fixed-pinned'
          case default
             call fail(at, 'column_ends', "column_ends = '"//trim(adjustl(column_ends))// &
                       "', must be 'fixed-fixed' or 'fixed-pinned'", error)
             return
          end select
-         cfg%stiffness = real(nc, dp)*factor*e*moment/height**3
          cfg%stiffness_source = 'columns'
       else
          call fail(at, 'stiffness', 'storey stiffness is missing: give stiffness (kN/m) or '// &
