@@ -101,12 +101,9 @@ contains
 
       call dataset_info(file, path, 1, p, dims, class, error)
       if (.not. allocated(error)) call need_numbers(class, file, 'dataset', p, error)
-      if (allocated(error)) then
-         allocate (values(0))
-         return
-      end if
+      if (allocated(error)) dims = 0
       allocate (values(dims(1)))
-      if (size(values) == 0) return
+      if (allocated(error) .or. size(values) == 0) return
       call h5ltread_dataset_double_f(h5_file_id(file), p, values, dims, hdferr)
       if (hdferr /= 0) call fail(error, file, 'dataset', p, 'h5ltread_dataset_double_f failed')
    end subroutine read_real_1d
@@ -123,12 +120,9 @@ contains
 
       call dataset_info(file, path, 2, p, dims, class, error)
       if (.not. allocated(error)) call need_numbers(class, file, 'dataset', p, error)
-      if (allocated(error)) then
-         allocate (values(0, 0))
-         return
-      end if
+      if (allocated(error)) dims = 0
       allocate (values(dims(1), dims(2)))
-      if (size(values) == 0) return
+      if (allocated(error) .or. size(values) == 0) return
       call h5ltread_dataset_double_f(h5_file_id(file), p, values, dims, hdferr)
       if (hdferr /= 0) call fail(error, file, 'dataset', p, 'h5ltread_dataset_double_f failed')
    end subroutine read_real_2d
@@ -146,12 +140,9 @@ contains
       call dataset_info(file, path, 1, p, dims, class, error)
       if (.not. allocated(error) .and. class /= H5T_INTEGER_F) &
          call fail(error, file, 'dataset', p, 'the stored values are not integers')
-      if (allocated(error)) then
-         allocate (values(0))
-         return
-      end if
+      if (allocated(error)) dims = 0
       allocate (values(dims(1)))
-      if (size(values) == 0) return
+      if (allocated(error) .or. size(values) == 0) return
       call h5ltread_dataset_int_f(h5_file_id(file), p, values, dims, hdferr)
       if (hdferr /= 0) call fail(error, file, 'dataset', p, 'h5ltread_dataset_int_f failed')
    end subroutine read_int_1d
@@ -329,7 +320,7 @@ contains
       integer :: r, hdferr
 
       class = -1
-      allocate (dims(0))
+      allocate (dims(max(rank, 0)), source=0_hsize_t)
       call locate(file, path, 'dataset', .true., p, error)
       if (allocated(error)) return
       call h5ltget_dataset_ndims_f(h5_file_id(file), p, r, hdferr)
