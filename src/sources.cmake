@@ -1,14 +1,19 @@
 # The library's sources, by step (paths relative to src/). The program is src/main/pound.f90.
 set(POUND_SOURCES
-  # core: kinds, errors, strings, whole-file reading, version
+  # core: kinds, errors, strings, whole-file reading, version, POSIX calls
   core/pound_kinds.f90 core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
-  core/pound_version.f90
+  core/pound_version.f90 core/pound_posix.f90
   # core: pound's own pseudo-random numbers
   core/pound_random.f90
-  # deck: configuration types, namelist reader, accelerogram files
-  deck/pound_config.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
+  # core: the rules of a joint envelope (shared by the deck reader and the contact law)
+  core/pound_envelope_rules.f90
+  # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
+  deck/pound_config.f90 deck/pound_deck_variables.f90 deck/pound_deck_lexer.f90 deck/pound_deck_checks.f90
+  deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_building.f90
+  deck/pound_deck_contact.f90 deck/pound_deck_sweep.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
-  model/pound_band.f90 model/pound_structure.f90 model/pound_shear_building.f90 model/pound_ground_motion.f90
+  model/pound_band.f90 model/pound_structure.f90 model/pound_storey_properties.f90
+  model/pound_shear_building.f90 model/pound_ground_motion.f90
   # models: synthetic ground motions (filtered white noise)
   model/pound_synthetic_motion.f90
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)
@@ -23,7 +28,7 @@ set(POUND_SOURCES
   contact/pound_lcp_enumerate.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_influence.f90
-  analysis/pound_sweep.f90
+  analysis/pound_sweep.f90 analysis/pound_memory.f90
   # analyses: response spectra and scaling, code separation rules
   analysis/pound_spectrum.f90 analysis/pound_separation.f90
   # outputs: files, HDF5 layer, results file, listing

@@ -28,6 +28,7 @@ module pound_contact_law
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
+   use pound_envelope_rules, only: max_law_points, check_piecewise_envelope, check_law_constants
    implicit none
    private
 
@@ -53,8 +54,6 @@ module pound_contact_law
    !> Dashpot rate by backward Euler: d'_{n+1} = (d_{n+1} - d_n)/dt (dissipative, no ringing).
    integer, parameter :: rate_backward_euler = 2
 
-   !> Largest number of envelope points of a law.
-   integer, parameter :: max_law_points = 1000
 
    !> A constraint law and its parameters.
    type :: contact_law
@@ -153,7 +152,7 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
 
-      call check_common(k0, dashpot, error)
+      call check_law_constants(k0, dashpot, error)
       if (allocated(error)) return
       law%kind = law_elastic
       law%stiffness = k0
@@ -199,7 +198,7 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
 
-      call check_common(k0, dashpot, error)
+      call check_law_constants(k0, dashpot, error)
       if (allocated(error)) return
       if (.not. (fy > 0.0_dp)) then
          call fatal_error(error, 'yield force must be > 0, got '//str(fy))
@@ -233,43 +232,13 @@ contains
       real(dp), intent(in) :: dashpot
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: i, n
-      real(dp) :: k0, s, tail
+      integer :: n
+      real(dp) :: k0, tail
 
       n = size(d)
-      if (n < 2 .or. size(r) /= n) then
-         call fatal_error(error, 'a piecewise envelope needs at least 2 points (d, r) with as many '// &
-                          'forces as penetrations')
-         return
-      end if
-      if (n > max_law_points) then
-         call fatal_error(error, 'a piecewise envelope may have at most '//str(max_law_points)//' points')
-         return
-      end if
-      if (.not. (d(1) > 0.0_dp .and. r(1) > 0.0_dp)) then
-         call fatal_error(error, 'the first point must have d > 0 and r > 0 (k0 = r/d is its slope)')
-         return
-      end if
-      k0 = r(1)/d(1)
-      do i = 2, n
-         if (.not. (d(i) > d(i - 1))) then
-            call fatal_error(error, 'point '//str(i)//': penetrations must increase, d = '//str(d(i))// &
-                             ' after '//str(d(i - 1)))
-            return
-         end if
-         if (.not. (r(i) >= 0.0_dp) .or. (r(i) == 0.0_dp .and. i < n)) then
-            call fatal_error(error, 'point '//str(i)//': force r = '//str(r(i))//' must be > 0 '// &
-                             '(only the last point may have r = 0, the fracture point)')
-            return
-         end if
-         s = (r(i) - r(i - 1))/(d(i) - d(i - 1))
-         if (.not. (s < k0*(1.0_dp - 1.0e-9_dp))) then
-            call fatal_error(error, 'point '//str(i)//': slope '//str(s)//' must be below the first '// &
-                             'slope k0 = '//str(k0)//' (the envelope yields at point 1)')
-            return
-         end if
-      end do
-      call check_common(k0, dashpot, error)
+      call check_piecewise_envelope(d, r, k0, error)
+      if (allocated(error)) return
+      call check_law_constants(k0, dashpot, error)
       if (allocated(error)) return
       law%kind = law_piecewise
       law%stiffness = k0
@@ -297,7 +266,7 @@ contains
       real(dp) :: d(2*nseg), r(2*nseg)
       integer :: i
 
-      call check_common(k0, dashpot, error)
+      call check_law_constants(k0, dashpot, error)
       if (allocated(error)) return
       if (.not. (db > 0.0_dp .and. df > db)) then
          call fatal_error(error, 'need 0 < dB < dF, got dB = '//str(db)//', dF = '//str(df))
@@ -415,19 +384,6 @@ contains
       ry = law%yr(seg) + law%yh(seg)*(p - law%yp(seg))
    end function yield_force
 
-   !> Checks shared by every law.
-   pure subroutine check_common(k0, dashpot, error)
-      real(dp), intent(in) :: k0, dashpot
-      type(error_type), allocatable, intent(out) :: error
-
-      if (.not. (k0 > 0.0_dp .and. k0 < huge(1.0_dp))) then
-         call fatal_error(error, 'stiffness k0 must be > 0 and finite, got '//str(k0))
-         return
-      end if
-      if (.not. (dashpot >= 0.0_dp .and. dashpot < huge(1.0_dp))) then
-         call fatal_error(error, 'dashpot must be >= 0 and finite, got '//str(dashpot))
-      end if
-   end subroutine check_common
 
    !> Store the envelope nodes (d, r) (origin implied) and derive the yield function.
    !> Nodes first..n yield (node `first` is the elastic limit; 0 = the origin); a falling

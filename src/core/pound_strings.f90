@@ -6,7 +6,7 @@ module pound_strings
    implicit none
    private
 
-   public :: str, number_end, decimal_exponent, is_digit, shorten, short_real
+   public :: str, number_end, decimal_exponent, is_digit, shorten, short_real, fixed_cell
 
    !> Shortest readable text of a number.
    interface str
@@ -218,5 +218,31 @@ contains
          s = s//'e'//str(e)
       end if
    end function short_real
+
+   !> `x` right-aligned in a field of width `w`: fixed point with `d` decimals (Fw.d) when it
+   !> fits, scientific (ESw.k, as many digits as fit) when the fixed form would overflow the
+   !> field (asterisks) or, with `nonzero`, print a non-zero value as zero (a period or a
+   !> mass of 0.00000). A listing column never shows '****' or a misleading 0.
+   pure function fixed_cell(x, w, d, nonzero) result(cell)
+      !> Value.
+      real(dp), intent(in) :: x
+      !> Field width (>= 10 for the scientific form to keep 2 digits).
+      integer, intent(in) :: w
+      !> Decimals of the fixed form.
+      integer, intent(in) :: d
+      !> The value is a physical quantity that is never zero: show its digits however small.
+      logical, intent(in), optional :: nonzero
+      character(len=w) :: cell
+      character(len=16) :: fmt
+      logical :: lost
+
+      write (fmt, '(a,i0,a,i0,a)') '(f', w, '.', d, ')'
+      write (cell, fmt) x
+      lost = .false.
+      if (present(nonzero)) lost = nonzero .and. x /= 0.0_dp .and. abs(x) < 0.5_dp*10.0_dp**(-d)
+      if (index(cell, '*') == 0 .and. .not. lost) return
+      write (fmt, '(a,i0,a,i0,a)') '(es', w, '.', max(1, w - 8), ')'
+      write (cell, fmt) x
+   end function fixed_cell
 
 end module pound_strings

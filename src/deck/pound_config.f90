@@ -1,4 +1,6 @@
-!> What a deck declares, after validation and resolution of derived values.
+!> What a deck declares, after validation: the values as given (engineering derivations such
+!> as masses from load coefficients or storey stiffnesses from columns are the model's, see
+!> pound_storey_properties).
 !>
 !> The deck reader (`pound_deck`) fills these types; the models and the driver read them.
 !> Units throughout: kN, m, s, t (tonne).
@@ -55,11 +57,24 @@ module pound_config
       integer :: n_storeys = 0
       !> Storey heights (m), storey 1 at the bottom.
       real(dp), allocatable :: height(:)
-      !> Floor masses (t).
+      !> Floor masses (t), when given as `mass` (unallocated when the deck gives `load_coeff`;
+      !> pound_storey_properties derives them then).
       real(dp), allocatable :: mass(:)
-      !> Storey lateral stiffness (kN/m).
+      !> Floor load coefficients a_i of `load_coeff` (unallocated when `mass` is given).
+      real(dp), allocatable :: load_coeff(:)
+      !> Reference floor load m0 g (kN) that `load_coeff` multiplies.
+      real(dp) :: ref_floor_load = 0.0_dp
+      !> Storey lateral stiffness (kN/m), when given as `stiffness` (unallocated when the deck
+      !> describes the columns; pound_storey_properties derives it then).
       real(dp), allocatable :: stiffness(:)
-      !> Gravity load applied at each floor (kN), used for P-Delta.
+      !> Columns per storey, their Young's modulus (kN/m^2) and moment of inertia (m^4), when
+      !> the storey stiffness is given by the columns (rigid beams).
+      integer, allocatable :: n_columns(:)
+      real(dp), allocatable :: e_modulus(:), inertia(:)
+      !> End conditions of the columns: 'fixed-fixed' (12 E I / h^3) or 'fixed-pinned' (3 E I / h^3).
+      character(len=:), allocatable :: column_ends
+      !> Gravity load applied at each floor (kN), used for P-Delta, when given as
+      !> `gravity_load` (unallocated otherwise: the default, the floor's weight, is derived).
       real(dp), allocatable :: gravity_load(:)
       !> Damping ratio for Rayleigh damping.
       real(dp) :: damping_ratio = 0.05_dp

@@ -4,11 +4,12 @@
 !>     pound --help | --version
 !>
 !> Every analysis runs the buildings uncoupled and, when the deck declares contact, coupled.
-!> Outputs are written under temporary names and renamed at the end; on any error nothing
-!> is left behind and the exit status is non-zero.
+!> Before computing, the memory the run needs is checked against what the machine can give
+!> (pound_memory) and the output folder is created and reserved (pound_files). Outputs are
+!> written under temporary names unique to the run and published together at the end; on any
+!> error, SIGINT or SIGTERM this run's temporaries are removed and the exit status is non-zero.
 program pound
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
-   use, intrinsic :: iso_c_binding, only: c_int
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_version, only: program_name, program_version
@@ -17,23 +18,22 @@ program pound
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_shear_building, only: shear_building, build_shear_building
-   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled
+   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
-                            write_contact_summary, write_influence_tables, write_sweep_table
+                            write_contact_summary, write_influence_tables, write_sweep_table, &
+                            open_listing, close_listing
    use pound_sweep, only: sweep_result, run_sweep
    use pound_results_h5, only: write_results_h5
-   use pound_files, only: rename_file, delete_file, file_stem, temporary_name, join_path
+   use pound_files, only: output_set, plan_outputs, publish_outputs, discard_outputs, &
+                          install_signal_cleanup
+   use pound_memory, only: estimate_memory, memory_available, memory_refusal
+   use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror, &
+                          posix_sleep
+   use pound_strings, only: str, fixed_cell
    implicit none
 
-   interface
-      subroutine c_exit(status) bind(C, name='exit')
-         import :: c_int
-         integer(c_int), value :: status
-      end subroutine c_exit
-   end interface
-
-   character(len=:), allocatable :: deck_path, out_dir, listing_path, h5_path
+   character(len=:), allocatable :: deck_path, out_dir, record_path
    type(deck_type) :: deck
    type(ground_motion_t) :: gm
    type(shear_building), allocatable :: models(:)
@@ -41,28 +41,43 @@ program pound
    type(contact_system) :: cs
    type(contact_pair), allocatable :: pairs(:)
    type(sweep_result) :: sweep
+   type(output_set) :: outputs
    character(len=64), allocatable :: names(:)
-   logical :: coupled
+   logical :: coupled, stdout_closed
    type(error_type), allocatable :: error
-   real(dp), allocatable :: ag(:)
+   real(dp), allocatable :: ag(:), ag_out(:)
    character(len=512) :: ground_text(1)
-   integer :: n_steps, ib, u
+   integer :: n_steps, n_out, ib
 
+   call install_signal_cleanup()
+   call guard_standard_descriptors()
    call parse_arguments()
    call read_deck(deck_path, deck, error)
    call check(error)
 
-   ! Ground motion at the solver's steps.
+   ! Ground motion (a record is read whole: its memory is proportional to the file).
    select case (deck%ground%kind)
    case ('pulse')
       call pulse_motion(gm, deck%ground%x0, deck%ground%a, deck%ground%b)
+      record_path = ''
    case default
       call record_motion(gm, deck%ground%file, deck%ground%format, deck%ground%scale, error)
       call check(error)
+      record_path = deck%ground%file
    end select
+
+   ! Resources and the output folder, before anything large is allocated or computed.
+   call check_memory()
+   call plan_outputs(out_dir, deck_path, [character(len=max(len(deck_path), len(record_path))) :: &
+                                          deck_path, record_path], outputs, error)
+   call check(error)
+
    n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
-   allocate (ag(0:n_steps))
+   n_out = output_steps(n_steps, deck%analysis%output_every)
+   allocate (ag(0:n_steps), ag_out(n_out), stat=ib)
+   if (ib /= 0) call out_of_memory('the ground motion at '//str(n_steps + 1)//' steps')
    call sample_ground(gm, deck%analysis%dt, n_steps, ag)
+   ag_out = ag(0:n_steps:deck%analysis%output_every)
    ground_text(1) = describe_ground(gm)
 
    ! Models.
@@ -94,79 +109,172 @@ program pound
       end if
    end if
 
-   ! Outputs: temporary names first, renamed when complete.
-   listing_path = join_path(out_dir, file_stem(deck_path)//'.out')
-   h5_path = join_path(out_dir, file_stem(deck_path)//'.h5')
-   open (newunit=u, file=temporary_name(listing_path), status='replace', action='write', iostat=ib)
-   if (ib /= 0) then
-      call fatal_error(error, 'cannot write '//temporary_name(listing_path)//' (does the directory '// &
-                       out_dir//' exist and is it writable?)')
-      call check(error)
-   end if
-   call write_listing_header(u, deck, ground_text)
-   call write_model_summary(u, models)
-   call write_peak_tables(u, 'Uncoupled', models, unc)
-   if (coupled) then
-      call write_peak_tables(u, 'Coupled', models, cpl)
-      call write_contact_summary(u, cs)
-      call write_influence_tables(u, models, unc, cpl)
-      if (deck%sweep%active) call write_sweep_table(u, models, deck%sweep, sweep)
-   end if
-   write (u, '(/,a,es10.3,a)') '  uncoupled integration: ', unc%seconds, ' s'
-   if (coupled) write (u, '(a,es10.3,a,es10.3,a)') '  coupled integration:   ', cpl%seconds, &
-      ' s, of which contact (LCP) ', cpl%contact_seconds, ' s'
-   close (u)
+   ! Outputs: this run's temporaries first, published together when both are complete.
+   call write_listing(outputs%listing_tmp, error)
+   call check(error)
+   call test_pause()
    if (deck%sweep%active) then
-      call write_results_h5(temporary_name(h5_path), deck, models, trim(ground_text(1)), &
-                            ag(0:n_steps:deck%analysis%output_every), unc, error, cpl, cs, sweep)
+      call write_results_h5(outputs%h5_tmp, deck, models, trim(ground_text(1)), ag_out, unc, error, &
+                            cpl, cs, sweep)
    else if (coupled) then
-      call write_results_h5(temporary_name(h5_path), deck, models, trim(ground_text(1)), &
-                            ag(0:n_steps:deck%analysis%output_every), unc, error, cpl, cs)
+      call write_results_h5(outputs%h5_tmp, deck, models, trim(ground_text(1)), ag_out, unc, error, cpl, cs)
    else
-      call write_results_h5(temporary_name(h5_path), deck, models, trim(ground_text(1)), &
-                            ag(0:n_steps:deck%analysis%output_every), unc, error)
+      call write_results_h5(outputs%h5_tmp, deck, models, trim(ground_text(1)), ag_out, unc, error)
    end if
+   if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
-   call rename_file(temporary_name(h5_path), h5_path, error)
+   call publish_outputs(outputs, error)
    call check(error)
-   call rename_file(temporary_name(listing_path), listing_path, error)
-   call check(error)
-
-   write (output_unit, '(a)') program_name//' '//program_version//': '//deck%analysis%title
-   do ib = 1, size(models)
-      write (output_unit, '(a,i0,a,f9.5,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
-         ' storeys, T1 = ', models(ib)%period(1), ' s'
-   end do
-   write (output_unit, '(a,es10.3,a,es9.2)') '  uncoupled integration: ', unc%seconds, &
-      ' s, energy balance error ', unc%energy_error
-   if (coupled) then
-      write (output_unit, '(a,es10.3,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
-         ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%pair(:)%impacts), ' impacts, ', &
-         cs%pivots_total, ' LCP pivots'
-      write (output_unit, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
-         ' s, LCP solves ', cs%solves, ', pivots max ', cs%pivots_max, ', steps ', cpl%n_steps
-   end if
-   if (deck%sweep%active) then
-      write (output_unit, '(a,i0,a,es10.3,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'
-      if (sweep%found) write (output_unit, '(a,f10.4,a)') '  smallest gap meeting the target: ', &
-         1000.0_dp*sweep%safe_gap, ' mm'
-   end if
-   write (output_unit, '(a)') '  wrote '//listing_path//' and '//h5_path
+   call write_summary()
 
 contains
 
-   !> Stop with the message and a non-zero status if `err` is set; remove partial outputs.
+   !> Stop with the message and status 1 if `err` is set; remove this run's temporaries.
    subroutine check(err)
       type(error_type), allocatable, intent(in) :: err
 
       if (.not. allocated(err)) return
-      write (error_unit, '(a)') program_name//': error: '//err%message
-      if (allocated(listing_path)) call delete_file(temporary_name(listing_path))
-      if (allocated(h5_path)) call delete_file(temporary_name(h5_path))
-      flush (error_unit)
-      flush (output_unit)
-      call c_exit(1_c_int)
+      call discard_outputs(outputs)
+      call stop_with(err%message, 1)
    end subroutine check
+
+   !> Write `message` to standard error and end the process with `status` by _exit, after
+   !> flushing the standard units. Exit handlers are not run: they have nothing left to do,
+   !> and HDF5's would crash on a dataset whose close failed when the disk filled up.
+   subroutine stop_with(message, status)
+      character(len=*), intent(in) :: message
+      integer, intent(in) :: status
+      integer :: ios
+
+      write (error_unit, '(a)', iostat=ios) program_name//': error: '//message
+      flush (error_unit, iostat=ios)
+      flush (output_unit, iostat=ios)
+      call posix_exit_now(status)
+   end subroutine stop_with
+
+   !> Refuse the run if its estimated memory exceeds what the machine can give.
+   subroutine check_memory()
+      real(dp) :: available
+      character(len=:), allocatable :: source
+
+      call memory_available(available, source)
+      call memory_refusal(deck, estimate_memory(deck), available, source, error)
+      call check(error)
+   end subroutine check_memory
+
+   !> An allocation failed although the estimate fitted (other processes took the memory).
+   subroutine out_of_memory(what)
+      character(len=*), intent(in) :: what
+
+      call fatal_error(error, deck_path//': &analysis: not enough memory for '//what// &
+                       ': raise output_every, store fewer history quantities, shorten t_end or enlarge dt')
+      call check(error)
+   end subroutine out_of_memory
+
+   !> The listing at `path` (this run's temporary); every write is checked.
+   subroutine write_listing(path, err)
+      character(len=*), intent(in) :: path
+      type(error_type), allocatable, intent(out) :: err
+      integer :: u, ios
+
+      call open_listing(path, u, err)
+      if (allocated(err)) return
+      call write_listing_header(u, deck, ground_text)
+      call write_model_summary(u, models)
+      call write_peak_tables(u, 'Uncoupled', models, unc)
+      if (coupled) then
+         call write_peak_tables(u, 'Coupled', models, cpl)
+         call write_contact_summary(u, cs)
+         call write_influence_tables(u, models, unc, cpl)
+         if (deck%sweep%active) call write_sweep_table(u, models, deck%sweep, sweep)
+      end if
+      write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', unc%seconds, ' s'
+      if (coupled .and. ios == 0) write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) '  coupled integration:   ', &
+         cpl%seconds, ' s, of which contact (LCP) ', cpl%contact_seconds, ' s'
+      call close_listing(u, path, err)
+   end subroutine write_listing
+
+   !> The summary on standard output, written unbuffered: a failed write (standard output
+   !> closed, /dev/full, a reader gone) is an error with status 1.
+   subroutine write_summary()
+      character(len=:), allocatable :: text
+      character(len=256) :: line
+      integer :: e
+
+      text = program_name//' '//program_version//': '//deck%analysis%title//new_line('a')
+      do ib = 1, size(models)
+         write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
+            ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
+         text = text//trim(line)//new_line('a')
+      end do
+      write (line, '(a,es10.3,a,es9.2)') '  uncoupled integration: ', unc%seconds, &
+         ' s, energy balance error ', unc%energy_error
+      text = text//trim(line)//new_line('a')
+      if (coupled) then
+         write (line, '(a,es10.3,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
+            ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%pair(:)%impacts), ' impacts, ', &
+            cs%pivots_total, ' LCP pivots'
+         text = text//trim(line)//new_line('a')
+         write (line, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
+            ' s, LCP solves ', cs%solves, ', pivots max ', cs%pivots_max, ', steps ', cpl%n_steps
+         text = text//trim(line)//new_line('a')
+      end if
+      if (deck%sweep%active) then
+         write (line, '(a,i0,a,es10.3,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'
+         text = text//trim(line)//new_line('a')
+         if (sweep%found) then
+            write (line, '(a,f10.4,a)') '  smallest gap meeting the target: ', 1000.0_dp*sweep%safe_gap, ' mm'
+            text = text//trim(line)//new_line('a')
+         end if
+      end if
+      call add_warnings(text, unc%warnings)
+      if (coupled) call add_warnings(text, cpl%warnings)
+      if (deck%sweep%active) call add_warnings(text, sweep%warnings)
+      text = text//'  wrote '//outputs%listing//' and '//outputs%h5//new_line('a')
+      if (stdout_closed) then
+         call stop_with('cannot write the summary: standard output is closed (the results were written to '// &
+                        outputs%listing//' and '//outputs%h5//')', 1)
+      end if
+      e = posix_write(1, text)
+      if (e /= 0) call stop_with('cannot write the summary to standard output: '//posix_strerror(e)// &
+                                 ' (the results were written to '//outputs%listing//' and '//outputs%h5//')', 1)
+   end subroutine write_summary
+
+   !> Append the warnings of an analysis or sweep to the summary text, one line each.
+   subroutine add_warnings(text, warnings)
+      character(len=:), allocatable, intent(inout) :: text
+      character(len=:), allocatable, intent(in) :: warnings(:)
+      integer :: i
+
+      if (.not. allocated(warnings)) return
+      do i = 1, size(warnings)
+         text = text//'  WARNING: '//trim(warnings(i))//new_line('a')
+      end do
+   end subroutine add_warnings
+
+   !> Test hook: with POUND_TEST_PAUSE_WRITING=<seconds> in the environment, the run sleeps
+   !> after its listing is written and before its HDF5 file is (so that a test can signal
+   !> it while it writes).
+   subroutine test_pause()
+      character(len=16) :: value
+      integer :: seconds, stat
+
+      call get_environment_variable('POUND_TEST_PAUSE_WRITING', value, status=stat)
+      if (stat /= 0) return
+      read (value, *, iostat=stat) seconds
+      if (stat == 0 .and. seconds > 0) call posix_sleep(seconds)
+   end subroutine test_pause
+
+   !> Keep closed standard descriptors (0, 1, 2) from being reused by the run's files: they
+   !> are occupied by /dev/null, and a closed standard output is remembered as a failure.
+   subroutine guard_standard_descriptors()
+      integer :: fd, reserved
+
+      stdout_closed = .not. posix_std_fd_open(1)
+      do fd = 0, 2
+         if (.not. posix_std_fd_open(fd)) reserved = posix_reserve_fd()
+      end do
+   end subroutine guard_standard_descriptors
 
    subroutine usage(unit)
       integer, intent(in) :: unit
@@ -194,10 +302,10 @@ contains
          select case (arg)
          case ('-h', '--help')
             call usage(output_unit)
-            call c_exit(0_c_int)
+            stop
          case ('-V', '--version')
             write (output_unit, '(a)') program_name//' '//program_version
-            call c_exit(0_c_int)
+            stop
          case ('-o', '--output')
             if (i == n) call bad_usage('option '//arg//' needs a directory')
             i = i + 1
@@ -205,10 +313,10 @@ contains
             deallocate (out_dir)
             allocate (character(len=length) :: out_dir)
             call get_command_argument(i, out_dir)
+            if (len(out_dir) == 0) call bad_usage('option -o needs a directory, got an empty name')
          case default
-            if (len(arg) > 0) then
-               if (arg(1:1) == '-') call bad_usage('unknown option '//arg)
-            end if
+            if (len(arg) == 0) call bad_usage('the deck name is empty')
+            if (arg(1:1) == '-') call bad_usage('unknown option '//arg)
             if (allocated(deck_path)) call bad_usage('more than one deck given: '//deck_path//', '//arg)
             deck_path = arg
          end select
@@ -219,9 +327,12 @@ contains
    subroutine bad_usage(message)
       character(len=*), intent(in) :: message
 
-      write (error_unit, '(a)') program_name//': error: '//message
+      integer :: ios
+
+      write (error_unit, '(a)', iostat=ios) program_name//': error: '//message
       call usage(error_unit)
-      call c_exit(2_c_int)
+      flush (error_unit, iostat=ios)
+      call posix_exit_now(2)
    end subroutine bad_usage
 
 end program pound

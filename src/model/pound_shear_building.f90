@@ -12,6 +12,7 @@ module pound_shear_building
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: building_config
+   use pound_storey_properties, only: storey_properties
    use pound_band, only: band_add_storey
    use pound_structure, only: structure_model, structure_label, chain_rows
    implicit none
@@ -64,9 +65,9 @@ contains
    !> a value that is not finite (or not positive where it must be) fails with a message
    !> naming the building, the storey or floor and the deck variables it came from, before
    !> any solver sees it.
-   subroutine build_shear_building(cfg, b, error, number)
-      !> Validated deck entry.
-      type(building_config), intent(in) :: cfg
+   subroutine build_shear_building(deck_entry, b, error, number)
+      !> Validated deck entry (values as given; masses, stiffnesses and loads derived here).
+      type(building_config), intent(in) :: deck_entry
       !> The model.
       type(shear_building), intent(out) :: b
       !> Error state.
@@ -75,7 +76,9 @@ contains
       integer, intent(in), optional :: number
       integer :: n, j, jmax
       real(dp) :: theta, theta_max
+      type(building_config) :: cfg
 
+      cfg = storey_properties(deck_entry)
       n = cfg%n_storeys
       b%name = cfg%name
       if (present(number)) b%number = number

@@ -1,4 +1,5 @@
-!> A thin, safe layer over the HDF5 Fortran API for pound's result files.
+!> pound's result files over HDF5's own high-level Fortran API (H5LT), with a thin layer
+!> for what H5LT lacks.
 !>
 !> A file is reached through a handle, `type(h5_file)`: `h5_create` (truncates), `h5_open`
 !> (read-only) and `h5_close`. Objects are named by absolute paths such as
@@ -6,60 +7,65 @@
 !> dataset creates the missing groups on its path. Attributes go on the root ('/'), a group
 !> or a dataset, given by its path; writing an attribute that exists replaces it.
 !>
+!> **What H5LT does and what this module adds.** Numeric datasets (real(dp) scalar, 1-D and
+!> 2-D; default integer 1-D and 2-D) and real 1-D attributes are written by H5LT
+!> (`h5ltmake_dataset_double_f`, `h5ltmake_dataset_int_f`, `h5ltset_attribute_double_f`).
+!> H5LT lacks the rest, kept here: parent groups created on demand; scalar attributes
+!> (H5LT writes every numeric attribute as a 1-D array, which h5py would read as shape (1,));
+!> variable-length UTF-8 strings (H5LT writes fixed-length ASCII); HDF5's error stack kept
+!> quiet, with a failure turned into one message naming the file, the object and the call.
+!> Readers are not part of the library: the tests read files back through
+!> `tests/support/pound_test_h5.f90` (with `h5_file_id`).
+!>
 !> **Dimension convention.** Arrays are written exactly as they are held in Fortran, with no
 !> transposition. HDF5 records dimensions in C (row-major) order, so C, h5py, h5dump and
 !> NumPy see a Fortran array of shape (n1, n2) as shape (n2, n1), with the same numbers in
 !> memory order: Fortran `a(i, j)` is h5py `a[j-1, i-1]`. pound therefore keeps histories
 !> in Fortran as `hist(n_floors, n_out)`, so that h5py reads them as shape
-!> (n_out, n_floors): one row per output time. `h5_read` returns the Fortran shape again
-!> (a round trip is exact); `h5_dataset_dims` reports the C-order shape stored in the file.
+!> (n_out, n_floors): one row per output time.
 !>
-!> Storage: reals as IEEE 64-bit little-endian, integers as 32-bit signed little-endian,
-!> strings as variable-length UTF-8 strings (h5py reads those attributes as `str`, and
-!> there is no 64 KiB object-header limit on long attributes such as the deck text).
-!> String array elements lose their trailing blanks (Fortran padding); a string attribute
-!> is stored exactly as given. Strings must not contain NUL characters. Datasets are
-!> contiguous, without chunking or compression, and are written once: writing a dataset
-!> whose path exists is an error.
+!> Storage: reals as IEEE 64-bit little-endian (H5LT's native double on the little-endian
+!> machines pound runs on), integers as 32-bit signed little-endian, strings as
+!> variable-length UTF-8 strings (h5py reads those attributes as `str`, and there is no
+!> 64 KiB object-header limit on long attributes such as the deck text). String array
+!> elements lose their trailing blanks (Fortran padding); a string attribute is stored
+!> exactly as given. Strings must not contain NUL characters. Datasets are contiguous,
+!> without chunking or compression, and are written once: writing a dataset whose path
+!> exists is an error.
 !>
 !> Every HDF5 return code is checked; a failure comes back as an `error_type` naming the
 !> file, the object and the HDF5 call. HDF5's automatic error-stack printing is switched
-!> off, so a failure is reported once, by the caller. The library is initialised on the
-!> first `h5_create`/`h5_open` (with floating-point traps held off during `h5open_f`) and
-!> shut down by HDF5 itself at program exit.
+!> off, so a failure is reported once, by the caller; a failure that comes from the system
+!> (no space left, file too large, no permission) carries its reason from errno. The library
+!> is initialised on the first `h5_create`/`h5_open` (with floating-point traps held off
+!> during `h5open_f`) and shut down by HDF5 itself at program exit. After a write failed
+!> because the disk filled up, HDF5 1.10's exit handler can crash on the dataset whose close
+!> failed: the program should then end with `_exit` (as pound does).
 module pound_h5
-   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char, c_f_pointer, &
-                                          c_size_t, c_int, c_int64_t, c_long_long, c_null_ptr, &
-                                          c_associated
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char
    use, intrinsic :: ieee_exceptions, only: ieee_status_type, ieee_get_status, ieee_set_status, &
                                             ieee_set_halting_mode, ieee_all
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
                    h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, &
                    h5pcreate_f, h5pclose_f, h5pset_fclose_degree_f, H5P_FILE_ACCESS_F, &
-                   H5F_CLOSE_STRONG_F, H5P_DEFAULT_F, &
+                   H5F_CLOSE_STRONG_F, &
                    h5lexists_f, h5oopen_f, h5oclose_f, h5iget_type_f, H5I_GROUP_F, &
-                   H5I_DATASET_F, h5gcreate_f, h5gclose_f, &
-                   h5screate_f, h5screate_simple_f, h5sclose_f, H5S_SCALAR_F, &
-                   h5sget_simple_extent_ndims_f, h5sget_simple_extent_dims_f, &
-                   h5sget_simple_extent_npoints_f, &
-                   h5dcreate_f, h5dopen_f, h5dwrite_f, h5dread_f, h5dget_space_f, &
-                   h5dget_type_f, h5dvlen_reclaim_f, &
-                   h5acreate_f, h5aopen_f, h5aclose_f, h5awrite_f, h5aread_f, h5aexists_f, &
-                   h5adelete_f, h5aget_space_f, h5aget_type_f, &
-                   h5tcopy_f, h5tclose_f, h5tset_size_f, h5tget_size_f, h5tset_cset_f, &
-                   h5tget_class_f, h5tis_variable_str_f, h5tget_strpad_f, &
-                   H5T_C_S1, H5T_CSET_UTF8_F, H5T_STRING_F, H5T_FLOAT_F, H5T_INTEGER_F, &
-                   H5T_STR_SPACEPAD_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
+                   h5gcreate_f, h5gclose_f, h5screate_f, h5screate_simple_f, h5sclose_f, &
+                   H5S_SCALAR_F, h5dcreate_f, h5dwrite_f, &
+                   h5acreate_f, h5aclose_f, h5awrite_f, h5aexists_f, h5adelete_f, &
+                   h5tcopy_f, h5tclose_f, h5tset_size_f, h5tset_cset_f, &
+                   H5T_C_S1, H5T_CSET_UTF8_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
                    H5T_IEEE_F64LE, H5T_STD_I32LE
+   use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f, h5ltset_attribute_double_f
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str
+   use pound_posix, only: posix_errno, posix_set_errno, posix_strerror, posix_storage_error
    implicit none
    private
 
-   public :: h5_file, h5_create, h5_open, h5_close, h5_is_open
-   public :: h5_create_group, h5_exists, h5_dataset_dims
-   public :: h5_write, h5_read, h5_write_attr, h5_read_attr
+   public :: h5_file, h5_create, h5_open, h5_close, h5_is_open, h5_file_id, h5_file_name
+   public :: h5_create_group, h5_exists
+   public :: h5_write, h5_write_attr
 
    !> An open HDF5 file (or none: the default state).
    type :: h5_file
@@ -74,34 +80,19 @@ module pound_h5
 
    !> Write a new dataset at a path, creating missing groups:
    !> `call h5_write(file, path, values, error)` with `values` real(dp) scalar, 1-D or 2-D,
-   !> default integer 1-D, or character 1-D (trailing blanks dropped).
+   !> default integer 1-D or 2-D (H5LT), or character 1-D (trailing blanks dropped).
    interface h5_write
       module procedure write_real_0d, write_real_1d, write_real_2d, write_int_1d, write_int_2d, &
          write_string_1d
    end interface h5_write
 
-   !> Read a whole dataset: `call h5_read(file, path, values, error)` with `values` real(dp)
-   !> scalar, or allocatable real(dp) 1-D / 2-D, integer 1-D or character(len=:) 1-D,
-   !> allocated to the shape in the file (Fortran order, see the module notes).
-   interface h5_read
-      module procedure read_real_0d, read_real_1d, read_real_2d, read_int_1d, read_string_1d
-   end interface h5_read
-
    !> Set an attribute of the object at a path ('/' is the root), replacing an existing one:
    !> `call h5_write_attr(file, path, name, value, error)` with `value` a character string,
-   !> real(dp) scalar or 1-D, or default integer scalar.
+   !> real(dp) scalar or 1-D (H5LT), or default integer scalar.
    interface h5_write_attr
       module procedure write_attr_string, write_attr_real_0d, write_attr_real_1d, &
          write_attr_int_0d
    end interface h5_write_attr
-
-   !> Get an attribute of the object at a path:
-   !> `call h5_read_attr(file, path, name, value, error)` with `value` an allocatable
-   !> character(len=:), real(dp) scalar, allocatable real(dp) 1-D, or integer scalar.
-   interface h5_read_attr
-      module procedure read_attr_string, read_attr_real_0d, read_attr_real_1d, &
-         read_attr_int_0d
-   end interface h5_read_attr
 
    !> HDF5 identifiers held by one operation, closed together by `release`.
    type :: h5_ids
@@ -120,25 +111,6 @@ module pound_h5
 
    !> HDF5 initialised and its error printing silenced.
    logical :: library_ready = .false.
-
-   interface
-      !> C `H5Sget_simple_extent_dims`: dimensions in the file's own (C) order.
-      function c_h5sget_simple_extent_dims(space_id, dims, maxdims) &
-         bind(C, name='H5Sget_simple_extent_dims') result(rank)
-         import :: c_int64_t, c_long_long, c_ptr, c_int
-         integer(c_int64_t), value :: space_id
-         integer(c_long_long), intent(out) :: dims(*)
-         type(c_ptr), value :: maxdims
-         integer(c_int) :: rank
-      end function c_h5sget_simple_extent_dims
-
-      !> C `strlen`.
-      function c_strlen(s) bind(C, name='strlen') result(n)
-         import :: c_ptr, c_size_t
-         type(c_ptr), value :: s
-         integer(c_size_t) :: n
-      end function c_strlen
-   end interface
 
 contains
 
@@ -159,12 +131,12 @@ contains
       if (allocated(error)) return
       call file_access_list(path, fapl, error)
       if (allocated(error)) return
+      call posix_set_errno(0)
       call h5fcreate_f(path, H5F_ACC_TRUNC_F, file%id, hdferr, access_prp=fapl)
       call h5pclose_f(fapl, ignore)
       if (hdferr /= 0) then
          file%id = -1_hid_t
-         call fatal_error(error, "cannot create HDF5 file '"//path// &
-                          "': h5fcreate_f failed (missing directory or no write permission?)")
+         call fatal_error(error, "cannot create HDF5 file '"//path//"': h5fcreate_f failed"//create_reason())
          return
       end if
       file%name = path
@@ -217,7 +189,8 @@ contains
       file%id = -1_hid_t
       file%writable = .false.
       if (hdferr /= 0) then
-         call fatal_error(error, "cannot close HDF5 file '"//file_name(file)//"': h5fclose_f failed")
+         call fatal_error(error, "cannot close HDF5 file '"//h5_file_name(file)//"': h5fclose_f failed"// &
+                          system_reason())
       end if
    end subroutine h5_close
 
@@ -229,6 +202,16 @@ contains
 
       is_open = file%id >= 0
    end function h5_is_open
+
+   !> HDF5 identifier of an open file (negative when closed), for HDF5 calls outside this
+   !> module such as the H5LT readers of the tests.
+   pure function h5_file_id(file) result(id)
+      !> Handle.
+      type(h5_file), intent(in) :: file
+      integer(hid_t) :: id
+
+      id = file%id
+   end function h5_file_id
 
    ! ------------------------------------------------------------------ groups and paths
 
@@ -265,37 +248,7 @@ contains
       call path_exists(file, p, exists, error)
    end subroutine h5_exists
 
-   !> Dimensions of the dataset at `path` as stored in the file, in HDF5's C order: the
-   !> shape h5py and h5dump report, the reverse of the Fortran shape. Empty for a scalar.
-   subroutine h5_dataset_dims(file, path, dims, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Dataset path.
-      character(len=*), intent(in) :: path
-      !> Dimensions, slowest-varying first.
-      integer, allocatable, intent(out) :: dims(:)
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: p
-      integer(hsize_t) :: cdims(32)
-      integer :: rank, hdferr
-
-      call open_dataset(file, path, 'get the shape of', ids, p, error)
-      if (.not. allocated(error)) then
-         call h5sget_simple_extent_ndims_f(ids%space, rank, hdferr)
-         if (hdferr /= 0 .or. rank < 0 .or. rank > size(cdims)) then
-            call fail(error, file, 'get the shape of', 'dataset', p, 'h5sget_simple_extent_ndims_f failed')
-         else if (c_h5sget_simple_extent_dims(ids%space, cdims, c_null_ptr) /= rank) then
-            call fail(error, file, 'get the shape of', 'dataset', p, 'H5Sget_simple_extent_dims failed')
-         else
-            dims = int(cdims(1:rank))
-         end if
-      end if
-      call release(ids, file, 'get the shape of', 'dataset', p, error)
-   end subroutine h5_dataset_dims
-
-   ! ------------------------------------------------------------------ dataset writers
+   ! ------------------------------------------------------------------ datasets (H5LT)
 
    !> Real scalar dataset.
    subroutine write_real_0d(file, path, values, error)
@@ -307,17 +260,14 @@ contains
       real(dp), intent(in) :: values
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
       character(len=:), allocatable :: p
       integer(hsize_t) :: dims(0)
       integer :: hdferr
 
-      call new_dataset(file, path, H5T_IEEE_F64LE, dims, ids, p, error)
-      if (.not. allocated(error)) then
-         call h5dwrite_f(ids%obj, H5T_NATIVE_DOUBLE, values, [1_hsize_t], hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
-      end if
-      call release(ids, file, 'write', 'dataset', p, error)
+      call dataset_path(file, path, p, error)
+      if (allocated(error)) return
+      call h5ltmake_dataset_double_f(file%id, p, 0, dims, values, hdferr)
+      call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
    end subroutine write_real_0d
 
    !> Real 1-D dataset.
@@ -330,18 +280,13 @@ contains
       real(dp), intent(in) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
       character(len=:), allocatable :: p
-      integer(hsize_t) :: dims(1)
       integer :: hdferr
 
-      dims = shape(values, kind=hsize_t)
-      call new_dataset(file, path, H5T_IEEE_F64LE, dims, ids, p, error)
-      if (.not. allocated(error) .and. size(values) > 0) then
-         call h5dwrite_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
-      end if
-      call release(ids, file, 'write', 'dataset', p, error)
+      call dataset_path(file, path, p, error)
+      if (allocated(error)) return
+      call h5ltmake_dataset_double_f(file%id, p, 1, shape(values, kind=hsize_t), values, hdferr)
+      call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
    end subroutine write_real_1d
 
    !> Real 2-D dataset, written as given: Fortran (n1, n2) is seen by h5py as (n2, n1).
@@ -354,18 +299,13 @@ contains
       real(dp), intent(in) :: values(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
       character(len=:), allocatable :: p
-      integer(hsize_t) :: dims(2)
       integer :: hdferr
 
-      dims = shape(values, kind=hsize_t)
-      call new_dataset(file, path, H5T_IEEE_F64LE, dims, ids, p, error)
-      if (.not. allocated(error) .and. size(values) > 0) then
-         call h5dwrite_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
-      end if
-      call release(ids, file, 'write', 'dataset', p, error)
+      call dataset_path(file, path, p, error)
+      if (allocated(error)) return
+      call h5ltmake_dataset_double_f(file%id, p, 2, shape(values, kind=hsize_t), values, hdferr)
+      call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
    end subroutine write_real_2d
 
    !> Integer 1-D dataset (stored as 32-bit signed).
@@ -378,18 +318,13 @@ contains
       integer, intent(in) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
       character(len=:), allocatable :: p
-      integer(hsize_t) :: dims(1)
       integer :: hdferr
 
-      dims = shape(values, kind=hsize_t)
-      call new_dataset(file, path, H5T_STD_I32LE, dims, ids, p, error)
-      if (.not. allocated(error) .and. size(values) > 0) then
-         call h5dwrite_f(ids%obj, H5T_NATIVE_INTEGER, values, dims, hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
-      end if
-      call release(ids, file, 'write', 'dataset', p, error)
+      call dataset_path(file, path, p, error)
+      if (allocated(error)) return
+      call h5ltmake_dataset_int_f(file%id, p, 1, shape(values, kind=hsize_t), values, hdferr)
+      call check_lt(hdferr, file, p, 'h5ltmake_dataset_int_f', error)
    end subroutine write_int_1d
 
    !> Integer 2-D dataset (stored as 32-bit signed; h5py sees the transpose, see the notes).
@@ -402,21 +337,18 @@ contains
       integer, intent(in) :: values(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
       character(len=:), allocatable :: p
-      integer(hsize_t) :: dims(2)
       integer :: hdferr
 
-      dims = shape(values, kind=hsize_t)
-      call new_dataset(file, path, H5T_STD_I32LE, dims, ids, p, error)
-      if (.not. allocated(error) .and. size(values) > 0) then
-         call h5dwrite_f(ids%obj, H5T_NATIVE_INTEGER, values, dims, hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
-      end if
-      call release(ids, file, 'write', 'dataset', p, error)
+      call dataset_path(file, path, p, error)
+      if (allocated(error)) return
+      call h5ltmake_dataset_int_f(file%id, p, 2, shape(values, kind=hsize_t), values, hdferr)
+      call check_lt(hdferr, file, p, 'h5ltmake_dataset_int_f', error)
    end subroutine write_int_2d
 
-   !> 1-D dataset of variable-length strings; trailing blanks of each element are dropped.
+   ! ------------------------------------------------------------------ what H5LT lacks
+
+   !> 1-D dataset of variable-length UTF-8 strings; trailing blanks of each element are dropped.
    subroutine write_string_1d(file, path, values, error)
       !> File open for writing.
       type(h5_file), intent(in) :: file
@@ -430,18 +362,23 @@ contains
       character(len=:), allocatable :: p
       character(kind=c_char), allocatable, target :: chars(:)
       type(c_ptr), allocatable, target :: ptrs(:)
-      integer(hsize_t) :: dims(1)
       integer :: hdferr, i
 
-      call check_path(file, path, .true., 'write', p, error)
+      call dataset_path(file, path, p, error)
       if (allocated(error)) return
       call string_type(ids%ftype, hdferr)
       if (hdferr /= 0) then
          call fail(error, file, 'write', 'dataset', p, 'h5tcopy_f/h5tset_size_f failed')
          return
       end if
-      dims = shape(values, kind=hsize_t)
-      call new_dataset(file, path, ids%ftype, dims, ids, p, error)
+      call new_space(shape(values, kind=hsize_t), ids, file, 'write', 'dataset', p, error)
+      if (.not. allocated(error)) then
+         call h5dcreate_f(file%id, p, ids%ftype, ids%space, ids%obj, hdferr)
+         if (hdferr /= 0) then
+            ids%obj = -1_hid_t
+            call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+         end if
+      end if
       if (.not. allocated(error) .and. size(values) > 0) then
          call pack_strings([(len_trim(values(i)), i=1, size(values))], values, chars, ptrs)
          call h5dwrite_f(ids%obj, ids%ftype, c_loc(ptrs), hdferr)
@@ -449,161 +386,6 @@ contains
       end if
       call release(ids, file, 'write', 'dataset', p, error)
    end subroutine write_string_1d
-
-   ! ------------------------------------------------------------------ dataset readers
-
-   !> Real scalar dataset (any dataset holding exactly one number).
-   subroutine read_real_0d(file, path, values, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Dataset path.
-      character(len=*), intent(in) :: path
-      !> Value read.
-      real(dp), intent(out) :: values
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: p
-      integer(hsize_t) :: npoints
-      integer :: hdferr
-
-      values = 0.0_dp
-      call open_dataset(file, path, 'read', ids, p, error)
-      if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .true., error)
-      if (.not. allocated(error)) then
-         call h5sget_simple_extent_npoints_f(ids%space, npoints, hdferr)
-         if (hdferr /= 0) then
-            call fail(error, file, 'read', 'dataset', p, 'h5sget_simple_extent_npoints_f failed')
-         else if (npoints /= 1) then
-            call fail(error, file, 'read', 'dataset', p, 'holds '//str(int(npoints))// &
-                      ' values, expected one')
-         else
-            call h5dread_f(ids%obj, H5T_NATIVE_DOUBLE, values, [1_hsize_t], hdferr)
-            if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
-         end if
-      end if
-      call release(ids, file, 'read', 'dataset', p, error)
-   end subroutine read_real_0d
-
-   !> Real 1-D dataset.
-   subroutine read_real_1d(file, path, values, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Dataset path.
-      character(len=*), intent(in) :: path
-      !> Values, allocated to the size in the file.
-      real(dp), allocatable, intent(out) :: values(:)
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: p
-      integer(hsize_t) :: dims(1)
-      integer :: hdferr
-
-      call open_dataset(file, path, 'read', ids, p, error)
-      if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .true., error)
-      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
-      if (.not. allocated(error)) then
-         allocate (values(dims(1)))
-         if (size(values) > 0) then
-            call h5dread_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
-            if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
-         end if
-      end if
-      call release(ids, file, 'read', 'dataset', p, error)
-   end subroutine read_real_1d
-
-   !> Real 2-D dataset, returned in the Fortran shape it was written with.
-   subroutine read_real_2d(file, path, values, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Dataset path.
-      character(len=*), intent(in) :: path
-      !> Values, allocated to the (Fortran-order) shape in the file.
-      real(dp), allocatable, intent(out) :: values(:, :)
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: p
-      integer(hsize_t) :: dims(2)
-      integer :: hdferr
-
-      call open_dataset(file, path, 'read', ids, p, error)
-      if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .true., error)
-      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
-      if (.not. allocated(error)) then
-         allocate (values(dims(1), dims(2)))
-         if (size(values) > 0) then
-            call h5dread_f(ids%obj, H5T_NATIVE_DOUBLE, values, dims, hdferr)
-            if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
-         end if
-      end if
-      call release(ids, file, 'read', 'dataset', p, error)
-   end subroutine read_real_2d
-
-   !> Integer 1-D dataset.
-   subroutine read_int_1d(file, path, values, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Dataset path.
-      character(len=*), intent(in) :: path
-      !> Values, allocated to the size in the file.
-      integer, allocatable, intent(out) :: values(:)
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: p
-      integer(hsize_t) :: dims(1)
-      integer :: hdferr
-
-      call open_dataset(file, path, 'read', ids, p, error)
-      if (.not. allocated(error)) call check_class(ids, file, 'read', 'dataset', p, .false., error)
-      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
-      if (.not. allocated(error)) then
-         allocate (values(dims(1)))
-         if (size(values) > 0) then
-            call h5dread_f(ids%obj, H5T_NATIVE_INTEGER, values, dims, hdferr)
-            if (hdferr /= 0) call fail(error, file, 'read', 'dataset', p, 'h5dread_f failed')
-         end if
-      end if
-      call release(ids, file, 'read', 'dataset', p, error)
-   end subroutine read_int_1d
-
-   !> 1-D string dataset (variable- or fixed-length); the length is that of the longest element.
-   subroutine read_string_1d(file, path, values, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Dataset path.
-      character(len=*), intent(in) :: path
-      !> Strings, blank-padded to the longest.
-      character(len=:), allocatable, intent(out) :: values(:)
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: p, text
-      integer, allocatable :: lengths(:)
-      integer(hsize_t) :: dims(1)
-      integer :: i, pos
-
-      call open_dataset(file, path, 'read', ids, p, error)
-      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', 'dataset', p, dims, error)
-      if (.not. allocated(error)) then
-         call read_strings(ids, .false., int(dims(1)), file, 'dataset', p, text, lengths, error)
-      end if
-      if (.not. allocated(error)) then
-         allocate (character(len=max(0, maxval(lengths))) :: values(size(lengths)))
-         pos = 0
-         do i = 1, size(lengths)
-            values(i) = text(pos + 1:pos + lengths(i))
-            pos = pos + lengths(i)
-         end do
-      else
-         allocate (character(len=0) :: values(0))
-      end if
-      call release(ids, file, 'read', 'dataset', p, error)
-   end subroutine read_string_1d
-
-   ! ------------------------------------------------------------------ attribute writers
 
    !> String attribute (variable-length UTF-8, stored exactly as given).
    subroutine write_attr_string(file, path, name, value, error)
@@ -664,7 +446,7 @@ contains
       call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
    end subroutine write_attr_real_0d
 
-   !> Real 1-D attribute.
+   !> Real 1-D attribute (H5LT).
    subroutine write_attr_real_1d(file, path, name, value, error)
       !> File open for writing.
       type(h5_file), intent(in) :: file
@@ -677,17 +459,15 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       type(h5_ids) :: ids
-      integer(hsize_t) :: dims(1)
+      character(len=:), allocatable :: p
       integer :: hdferr
 
-      dims = shape(value, kind=hsize_t)
-      call new_attribute(file, path, name, H5T_IEEE_F64LE, dims, ids, error)
-      if (.not. allocated(error) .and. size(value) > 0) then
-         call h5awrite_f(ids%attr, H5T_NATIVE_DOUBLE, value, dims, hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, &
-                                    'h5awrite_f failed')
-      end if
-      call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
+      call open_carrier(file, path, .true., 'write', "attribute '"//name//"' of", ids, p, error)
+      call release(ids, file, 'write', "attribute '"//name//"' of", p, error)
+      if (allocated(error)) return
+      call h5ltset_attribute_double_f(file%id, p, name, value, size(value, kind=size_t), hdferr)
+      if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", p, &
+                                 'h5ltset_attribute_double_f failed')
    end subroutine write_attr_real_1d
 
    !> Integer scalar attribute (stored as 32-bit signed).
@@ -715,122 +495,6 @@ contains
       call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
    end subroutine write_attr_int_0d
 
-   ! ------------------------------------------------------------------ attribute readers
-
-   !> String attribute (variable- or fixed-length).
-   subroutine read_attr_string(file, path, name, value, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Text read, of its stored length.
-      character(len=:), allocatable, intent(out) :: value
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: what
-      integer, allocatable :: lengths(:)
-
-      what = "attribute '"//name//"' of"
-      value = ''
-      call open_attribute(file, path, name, ids, error)
-      if (.not. allocated(error)) call check_one_value(ids, file, what, path, error)
-      if (.not. allocated(error)) then
-         call read_strings(ids, .true., 1, file, what, path, value, lengths, error)
-         if (allocated(error)) value = ''
-      end if
-      call release(ids, file, 'read', what, path, error)
-   end subroutine read_attr_string
-
-   !> Real scalar attribute.
-   subroutine read_attr_real_0d(file, path, name, value, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Value read.
-      real(dp), intent(out) :: value
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: what
-      integer :: hdferr
-
-      what = "attribute '"//name//"' of"
-      value = 0.0_dp
-      call open_attribute(file, path, name, ids, error)
-      if (.not. allocated(error)) call check_class(ids, file, 'read', what, path, .true., error)
-      if (.not. allocated(error)) call check_one_value(ids, file, what, path, error)
-      if (.not. allocated(error)) then
-         call h5aread_f(ids%attr, H5T_NATIVE_DOUBLE, value, [1_hsize_t], hdferr)
-         if (hdferr /= 0) call fail(error, file, 'read', what, path, 'h5aread_f failed')
-      end if
-      call release(ids, file, 'read', what, path, error)
-   end subroutine read_attr_real_0d
-
-   !> Real 1-D attribute.
-   subroutine read_attr_real_1d(file, path, name, value, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Values, allocated to the size in the file.
-      real(dp), allocatable, intent(out) :: value(:)
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: what
-      integer(hsize_t) :: dims(1)
-      integer :: hdferr
-
-      what = "attribute '"//name//"' of"
-      call open_attribute(file, path, name, ids, error)
-      if (.not. allocated(error)) call check_class(ids, file, 'read', what, path, .true., error)
-      if (.not. allocated(error)) call space_dims(ids%space, file, 'read', what, path, dims, error)
-      if (.not. allocated(error)) then
-         allocate (value(dims(1)))
-         if (size(value) > 0) then
-            call h5aread_f(ids%attr, H5T_NATIVE_DOUBLE, value, dims, hdferr)
-            if (hdferr /= 0) call fail(error, file, 'read', what, path, 'h5aread_f failed')
-         end if
-      end if
-      call release(ids, file, 'read', what, path, error)
-   end subroutine read_attr_real_1d
-
-   !> Integer scalar attribute.
-   subroutine read_attr_int_0d(file, path, name, value, error)
-      !> Open file.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Value read.
-      integer, intent(out) :: value
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: what
-      integer :: hdferr
-
-      what = "attribute '"//name//"' of"
-      value = 0
-      call open_attribute(file, path, name, ids, error)
-      if (.not. allocated(error)) call check_class(ids, file, 'read', what, path, .false., error)
-      if (.not. allocated(error)) call check_one_value(ids, file, what, path, error)
-      if (.not. allocated(error)) then
-         call h5aread_f(ids%attr, H5T_NATIVE_INTEGER, value, [1_hsize_t], hdferr)
-         if (hdferr /= 0) call fail(error, file, 'read', what, path, 'h5aread_f failed')
-      end if
-      call release(ids, file, 'read', what, path, error)
-   end subroutine read_attr_int_0d
-
    ! ------------------------------------------------------------------ internals
 
    !> Initialise HDF5 once and check that the handle is free.
@@ -843,7 +507,7 @@ contains
 
       if (file%id >= 0) then
          call fatal_error(error, "cannot open HDF5 file '"//path//"': the handle is still open on '"// &
-                          file_name(file)//"'")
+                          h5_file_name(file)//"'")
          return
       end if
       if (library_ready) return
@@ -1001,14 +665,11 @@ contains
       end do
    end subroutine make_groups
 
-   !> Create the dataspace and dataset at `path` (groups above it on demand).
-   !> Empty `dims` gives a scalar dataset.
-   subroutine new_dataset(file, path, ftype, dims, ids, p, error)
+   !> Check the handle and `path` for a new dataset, create the groups above it and
+   !> refuse an existing object; `p` is the normalised path.
+   subroutine dataset_path(file, path, p, error)
       type(h5_file), intent(in) :: file
       character(len=*), intent(in) :: path
-      integer(hid_t), intent(in) :: ftype
-      integer(hsize_t), intent(in) :: dims(:)
-      type(h5_ids), intent(inout) :: ids
       character(len=:), allocatable, intent(out) :: p
       type(error_type), allocatable, intent(out) :: error
       logical :: there
@@ -1023,96 +684,18 @@ contains
       if (allocated(error)) return
       call path_exists(file, p, there, error)
       if (allocated(error)) return
-      if (there) then
-         call fail(error, file, 'write', 'dataset', p, 'an object with this path already exists')
-         return
-      end if
-      call new_space(dims, ids, file, 'write', 'dataset', p, error)
-      if (allocated(error)) return
-      call dataset_create(ftype, ids, file, p, error)
-   end subroutine new_dataset
+      if (there) call fail(error, file, 'write', 'dataset', p, 'an object with this path already exists')
+   end subroutine dataset_path
 
-   !> h5dcreate_f, checked.
-   subroutine dataset_create(ftype, ids, file, p, error)
-      integer(hid_t), intent(in) :: ftype
-      type(h5_ids), intent(inout) :: ids
+   !> Turn an H5LT return code into the module's message.
+   subroutine check_lt(hdferr, file, p, call_name, error)
+      integer, intent(in) :: hdferr
       type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: p
+      character(len=*), intent(in) :: p, call_name
       type(error_type), allocatable, intent(out) :: error
-      integer :: hdferr
 
-      call h5dcreate_f(file%id, p, ftype, ids%space, ids%obj, hdferr)
-      if (hdferr /= 0) then
-         ids%obj = -1_hid_t
-         call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
-      end if
-   end subroutine dataset_create
-
-   !> Scalar (empty `dims`) or simple dataspace.
-   subroutine new_space(dims, ids, file, action, what, path, error)
-      integer(hsize_t), intent(in) :: dims(:)
-      type(h5_ids), intent(inout) :: ids
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: action, what, path
-      type(error_type), allocatable, intent(out) :: error
-      integer :: hdferr
-
-      if (size(dims) == 0) then
-         call h5screate_f(H5S_SCALAR_F, ids%space, hdferr)
-         if (hdferr /= 0) call fail(error, file, action, what, path, 'h5screate_f failed')
-      else
-         call h5screate_simple_f(size(dims), dims, ids%space, hdferr)
-         if (hdferr /= 0) call fail(error, file, action, what, path, 'h5screate_simple_f failed')
-      end if
-      if (hdferr /= 0) ids%space = -1_hid_t
-   end subroutine new_space
-
-   !> Open the dataset at `path` with its dataspace and file datatype.
-   subroutine open_dataset(file, path, action, ids, p, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path
-      character(len=*), intent(in) :: action
-      type(h5_ids), intent(inout) :: ids
-      character(len=:), allocatable, intent(out) :: p
-      type(error_type), allocatable, intent(out) :: error
-      logical :: there
-      integer :: hdferr, obj_type
-
-      call check_path(file, path, .false., action, p, error)
-      if (allocated(error)) return
-      call path_exists(file, p, there, error)
-      if (allocated(error)) return
-      if (.not. there) then
-         call fail(error, file, action, 'dataset', p, 'no such object')
-         return
-      end if
-      call h5oopen_f(file%id, p, ids%obj, hdferr)
-      if (hdferr /= 0) then
-         ids%obj = -1_hid_t
-         call fail(error, file, action, 'dataset', p, 'h5oopen_f failed')
-         return
-      end if
-      call h5iget_type_f(ids%obj, obj_type, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, action, 'dataset', p, 'h5iget_type_f failed')
-         return
-      end if
-      if (obj_type /= H5I_DATASET_F) then
-         call fail(error, file, action, 'dataset', p, 'the object is not a dataset')
-         return
-      end if
-      call h5dget_space_f(ids%obj, ids%space, hdferr)
-      if (hdferr /= 0) then
-         ids%space = -1_hid_t
-         call fail(error, file, action, 'dataset', p, 'h5dget_space_f failed')
-         return
-      end if
-      call h5dget_type_f(ids%obj, ids%ftype, hdferr)
-      if (hdferr /= 0) then
-         ids%ftype = -1_hid_t
-         call fail(error, file, action, 'dataset', p, 'h5dget_type_f failed')
-      end if
-   end subroutine open_dataset
+      if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, call_name//' failed')
+   end subroutine check_lt
 
    !> Open the object at `path`; delete attribute `name` if present; create it anew.
    subroutine new_attribute(file, path, name, ftype, dims, ids, error)
@@ -1150,46 +733,24 @@ contains
       end if
    end subroutine new_attribute
 
-   !> Open attribute `name` of the object at `path`, with its dataspace and file datatype.
-   subroutine open_attribute(file, path, name, ids, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path, name
+   !> Scalar (empty `dims`) or simple dataspace.
+   subroutine new_space(dims, ids, file, action, what, path, error)
+      integer(hsize_t), intent(in) :: dims(:)
       type(h5_ids), intent(inout) :: ids
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: action, what, path
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: p, what
-      logical :: there
       integer :: hdferr
 
-      what = "attribute '"//name//"' of"
-      call open_carrier(file, path, .false., 'read', what, ids, p, error)
-      if (allocated(error)) return
-      call h5aexists_f(ids%obj, name, there, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, 'read', what, p, 'h5aexists_f failed')
-         return
+      if (size(dims) == 0) then
+         call h5screate_f(H5S_SCALAR_F, ids%space, hdferr)
+         if (hdferr /= 0) call fail(error, file, action, what, path, 'h5screate_f failed')
+      else
+         call h5screate_simple_f(size(dims), dims, ids%space, hdferr)
+         if (hdferr /= 0) call fail(error, file, action, what, path, 'h5screate_simple_f failed')
       end if
-      if (.not. there) then
-         call fail(error, file, 'read', what, p, 'no such attribute')
-         return
-      end if
-      call h5aopen_f(ids%obj, name, ids%attr, hdferr)
-      if (hdferr /= 0) then
-         ids%attr = -1_hid_t
-         call fail(error, file, 'read', what, p, 'h5aopen_f failed')
-         return
-      end if
-      call h5aget_space_f(ids%attr, ids%space, hdferr)
-      if (hdferr /= 0) then
-         ids%space = -1_hid_t
-         call fail(error, file, 'read', what, p, 'h5aget_space_f failed')
-         return
-      end if
-      call h5aget_type_f(ids%attr, ids%ftype, hdferr)
-      if (hdferr /= 0) then
-         ids%ftype = -1_hid_t
-         call fail(error, file, 'read', what, p, 'h5aget_type_f failed')
-      end if
-   end subroutine open_attribute
+      if (hdferr /= 0) ids%space = -1_hid_t
+   end subroutine new_space
 
    !> Open the group or dataset at `path` that carries attributes.
    subroutine open_carrier(file, path, write, action, what, ids, p, error)
@@ -1217,202 +778,6 @@ contains
          call fail(error, file, action, what, p, 'h5oopen_f failed')
       end if
    end subroutine open_carrier
-
-   !> Require a numeric datatype (`real_ok`: float or integer; otherwise integer only).
-   subroutine check_class(ids, file, action, what, path, real_ok, error)
-      type(h5_ids), intent(in) :: ids
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: action, what, path
-      logical, intent(in) :: real_ok
-      type(error_type), allocatable, intent(out) :: error
-      integer :: class, hdferr
-
-      call h5tget_class_f(ids%ftype, class, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, action, what, path, 'h5tget_class_f failed')
-      else if (real_ok .and. class /= H5T_FLOAT_F .and. class /= H5T_INTEGER_F) then
-         call fail(error, file, action, what, path, 'the stored values are not numbers')
-      else if (.not. real_ok .and. class /= H5T_INTEGER_F) then
-         call fail(error, file, action, what, path, 'the stored values are not integers')
-      end if
-   end subroutine check_class
-
-   !> Require a dataspace of exactly one element.
-   subroutine check_one_value(ids, file, what, path, error)
-      type(h5_ids), intent(in) :: ids
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: what, path
-      type(error_type), allocatable, intent(out) :: error
-      integer(hsize_t) :: npoints
-      integer :: hdferr
-
-      call h5sget_simple_extent_npoints_f(ids%space, npoints, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, 'read', what, path, 'h5sget_simple_extent_npoints_f failed')
-      else if (npoints /= 1) then
-         call fail(error, file, 'read', what, path, 'holds '//str(int(npoints))//' values, expected one')
-      end if
-   end subroutine check_one_value
-
-   !> Fortran-order dimensions of a dataspace whose rank must be size(dims).
-   subroutine space_dims(space, file, action, what, path, dims, error)
-      integer(hid_t), intent(in) :: space
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: action, what, path
-      integer(hsize_t), intent(out) :: dims(:)
-      type(error_type), allocatable, intent(out) :: error
-      integer(hsize_t) :: maxdims(size(dims))
-      integer :: rank, hdferr
-
-      dims = 0
-      call h5sget_simple_extent_ndims_f(space, rank, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, action, what, path, 'h5sget_simple_extent_ndims_f failed')
-      else if (rank /= size(dims)) then
-         call fail(error, file, action, what, path, 'has rank '//str(rank)//', expected '//str(size(dims)))
-      else
-         ! On success this call returns the rank in hdferr.
-         call h5sget_simple_extent_dims_f(space, dims, maxdims, hdferr)
-         if (hdferr /= rank) call fail(error, file, action, what, path, 'h5sget_simple_extent_dims_f failed')
-      end if
-   end subroutine space_dims
-
-   !> Read `n` strings (variable- or fixed-length) from a dataset or attribute, returned
-   !> concatenated in `text` with their lengths in `lengths`.
-   subroutine read_strings(ids, is_attr, n, file, what, path, text, lengths, error)
-      type(h5_ids), intent(inout) :: ids
-      logical, intent(in) :: is_attr
-      integer, intent(in) :: n
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: what, path
-      character(len=:), allocatable, intent(out) :: text
-      integer, allocatable, intent(out) :: lengths(:)
-      type(error_type), allocatable, intent(out) :: error
-      type(c_ptr), allocatable, target :: ptrs(:)
-      character(kind=c_char), allocatable, target :: chars(:)
-      character(kind=c_char), pointer :: cstr(:)
-      type(c_ptr) :: buf
-      integer(size_t) :: width
-      integer :: class, hdferr, pad, i, j, k, w, pos
-      logical :: variable
-
-      text = ''
-      allocate (lengths(n))
-      lengths = 0
-      call h5tget_class_f(ids%ftype, class, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, 'read', what, path, 'h5tget_class_f failed')
-         return
-      end if
-      if (class /= H5T_STRING_F) then
-         call fail(error, file, 'read', what, path, 'the stored values are not strings')
-         return
-      end if
-      call h5tis_variable_str_f(ids%ftype, variable, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, 'read', what, path, 'h5tis_variable_str_f failed')
-         return
-      end if
-      if (n == 0) return
-
-      if (variable) then
-         call string_type(ids%mtype, hdferr)
-         if (hdferr /= 0) then
-            call fail(error, file, 'read', what, path, 'h5tcopy_f/h5tset_size_f failed')
-            return
-         end if
-         allocate (ptrs(n))
-         ptrs = c_null_ptr
-         call raw_read(ids, is_attr, c_loc(ptrs), hdferr)
-         if (hdferr /= 0) then
-            call fail(error, file, 'read', what, path, merge('h5aread_f', 'h5dread_f', is_attr)//' failed')
-            return
-         end if
-         do i = 1, n
-            if (c_associated(ptrs(i))) lengths(i) = int(c_strlen(ptrs(i)))
-         end do
-         deallocate (text)
-         allocate (character(len=sum(lengths)) :: text)
-         pos = 0
-         do i = 1, n
-            if (lengths(i) == 0) cycle
-            call c_f_pointer(ptrs(i), cstr, [lengths(i)])
-            do j = 1, lengths(i)
-               text(pos + j:pos + j) = cstr(j)
-            end do
-            pos = pos + lengths(i)
-         end do
-         ! HDF5 allocated the strings; hand them back.
-         buf = c_loc(ptrs)
-         call h5dvlen_reclaim_f(ids%mtype, ids%space, H5P_DEFAULT_F, buf, hdferr)
-         if (hdferr /= 0) call fail(error, file, 'read', what, path, 'h5dvlen_reclaim_f failed')
-      else
-         call h5tget_size_f(ids%ftype, width, hdferr)
-         if (hdferr /= 0) then
-            call fail(error, file, 'read', what, path, 'h5tget_size_f failed')
-            return
-         end if
-         call h5tget_strpad_f(ids%ftype, pad, hdferr)
-         if (hdferr /= 0) then
-            call fail(error, file, 'read', what, path, 'h5tget_strpad_f failed')
-            return
-         end if
-         w = int(width)
-         allocate (chars(w*n))
-         call raw_read(ids, is_attr, c_loc(chars), hdferr, ids%ftype)
-         if (hdferr /= 0) then
-            call fail(error, file, 'read', what, path, merge('h5aread_f', 'h5dread_f', is_attr)//' failed')
-            return
-         end if
-         ! Each element ends at its first NUL; blank padding is not part of the text.
-         do i = 1, n
-            k = (i - 1)*w
-            lengths(i) = w
-            do j = 1, w
-               if (chars(k + j) == c_null_char) then
-                  lengths(i) = j - 1
-                  exit
-               end if
-            end do
-            if (pad == H5T_STR_SPACEPAD_F) then
-               do while (lengths(i) > 0)
-                  if (chars(k + lengths(i)) /= ' ') exit
-                  lengths(i) = lengths(i) - 1
-               end do
-            end if
-         end do
-         deallocate (text)
-         allocate (character(len=sum(lengths)) :: text)
-         pos = 0
-         do i = 1, n
-            k = (i - 1)*w
-            do j = 1, lengths(i)
-               text(pos + j:pos + j) = chars(k + j)
-            end do
-            pos = pos + lengths(i)
-         end do
-      end if
-   end subroutine read_strings
-
-   !> Read a whole attribute or dataset into memory at `buf` with type `mtype` (default ids%mtype).
-   subroutine raw_read(ids, is_attr, buf, hdferr, mtype)
-      type(h5_ids), intent(in) :: ids
-      logical, intent(in) :: is_attr
-      type(c_ptr), intent(in) :: buf
-      integer, intent(out) :: hdferr
-      integer(hid_t), intent(in), optional :: mtype
-      integer(hid_t) :: t
-      type(c_ptr), target :: b
-
-      t = ids%mtype
-      if (present(mtype)) t = mtype
-      b = buf
-      if (is_attr) then
-         call h5aread_f(ids%attr, t, b, hdferr)
-      else
-         call h5dread_f(ids%obj, t, b, hdferr)
-      end if
-   end subroutine raw_read
 
    !> New variable-length UTF-8 C string datatype.
    subroutine string_type(type_id, hdferr)
@@ -1494,12 +859,30 @@ contains
       type(h5_file), intent(in) :: file
       character(len=*), intent(in) :: action, what, path, detail
 
-      call fatal_error(error, "HDF5 file '"//file_name(file)//"': cannot "//action//" "//what// &
-                       " '"//path//"': "//detail)
+      call fatal_error(error, "HDF5 file '"//h5_file_name(file)//"': cannot "//action//" "//what// &
+                       " '"//path//"': "//detail//system_reason())
    end subroutine fail
 
-   !> File name of a handle, for messages.
-   pure function file_name(file) result(name)
+   !> ': <strerror>' for any errno left by a failed create (errno is cleared before it).
+   function create_reason() result(text)
+      character(len=:), allocatable :: text
+
+      text = ''
+      if (posix_errno() /= 0) text = ': '//posix_strerror(posix_errno())
+   end function create_reason
+
+   !> ': <strerror>' when errno holds a storage or permission failure, '' otherwise: HDF5
+   !> reports a failed write only as a failed call, the system's reason is in errno.
+   function system_reason() result(text)
+      character(len=:), allocatable :: text
+
+      text = posix_storage_error()
+      if (len(text) > 0) text = ': '//text
+   end function system_reason
+
+   !> File name of a handle, for messages ('(none)' before the first open).
+   pure function h5_file_name(file) result(name)
+      !> Handle.
       type(h5_file), intent(in) :: file
       character(len=:), allocatable :: name
 
@@ -1508,6 +891,6 @@ contains
       else
          name = '(none)'
       end if
-   end function file_name
+   end function h5_file_name
 
 end module pound_h5

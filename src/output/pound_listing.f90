@@ -1,11 +1,18 @@
 !> The listing (`.out`): a fixed-width report readable in a terminal and on paper.
+!>
+!> Every write is checked: the first failure (no space left, file too large, ...) is kept
+!> and reported by `listing_io_error`, which the caller asks after the last write.
 module pound_listing
    use pound_kinds, only: dp
+   use pound_strings, only: fixed_cell
+   use, intrinsic :: iso_fortran_env, only: int64
+   use pound_error, only: error_type, fatal_error
+   use pound_posix, only: posix_set_errno, posix_storage_error
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_shear_building, only: shear_building
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
-   use pound_analysis, only: analysis_result, write_warnings
+   use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
    use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic_plastic, &
                                 law_bilinear, law_piecewise, law_parabola_cubic
@@ -18,11 +25,106 @@ module pound_listing
 
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
    public :: write_contact_summary, write_influence_tables, write_sweep_table
+   public :: listing_io_error, open_listing, close_listing
 
    !> Modes listed in the model summary (all are in the HDF5 file).
    integer, parameter :: max_listed_modes = 12
 
+   !> Status and message of the last write, and the first failure since the last check.
+   integer, save :: ios = 0
+   character(len=256), save :: msg = ''
+   integer, save :: first_ios = 0
+   character(len=256), save :: first_msg = ''
+
 contains
+
+   !> The first write failure since the previous call (unallocated if none), naming `path`;
+   !> the record is cleared.
+   subroutine listing_io_error(path, error)
+      !> File the unit writes to, for the message.
+      character(len=*), intent(in) :: path
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (first_ios /= 0) call fatal_error(error, 'cannot write the listing '//path//': '//trim(first_msg))
+      first_ios = 0
+      first_msg = ''
+      ios = 0
+   end subroutine listing_io_error
+
+   !> Open `path` (created or truncated) for the listing, as a formatted stream so that
+   !> `close_listing` can check that every byte reached the file.
+   subroutine open_listing(path, u, error)
+      !> File.
+      character(len=*), intent(in) :: path
+      !> Unit opened.
+      integer, intent(out) :: u
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      first_ios = 0
+      ios = 0
+      call posix_set_errno(0)
+      open (newunit=u, file=path, status='replace', action='write', access='stream', form='formatted', &
+            iostat=ios, iomsg=msg)
+      if (ios /= 0) call fatal_error(error, 'cannot write the listing '//path//': '//trim(msg))
+   end subroutine open_listing
+
+   !> Close the listing and check it: a failed write, or a file shorter than what was
+   !> written (the Fortran run-time can drop a buffer the system refused: no space, file
+   !> too large), is an error naming the system's reason.
+   subroutine close_listing(u, path, error)
+      !> Unit of `open_listing`.
+      integer, intent(in) :: u
+      !> Its file.
+      character(len=*), intent(in) :: path
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: stat
+      integer(int64) :: written, size_on_disk
+      character(len=:), allocatable :: reason
+      character(len=80) :: counts
+
+      call listing_io_error(path, error)
+      inquire (unit=u, pos=written, iostat=stat)
+      if (stat /= 0) written = -1
+      close (u, iostat=ios, iomsg=msg)
+      if (allocated(error)) return
+      if (ios /= 0) then
+         call fatal_error(error, 'cannot write the listing '//path//': '//trim(msg))
+         return
+      end if
+      inquire (file=path, size=size_on_disk, iostat=stat)
+      if (stat /= 0 .or. written < 1 .or. size_on_disk /= written - 1) then
+         reason = posix_storage_error()
+         if (len(reason) == 0) reason = 'the file system did not take every byte'
+         write (counts, '(a,i0,a,i0,a)') ' (the file holds ', size_on_disk, ' of ', written - 1, ' bytes)'
+         call fatal_error(error, 'cannot write the listing '//path//': '//reason//trim(counts))
+      end if
+   end subroutine close_listing
+
+   !> Warnings of an analysis or a sweep, one line each after '  WARNING: '.
+   subroutine write_warning_lines(u, warnings)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> The warnings (none when unallocated).
+      character(len=:), allocatable, intent(in) :: warnings(:)
+      integer :: i
+
+      if (.not. allocated(warnings)) return
+      do i = 1, size(warnings)
+         write (u, '(a)', iostat=ios, iomsg=msg) '  WARNING: '//trim(warnings(i))
+         call note_io()
+      end do
+   end subroutine write_warning_lines
+
+   !> Keep the first failed write.
+   subroutine note_io()
+      if (ios /= 0 .and. first_ios == 0) then
+         first_ios = ios
+         first_msg = msg
+      end if
+   end subroutine note_io
 
    !> Program, version, date, deck, title, units and the deck echo.
    subroutine write_listing_header(u, deck, ground_text)
@@ -37,30 +139,41 @@ contains
       integer :: i, start
 
       call date_and_time(date=date, time=time)
-      write (u, '(a)') repeat('=', 78)
-      write (u, '(a)') program_name//' '//program_version// &
+      write (u, '(a)', iostat=ios, iomsg=msg) repeat('=', 78)
+      call note_io()
+      write (u, '(a)', iostat=ios, iomsg=msg) program_name//' '//program_version// &
          ' - seismic pounding of adjacent buildings (unilateral contact, LCP)'
-      write (u, '(a)') 'run on '//date(1:4)//'-'//date(5:6)//'-'//date(7:8)//' '// &
+      call note_io()
+      write (u, '(a)', iostat=ios, iomsg=msg) 'run on '//date(1:4)//'-'//date(5:6)//'-'//date(7:8)//' '// &
          time(1:2)//':'//time(3:4)//':'//time(5:6)
-      write (u, '(a)') 'deck:  '//deck%path
-      write (u, '(a)') 'title: '//deck%analysis%title
-      write (u, '(a)') 'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ'
-      write (u, '(a)') repeat('=', 78)
+      call note_io()
+      write (u, '(a)', iostat=ios, iomsg=msg) 'deck:  '//deck%path
+      call note_io()
+      write (u, '(a)', iostat=ios, iomsg=msg) 'title: '//deck%analysis%title
+      call note_io()
+      write (u, '(a)', iostat=ios, iomsg=msg) 'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ'
+      call note_io()
+      write (u, '(a)', iostat=ios, iomsg=msg) repeat('=', 78)
+      call note_io()
       call write_section(u, 'Deck echo')
       start = 1
       do i = 1, len(deck%text)
          if (deck%text(i:i) == new_line('a')) then
-            write (u, '(a)') '  | '//deck%text(start:i - 1)
+            write (u, '(a)', iostat=ios, iomsg=msg) '  | '//deck%text(start:i - 1)
+            call note_io()
             start = i + 1
          end if
       end do
-      if (start <= len(deck%text)) write (u, '(a)') '  | '//deck%text(start:)
+      if (start <= len(deck%text)) write (u, '(a)', iostat=ios, iomsg=msg) '  | '//deck%text(start:)
+      call note_io()
       call write_section(u, 'Analysis and ground motion')
-      write (u, '(a,es12.4,a,f10.4,a,i0,a,i0)') '  dt =', deck%analysis%dt, ' s   t_end =', &
+      write (u, '(a,es12.4,a,f10.4,a,i0,a,i0)', iostat=ios, iomsg=msg) '  dt =', deck%analysis%dt, ' s   t_end =', &
          deck%analysis%t_end, ' s   steps = ', nint(deck%analysis%t_end/deck%analysis%dt), &
          '   history every ', deck%analysis%output_every
+      call note_io()
       do i = 1, size(ground_text)
-         write (u, '(a)') '  '//trim(ground_text(i))
+         write (u, '(a)', iostat=ios, iomsg=msg) '  '//trim(ground_text(i))
+         call note_io()
       end do
    end subroutine write_listing_header
 
@@ -71,7 +184,8 @@ contains
       !> Heading text.
       character(len=*), intent(in) :: title
 
-      write (u, '(/,a,/,a)') title, repeat('-', len(title))
+      write (u, '(/,a,/,a)', iostat=ios, iomsg=msg) title, repeat('-', len(title))
+      call note_io()
    end subroutine write_section
 
    !> Per building: storey data, periods and Rayleigh coefficients.
@@ -88,22 +202,33 @@ contains
          associate (b => models(ib))
             pd = 'off'
             if (b%p_delta) pd = 'on'
-            write (u, '(/,a,i0,a,a)') '  Building '//b%name//': ', b%n, ' storeys, P-Delta ', trim(pd)
-            write (u, '(a)') '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
+            write (u, '(/,a,i0,a,a)', iostat=ios, iomsg=msg) &
+               '  Building '//b%name//': ', b%n, ' storeys, P-Delta ', trim(pd)
+            call note_io()
+            write (u, '(a)', iostat=ios, iomsg=msg) &
+               '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
+            call note_io()
             do j = 1, b%n
-               write (u, '(2x,i6,f9.3,f12.4,es13.5,es12.4,es13.5,f14.5)') j, b%height(j), b%mass(j), &
+               write (u, '(2x,i6,a9,a12,es13.5,es12.4,es13.5,a14)', iostat=ios, iomsg=msg) &
+                  j, fixed_cell(b%height(j), 9, 3, .true.), fixed_cell(b%mass(j), 12, 4, .true.), &
                   b%storey_stiffness(j), b%axial_load(j), b%geometric_stiffness(j), &
-                  b%geometric_stiffness(j)/b%storey_stiffness(j)
+                  fixed_cell(b%geometric_stiffness(j)/b%storey_stiffness(j), 14, 5)
+               call note_io()
             end do
-            write (u, '(a)') '    mode      T [s]      f [Hz]  omega [rad/s]'
+            write (u, '(a)', iostat=ios, iomsg=msg) '    mode      T [s]      f [Hz]  omega [rad/s]'
+            call note_io()
             do j = 1, min(b%n, max_listed_modes)
-               write (u, '(2x,i6,f11.5,f12.5,f15.4)') j, b%period(j), 1.0_dp/b%period(j), b%omega(j)
+               write (u, '(2x,i6,a11,a12,a15)', iostat=ios, iomsg=msg) j, fixed_cell(b%period(j), 11, 5, .true.), &
+                  fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), fixed_cell(b%omega(j), 15, 4, .true.)
+               call note_io()
             end do
-            if (b%n > max_listed_modes) write (u, '(a,i0,a)') '    (', b%n - max_listed_modes, &
+            if (b%n > max_listed_modes) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '    (', b%n - max_listed_modes, &
                ' more modes in the HDF5 file)'
-            write (u, '(a,f6.2,a,i0,a,i0,a,es12.5,a,es12.5,a)') '  Rayleigh damping ', &
+            call note_io()
+            write (u, '(a,f6.2,a,i0,a,i0,a,es12.5,a,es12.5,a)', iostat=ios, iomsg=msg) '  Rayleigh damping ', &
                100.0_dp*b%damping_ratio, ' % at modes ', b%damping_modes(1), ' and ', &
                b%damping_modes(2), ': a0 = ', b%a0, ' 1/s, a1 = ', b%a1, ' s'
+            call note_io()
          end associate
       end do
    end subroutine write_model_summary
@@ -123,25 +248,37 @@ contains
       call write_section(u, label//' response: absolute maxima and the time they occur')
       do ib = 1, size(models)
          associate (b => models(ib), p => res%building(ib)%peak, t => res%building(ib)%peak_time)
-            write (u, '(/,a)') '  Building '//b%name
-            write (u, '(a)') '   floor     |u| [m]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]'
+            write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//b%name
+            call note_io()
+            write (u, '(a)', iostat=ios, iomsg=msg) &
+               '   floor     |u| [m]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]'
+            call note_io()
             do j = b%n, 1, -1
-               write (u, '(2x,i6,es12.4,f9.3,es12.4,f9.3,es16.4,f9.3)') j, p(j, q_u), t(j, q_u), &
-                  p(j, q_v), t(j, q_v), p(j, q_a_abs), t(j, q_a_abs)
+               write (u, '(2x,i6,es12.4,a9,es12.4,a9,es16.4,a9)', iostat=ios, iomsg=msg) &
+                  j, p(j, q_u), fixed_cell(t(j, q_u), 9, 3), &
+                  p(j, q_v), fixed_cell(t(j, q_v), 9, 3), p(j, q_a_abs), fixed_cell(t(j, q_a_abs), 9, 3)
+               call note_io()
             end do
-            write (u, '(a)') '  storey   |drift| [m]    t [s]   |Q| [kN]     t [s]'
+            write (u, '(a)', iostat=ios, iomsg=msg) '  storey   |drift| [m]    t [s]   |Q| [kN]     t [s]'
+            call note_io()
             do j = b%n, 1, -1
-               write (u, '(2x,i6,es14.4,f9.3,es11.4,f9.3)') j, p(j, q_drift), t(j, q_drift), &
-                  p(j, q_shear), t(j, q_shear)
+               write (u, '(2x,i6,es14.4,a9,es11.4,a9)', iostat=ios, iomsg=msg) j, p(j, q_drift), &
+                  fixed_cell(t(j, q_drift), 9, 3), p(j, q_shear), fixed_cell(t(j, q_shear), 9, 3)
+               call note_io()
             end do
          end associate
       end do
-      write (u, '(/,a,es10.3)') '  Energy audit (input = kinetic + strain + damping + contact + plastic), '// &
+      write (u, '(/,a,es10.3)', iostat=ios, iomsg=msg) &
+         '  Energy audit (input = kinetic + strain + damping + contact + plastic), '// &
          'max relative error over time: ', res%energy_error
-      call write_warnings(u, res%warnings, '  WARNING: ')
+      call note_io()
+      call write_warning_lines(u, res%warnings)
       j = res%n_out
-      write (u, '(a)') '  at the end [kJ]:      input     kinetic      strain     damping     contact     plastic'
-      write (u, '(a,6es12.4)') '                 ', res%energy(:, j)
+      write (u, '(a)', iostat=ios, iomsg=msg) &
+         '  at the end [kJ]:      input     kinetic      strain     damping     contact     plastic'
+      call note_io()
+      write (u, '(a,6es12.4)', iostat=ios, iomsg=msg) '                 ', res%energy(:, j)
+      call note_io()
    end subroutine write_peak_tables
 
    !> Contact pairs and laws, impacts, time in contact, peak forces, plastic penetration
@@ -157,49 +294,74 @@ contains
       character(len=16) :: fractured
 
       call write_section(u, 'Contact (unilateral constraints between facing floors)')
-      write (u, '(a)') '  pair          gap [m]  law                 k0 [kN/m]   c [kNs/m]  dashpot rate'
+      write (u, '(a)', iostat=ios, iomsg=msg) &
+         '  pair          gap [m]  law                 k0 [kN/m]   c [kNs/m]  dashpot rate'
+      call note_io()
       do k = 1, cs%m
          associate (p => cs%pair(k))
-            write (u, '(2x,a12,es10.3,2x,a16,es13.3,es12.3,2x,a)') p%label, p%gap, law_name(p%law%kind), &
+            write (u, '(2x,a12,es10.3,2x,a16,es13.3,es12.3,2x,a)', iostat=ios, iomsg=msg) &
+               p%label, p%gap, law_name(p%law%kind), &
                p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
+            call note_io()
             call law_parameters(p%law)
          end associate
       end do
-      write (u, '(/,a)') '  pair         impacts  in contact [s]  peak r [kN]    t [s]  max pen. [m]'// &
+      write (u, '(/,a)', iostat=ios, iomsg=msg) &
+         '  pair         impacts  in contact [s]  peak r [kN]    t [s]  max pen. [m]'// &
          '  plastic left [m]  fractured'
+      call note_io()
       do k = 1, cs%m
          associate (p => cs%pair(k))
             fractured = 'no'
             if (p%fractured) write (fractured, '(a,f9.4,a)') 'at', p%fracture_time, ' s'
-            write (u, '(2x,a12,i8,f16.4,es13.4,f9.4,es14.4,es18.4,2x,a)') p%label, p%impacts, p%contact_time, &
+            write (u, '(2x,a12,i8,f16.4,es13.4,f9.4,es14.4,es18.4,2x,a)', iostat=ios, iomsg=msg) &
+               p%label, p%impacts, p%contact_time, &
                p%peak_force, p%peak_time, p%peak_penetration, p%plastic, trim(fractured)
+            call note_io()
          end associate
       end do
       do k = 1, cs%m
-         if (cs%pair(k)%fractured) write (u, '(a,f10.4,a)') '  joint '//cs%pair(k)%label// &
+         if (cs%pair(k)%fractured) write (u, '(a,f10.4,a)', iostat=ios, iomsg=msg) '  joint '//cs%pair(k)%label// &
             ' FRACTURED at t = ', cs%pair(k)%fracture_time, ' s: it carries nothing for the rest of the analysis'
+         call note_io()
       end do
       mean_pivots = 0.0_dp
       if (cs%solves > 0) mean_pivots = real(cs%pivots_total, dp)/real(cs%solves, dp)
-      write (u, '(/,a)') '  LCP (Lemke, lexicographic) statistics:'
-      write (u, '(a,i0,a,i0,a,i0,a)') '    solves ', cs%solves, ' (q >= 0 without pivoting: ', cs%trivial, &
+      write (u, '(/,a)', iostat=ios, iomsg=msg) '  LCP (Lemke, lexicographic) statistics:'
+      call note_io()
+      write (u, '(a,i0,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
+         '    solves ', cs%solves, ' (q >= 0 without pivoting: ', cs%trivial, &
          '; warm start accepted: ', cs%warm, ')'
-      write (u, '(a,i0,a,i0,a,f8.3)') '    pivots total ', cs%pivots_total, ', max per solve ', &
+      call note_io()
+      write (u, '(a,i0,a,i0,a,f8.3)', iostat=ios, iomsg=msg) '    pivots total ', cs%pivots_total, ', max per solve ', &
          cs%pivots_max, ', mean per solve ', mean_pivots
-      write (u, '(a,i0)') '    re-solves (a left-out constraint would close, a segment end was passed): ', &
+      call note_io()
+      write (u, '(a,i0)', iostat=ios, iomsg=msg) &
+         '    re-solves (a left-out constraint would close, a segment end was passed): ', &
          cs%resolves
-      write (u, '(a,i0)') '    largest LCP (contact + yield + segment-end rows): ', cs%largest_lcp
-      write (u, '(a,i0)') '    non-convex steps (softening rows in the LCP): ', cs%nonconvex
-      write (u, '(a,i0)') '    Lemke failures solved by enumeration (nearest the previous state): ', cs%fallbacks
+      call note_io()
+      write (u, '(a,i0)', iostat=ios, iomsg=msg) &
+         '    largest LCP (contact + yield + segment-end rows): ', cs%largest_lcp
+      call note_io()
+      write (u, '(a,i0)', iostat=ios, iomsg=msg) '    non-convex steps (softening rows in the LCP): ', cs%nonconvex
+      call note_io()
+      write (u, '(a,i0)', iostat=ios, iomsg=msg) &
+         '    Lemke failures solved by enumeration (nearest the previous state): ', cs%fallbacks
+      call note_io()
       do k = 1, min(cs%n_events, max_listed_events)
          associate (e => cs%events(k))
-            write (u, '(a,f10.5,a,i0,a,a,a,i0,a,i0,a)') '      t = ', e%time, ' s, step ', e%step, ': Lemke ', &
+            write (u, '(a,f10.5,a,i0,a,a,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
+               '      t = ', e%time, ' s, step ', e%step, ': Lemke ', &
                lemke_status_name(e%status), ', ', e%rows, ' rows, ', e%solutions, ' solutions; pairs '//e%pairs
+            call note_io()
          end associate
       end do
-      if (cs%n_events > max_listed_events) write (u, '(a,i0,a)') '      ... ', cs%n_events - max_listed_events, &
+      if (cs%n_events > max_listed_events) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) &
+         '      ... ', cs%n_events - max_listed_events, &
          ' more in the HDF5 file (/coupled/contact/events)'
-      write (u, '(a,es10.3)') '    max natural residual ||min(z, w)|| / ||q||: ', cs%residual_max
+      call note_io()
+      write (u, '(a,es10.3)', iostat=ios, iomsg=msg) '    max natural residual ||min(z, w)|| / ||q||: ', cs%residual_max
+      call note_io()
 
    contains
 
@@ -209,21 +371,31 @@ contains
 
          select case (law%kind)
          case (law_elastic_plastic)
-            write (u, '(16x,a,es11.4,a)') 'yield force ', law%yield_force, ' kN'
+            write (u, '(16x,a,es11.4,a)', iostat=ios, iomsg=msg) 'yield force ', law%yield_force, ' kN'
+            call note_io()
          case (law_bilinear)
-            write (u, '(16x,a,es11.4,a,es11.4,a)') 'yield force ', law%yield_force, ' kN, second slope ', &
+            write (u, '(16x,a,es11.4,a,es11.4,a)', iostat=ios, iomsg=msg) &
+               'yield force ', law%yield_force, ' kN, second slope ', &
                law%second_slope, ' kN/m'
+            call note_io()
          case (law_piecewise)
-            write (u, '(16x,a,i0,a)') 'envelope through ', size(law%env_d), ' points (d [m], r [kN]):'
-            write (u, '(16x,4(a,es10.3,a,es10.3,a))') ('(', law%env_d(i), ', ', law%env_r(i), ') ', &
+            write (u, '(16x,a,i0,a)', iostat=ios, iomsg=msg) &
+               'envelope through ', size(law%env_d), ' points (d [m], r [kN]):'
+            call note_io()
+            write (u, '(16x,4(a,es10.3,a,es10.3,a))', iostat=ios, iomsg=msg) &
+               ('(', law%env_d(i), ', ', law%env_r(i), ') ', &
                i=1, size(law%env_d))
+            call note_io()
          case (law_parabola_cubic)
-            write (u, '(16x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)') 'rB = ', law%peak_force, ' kN, dB = ', &
+            write (u, '(16x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)', iostat=ios, iomsg=msg) &
+               'rB = ', law%peak_force, ' kN, dB = ', &
                law%peak_penetration, ' m, dF = ', law%fracture_penetration, ' m, ', law%n_segments, &
                ' chords per curved branch'
+            call note_io()
          end select
-         if (is_plastic(law) .and. law%fractures) write (u, '(16x,a,es11.4,a)') &
+         if (is_plastic(law) .and. law%fractures) write (u, '(16x,a,es11.4,a)', iostat=ios, iomsg=msg) &
             'fractures at d = ', law%env_d(size(law%env_d)), ' m'
+         call note_io()
       end subroutine law_parameters
 
    end subroutine write_contact_summary
@@ -255,13 +427,15 @@ contains
          integer :: j, ib
          real(dp) :: lambda
 
-         write (u, '(/,a)') '  '//title
+         write (u, '(/,a)', iostat=ios, iomsg=msg) '  '//title
+         call note_io()
          line = '  '//row//repeat(' ', 6 - len(row))
          do ib = 1, size(models)
             cell = models(ib)%name(1:min(14, len(models(ib)%name)))
             line = line//adjustr(cell)
          end do
-         write (u, '(a)') line
+         write (u, '(a)', iostat=ios, iomsg=msg) line
+         call note_io()
          do j = maxval(models(:)%n), 1, -1
             write (cell, '(i6)') j
             line = '  '//cell(1:6)//'  '
@@ -273,12 +447,13 @@ contains
                   if (lambda >= huge(1.0_dp)) then
                      cell = '           inf'
                   else
-                     write (cell, '(f14.2)') lambda
+                     cell = fixed_cell(lambda, 14, 2)
                   end if
                end if
                line = line//cell
             end do
-            write (u, '(a)') line
+            write (u, '(a)', iostat=ios, iomsg=msg) line
+            call note_io()
          end do
       end subroutine table
 
@@ -302,8 +477,10 @@ contains
       integer :: i, ib, k
 
       call write_section(u, 'Gap study: largest |lambda| [%] over the storeys (floors) against the gap')
-      write (u, '(a,i0,a,f10.4,a)') '  ', size(res%gap), ' gaps applied to every contact pair; ', &
+      write (u, '(a,i0,a,f10.4,a)', iostat=ios, iomsg=msg) &
+         '  ', size(res%gap), ' gaps applied to every contact pair; ', &
          res%seconds, ' s for all coupled runs'
+      call note_io()
       line = '    gap [mm]  impacts'
       do ib = 1, size(models)
          do k = 1, size(shown)
@@ -312,7 +489,8 @@ contains
          end do
       end do
       if (cfg%target > 0.0_dp) line = line//'  target'
-      write (u, '(a)') line
+      write (u, '(a)', iostat=ios, iomsg=msg) line
+      call note_io()
       do i = 1, size(res%gap)
          write (cell, '(f10.4)') 1000.0_dp*res%gap(i)
          line = '  '//cell
@@ -323,23 +501,29 @@ contains
                if (res%max_abs_lambda(shown(k), ib, i) >= huge(1.0_dp)) then
                   cell = '       inf'
                else
-                  write (cell, '(f10.2)') res%max_abs_lambda(shown(k), ib, i)
+                  cell = fixed_cell(res%max_abs_lambda(shown(k), ib, i), 10, 2)
                end if
                line = line//cell
             end do
          end do
          if (cfg%target > 0.0_dp) line = line//merge('     met', '        ', res%meets(i))
-         write (u, '(a)') line
+         write (u, '(a)', iostat=ios, iomsg=msg) line
+         call note_io()
       end do
       if (cfg%target > 0.0_dp) then
          if (res%found) then
-            write (u, '(/,a,f7.2,a,f10.4,a)') '  Smallest gap with every targeted |lambda| <= ', cfg%target, &
+            write (u, '(/,a,f7.2,a,f10.4,a)', iostat=ios, iomsg=msg) &
+               '  Smallest gap with every targeted |lambda| <= ', cfg%target, &
                ' % at it and at every larger gap of the sweep: ', 1000.0_dp*res%safe_gap, ' mm'
+            call note_io()
          else
-            write (u, '(/,a,f7.2,a)') '  No gap of the sweep range keeps every targeted |lambda| <= ', &
+            write (u, '(/,a,f7.2,a)', iostat=ios, iomsg=msg) &
+               '  No gap of the sweep range keeps every targeted |lambda| <= ', &
                cfg%target, ' % from there to the end of the range.'
+            call note_io()
          end if
       end if
+      call write_warning_lines(u, res%warnings)
    end subroutine write_sweep_table
 
 end module pound_listing

@@ -17,7 +17,8 @@ foreach(s "units: kN, m, s, t (tonne)" "Deck echo" "T [s]" "Uncoupled response" 
           "Influence coefficients" "storey shear Q" "LCP (Lemke, lexicographic) statistics" "Energy audit")
   expect_contains("listing" "${listing}" "${s}")
 endforeach()
-# Output directory that does not exist: clear message, exit 1.
-run_pound(d ${SOURCE_DIR}/input/two_frames_pdelta.nml -o no/such/dir)
+# Output folder that cannot be created (a file is in the way): clear message, exit 1.
+file(WRITE ${WORK_DIR}/plain "not a folder\n")
+run_pound(d ${SOURCE_DIR}/input/two_frames_pdelta.nml -o plain/sub)
 expect_equal("exit status, bad -o" 1 "${d_rc}")
-expect_contains("bad -o" "${d_err}" "no/such/dir")
+expect_contains("bad -o" "${d_err}" "cannot create the output folder plain/sub: plain exists and is not a folder")

@@ -1,0 +1,84 @@
+!> Reader of `&analysis`: title, dt, t_end, output_every, history.
+module pound_deck_analysis
+   use pound_config, only: analysis_config
+   use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
+                                site_of, unset_real
+   use pound_deck_lexer, only: base_name, group_ref, group_text
+   use pound_deck_variables, only: max_steps, path_len, title_len
+   use pound_error, only: error_type
+   use pound_kinds, only: dp
+   use pound_strings, only: str
+   implicit none
+   private
+
+   public :: read_analysis
+
+contains
+
+   !> `&analysis`: title, time step, duration, history output.
+   subroutine read_analysis(path, text, g, cfg, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> Resolved `&analysis`.
+      type(analysis_config), intent(out) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=title_len) :: title
+      character(len=path_len) :: history
+      real(dp) :: dt, t_end
+      integer :: output_every, ios
+      character(len=:), allocatable :: buf
+      character(len=512) :: msg
+      type(site) :: at
+      namelist /analysis/ title, dt, t_end, output_every, history
+
+      title = ' '
+      history = ' '
+      dt = unset_real
+      t_end = unset_real
+      output_every = 1
+      at = site_of(path, g)
+      call group_text(text, g, buf)
+      msg = ' '
+      read (buf, nml=analysis, iostat=ios, iomsg=msg)
+      call read_failed(at, ios, msg, error)
+      if (allocated(error)) return
+
+      if (len_trim(title) == len(title)) then
+         call fail(at, 'title', 'title is longer than '//str(len(title) - 1)//' characters', error)
+         return
+      end if
+      if (len_trim(title) > 0) then
+         cfg%title = trim(title)
+      else
+         cfg%title = base_name(path)
+      end if
+
+      call require_real(at, 'dt', dt, 'time step in s', error)
+      if (allocated(error)) return
+      call check_real(at, 'dt', dt, '>', 0.0_dp, error)
+      if (allocated(error)) return
+      call require_real(at, 't_end', t_end, 'duration in s', error)
+      if (allocated(error)) return
+      call check_real(at, 't_end', t_end, '>=', dt, error, 'dt = '//str(dt))
+      if (allocated(error)) return
+      if (t_end > dt*real(max_steps, dp)) then
+         call fail(at, 't_end', 't_end/dt = '//str(t_end/dt)//' steps, must be <= '// &
+                   str(max_steps), error)
+         return
+      end if
+      if (output_every < 1) then
+         call fail(at, 'output_every', 'output_every = '//str(output_every)//', must be >= 1', error)
+         return
+      end if
+      cfg%dt = dt
+      cfg%t_end = t_end
+      cfg%output_every = output_every
+      call parse_history(at, history, cfg%store, error)
+   end subroutine read_analysis
+
+end module pound_deck_analysis

@@ -1,0 +1,431 @@
+!> Reader of `&contact`: the two buildings, the floor pairs, gaps and the joint law with its
+!> parameters (envelope rules: pound_envelope_rules).
+module pound_deck_contact
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use pound_config, only: building_config, contact_config
+   use pound_deck_checks, only: check_plausible, check_real, fail, given_count, is_set, read_failed, &
+                                require_real, site, site_of, unset_int, unset_real, values_text
+   use pound_deck_lexer, only: group_ref, group_text, lower
+   use pound_deck_variables, only: law_names, max_envelope_points, max_pairs, max_segments, word_len
+   use pound_envelope_rules, only: check_piecewise_envelope
+   use pound_error, only: error_type
+   use pound_kinds, only: dp
+   use pound_strings, only: str
+   implicit none
+   private
+
+   public :: read_contact
+
+contains
+
+   !> `&contact`: unilateral constraints between facing floors of two buildings.
+   subroutine read_contact(path, text, g, buildings, cfg, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> All buildings of the deck (already resolved).
+      type(building_config), intent(in) :: buildings(:)
+      !> Resolved contact.
+      type(contact_config), intent(out) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=word_len) :: left, right, law, dashpot_rate
+      integer, allocatable :: floors_left(:), floors_right(:)
+      real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:)
+      real(dp) :: stiffness, dashpot, yield_force, second_slope, peak_force, peak_penetration, &
+                  fracture_penetration
+      integer :: n_segments
+      character(len=:), allocatable :: buf
+      character(len=512) :: msg
+      type(site) :: at
+      integer :: ios, n, k, i
+      namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot, &
+         dashpot_rate, yield_force, second_slope, envelope_d, envelope_r, peak_force, peak_penetration, &
+         fracture_penetration, n_segments
+
+      ! One slot more than allowed, so that too many pairs get our message, not gfortran's.
+      allocate (floors_left(max_pairs + 1), floors_right(max_pairs + 1), gap(max_pairs + 1), &
+                envelope_d(max_envelope_points + 1), envelope_r(max_envelope_points + 1))
+      left = ' '
+      right = ' '
+      law = ' '
+      dashpot_rate = 'backward_euler'
+      floors_left = unset_int
+      floors_right = unset_int
+      gap = unset_real
+      envelope_d = unset_real
+      envelope_r = unset_real
+      stiffness = unset_real
+      yield_force = unset_real
+      second_slope = unset_real
+      peak_force = unset_real
+      peak_penetration = unset_real
+      fracture_penetration = unset_real
+      n_segments = unset_int
+      dashpot = 0.0_dp
+      at = site_of(path, g)
+      call group_text(text, g, buf)
+      msg = ' '
+      read (buf, nml=contact, iostat=ios, iomsg=msg)
+      call read_failed(at, ios, msg, error)
+      if (allocated(error)) return
+
+      call find_building(at, 'left', left, 'the building on the left', buildings, cfg%left_index, error)
+      if (allocated(error)) return
+      call find_building(at, 'right', right, 'the building on the right', buildings, cfg%right_index, error)
+      if (allocated(error)) return
+      cfg%left = buildings(cfg%left_index)%name
+      cfg%right = buildings(cfg%right_index)%name
+      if (cfg%left_index == cfg%right_index) then
+         call fail(at, 'right', "right = '"//trim(adjustl(right))//"' is the same building as left = '"// &
+                   trim(adjustl(left))//"'; a contact joins two different buildings", error)
+         return
+      end if
+      if (cfg%left_index > cfg%right_index) then
+         call fail(at, 'left', "left = '"//cfg%left//"' stands right of right = '"//cfg%right// &
+                   "': the buildings stand left to right in deck order ("// &
+                   building_names(buildings)//"); swap left and right", error)
+         return
+      end if
+      at%label = at%label//' ('//cfg%left//', '//cfg%right//')'
+
+      call take_floors(at, 'floors_left', floors_left, buildings(cfg%left_index), cfg%floor_left, error)
+      if (allocated(error)) return
+      call take_floors(at, 'floors_right', floors_right, buildings(cfg%right_index), cfg%floor_right, error)
+      if (allocated(error)) return
+      n = size(cfg%floor_left)
+      if (size(cfg%floor_right) /= n) then
+         call fail(at, 'floors_right', 'floors_right has '//values_text(size(cfg%floor_right))// &
+                   ', floors_left has '//values_text(n)//'; both need one floor per pair', error)
+         return
+      end if
+
+      k = given_count(gap)
+      if (k == 0) then
+         call fail(at, 'gap', 'gap is missing (initial gap in m: one value per pair, or a single '// &
+                   'value for all pairs)', error)
+         return
+      end if
+      if (k /= 1 .and. k /= n) then
+         call fail(at, 'gap', 'gap has '//values_text(k)//', must have 1 (for all pairs) or one '// &
+                   'per pair = '//str(n), error)
+         return
+      end if
+      do i = 1, k
+         if (.not. is_set(gap(i))) then
+            call fail(at, 'gap', 'gap('//str(i)//') is missing; give one value per pair', error)
+            return
+         end if
+         if (k == 1) then
+            call check_real(at, 'gap', gap(i), '>=', 0.0_dp, error)
+         else
+            call check_real(at, 'gap', gap(i), '>=', 0.0_dp, error, name='gap('//str(i)//')')
+         end if
+         if (allocated(error)) return
+      end do
+      if (k == 1) then
+         cfg%gap = spread(gap(1), 1, n)
+      else
+         cfg%gap = gap(1:n)
+      end if
+
+      cfg%law = lower(trim(adjustl(law)))
+      select case (cfg%law)
+      case ('elastic', 'elastic_plastic', 'bilinear', 'piecewise', 'parabola_cubic')
+      case ('')
+         call fail(at, 'law', 'law is missing, must be '//law_names, error)
+         return
+      case default
+         call fail(at, 'law', "law = '"//trim(adjustl(law))//"', must be "//law_names, error)
+         return
+      end select
+
+      ! Variables of other laws are an error, not silently ignored.
+      call unused('stiffness', is_set(stiffness), cfg%law == 'piecewise', error)
+      if (allocated(error)) return
+      call unused('yield_force', is_set(yield_force), &
+                  cfg%law /= 'elastic_plastic' .and. cfg%law /= 'bilinear', error)
+      if (allocated(error)) return
+      call unused('second_slope', is_set(second_slope), cfg%law /= 'bilinear', error)
+      if (allocated(error)) return
+      call unused('envelope_d', given_count(envelope_d) > 0, cfg%law /= 'piecewise', error)
+      if (allocated(error)) return
+      call unused('envelope_r', given_count(envelope_r) > 0, cfg%law /= 'piecewise', error)
+      if (allocated(error)) return
+      call unused('peak_force', is_set(peak_force), cfg%law /= 'parabola_cubic', error)
+      if (allocated(error)) return
+      call unused('peak_penetration', is_set(peak_penetration), cfg%law /= 'parabola_cubic', error)
+      if (allocated(error)) return
+      call unused('fracture_penetration', is_set(fracture_penetration), cfg%law /= 'parabola_cubic', error)
+      if (allocated(error)) return
+      call unused('n_segments', n_segments /= unset_int, cfg%law /= 'parabola_cubic', error)
+      if (allocated(error)) return
+
+      select case (cfg%law)
+      case ('elastic', 'elastic_plastic', 'bilinear')
+         call require_real(at, 'stiffness', stiffness, 'joint stiffness k0 in kN/m', error)
+         if (allocated(error)) return
+         call check_real(at, 'stiffness', stiffness, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%stiffness = stiffness
+         if (cfg%law /= 'elastic') then
+            call require_real(at, 'yield_force', yield_force, 'yield force in kN', error)
+            if (allocated(error)) return
+            call check_real(at, 'yield_force', yield_force, '>', 0.0_dp, error)
+            if (allocated(error)) return
+            cfg%yield_force = yield_force
+         end if
+         if (cfg%law == 'bilinear') then
+            call require_real(at, 'second_slope', second_slope, 'slope after yielding in kN/m, '// &
+                              '< stiffness, negative for softening', error)
+            if (allocated(error)) return
+            if (.not. (second_slope < stiffness .and. ieee_is_finite(second_slope))) then
+               call fail(at, 'second_slope', 'second_slope = '//str(second_slope)//', must be < '// &
+                         'stiffness = '//str(stiffness), error)
+               return
+            end if
+            call check_plausible(at, 'second_slope', second_slope, 'second_slope', error)
+            if (allocated(error)) return
+            cfg%second_slope = second_slope
+         end if
+      case ('piecewise')
+         call take_points(error)
+         if (allocated(error)) return
+      case ('parabola_cubic')
+         call take_parabola_cubic(error)
+         if (allocated(error)) return
+      end select
+
+      call check_real(at, 'dashpot', dashpot, '>=', 0.0_dp, error)
+      if (allocated(error)) return
+      cfg%dashpot = dashpot
+      cfg%dashpot_rate = lower(trim(adjustl(dashpot_rate)))
+      if (cfg%dashpot_rate /= 'backward_euler' .and. cfg%dashpot_rate /= 'trapezoidal') then
+         call fail(at, 'dashpot_rate', "dashpot_rate = '"//trim(adjustl(dashpot_rate))// &
+                   "', must be 'backward_euler' or 'trapezoidal'", error)
+         return
+      end if
+
+   contains
+
+      !> `var` was given (`given`) although the law does not use it (`not_used`).
+      pure subroutine unused(var, given, not_used, error)
+         character(len=*), intent(in) :: var
+         logical, intent(in) :: given, not_used
+         type(error_type), allocatable, intent(out) :: error
+
+         if (given .and. not_used) then
+            if (var == 'stiffness') then
+               call fail(at, var, "stiffness is not used by law = 'piecewise' (k0 is the slope of "// &
+                         'its first segment, envelope_r(1)/envelope_d(1))', error)
+            else
+               call fail(at, var, var//" is not used by law = '"//cfg%law//"'", error)
+            end if
+         end if
+      end subroutine unused
+
+      !> `piecewise`: the envelope points, checked by the law's own rules.
+      subroutine take_points(error)
+         type(error_type), allocatable, intent(out) :: error
+         character(len=:), allocatable :: why
+         real(dp) :: k0
+         integer :: nd, nr, j
+
+         nd = given_count(envelope_d)
+         nr = given_count(envelope_r)
+         if (nd < 2) then
+            call fail(at, 'envelope_d', 'envelope_d has '//values_text(nd)//', needs at least 2 '// &
+                      'penetrations (m) of the envelope points after the origin', error)
+            return
+         end if
+         if (nd > max_envelope_points) then
+            call fail(at, 'envelope_d', 'envelope_d has '//values_text(nd)//', must have at most '// &
+                      str(max_envelope_points), error)
+            return
+         end if
+         if (nr /= nd) then
+            call fail(at, 'envelope_r', 'envelope_r has '//values_text(nr)//', envelope_d has '// &
+                      values_text(nd)//'; both need one value per point', error)
+            return
+         end if
+         do j = 1, nd
+            if (.not. is_set(envelope_d(j))) then
+               call fail(at, 'envelope_d', 'envelope_d('//str(j)//') is missing', error)
+               return
+            end if
+            if (.not. is_set(envelope_r(j))) then
+               call fail(at, 'envelope_r', 'envelope_r('//str(j)//') is missing', error)
+               return
+            end if
+            call check_real(at, 'envelope_d', envelope_d(j), '>', 0.0_dp, error, name='envelope_d('//str(j)//')')
+            if (allocated(error)) return
+            call check_real(at, 'envelope_r', envelope_r(j), '>=', 0.0_dp, error, name='envelope_r('//str(j)//')')
+            if (allocated(error)) return
+         end do
+         call check_piecewise_envelope(envelope_d(1:nd), envelope_r(1:nd), k0, error)
+         if (allocated(error)) then
+            why = error%message
+            call fail(at, 'envelope_r', 'envelope points: '//why, error)
+            return
+         end if
+         cfg%envelope_d = envelope_d(1:nd)
+         cfg%envelope_r = envelope_r(1:nd)
+         call check_plausible(at, 'stiffness', k0, &
+                              'k0 = envelope_r(1)/envelope_d(1)', error, line_of='envelope_r')
+         if (allocated(error)) return
+         cfg%stiffness = k0
+      end subroutine take_points
+
+      !> `parabola_cubic`: dB, dF, and k0 or rB (k0 = 2 rB/dB), chords per branch.
+      subroutine take_parabola_cubic(error)
+         type(error_type), allocatable, intent(out) :: error
+         real(dp) :: k0
+
+         call require_real(at, 'peak_penetration', peak_penetration, 'penetration dB at the peak force, m', &
+                           error)
+         if (allocated(error)) return
+         call check_real(at, 'peak_penetration', peak_penetration, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         call require_real(at, 'fracture_penetration', fracture_penetration, &
+                           'penetration dF at fracture, m', error)
+         if (allocated(error)) return
+         call check_real(at, 'fracture_penetration', fracture_penetration, '>', peak_penetration, error, &
+                         bound_text='peak_penetration = '//str(peak_penetration))
+         if (allocated(error)) return
+         if (is_set(stiffness)) then
+            call check_real(at, 'stiffness', stiffness, '>', 0.0_dp, error)
+            if (allocated(error)) return
+            k0 = stiffness
+            if (is_set(peak_force)) then
+               if (abs(peak_force - 0.5_dp*k0*peak_penetration) > 1.0e-9_dp*peak_force) then
+                  call fail(at, 'peak_force', 'peak_force = '//str(peak_force)//' contradicts stiffness = '// &
+                            str(stiffness)//' and peak_penetration = '//str(peak_penetration)// &
+                            ' (the parabola needs stiffness = 2 peak_force/peak_penetration); give one '// &
+                            'of stiffness and peak_force', error)
+                  return
+               end if
+            end if
+         else
+            call require_real(at, 'peak_force', peak_force, 'peak force rB in kN, or give stiffness '// &
+                              'k0 = 2 rB/dB', error)
+            if (allocated(error)) return
+            call check_real(at, 'peak_force', peak_force, '>', 0.0_dp, error)
+            if (allocated(error)) return
+            k0 = 2.0_dp*peak_force/peak_penetration
+            call check_plausible(at, 'stiffness', k0, 'k0 = 2 peak_force/peak_penetration', error, &
+                                 line_of='peak_force')
+            if (allocated(error)) return
+         end if
+         if (n_segments == unset_int) n_segments = 8
+         if (n_segments < 1 .or. n_segments > max_segments) then
+            call fail(at, 'n_segments', 'n_segments = '//str(n_segments)//', must be 1..'//str(max_segments)// &
+                      ' (chords per curved branch)', error)
+            return
+         end if
+         cfg%stiffness = k0
+         cfg%peak_force = 0.5_dp*k0*peak_penetration
+         cfg%peak_penetration = peak_penetration
+         cfg%fracture_penetration = fracture_penetration
+         cfg%n_segments = n_segments
+      end subroutine take_parabola_cubic
+
+   end subroutine read_contact
+
+   !> Index of the building named `raw` (ignoring case); error if blank or not a building.
+   pure subroutine find_building(at, var, raw, what, buildings, idx, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Building name as read.
+      character(len=*), intent(in) :: raw
+      !> What the variable is (for the message when it is missing).
+      character(len=*), intent(in) :: what
+      !> All buildings of the deck.
+      type(building_config), intent(in) :: buildings(:)
+      !> Index of the building in `buildings` (0 on error).
+      integer, intent(out) :: idx
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: name, names
+      integer :: i
+
+      idx = 0
+      names = building_names(buildings)
+      name = trim(adjustl(raw))
+      if (len(name) == 0) then
+         call fail(at, var, var//' is missing or blank (name of '//what//'; buildings: '// &
+                   names//')', error)
+         return
+      end if
+      do i = 1, size(buildings)
+         if (lower(buildings(i)%name) == lower(name)) then
+            idx = i
+            return
+         end if
+      end do
+      call fail(at, var, var//" = '"//name//"' is not a building of the deck; buildings: "// &
+                names, error)
+   end subroutine find_building
+
+   !> The buildings' names in deck order, comma separated.
+   pure function building_names(buildings) result(names)
+      !> All buildings of the deck.
+      type(building_config), intent(in) :: buildings(:)
+      character(len=:), allocatable :: names
+      integer :: i
+
+      names = buildings(1)%name
+      do i = 2, size(buildings)
+         names = names//', '//buildings(i)%name
+      end do
+   end function building_names
+
+   !> Floors of building `b` in each pair: 1..`max_pairs` values, none missing, each in
+   !> 1..n_storeys of `b`.
+   pure subroutine take_floors(at, var, raw, b, values, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Namelist array as read (`unset_int` where not given).
+      integer, intent(in) :: raw(:)
+      !> The building these floors belong to.
+      type(building_config), intent(in) :: b
+      !> The floors (unallocated on error).
+      integer, allocatable, intent(out) :: values(:)
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k, i
+
+      do k = size(raw), 1, -1
+         if (raw(k) /= unset_int) exit
+      end do
+      if (k == 0) then
+         call fail(at, var, var//' is missing (floor of building '//b%name//' in each pair, '// &
+                   '1..n_storeys = '//str(b%n_storeys)//')', error)
+         return
+      end if
+      if (k > max_pairs) then
+         call fail(at, var, var//' has '//values_text(k)//', must have at most '//str(max_pairs)// &
+                   ' (one per pair)', error)
+         return
+      end if
+      do i = 1, k
+         if (raw(i) == unset_int) then
+            call fail(at, var, var//'('//str(i)//') is missing; give one floor per pair', error)
+            return
+         end if
+         if (raw(i) < 1 .or. raw(i) > b%n_storeys) then
+            call fail(at, var, var//'('//str(i)//') = '//str(raw(i))//', must be a floor of '// &
+                      'building '//b%name//': 1..n_storeys = '//str(b%n_storeys), error)
+            return
+         end if
+      end do
+      values = raw(1:k)
+   end subroutine take_floors
+
+end module pound_deck_contact

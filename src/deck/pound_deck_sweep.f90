@@ -1,0 +1,89 @@
+!> Reader of `&sweep`: the range of seismic-joint gaps and the optional target for |lambda|.
+module pound_deck_sweep
+   use pound_config, only: sweep_config
+   use pound_deck_checks, only: check_real, fail, is_set, parse_history, read_failed, require_real, &
+                                site, site_of, unset_int, unset_real
+   use pound_deck_lexer, only: group_ref, group_text
+   use pound_deck_variables, only: path_len
+   use pound_error, only: error_type
+   use pound_kinds, only: dp
+   use pound_strings, only: str
+   implicit none
+   private
+
+   public :: read_sweep
+
+contains
+
+   !> `&sweep`: range of seismic-joint gaps and the optional target for |lambda|.
+   subroutine read_sweep(path, text, g, n_contacts, cfg, error)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> Number of `&contact` groups in the deck.
+      integer, intent(in) :: n_contacts
+      !> Resolved sweep.
+      type(sweep_config), intent(out) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: gap_from, gap_to, target_lambda
+      integer :: n_gaps, ios
+      character(len=path_len) :: target_quantities
+      character(len=:), allocatable :: buf
+      character(len=512) :: msg
+      type(site) :: at
+      namelist /sweep/ gap_from, gap_to, n_gaps, target_lambda, target_quantities
+
+      gap_from = unset_real
+      gap_to = unset_real
+      target_lambda = unset_real
+      n_gaps = unset_int
+      target_quantities = 'u a_abs drift storey_shear'
+      at = site_of(path, g)
+      call group_text(text, g, buf)
+      msg = ' '
+      read (buf, nml=sweep, iostat=ios, iomsg=msg)
+      call read_failed(at, ios, msg, error)
+      if (allocated(error)) return
+      if (n_contacts == 0) then
+         call fail(at, 'gap_from', 'a sweep varies the gaps of the &contact groups, and the deck '// &
+                   'has none', error)
+         return
+      end if
+      call require_real(at, 'gap_from', gap_from, 'first gap in m', error)
+      if (allocated(error)) return
+      call check_real(at, 'gap_from', gap_from, '>=', 0.0_dp, error)
+      if (allocated(error)) return
+      call require_real(at, 'gap_to', gap_to, 'last gap in m', error)
+      if (allocated(error)) return
+      call check_real(at, 'gap_to', gap_to, '>', gap_from, error, 'gap_from = '//str(gap_from))
+      if (allocated(error)) return
+      if (n_gaps == unset_int) then
+         call fail(at, 'n_gaps', 'n_gaps is missing (number of gaps from gap_from to gap_to)', error)
+         return
+      end if
+      if (n_gaps < 2 .or. n_gaps > 10000) then
+         call fail(at, 'n_gaps', 'n_gaps = '//str(n_gaps)//', must be in 2..10000', error)
+         return
+      end if
+      if (is_set(target_lambda)) then
+         call check_real(at, 'target_lambda', target_lambda, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%target = target_lambda
+      end if
+      call parse_history(at, target_quantities, cfg%target_quantities, error, 'target_quantities')
+      if (allocated(error)) return
+      if (.not. any(cfg%target_quantities)) then
+         call fail(at, 'target_quantities', "target_quantities = 'none' leaves nothing to check", error)
+         return
+      end if
+      cfg%active = .true.
+      cfg%gap_from = gap_from
+      cfg%gap_to = gap_to
+      cfg%n_gaps = n_gaps
+   end subroutine read_sweep
+
+end module pound_deck_sweep

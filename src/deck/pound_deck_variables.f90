@@ -1,0 +1,183 @@
+!> The deck's groups and variables, in ONE table: name, type and size of every variable of
+!> every group, and the limits they are checked against. The lexer checks every assignment
+!> against it (known variable, type, subscript range, duplicates), messages list a group's
+!> variables from it, and each group's reader declares its `namelist` with these names (the
+!> test `test_deck_cases: test_namelists_match_the_table` reads every group with every
+!> variable of the table, so a name missing from a `namelist` statement fails there).
+module pound_deck_variables
+   use pound_envelope_rules, only: max_law_points
+   implicit none
+   private
+
+   public :: var_spec, variables, known_groups, known_variable, variable_index, variable_type, &
+             variable_list, group_variable_count, group_max_size, findloc_name, join
+   public :: max_storeys, max_name_length, max_pairs, max_columns, max_steps, title_len, path_len, &
+             word_len, law_names, max_envelope_points, max_segments
+
+   !> Largest number of storeys a `&building` may have.
+   integer, parameter :: max_storeys = 20000
+   !> Longest building name (it is used as an HDF5 group name).
+   integer, parameter :: max_name_length = 64
+   !> Largest number of floor pairs in one `&contact`.
+   integer, parameter :: max_pairs = 1000
+   !> Largest number of columns in one storey.
+   integer, parameter :: max_columns = 100000
+   !> Largest number of time steps t_end/dt.
+   integer, parameter :: max_steps = 1000000000
+   !> Lengths of the character buffers the namelist reads into.
+   integer, parameter :: title_len = 1024, path_len = 4096, word_len = 256
+   !> Constraint laws, as written in the deck.
+   character(len=*), parameter :: law_names = &
+      "'elastic', 'elastic_plastic', 'bilinear', 'piecewise' or 'parabola_cubic'"
+   !> Largest number of envelope points of a `piecewise` law (the contact law's own limit).
+   integer, parameter :: max_envelope_points = max_law_points
+   !> Largest number of chords per curved branch of `parabola_cubic`.
+   integer, parameter :: max_segments = 64
+
+   !> The groups a deck may hold.
+   character(len=*), parameter :: known_groups(5) = &
+      [character(len=8) :: 'analysis', 'ground', 'building', 'contact', 'sweep']
+
+   !> One variable of one group.
+   type :: var_spec
+      !> Group name.
+      character(len=8) :: group
+      !> Variable name (lower case).
+      character(len=20) :: name
+      !> Type: 'r' real, 'i' integer, 'l' logical, 'c' character.
+      character :: vtype
+      !> Number of elements, 0 for a scalar.
+      integer :: vsize
+   end type var_spec
+
+   !> Every variable of every group, in the order the messages list them.
+   type(var_spec), parameter :: variables(49) = [ &
+      var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
+      var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
+      var_spec('analysis', 'history', 'c', 0), &
+      var_spec('ground', 'kind', 'c', 0), var_spec('ground', 'x0', 'r', 0), &
+      var_spec('ground', 'a', 'r', 0), var_spec('ground', 'b', 'r', 0), &
+      var_spec('ground', 'file', 'c', 0), var_spec('ground', 'format', 'c', 0), &
+      var_spec('ground', 'scale', 'r', 0), &
+      var_spec('building', 'name', 'c', 0), var_spec('building', 'n_storeys', 'i', 0), &
+      var_spec('building', 'height', 'r', max_storeys), var_spec('building', 'mass', 'r', max_storeys), &
+      var_spec('building', 'load_coeff', 'r', max_storeys), var_spec('building', 'ref_floor_load', 'r', 0), &
+      var_spec('building', 'stiffness', 'r', max_storeys), var_spec('building', 'n_columns', 'i', max_storeys), &
+      var_spec('building', 'e_modulus', 'r', max_storeys), var_spec('building', 'inertia', 'r', max_storeys), &
+      var_spec('building', 'column_ends', 'c', 0), var_spec('building', 'damping_ratio', 'r', 0), &
+      var_spec('building', 'damping_modes', 'i', 2), var_spec('building', 'p_delta', 'l', 0), &
+      var_spec('building', 'gravity_load', 'r', max_storeys), &
+      var_spec('contact', 'left', 'c', 0), var_spec('contact', 'right', 'c', 0), &
+      var_spec('contact', 'floors_left', 'i', max_pairs), var_spec('contact', 'floors_right', 'i', max_pairs), &
+      var_spec('contact', 'gap', 'r', max_pairs), var_spec('contact', 'law', 'c', 0), &
+      var_spec('contact', 'stiffness', 'r', 0), var_spec('contact', 'dashpot', 'r', 0), &
+      var_spec('contact', 'dashpot_rate', 'c', 0), var_spec('contact', 'yield_force', 'r', 0), &
+      var_spec('contact', 'second_slope', 'r', 0), var_spec('contact', 'envelope_d', 'r', max_envelope_points), &
+      var_spec('contact', 'envelope_r', 'r', max_envelope_points), var_spec('contact', 'peak_force', 'r', 0), &
+      var_spec('contact', 'peak_penetration', 'r', 0), var_spec('contact', 'fracture_penetration', 'r', 0), &
+      var_spec('contact', 'n_segments', 'i', 0), &
+      var_spec('sweep', 'gap_from', 'r', 0), var_spec('sweep', 'gap_to', 'r', 0), &
+      var_spec('sweep', 'n_gaps', 'i', 0), var_spec('sweep', 'target_lambda', 'r', 0), &
+      var_spec('sweep', 'target_quantities', 'c', 0)]
+
+contains
+
+   !> Whether `name` is a variable of group `group`.
+   pure logical function known_variable(group, name)
+      !> Group name and variable name, lower case.
+      character(len=*), intent(in) :: group, name
+
+      known_variable = variable_index(group, name) > 0
+   end function known_variable
+
+   !> Position of variable `name` among the variables of group `group` (0: not one of them).
+   pure integer function variable_index(group, name) result(k)
+      !> Group name and variable name, lower case.
+      character(len=*), intent(in) :: group, name
+      integer :: i
+
+      k = 0
+      do i = 1, size(variables)
+         if (variables(i)%group /= group) cycle
+         k = k + 1
+         if (variables(i)%name == name) return
+      end do
+      k = 0
+   end function variable_index
+
+   !> Type ('r', 'i', 'l', 'c') and number of elements (0: scalar) of variable `name` of
+   !> group `group` (a real scalar when it is not in the table).
+   pure subroutine variable_type(group, name, vtype, vsize)
+      !> Group name and variable name, lower case.
+      character(len=*), intent(in) :: group, name
+      !> Type letter.
+      character, intent(out) :: vtype
+      !> Number of elements, 0 for a scalar.
+      integer, intent(out) :: vsize
+      integer :: i
+
+      vtype = 'r'
+      vsize = 0
+      do i = 1, size(variables)
+         if (variables(i)%group == group .and. variables(i)%name == name) then
+            vtype = variables(i)%vtype
+            vsize = variables(i)%vsize
+            return
+         end if
+      end do
+   end subroutine variable_type
+
+   !> The variables of `group`, comma separated.
+   pure function variable_list(group) result(list)
+      !> Group name, lower case.
+      character(len=*), intent(in) :: group
+      character(len=:), allocatable :: list
+
+      if (group_variable_count(group) == 0) then
+         list = ''
+      else
+         list = join(pack(variables%name, variables%group == group))
+      end if
+   end function variable_list
+
+   !> Number of variables of `group`.
+   pure integer function group_variable_count(group) result(n)
+      !> Group name, lower case.
+      character(len=*), intent(in) :: group
+
+      n = count(variables%group == group)
+   end function group_variable_count
+
+   !> Most elements of one variable of `group` (at least 2).
+   pure integer function group_max_size(group) result(n)
+      !> Group name, lower case.
+      character(len=*), intent(in) :: group
+
+      n = max(2, maxval(variables%vsize, mask=variables%group == group))
+   end function group_max_size
+
+   !> Position of `word` in `names` (0 if absent).
+   pure integer function findloc_name(names, word) result(k)
+      !> Names to search, word to find.
+      character(len=*), intent(in) :: names(:), word
+
+      do k = 1, size(names)
+         if (names(k) == word) return
+      end do
+      k = 0
+   end function findloc_name
+
+   !> Words joined by ', '.
+   pure function join(words) result(s)
+      !> Words to join (trailing blanks dropped).
+      character(len=*), intent(in) :: words(:)
+      character(len=:), allocatable :: s
+      integer :: i
+
+      s = trim(words(1))
+      do i = 2, size(words)
+         s = s//', '//trim(words(i))
+      end do
+   end function join
+
+end module pound_deck_variables
