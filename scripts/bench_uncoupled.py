@@ -1,4 +1,11 @@
-"""Uncoupled integration speed against model size (called by scripts/bench_uncoupled)."""
+"""Uncoupled integration speed against model size (called by scripts/bench_uncoupled).
+
+    bench_uncoupled.py EXE REPEATS [--vs OTHER_EXE]
+
+With --vs, EXE (A) and OTHER_EXE (B) run interleaved (A B A B ...) on the same decks, so that
+the load of a shared machine falls on both alike; the table gives the median of each and the
+median of the pairwise ratios A/B of DOF-steps/s.
+"""
 import os
 import re
 import statistics
@@ -8,6 +15,7 @@ import tempfile
 
 STEPS = 20000
 DT = 1.0e-3
+SIZES = (10, 100, 1000, 10000)
 
 
 def deck(n):
@@ -19,25 +27,55 @@ def deck(n):
 """
 
 
+def integration_time(exe, path, out_dir):
+    out = subprocess.run([exe, path, "-o", out_dir], check=True, capture_output=True, text=True).stdout
+    m = re.search(r"uncoupled integration:\s+([0-9.Ee+-]+) s", out)
+    if m is None:
+        sys.exit(f"bench_uncoupled: {exe} printed no 'uncoupled integration' time")
+    return float(m.group(1))
+
+
 def main():
-    exe, repeats = sys.argv[1], int(sys.argv[2])
+    args = sys.argv[1:]
+    other = None
+    if "--vs" in args:
+        i = args.index("--vs")
+        other = args[i + 1]
+        del args[i:i + 2]
+    exe, repeats = args[0], int(args[1])
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        for n in (10, 100, 1000, 10000):
+        dir_a, dir_b = os.path.join(tmp, "a"), os.path.join(tmp, "b")
+        os.mkdir(dir_a)
+        os.mkdir(dir_b)
+        for n in SIZES:
             path = os.path.join(tmp, f"stick{n}.nml")
             with open(path, "w") as f:
                 f.write(deck(n))
-            times = []
-            for _ in range(repeats if n < 10000 else max(3, repeats // 2)):
-                out = subprocess.run([exe, path, "-o", tmp], check=True, capture_output=True, text=True).stdout
-                m = re.search(r"uncoupled integration:\s+([0-9.Ee+-]+) s", out)
-                times.append(float(m.group(1)))
-            t = statistics.median(times)
-            rows.append((n, t, n * STEPS / t))
-    print(f"| storeys | integration time [s] (median) | DOF-steps/s | time per DOF-step [ns] |")
-    print(f"|--:|--:|--:|--:|")
-    for n, t, rate in rows:
-        print(f"| {n} | {t:.4f} | {rate:.3e} | {1e9 / rate:.2f} |")
+            count = repeats if other is not None or n < 10000 else max(3, repeats // 2)
+            times_a, times_b = [], []
+            for _ in range(count):
+                times_a.append(integration_time(exe, path, dir_a))
+                if other is not None:
+                    times_b.append(integration_time(other, path, dir_b))
+            rows.append((n, times_a, times_b))
+    if other is None:
+        print("| storeys | integration time [s] (median) | DOF-steps/s | time per DOF-step [ns] |")
+        print("|--:|--:|--:|--:|")
+        for n, times_a, _ in rows:
+            t = statistics.median(times_a)
+            rate = n * STEPS / t
+            print(f"| {n} | {t:.4f} | {rate:.3e} | {1e9 / rate:.2f} |")
+        return
+    print(f"A = {exe}\nB = {other}\n")
+    print("| storeys | repeats | A time [s] (median) | B time [s] (median) | A DOF-steps/s | B DOF-steps/s "
+          "| A/B (ratio of medians) | A/B (median of pairwise ratios) | A/B (min, max pairwise) |")
+    print("|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
+    for n, times_a, times_b in rows:
+        ta, tb = statistics.median(times_a), statistics.median(times_b)
+        ratios = [b / a for a, b in zip(times_a, times_b)]
+        print(f"| {n} | {len(ratios)} | {ta:.4f} | {tb:.4f} | {n * STEPS / ta:.3e} | {n * STEPS / tb:.3e} "
+              f"| {tb / ta:.3f} | {statistics.median(ratios):.3f} | {min(ratios):.3f}, {max(ratios):.3f} |")
 
 
 if __name__ == "__main__":
