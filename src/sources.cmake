@@ -31,6 +31,8 @@ set(POUND_SOURCES
   analysis/pound_sweep.f90 analysis/pound_memory.f90
   # analyses: response spectra and scaling, code separation rules
   analysis/pound_spectrum.f90 analysis/pound_separation.f90
+  # driver: one case from a validated configuration to all results (program, tests, suites)
+  driver/pound_run_case.f90
   # outputs: files, HDF5 layer, results file, listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
 )

@@ -1,13 +1,28 @@
-!> Influence coefficients of pounding on the response (eq. 7 of the seed paper).
+!> Influence coefficients of pounding on the response (eq. 7 of the seed paper): the one
+!> place where they are computed.
 !>
 !> For a response quantity Q with absolute maxima Qc (coupled) and Qu (uncoupled):
 !> lambda = (Qc - Qu) / Qu * 100 (%). Positive: pounding raises the response.
+!> `influence_of` gives lambda per building, floor/storey and history quantity from the
+!> peaks of two analyses; the run driver keeps them in its results, the listing and the
+!> HDF5 writer print them as they are, and the gap sweep reduces them with
+!> `max_abs_influence`.
 module pound_influence
    use pound_kinds, only: dp
+   use pound_config, only: n_history_quantities
+   use pound_analysis, only: analysis_result
    implicit none
    private
 
-   public :: influence_coefficient
+   public :: influence_coefficient, building_influence, influence_of, max_abs_influence
+
+   !> Influence coefficients of one building.
+   type :: building_influence
+      !> lambda (%) per floor/storey and history quantity (n, n_history_quantities), columns
+      !> in the order of `history_names` (pound_response's q_u ... q_shear); +huge where
+      !> only the coupled peak is non-zero, 0 where both are.
+      real(dp), allocatable :: lambda(:, :)
+   end type building_influence
 
 contains
 
@@ -28,5 +43,34 @@ contains
          lambda = 0.0_dp
       end if
    end function influence_coefficient
+
+   !> Influence coefficients of every building, from the peaks of the uncoupled run `unc` and
+   !> of the coupled run `cpl` (the same buildings in the same order).
+   pure function influence_of(unc, cpl) result(infl)
+      !> Uncoupled result.
+      type(analysis_result), intent(in) :: unc
+      !> Coupled result.
+      type(analysis_result), intent(in) :: cpl
+      type(building_influence) :: infl(size(unc%building))
+      integer :: ib
+
+      do ib = 1, size(infl)
+         infl(ib)%lambda = influence_coefficient(cpl%building(ib)%peak, unc%building(ib)%peak)
+      end do
+   end function influence_of
+
+   !> Largest |lambda| over the floors/storeys, (n_history_quantities, n_buildings).
+   pure function max_abs_influence(infl) result(m)
+      !> Influence coefficients of every building.
+      type(building_influence), intent(in) :: infl(:)
+      real(dp) :: m(n_history_quantities, size(infl))
+      integer :: ib, q
+
+      do ib = 1, size(infl)
+         do q = 1, n_history_quantities
+            m(q, ib) = maxval(abs(infl(ib)%lambda(:, q)))
+         end do
+      end do
+   end function max_abs_influence
 
 end module pound_influence

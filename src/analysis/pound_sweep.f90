@@ -16,7 +16,7 @@ module pound_sweep
    use pound_analysis, only: analysis_result, coupled_model, coupled_prepare, coupled_integrate, &
                              add_warning, audit_warning_limit
    use pound_contact, only: contact_pair, contact_system
-   use pound_influence, only: influence_coefficient
+   use pound_influence, only: influence_of, max_abs_influence
    implicit none
    private
 
@@ -80,7 +80,7 @@ contains
       type(analysis_result) :: cpl
       type(contact_system) :: cs
       real(dp) :: gaps(size(pairs)), worst
-      integer :: i, ib, q, n_bad
+      integer :: i, q, n_bad
       character(len=:), allocatable :: worst_text
       integer(int64) :: c0, c1, rate
 
@@ -111,12 +111,7 @@ contains
             end if
          end if
          res%impacts(i) = sum(cs%pair(:)%impacts)
-         do ib = 1, size(models)
-            do q = 1, n_history_quantities
-               res%max_abs_lambda(q, ib, i) = maxval(abs(influence_coefficient( &
-                                                     cpl%building(ib)%peak(:, q), unc%building(ib)%peak(:, q))))
-            end do
-         end do
+         res%max_abs_lambda(:, :, i) = max_abs_influence(influence_of(unc, cpl))
          res%meets(i) = .true.
          do q = 1, n_history_quantities
             if (sweep%target_quantities(q)) then

@@ -3,7 +3,9 @@
 !>     pound DECK.nml [-o DIR]     writes DIR/<stem>.out (listing) and DIR/<stem>.h5 (histories)
 !>     pound --help | --version
 !>
-!> Every analysis runs the buildings uncoupled and, when the deck declares contact, coupled.
+!> The program keeps the command line, the writers and the exit status; the analyses are one
+!> case of the library's run driver (`pound_run_case`): the buildings uncoupled and, when the
+!> deck declares contact, coupled, with influence coefficients and the gap sweep.
 !> Before computing, the memory the run needs is checked against what the machine can give
 !> (pound_memory) and the output folder is created and reserved (pound_files). Outputs are
 !> written under temporary names unique to the run and published together at the end; on any
@@ -11,43 +13,32 @@
 program pound
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_deck, only: read_deck
-   use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
-                                  describe_ground
-   use pound_shear_building, only: shear_building, build_shear_building
-   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps
-   use pound_contact, only: contact_system, contact_pair, pairs_from_config
+   use pound_ground_motion, only: ground_motion_t
+   use pound_run_case, only: case_options, case_result, run_case, deck_ground_motion
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
                             write_contact_summary, write_influence_tables, write_sweep_table, &
                             open_listing, close_listing
-   use pound_sweep, only: sweep_result, run_sweep
    use pound_results_h5, only: write_results_h5
    use pound_files, only: output_set, plan_outputs, publish_outputs, discard_outputs, &
                           install_signal_cleanup
    use pound_memory, only: estimate_memory, memory_available, memory_refusal
    use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror, &
                           posix_sleep
-   use pound_strings, only: str, fixed_cell
+   use pound_strings, only: fixed_cell
    implicit none
 
    character(len=:), allocatable :: deck_path, out_dir, record_path
    type(deck_type) :: deck
-   type(ground_motion_t) :: gm
-   type(shear_building), allocatable :: models(:)
-   type(analysis_result) :: unc, cpl
-   type(contact_system) :: cs
-   type(contact_pair), allocatable :: pairs(:)
-   type(sweep_result) :: sweep
+   type(case_options) :: options
+   type(case_result) :: res
    type(output_set) :: outputs
-   character(len=64), allocatable :: names(:)
-   logical :: coupled, stdout_closed
+   logical :: stdout_closed
    type(error_type), allocatable :: error
-   real(dp), allocatable :: ag(:), ag_out(:)
    character(len=512) :: ground_text(1)
-   integer :: n_steps, n_out, ib
 
    call install_signal_cleanup()
    call guard_standard_descriptors()
@@ -56,15 +47,11 @@ program pound
    call check(error)
 
    ! Ground motion (a record is read whole: its memory is proportional to the file).
-   select case (deck%ground%kind)
-   case ('pulse')
-      call pulse_motion(gm, deck%ground%x0, deck%ground%a, deck%ground%b)
-      record_path = ''
-   case default
-      call record_motion(gm, deck%ground%file, deck%ground%format, deck%ground%scale, error)
-      call check(error)
-      record_path = deck%ground%file
-   end select
+   allocate (options%ground)
+   call deck_ground_motion(deck, options%ground, error)
+   call check(error)
+   record_path = ''
+   if (deck%ground%kind /= 'pulse') record_path = deck%ground%file
 
    ! Resources and the output folder, before anything large is allocated or computed.
    call check_memory()
@@ -72,54 +59,24 @@ program pound
                                           deck_path, record_path], outputs, error)
    call check(error)
 
-   n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
-   n_out = output_steps(n_steps, deck%analysis%output_every)
-   allocate (ag(0:n_steps), ag_out(n_out), stat=ib)
-   if (ib /= 0) call out_of_memory('the ground motion at '//str(n_steps + 1)//' steps')
-   call sample_ground(gm, deck%analysis%dt, n_steps, ag)
-   ag_out = ag(0:n_steps:deck%analysis%output_every)
-   ground_text(1) = describe_ground(gm)
-
-   ! Models.
-   allocate (models(size(deck%buildings)))
-   do ib = 1, size(models)
-      call build_shear_building(deck%buildings(ib), models(ib), error)
-      if (allocated(error)) error%message = deck_path//': '//error%message
-      call check(error)
-   end do
-
-   call run_uncoupled(deck%analysis, models, ag, unc, error)
+   ! The analyses.
+   options%label = deck_path
+   call run_case(deck, res, error, options)
    call check(error)
-   coupled = size(deck%contacts) > 0
-   if (coupled) then
-      allocate (names(size(models)))
-      do ib = 1, size(models)
-         names(ib) = models(ib)%name
-      end do
-      pairs = pairs_from_config(deck%contacts, names, error)
-      if (allocated(error)) error%message = deck_path//': '//error%message
-      call check(error)
-      call run_coupled(deck%analysis, models, ag, pairs, cpl, cs, error)
-      if (allocated(error)) error%message = deck_path//': '//error%message
-      call check(error)
-      if (deck%sweep%active) then
-         call run_sweep(deck%analysis, deck%sweep, models, ag, pairs, unc, sweep, error)
-         if (allocated(error)) error%message = deck_path//': '//error%message
-         call check(error)
-      end if
-   end if
+   ground_text(1) = res%ground_text
 
    ! Outputs: this run's temporaries first, published together when both are complete.
    call write_listing(outputs%listing_tmp, error)
    call check(error)
    call test_pause()
-   if (deck%sweep%active) then
-      call write_results_h5(outputs%h5_tmp, deck, models, trim(ground_text(1)), ag_out, unc, error, &
-                            cpl, cs, sweep)
-   else if (coupled) then
-      call write_results_h5(outputs%h5_tmp, deck, models, trim(ground_text(1)), ag_out, unc, error, cpl, cs)
+   if (res%has_sweep) then
+      call write_results_h5(outputs%h5_tmp, deck, res%models, trim(ground_text(1)), res%ag_out, res%unc, error, &
+                            res%cpl, res%cs, res%influence, res%sweep)
+   else if (res%has_coupled) then
+      call write_results_h5(outputs%h5_tmp, deck, res%models, trim(ground_text(1)), res%ag_out, res%unc, error, &
+                            res%cpl, res%cs, res%influence)
    else
-      call write_results_h5(outputs%h5_tmp, deck, models, trim(ground_text(1)), ag_out, unc, error)
+      call write_results_h5(outputs%h5_tmp, deck, res%models, trim(ground_text(1)), res%ag_out, res%unc, error)
    end if
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
@@ -162,15 +119,6 @@ contains
       call check(error)
    end subroutine check_memory
 
-   !> An allocation failed although the estimate fitted (other processes took the memory).
-   subroutine out_of_memory(what)
-      character(len=*), intent(in) :: what
-
-      call fatal_error(error, deck_path//': &analysis: not enough memory for '//what// &
-                       ': raise output_every, store fewer history quantities, shorten t_end or enlarge dt')
-      call check(error)
-   end subroutine out_of_memory
-
    !> The listing at `path` (this run's temporary); every write is checked.
    subroutine write_listing(path, err)
       character(len=*), intent(in) :: path
@@ -180,17 +128,17 @@ contains
       call open_listing(path, u, err)
       if (allocated(err)) return
       call write_listing_header(u, deck, ground_text)
-      call write_model_summary(u, models)
-      call write_peak_tables(u, 'Uncoupled', models, unc)
-      if (coupled) then
-         call write_peak_tables(u, 'Coupled', models, cpl)
-         call write_contact_summary(u, cs)
-         call write_influence_tables(u, models, unc, cpl)
-         if (deck%sweep%active) call write_sweep_table(u, models, deck%sweep, sweep)
+      call write_model_summary(u, res%models)
+      call write_peak_tables(u, 'Uncoupled', res%models, res%unc)
+      if (res%has_coupled) then
+         call write_peak_tables(u, 'Coupled', res%models, res%cpl)
+         call write_contact_summary(u, res%cs)
+         call write_influence_tables(u, res%models, res%influence)
+         if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
       end if
-      write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', unc%seconds, ' s'
-      if (coupled .and. ios == 0) write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) '  coupled integration:   ', &
-         cpl%seconds, ' s, of which contact (LCP) ', cpl%contact_seconds, ' s'
+      write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', res%unc%seconds, ' s'
+      if (res%has_coupled .and. ios == 0) write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) &
+         '  coupled integration:   ', res%cpl%seconds, ' s, of which contact (LCP) ', res%cpl%contact_seconds, ' s'
       call close_listing(u, path, err)
    end subroutine write_listing
 
@@ -199,37 +147,39 @@ contains
    subroutine write_summary()
       character(len=:), allocatable :: text
       character(len=256) :: line
-      integer :: e
+      integer :: e, ib, i
 
       text = program_name//' '//program_version//': '//deck%analysis%title//new_line('a')
-      do ib = 1, size(models)
-         write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
-            ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
+      associate (models => res%models, unc => res%unc, cpl => res%cpl, cs => res%cs, sweep => res%sweep)
+         do ib = 1, size(models)
+            write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
+               ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
+            text = text//trim(line)//new_line('a')
+         end do
+         write (line, '(a,es10.3,a,es9.2)') '  uncoupled integration: ', unc%seconds, &
+            ' s, energy balance error ', unc%energy_error
          text = text//trim(line)//new_line('a')
-      end do
-      write (line, '(a,es10.3,a,es9.2)') '  uncoupled integration: ', unc%seconds, &
-         ' s, energy balance error ', unc%energy_error
-      text = text//trim(line)//new_line('a')
-      if (coupled) then
-         write (line, '(a,es10.3,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
-            ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%pair(:)%impacts), ' impacts, ', &
-            cs%pivots_total, ' LCP pivots'
-         text = text//trim(line)//new_line('a')
-         write (line, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
-            ' s, LCP solves ', cs%solves, ', pivots max ', cs%pivots_max, ', steps ', cpl%n_steps
-         text = text//trim(line)//new_line('a')
-      end if
-      if (deck%sweep%active) then
-         write (line, '(a,i0,a,es10.3,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'
-         text = text//trim(line)//new_line('a')
-         if (sweep%found) then
-            write (line, '(a,f10.4,a)') '  smallest gap meeting the target: ', 1000.0_dp*sweep%safe_gap, ' mm'
+         if (res%has_coupled) then
+            write (line, '(a,es10.3,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
+               ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%pair(:)%impacts), ' impacts, ', &
+               cs%pivots_total, ' LCP pivots'
+            text = text//trim(line)//new_line('a')
+            write (line, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
+               ' s, LCP solves ', cs%solves, ', pivots max ', cs%pivots_max, ', steps ', cpl%n_steps
             text = text//trim(line)//new_line('a')
          end if
-      end if
-      call add_warnings(text, unc%warnings)
-      if (coupled) call add_warnings(text, cpl%warnings)
-      if (deck%sweep%active) call add_warnings(text, sweep%warnings)
+         if (res%has_sweep) then
+            write (line, '(a,i0,a,es10.3,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'
+            text = text//trim(line)//new_line('a')
+            if (sweep%found) then
+               write (line, '(a,f10.4,a)') '  smallest gap meeting the target: ', 1000.0_dp*sweep%safe_gap, ' mm'
+               text = text//trim(line)//new_line('a')
+            end if
+         end if
+      end associate
+      do i = 1, size(res%warnings)
+         text = text//'  WARNING: '//trim(res%warnings(i))//new_line('a')
+      end do
       text = text//'  wrote '//outputs%listing//' and '//outputs%h5//new_line('a')
       if (stdout_closed) then
          call stop_with('cannot write the summary: standard output is closed (the results were written to '// &
@@ -239,18 +189,6 @@ contains
       if (e /= 0) call stop_with('cannot write the summary to standard output: '//posix_strerror(e)// &
                                  ' (the results were written to '//outputs%listing//' and '//outputs%h5//')', 1)
    end subroutine write_summary
-
-   !> Append the warnings of an analysis or sweep to the summary text, one line each.
-   subroutine add_warnings(text, warnings)
-      character(len=:), allocatable, intent(inout) :: text
-      character(len=:), allocatable, intent(in) :: warnings(:)
-      integer :: i
-
-      if (.not. allocated(warnings)) return
-      do i = 1, size(warnings)
-         text = text//'  WARNING: '//trim(warnings(i))//new_line('a')
-      end do
-   end subroutine add_warnings
 
    !> Test hook: with POUND_TEST_PAUSE_WRITING=<seconds> in the environment, the run sleeps
    !> after its listing is written and before its HDF5 file is (so that a test can signal

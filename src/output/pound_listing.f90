@@ -17,7 +17,7 @@ module pound_listing
    use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic_plastic, &
                                 law_bilinear, law_piecewise, law_parabola_cubic
    use pound_lemke, only: lemke_status_name
-   use pound_influence, only: influence_coefficient
+   use pound_influence, only: building_influence
    use pound_config, only: sweep_config
    use pound_sweep, only: sweep_result
    implicit none
@@ -403,13 +403,13 @@ contains
    !> Influence coefficients lambda = (Qc - Qu)/Qu * 100 (%), storey (floor) rows and one
    !> column per building, for storey shear, storey drift, floor displacement and
    !> floor absolute acceleration.
-   subroutine write_influence_tables(u, models, unc, cpl)
+   subroutine write_influence_tables(u, models, infl)
       !> Open unit.
       integer, intent(in) :: u
       !> The buildings.
       type(shear_building), intent(in) :: models(:)
-      !> Uncoupled and coupled results.
-      type(analysis_result), intent(in) :: unc, cpl
+      !> Influence coefficients of every building (`pound_influence`).
+      type(building_influence), intent(in) :: infl(:)
 
       call write_section(u, 'Influence coefficients lambda = (Qc - Qu) / Qu * 100 [%]')
       call table('storey shear Q', 'storey', q_shear)
@@ -443,7 +443,7 @@ contains
                if (j > models(ib)%n) then
                   cell = ''
                else
-                  lambda = influence_coefficient(cpl%building(ib)%peak(j, q), unc%building(ib)%peak(j, q))
+                  lambda = infl(ib)%lambda(j, q)
                   if (lambda >= huge(1.0_dp)) then
                      cell = '           inf'
                   else

@@ -34,7 +34,7 @@ module pound_results_h5
    use pound_contact, only: contact_system
    use pound_contact_law, only: law_name
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
-   use pound_influence, only: influence_coefficient
+   use pound_influence, only: building_influence
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr
    use pound_sweep, only: sweep_result
    use pound_config, only: sweep_config
@@ -50,7 +50,7 @@ module pound_results_h5
 contains
 
    !> Write the whole results file at `path`.
-   subroutine write_results_h5(path, deck, models, ground_text, ag_out, unc, error, cpl, cs, sweep)
+   subroutine write_results_h5(path, deck, models, ground_text, ag_out, unc, error, cpl, cs, influence, sweep)
       !> File to create (truncated).
       character(len=*), intent(in) :: path
       !> The deck.
@@ -69,6 +69,8 @@ contains
       type(analysis_result), intent(in), optional :: cpl
       !> Contact system at the end of the coupled run.
       type(contact_system), intent(in), optional :: cs
+      !> Influence coefficients of every building (`pound_influence`), written with `cpl`.
+      type(building_influence), intent(in), optional :: influence(:)
       !> Gap study, when the deck asks for one.
       type(sweep_result), intent(in), optional :: sweep
       type(h5_file) :: h5
@@ -115,14 +117,15 @@ contains
             call write_contact()
             if (allocated(error)) return
          end if
-         do ib = 1, size(models)
-            do q = 1, n_history_quantities
-               call h5_write(h5, '/influence/'//models(ib)%name//'/'//trim(history_names(q)), &
-                             influence_coefficient(cpl%building(ib)%peak(:, q), unc%building(ib)%peak(:, q)), &
-                             error)
-               if (allocated(error)) return
+         if (present(influence)) then
+            do ib = 1, size(models)
+               do q = 1, n_history_quantities
+                  call h5_write(h5, '/influence/'//models(ib)%name//'/'//trim(history_names(q)), &
+                                influence(ib)%lambda(:, q), error)
+                  if (allocated(error)) return
+               end do
             end do
-         end do
+         end if
          if (present(sweep)) call write_sweep()
       end subroutine write_all
 

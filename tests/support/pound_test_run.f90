@@ -1,12 +1,12 @@
-!> Test helper: run a (possibly modified) deck through the whole analysis, as the program does.
+!> Test helper: run a (possibly modified) deck through the library's run driver
+!> (`pound_run_case`), with the result parts the contact tests look at.
 module pound_test_run
-   use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_config, only: deck_type
-   use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground
-   use pound_shear_building, only: shear_building, build_shear_building
-   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled
-   use pound_contact, only: contact_system, contact_pair, pairs_from_config
+   use pound_shear_building, only: shear_building
+   use pound_analysis, only: analysis_result
+   use pound_contact, only: contact_system
+   use pound_run_case, only: case_options, case_result, run_case
    implicit none
    private
 
@@ -14,7 +14,8 @@ module pound_test_run
 
 contains
 
-   !> Ground motion, models, pairs, and the coupled (and, if `unc` is present, uncoupled) runs.
+   !> `run_case` on `deck` without its sweep: the coupled run (and, if `unc` is present, the
+   !> uncoupled one; without it, only the coupled analysis runs).
    subroutine run_deck(deck, cpl, cs, error, unc, models)
       !> A validated deck (it may have been changed after reading).
       type(deck_type), intent(in) :: deck
@@ -28,35 +29,31 @@ contains
       type(analysis_result), intent(out), optional :: unc
       !> The buildings, if wanted.
       type(shear_building), allocatable, intent(out), optional :: models(:)
-      type(ground_motion_t) :: gm
-      type(shear_building), allocatable :: b(:)
-      type(contact_pair), allocatable :: pairs(:)
-      character(len=64), allocatable :: names(:)
-      real(dp), allocatable :: ag(:)
-      integer :: n_steps, ib
+      type(case_options) :: options
+      type(case_result) :: res
+      type(deck_type) :: no_sweep
 
-      if (deck%ground%kind == 'pulse') then
-         call pulse_motion(gm, deck%ground%x0, deck%ground%a, deck%ground%b)
-      else
-         call record_motion(gm, deck%ground%file, deck%ground%format, deck%ground%scale, error)
-         if (allocated(error)) return
-      end if
-      n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
-      allocate (ag(0:n_steps), b(size(deck%buildings)), names(size(deck%buildings)))
-      call sample_ground(gm, deck%analysis%dt, n_steps, ag)
-      do ib = 1, size(b)
-         call build_shear_building(deck%buildings(ib), b(ib), error)
-         if (allocated(error)) return
-         names(ib) = b(ib)%name
-      end do
-      if (present(unc)) then
-         call run_uncoupled(deck%analysis, b, ag, unc, error)
-         if (allocated(error)) return
-      end if
-      pairs = pairs_from_config(deck%contacts, names, error)
+      no_sweep = deck
+      no_sweep%sweep%active = .false.
+      options%coupled_only = .not. present(unc)
+      call run_case(no_sweep, res, error, options)
       if (allocated(error)) return
-      call run_coupled(deck%analysis, b, ag, pairs, cpl, cs, error)
-      if (present(models)) call move_alloc(b, models)
+      call take(res%cpl, cpl)
+      cs = res%cs
+      if (present(unc)) call take(res%unc, unc)
+      if (present(models)) call move_alloc(res%models, models)
    end subroutine run_deck
+
+   !> `to = from`, the warnings moved apart (gfortran's intrinsic assignment of a
+   !> deferred-length character array component is not reliable).
+   subroutine take(from, to)
+      type(analysis_result), intent(inout) :: from
+      type(analysis_result), intent(out) :: to
+      character(len=:), allocatable :: warnings(:)
+
+      call move_alloc(from%warnings, warnings)
+      to = from
+      call move_alloc(warnings, to%warnings)
+   end subroutine take
 
 end module pound_test_run

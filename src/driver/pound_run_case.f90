@@ -1,0 +1,210 @@
+!> The run driver: one analysis case, from a validated configuration to all its results.
+!>
+!> `run_case` samples the ground motion, builds the models and the contact pairs, runs the
+!> uncoupled analysis and, when the configuration declares contact, the coupled one, the
+!> influence coefficients (`pound_influence`) and the gap sweep, and gathers the warnings.
+!> It reads no deck and writes no file (a recorded ground motion is read by
+!> `deck_ground_motion`, which the program calls first so that a missing record is reported
+!> before anything is reserved): the program (`src/main/pound.f90`) and every test that needs a
+!> whole run call it, and a record suite or an MPI rank will call it once per case.
+!>
+!> A case is the configuration plus `case_options`: what a suite varies from one case to the
+!> next (the ground motion, the gap of every joint) and a label for the messages. One
+!> configuration can be run for many cases; `run_case` does not change it.
+module pound_run_case
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   use pound_config, only: deck_type
+   use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
+                                  describe_ground
+   use pound_shear_building, only: shear_building, build_shear_building
+   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning
+   use pound_contact, only: contact_system, contact_pair, pairs_from_config
+   use pound_influence, only: building_influence, influence_of
+   use pound_sweep, only: sweep_result, run_sweep
+   implicit none
+   private
+
+   public :: case_options, case_result, run_case, deck_ground_motion
+
+   !> What distinguishes one case of a configuration from another; every component is
+   !> optional (the defaults run the configuration as the deck states it).
+   type :: case_options
+      !> Ground motion of the case; when unallocated, the configuration's `&ground`
+      !> (`deck_ground_motion`, which reads a record file).
+      type(ground_motion_t), allocatable :: ground
+      !> Gap (m) given to every joint instead of the configuration's gaps.
+      real(dp), allocatable :: gap
+      !> Run only the coupled analysis (no uncoupled run, hence no influence coefficients and
+      !> no sweep): for studies of the contact response alone.
+      logical :: coupled_only = .false.
+      !> Put before the messages of the errors that concern the configuration (models, joints,
+      !> coupled run), followed by ': ' (the program gives the deck's path); none when empty.
+      character(len=:), allocatable :: label
+   end type case_options
+
+   !> Everything a case computes, as the writers need it.
+   type :: case_result
+      !> The buildings, in configuration order.
+      type(shear_building), allocatable :: models(:)
+      !> One-line description of the ground motion.
+      character(len=:), allocatable :: ground_text
+      !> Ground acceleration at the output times (m/s^2).
+      real(dp), allocatable :: ag_out(:)
+      !> Whether the uncoupled, the coupled analysis and the sweep ran.
+      logical :: has_uncoupled = .false., has_coupled = .false., has_sweep = .false.
+      !> Uncoupled result.
+      type(analysis_result) :: unc
+      !> Coupled result.
+      type(analysis_result) :: cpl
+      !> Contact system at the end of the coupled run.
+      type(contact_system) :: cs
+      !> Influence coefficients per building (with the uncoupled and the coupled run).
+      type(building_influence), allocatable :: influence(:)
+      !> Gap study.
+      type(sweep_result) :: sweep
+      !> Warnings of the uncoupled run, the coupled run and the sweep, in that order, one line
+      !> each (size 0 when there are none).
+      character(len=:), allocatable :: warnings(:)
+   end type case_result
+
+contains
+
+   !> The ground motion the configuration `&ground` describes: a pulse, or a record read
+   !> whole from its file (its memory is proportional to the file).
+   subroutine deck_ground_motion(deck, gm, error)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> The ground motion.
+      type(ground_motion_t), intent(out) :: gm
+      !> Error state (a record that cannot be read).
+      type(error_type), allocatable, intent(out) :: error
+
+      select case (deck%ground%kind)
+      case ('pulse')
+         call pulse_motion(gm, deck%ground%x0, deck%ground%a, deck%ground%b)
+      case default
+         call record_motion(gm, deck%ground%file, deck%ground%format, deck%ground%scale, error)
+      end select
+   end subroutine deck_ground_motion
+
+   !> Run one case of the validated configuration `deck`: ground sampling, models, joints,
+   !> uncoupled and coupled analyses, influence coefficients, gap sweep and warnings.
+   subroutine run_case(deck, res, error, options)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Everything the case computes.
+      type(case_result), intent(out) :: res
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      !> What distinguishes this case (defaults: the configuration as it is).
+      type(case_options), intent(in), optional :: options
+      type(ground_motion_t) :: deck_gm
+      type(contact_pair), allocatable :: pairs(:)
+      character(len=64), allocatable :: names(:)
+      character(len=:), allocatable :: prefix
+      real(dp), allocatable :: ag(:)
+      logical :: coupled_only
+      integer :: n_steps, n_out, ib, stat
+
+      prefix = ''
+      coupled_only = .false.
+      if (present(options)) then
+         if (allocated(options%label)) then
+            if (len(options%label) > 0) prefix = options%label//': '
+         end if
+         coupled_only = options%coupled_only
+      end if
+
+      ! Ground motion, sampled at every step and at the output steps.
+      n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
+      n_out = output_steps(n_steps, deck%analysis%output_every)
+      allocate (ag(0:n_steps), res%ag_out(n_out), stat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, prefix//'&analysis: not enough memory for the ground motion at '// &
+                          str(n_steps + 1)//' steps: raise output_every, store fewer history '// &
+                          'quantities, shorten t_end or enlarge dt')
+         return
+      end if
+      if (has_ground()) then
+         call sample_ground(options%ground, deck%analysis%dt, n_steps, ag)
+         res%ground_text = describe_ground(options%ground)
+      else
+         call deck_ground_motion(deck, deck_gm, error)
+         if (allocated(error)) return
+         call sample_ground(deck_gm, deck%analysis%dt, n_steps, ag)
+         res%ground_text = describe_ground(deck_gm)
+      end if
+      res%ag_out = ag(0:n_steps:deck%analysis%output_every)
+
+      ! Models.
+      allocate (res%models(size(deck%buildings)), names(size(deck%buildings)))
+      do ib = 1, size(res%models)
+         call build_shear_building(deck%buildings(ib), res%models(ib), error)
+         if (allocated(error)) then
+            error%message = prefix//error%message
+            return
+         end if
+         names(ib) = res%models(ib)%name
+      end do
+
+      ! Analyses.
+      if (.not. coupled_only) then
+         call run_uncoupled(deck%analysis, res%models, ag, res%unc, error)
+         if (allocated(error)) return
+         res%has_uncoupled = .true.
+      end if
+      if (size(deck%contacts) > 0) then
+         pairs = pairs_from_config(deck%contacts, names, error)
+         if (allocated(error)) then
+            error%message = prefix//error%message
+            return
+         end if
+         if (present(options)) then
+            if (allocated(options%gap)) pairs(:)%gap = options%gap
+         end if
+         call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error)
+         if (allocated(error)) then
+            error%message = prefix//error%message
+            return
+         end if
+         res%has_coupled = .true.
+         if (res%has_uncoupled) then
+            res%influence = influence_of(res%unc, res%cpl)
+            if (deck%sweep%active) then
+               call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error)
+               if (allocated(error)) then
+                  error%message = prefix//error%message
+                  return
+               end if
+               res%has_sweep = .true.
+            end if
+         end if
+      end if
+
+      allocate (character(len=1) :: res%warnings(0))
+      if (res%has_uncoupled) call collect(res%unc%warnings)
+      if (res%has_coupled) call collect(res%cpl%warnings)
+      if (res%has_sweep) call collect(res%sweep%warnings)
+
+   contains
+
+      logical function has_ground()
+         has_ground = .false.
+         if (present(options)) has_ground = allocated(options%ground)
+      end function has_ground
+
+      subroutine collect(warnings)
+         character(len=:), allocatable, intent(in) :: warnings(:)
+         integer :: i
+
+         if (.not. allocated(warnings)) return
+         do i = 1, size(warnings)
+            call add_warning(res%warnings, trim(warnings(i)))
+         end do
+      end subroutine collect
+
+   end subroutine run_case
+
+end module pound_run_case
