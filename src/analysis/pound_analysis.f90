@@ -29,7 +29,7 @@ module pound_analysis
    use pound_ground_motion, only: check_ground_samples
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, &
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
-                            newmark_energies, newmark_n, en_input, en_kinetic, en_strain, en_damping
+                            newmark_energies, newmark_add_balance, newmark_n, en_input, en_kinetic, en_strain, en_damping
    use pound_response, only: response_record, response_init, response_sample, response_finish
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record
@@ -111,7 +111,7 @@ contains
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> The result.
@@ -141,7 +141,7 @@ contains
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> The constraints, at rest and open at t = 0.
@@ -164,7 +164,7 @@ contains
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t = 0 (m/s^2).
       real(dp), intent(in) :: ag0
       !> The constraints, at rest and open at t = 0.
@@ -191,7 +191,7 @@ contains
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> The prepared model.
@@ -230,7 +230,7 @@ contains
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> Integrators at t = 0 (advanced to the end).
@@ -252,7 +252,7 @@ contains
       coupled = cs%m > 0
       every = cfg%output_every
       do ib = 1, nb
-         call response_init(res%building(ib), models(ib)%n, cfg%store, res%n_out, error)
+         call response_init(res%building(ib), models(ib), cfg%store, res%n_out, error)
          if (allocated(error)) return
          view(ib)%u => newmark_u(st(ib))
          view(ib)%v => newmark_v(st(ib))
@@ -299,9 +299,7 @@ contains
             win = 0.0_dp
             eout = 0.0_dp
             do ib = 1, nb
-               e = newmark_energies(st(ib))
-               win = win + e(en_input)
-               eout = eout + ((e(en_kinetic) + e(en_strain)) + e(en_damping))
+               call newmark_add_balance(st(ib), win, eout)
             end do
          end if
          if (out) then
@@ -394,7 +392,7 @@ contains
       !> Integrator state.
       type(newmark_state), intent(in) :: st
       !> The building.
-      class(structure_model), intent(in) :: b
+      type(structure_model), intent(in) :: b
 
       real(dp) :: e(4)
 
@@ -482,7 +480,7 @@ contains
    !> steps, and the dt that would resolve them (a tenth of the half-period).
    subroutine warn_unresolved_joints(res, models, cs, dt)
       type(analysis_result), intent(inout) :: res
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       type(contact_system), intent(in) :: cs
       real(dp), intent(in) :: dt
       real(dp), parameter :: pi = acos(-1.0_dp)
@@ -536,7 +534,7 @@ contains
    !> ground acceleration so far.
    subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
       type(newmark_state), intent(in), target :: st(:)
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       type(contact_system), intent(in) :: cs
       real(dp), intent(in) :: sample(:), ag(0:), dt
       integer, intent(in) :: step
@@ -576,7 +574,7 @@ contains
    !> `error` passed in is kept when everything is finite.
    subroutine locate_nonfinite(st, models, cs, t, step, error, predicted)
       type(newmark_state), intent(in), target :: st(:)
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       type(contact_system), intent(in) :: cs
       real(dp), intent(in) :: t
       integer, intent(in) :: step

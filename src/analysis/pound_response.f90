@@ -40,6 +40,12 @@ module pound_response
       real(dp), allocatable :: peak_time(:, :)
       !> Work array (n): drift or absolute acceleration of the step being sampled.
       real(dp), allocatable :: work(:)
+      !> The model's response points are DOFs 1..n and its storey rows the chain
+      !> u_j - u_{j-1} (times the shear row's scale): peaks and histories are taken
+      !> straight from the DOF vectors (same numbers as the general path, fewer passes).
+      logical :: stick = .false.
+      !> General path: the response points' u, v, a_abs and the storey rows of the step.
+      real(dp), allocatable :: pu(:), pv(:), pa(:), pd(:), ps(:)
    end type response_record
 
 contains
@@ -48,20 +54,30 @@ contains
    !>
    !> Fails (nothing allocated is kept) when the memory cannot be had, with the size asked
    !> for and the deck variables that set it.
-   pure subroutine response_init(rec, n, store, capacity, error)
-      !> The record.
+   pure subroutine response_init(rec, b, store, capacity, error)
+      !> The record (reset).
       type(response_record), intent(out) :: rec
-      !> Number of floors.
-      integer, intent(in) :: n
-      !> Which histories to store.
+      !> The structural model: its response points (floors) and storey rows.
+      type(structure_model), intent(in) :: b
+      !> Which quantities keep histories.
       logical, intent(in) :: store(n_history_quantities)
-      !> Number of output samples that will be taken.
+      !> Number of output samples.
       integer, intent(in) :: capacity
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       integer :: stat(6)
       real(dp) :: mib
+      integer :: n
 
+      n = size(b%floor_dof)
+      rec%stick = b%stick
+      if (.not. rec%stick) then
+         allocate (rec%pu(n), rec%pv(n), rec%pa(n), rec%pd(n), rec%ps(n), stat=stat(1))
+         if (stat(1) /= 0) then
+            call fatal_error(error, 'cannot allocate the response work arrays ('//str(5*n)//' reals)')
+            return
+         end if
+      end if
       rec%n = n
       rec%store = store
       rec%capacity = capacity
@@ -93,7 +109,7 @@ contains
       !> The record.
       type(response_record), intent(inout) :: rec
       !> The building.
-      class(structure_model), intent(in) :: b
+      type(structure_model), intent(in) :: b
       !> Relative displacement, velocity and acceleration.
       real(dp), intent(in) :: u(:), v(:), a(:)
       !> Ground acceleration (m/s^2).
@@ -104,15 +120,35 @@ contains
       logical, intent(in) :: output
       integer :: k
 
-      call track_peaks(rec%n, u, v, a, ag, t, rec%peak, rec%peak_time)
+      if (rec%stick) then
+         call track_peaks(rec%n, u, v, a, ag, t, rec%peak, rec%peak_time)
+         if (.not. output) return
+         rec%n_out = rec%n_out + 1
+         k = rec%n_out
+         if (rec%store(q_u)) rec%u(:, k) = u
+         if (rec%store(q_v)) rec%v(:, k) = v
+         if (rec%store(q_a_abs)) rec%a_abs(:, k) = a + ag
+         if (rec%store(q_drift) .or. rec%store(q_shear)) then
+            call chain_drift(rec%n, u, rec%work)
+            if (rec%store(q_drift)) rec%drift(:, k) = rec%work
+            if (rec%store(q_shear)) rec%shear(:, k) = b%shear%scale*rec%work
+         end if
+         return
+      end if
+      rec%pu = u(b%floor_dof)
+      rec%pv = v(b%floor_dof)
+      rec%pa = a(b%floor_dof) + ag
+      call recover_all(b%drift, u, rec%pd)
+      call recover_all(b%shear, u, rec%ps)
+      call track_general(rec%n, rec%pu, rec%pv, rec%pa, rec%pd, rec%ps, t, rec%peak, rec%peak_time)
       if (.not. output) return
       rec%n_out = rec%n_out + 1
       k = rec%n_out
-      if (rec%store(q_u)) rec%u(:, k) = u
-      if (rec%store(q_v)) rec%v(:, k) = v
-      if (rec%store(q_a_abs)) rec%a_abs(:, k) = a + ag
-      if (rec%store(q_drift)) call recover_all(b%drift, u, rec%drift(:, k))
-      if (rec%store(q_shear)) call recover_all(b%shear, u, rec%shear(:, k))
+      if (rec%store(q_u)) rec%u(:, k) = rec%pu
+      if (rec%store(q_v)) rec%v(:, k) = rec%pv
+      if (rec%store(q_a_abs)) rec%a_abs(:, k) = rec%pa
+      if (rec%store(q_drift)) rec%drift(:, k) = rec%pd
+      if (rec%store(q_shear)) rec%shear(:, k) = rec%ps
    end subroutine response_sample
 
    !> Running absolute maxima of u, v, a_abs and drift in one pass over the floors
@@ -150,16 +186,58 @@ contains
       end do
    end subroutine track_peaks
 
+   !> Storey drifts of a stick: u_1, u_j - u_{j-1}.
+   pure subroutine chain_drift(n, u, d)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: u(n)
+      real(dp), intent(out) :: d(n)
+      integer :: i
+
+      d(1) = u(1)
+      do i = 2, n
+         d(i) = u(i) - u(i - 1)
+      end do
+   end subroutine chain_drift
+
+   !> Running absolute maxima of all five quantities at the response points and storey rows.
+   pure subroutine track_general(n, pu, pv, pa, pd, ps, t, peak, peak_time)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: pu(n), pv(n), pa(n), pd(n), ps(n), t
+      real(dp), intent(inout) :: peak(n, n_history_quantities), peak_time(n, n_history_quantities)
+
+      call track_one(n, pu, t, peak(:, q_u), peak_time(:, q_u))
+      call track_one(n, pv, t, peak(:, q_v), peak_time(:, q_v))
+      call track_one(n, pa, t, peak(:, q_a_abs), peak_time(:, q_a_abs))
+      call track_one(n, pd, t, peak(:, q_drift), peak_time(:, q_drift))
+      call track_one(n, ps, t, peak(:, q_shear), peak_time(:, q_shear))
+   end subroutine track_general
+
+   !> Running absolute maximum of one quantity.
+   pure subroutine track_one(n, x, t, peak, peak_time)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: x(n), t
+      real(dp), intent(inout) :: peak(n), peak_time(n)
+      integer :: i
+
+      do i = 1, n
+         if (abs(x(i)) > peak(i)) then
+            peak(i) = abs(x(i))
+            peak_time(i) = t
+         end if
+      end do
+   end subroutine track_one
+
    !> Derive the storey-shear peaks: each shear row is its drift row times the row's scale
    !> (a shear building: Q_j = k_j drift_j), so they occur with the drift peaks.
    pure subroutine response_finish(rec, b)
       !> The record.
       type(response_record), intent(inout) :: rec
       !> The building.
-      class(structure_model), intent(in) :: b
+      type(structure_model), intent(in) :: b
 
       integer :: j
 
+      if (.not. rec%stick) return
       do j = 1, b%shear%n
          rec%peak(j, q_shear) = b%shear%scale(j)*rec%peak(j, q_drift)
       end do

@@ -64,7 +64,7 @@ contains
       !> `&sweep`.
       type(sweep_config), intent(in) :: sweep
       !> The buildings.
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> The constraints of the deck.

@@ -201,7 +201,7 @@ contains
       !> Initialised integrators (their factored Khat).
       type(newmark_state), intent(in) :: states(:)
       !> The structural models of the integrators (the DOF of each floor).
-      class(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       type(column), allocatable :: y(:, :)

@@ -151,7 +151,7 @@ contains
 
       ! Analyses.
       if (.not. coupled_only) then
-         call run_uncoupled(deck%analysis, res%models, ag, res%unc, error)
+         call run_uncoupled(deck%analysis, res%models%structure_model, ag, res%unc, error)
          if (allocated(error)) return
          res%has_uncoupled = .true.
       end if
@@ -164,7 +164,7 @@ contains
          if (present(options)) then
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
-         call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error)
+         call run_coupled(deck%analysis, res%models%structure_model, ag, pairs, res%cpl, res%cs, error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
@@ -173,7 +173,7 @@ contains
          if (res%has_uncoupled) then
             res%influence = influence_of(res%unc, res%cpl)
             if (deck%sweep%active) then
-               call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error)
+               call run_sweep(deck%analysis, deck%sweep, res%models%structure_model, ag, pairs, res%unc, res%sweep, error)
                if (allocated(error)) then
                   error%message = prefix//error%message
                   return

@@ -14,7 +14,7 @@ module pound_shear_building
    use pound_config, only: building_config
    use pound_storey_properties, only: storey_properties
    use pound_band, only: band_add_storey
-   use pound_structure, only: structure_model, structure_label, chain_rows
+   use pound_structure, only: structure_model, structure_label, chain_rows, structure_finish
    implicit none
    private
 
@@ -156,6 +156,7 @@ contains
       b%floor_dof = [(j, j=1, n)]
       call chain_rows(b%floor_dof, b%storey_stiffness, b%drift, b%shear)
       b%strain_weight = b%storey_stiffness - b%geometric_stiffness
+      call structure_finish(b)
       if (.not. (ieee_is_finite(b%a0) .and. ieee_is_finite(b%a1))) then
          call fatal_error(error, building_label(b)//': Rayleigh coefficients a0 = '//str(b%a0)//', a1 = '// &
                           str(b%a1)//' from damping_ratio, damping_modes and the natural frequencies ('// &

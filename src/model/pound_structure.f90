@@ -30,7 +30,7 @@ module pound_structure
    private
 
    public :: structure_model, recovery_rows, recover, recover_all, structure_label, structure_strain_energy
-   public :: structure_check, chain_rows
+   public :: structure_check, chain_rows, structure_is_stick, structure_finish
 
    !> Linear recovery operators over the DOFs, one per row, in compressed sparse rows: row j
    !> is value_j = scale(j) * sum_i coef(i) u(dof(i)), i = start(j) .. start(j+1)-1, the sum
@@ -79,6 +79,10 @@ module pound_structure
       !> Weights w_j of K+G = sum_j w_j d_j d_j^T over the drift rows d_j, when the builder
       !> has that form (then the strain energy is taken storey by storey); else unallocated.
       real(dp), allocatable :: strain_weight(:)
+      !> The model is a stick as data (`structure_is_stick`); set by `structure_finish`, which
+      !> every builder calls last. Consumers then take floors and storeys straight from the DOF
+      !> vectors (same numbers as through the rows, fewer operations).
+      logical :: stick = .false.
    end type structure_model
 
 contains
@@ -129,6 +133,93 @@ contains
       end do
    end subroutine rows_kernel
 
+   !> Finish a model built by a builder: records the properties that consumers read
+   !> (`stick`). Every builder calls it last.
+   pure subroutine structure_finish(m)
+      !> The model.
+      class(structure_model), intent(inout) :: m
+
+      m%stick = structure_is_stick(m)
+   end subroutine structure_finish
+
+   !> sum_j w_j drift_j^2 / 2 of a stick (drift_1 = u_1, drift_j = u_j - u_{j-1}): the same
+   !> numbers as `weighted_rows_kernel` on the chain rows.
+   pure subroutine weighted_chain_kernel(n, w, u, e)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: w(n), u(n)
+      real(dp), intent(out) :: e
+      real(dp) :: x
+      integer :: j
+
+      e = 0.5_dp*w(1)*u(1)**2
+      do j = 2, n
+         x = u(j) - u(j - 1)
+         e = e + 0.5_dp*w(j)*x**2
+      end do
+   end subroutine weighted_chain_kernel
+
+   !> sum_j w_j (row_j . u)^2 / 2 over compressed sparse rows (explicit shapes, so that the
+   !> compiler sees plain contiguous arrays; the same operations, in the same order, as `recover`).
+   pure subroutine weighted_rows_kernel(n, nnz, nu, start, dof, coef, scale, w, u, e)
+      integer, intent(in) :: n, nnz, nu, start(n + 1), dof(nnz)
+      real(dp), intent(in) :: coef(nnz), scale(n), w(n), u(nu)
+      real(dp), intent(out) :: e
+      real(dp) :: x
+      integer :: i, j
+
+      e = 0.0_dp
+      do j = 1, n
+         x = 0.0_dp
+         do i = start(j), start(j + 1) - 1
+            x = x + coef(i)*u(dof(i))
+         end do
+         x = scale(j)*x
+         e = e + 0.5_dp*w(j)*x**2
+      end do
+   end subroutine weighted_rows_kernel
+
+   !> Whether the model is a stick as data: response point i is DOF i (i = 1..n, n DOFs), the
+   !> drift rows are u_1 and u_j - u_{j-1} with scale 1, and the shear rows have the drift
+   !> rows' pattern (any scale). Consumers may then take the floors' values straight from
+   !> the DOF vectors; the numbers are the same as through the rows.
+   pure logical function structure_is_stick(m) result(stick)
+      !> The model.
+      class(structure_model), intent(in) :: m
+      integer :: j
+
+      stick = .false.
+      if (.not. (allocated(m%floor_dof) .and. allocated(m%drift%start) .and. allocated(m%shear%start))) return
+      if (size(m%floor_dof) /= m%n .or. m%drift%n /= m%n .or. m%shear%n /= m%n) return
+      do j = 1, m%n
+         if (m%floor_dof(j) /= j) return
+      end do
+      if (.not. (chain(m%drift) .and. chain(m%shear))) return
+      stick = all(m%drift%scale == 1.0_dp)
+
+   contains
+
+      pure logical function chain(rows)
+         type(recovery_rows), intent(in) :: rows
+         integer :: i, p
+
+         chain = .false.
+         if (size(rows%start) /= m%n + 1) return
+         if (rows%start(1) /= 1) return
+         do i = 1, m%n
+            p = rows%start(i)
+            if (i == 1) then
+               if (rows%start(2) /= 2) return
+               if (rows%dof(1) /= 1 .or. rows%coef(1) /= 1.0_dp) return
+            else
+               if (rows%start(i + 1) /= p + 2) return
+               if (rows%dof(p) /= i - 1 .or. rows%coef(p) /= -1.0_dp) return
+               if (rows%dof(p + 1) /= i .or. rows%coef(p + 1) /= 1.0_dp) return
+            end if
+         end do
+         chain = .true.
+      end function chain
+   end function structure_is_stick
+
    !> `&building #k (name)` when the occurrence is known, else `building name`.
    pure function structure_label(m) result(s)
       !> The model.
@@ -149,15 +240,14 @@ contains
       class(structure_model), intent(in) :: m
       !> Displacements (n).
       real(dp), intent(in) :: u(:)
-      real(dp) :: e, y(size(u)), drift
-      integer :: j
+      real(dp) :: e, y(size(u))
 
       e = 0.0_dp
-      if (allocated(m%strain_weight)) then
-         do j = 1, size(m%strain_weight)
-            drift = recover(m%drift, j, u)
-            e = e + 0.5_dp*m%strain_weight(j)*drift**2
-         end do
+      if (allocated(m%strain_weight) .and. m%stick) then
+         call weighted_chain_kernel(m%n, m%strain_weight, u, e)
+      else if (allocated(m%strain_weight)) then
+         call weighted_rows_kernel(m%drift%n, size(m%drift%dof), size(u), m%drift%start, m%drift%dof, &
+                                   m%drift%coef, m%drift%scale, m%strain_weight, u, e)
       else
          call band_symv(m%kt, u, y)
          e = 0.5_dp*dot_product(u, y)

@@ -25,14 +25,13 @@ module pound_newmark
    use pound_band, only: band_symv
    use pound_band_lapack, only: dpbtrf, dpbtrs
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
-   use pound_newmark_kernels, only: predict_kernel, commit_kernel
    implicit none
    private
 
    public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_solve
    public :: newmark_add_response, newmark_set_state, newmark_dt, newmark_n
    public :: newmark_u, newmark_v, newmark_a, newmark_du, newmark_u_at, newmark_v_at, newmark_predicted, newmark_energies
-   public :: kinetic_energy, strain_energy
+   public :: kinetic_energy, strain_energy, newmark_add_balance
    public :: en_input, en_kinetic, en_strain, en_damping
 
    !> Indices of `newmark_energies`.
@@ -68,6 +67,34 @@ module pound_newmark
    end type newmark_state
 
    interface
+      !> Increment du of the step for the ground acceleration increment `dag` alone
+      !> (in submodule pound_newmark_step, with the tridiagonal kernels).
+      module subroutine newmark_predict(st, b, dag)
+         type(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in) :: dag
+      end subroutine newmark_predict
+      !> Complete the step with the increment `du` and account the energy
+      !> (in submodule pound_newmark_step).
+      module subroutine newmark_commit(st, b, ag_old, ag_new)
+         type(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in) :: ag_old, ag_new
+      end subroutine newmark_commit
+      !> The banded path of the step (submodule pound_newmark_band).
+      module subroutine predict_general(st, b, dag)
+         type(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in) :: dag
+      end subroutine predict_general
+      module subroutine commit_general(st, b, mdu, ddamp)
+         type(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(out) :: mdu, ddamp
+      end subroutine commit_general
+   end interface
+
+   interface
       subroutine dpttrf(n, d, e, info)
          import :: dp
          integer, intent(in) :: n
@@ -91,7 +118,7 @@ contains
       !> Integrator state.
       type(newmark_state), intent(out) :: st
       !> The structural model.
-      class(structure_model), intent(in) :: b
+      type(structure_model), intent(in) :: b
       !> Time step (s).
       real(dp), intent(in) :: dt
       !> Ground acceleration at t = 0 (m/s^2).
@@ -213,7 +240,7 @@ contains
       !> Integrator state.
       type(newmark_state), intent(inout) :: st
       !> The structural model.
-      class(structure_model), intent(in) :: b
+      type(structure_model), intent(in) :: b
       !> Displacement, velocity and acceleration (n each).
       real(dp), intent(in), optional :: u(:), v(:), a(:)
 
@@ -225,28 +252,6 @@ contains
       st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
       st%strain = structure_strain_energy(b, st%u)
    end subroutine newmark_set_state
-
-   !> Increment du of the step for the ground acceleration increment `dag` alone.
-   !>
-   !> Tridiagonal path: the right-hand side is formed inside the forward sweep of the
-   !> L D L^T solve and the back sweep multiplies by the stored 1/d: two passes over the
-   !> floors, no division. General path: the right-hand side, then dpbtrs.
-   subroutine newmark_predict(st, b, dag)
-      !> Integrator state; `du` is set.
-      type(newmark_state), intent(inout) :: st
-      !> The structural model.
-      class(structure_model), intent(in) :: b
-      !> Ground acceleration increment a_g(t+dt) - a_g(t) (m/s^2).
-      real(dp), intent(in) :: dag
-      integer :: info
-
-      if (st%tridiagonal) then
-         call predict_kernel(st%n, 2.0_dp*st%c2, dag, b%mass, st%v, st%a, st%cv, st%e, st%dinv, st%du)
-      else
-         st%du = b%mass*(2.0_dp*st%c2*st%v + 2.0_dp*st%a - b%ground*dag) + 2.0_dp*st%cv
-         call dpbtrs('U', st%n, st%kd, 1, st%chol, st%kd + 1, st%du, st%n, info)
-      end if
-   end subroutine newmark_predict
 
    !> Overwrite x with Khat^{-1} x (one tridiagonal or banded solve).
    subroutine newmark_solve(st, x)
@@ -275,55 +280,6 @@ contains
 
       st%du = st%du + s*x
    end subroutine newmark_add_response
-
-   !> Complete the step with the increment `du` and account the energy.
-   !>
-   !> `ag_old` and `ag_new` are the ground accelerations at the start and end of the step;
-   !> the input work increment is du . (p_old + p_new)/2 with p = -M r a_g, the damping
-   !> increment du . (C v_old + C v_new)/2: the trapezoidal sums under which the average
-   !> acceleration method balances energy exactly for a linear system.
-   subroutine newmark_commit(st, b, ag_old, ag_new)
-      !> Integrator state.
-      type(newmark_state), intent(inout) :: st
-      !> The structural model.
-      class(structure_model), intent(in) :: b
-      !> Ground acceleration at the start and end of the step (m/s^2).
-      real(dp), intent(in) :: ag_old, ag_new
-      real(dp) :: mdu, ddamp
-
-      if (st%tridiagonal) then
-         call commit_kernel(st%n, st%c1, st%c2, b%a0, b%a1, b%mass, b%kt, st%du, st%u, st%v, st%a, &
-                            st%cv, mdu, ddamp, st%kinetic, st%strain)
-      else
-         call commit_general(st, b, mdu, ddamp)
-      end if
-      st%damping_energy = st%damping_energy + 0.5_dp*ddamp
-      st%input_work = st%input_work - 0.5_dp*(ag_old + ag_new)*mdu
-   end subroutine newmark_commit
-
-   !> The general (banded) path of `newmark_commit`: the Newmark update, C v by a band
-   !> product, sum(m r du), du.(Cv_old + Cv_new) and the kinetic and strain energy.
-   subroutine commit_general(st, b, mdu, ddamp)
-      type(newmark_state), intent(inout) :: st
-      class(structure_model), intent(in) :: b
-      real(dp), intent(out) :: mdu, ddamp
-
-      st%a = st%c1*st%du - 2.0_dp*st%c2*st%v - st%a
-      st%v = st%c2*st%du - st%v
-      st%u = st%u + st%du
-      mdu = sum(b%mass*b%ground*st%du)
-      call band_symv(b%kt, st%v, st%work)
-      st%work = b%a0*b%mass*st%v + b%a1*st%work
-      ddamp = dot_product(st%du, st%cv + st%work)
-      st%cv = st%work
-      st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
-      if (allocated(b%strain_weight)) then
-         st%strain = structure_strain_energy(b, st%u)
-      else
-         call band_symv(b%kt, st%u, st%work)
-         st%strain = 0.5_dp*dot_product(st%u, st%work)
-      end if
-   end subroutine commit_general
 
    !> Number of DOFs.
    pure integer function newmark_n(st)
@@ -407,6 +363,20 @@ contains
       newmark_predicted = st%u(i) + st%du(i)
    end function newmark_predicted
 
+   !> Add the integrator's input work to `w_in` and its kinetic + strain + damping energy to
+   !> `e_out` (the per-step audit; no array is formed).
+   pure subroutine newmark_add_balance(st, w_in, e_out)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+      !> Input work so far (added to).
+      real(dp), intent(inout) :: w_in
+      !> Kinetic + strain + damping energy so far (added to).
+      real(dp), intent(inout) :: e_out
+
+      w_in = w_in + st%input_work
+      e_out = e_out + ((st%kinetic + st%strain) + st%damping_energy)
+   end subroutine newmark_add_balance
+
    !> The running energies of the integrator (kJ): input work, kinetic, strain and damping
    !> energy at the current time (indices `en_input`, `en_kinetic`, `en_strain`, `en_damping`).
    pure function newmark_energies(st) result(e)
@@ -422,7 +392,7 @@ contains
       !> Integrator state.
       type(newmark_state), intent(in) :: st
       !> The structural model.
-      class(structure_model), intent(in) :: b
+      type(structure_model), intent(in) :: b
       real(dp) :: e
 
       e = 0.5_dp*sum(b%mass*st%v**2)
@@ -434,7 +404,7 @@ contains
       !> Integrator state.
       type(newmark_state), intent(in) :: st
       !> The structural model.
-      class(structure_model), intent(in) :: b
+      type(structure_model), intent(in) :: b
       real(dp) :: e
 
       e = structure_strain_energy(b, st%u)

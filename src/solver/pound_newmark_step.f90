@@ -1,20 +1,60 @@
-!> The fused kernels of the tridiagonal Newmark path (pound_newmark): the right-hand side
-!> formed inside the forward sweep of the L D L^T solve, and the Newmark update with C v and
-!> the energy sums in one pass.
-!>
-!> A module of their own: compiled apart from the integrator's state handling, the kernels
-!> see only explicit-shape arrays that Fortran guarantees not to alias, so the compiler
-!> vectorises them as it did before the integrator took any structural model (inlined into
-!> `newmark_commit`, whose dummies hold the arrays behind descriptors, it did not).
-module pound_newmark_kernels
-   use pound_kinds, only: dp
+!> The step of the Newmark integrator: `newmark_predict` and `newmark_commit`, with the fused
+!> tridiagonal kernels of half-bandwidth 1 in the same compilation unit (so that they are
+!> inlined into the step); the banded path (`predict_general`, `commit_general`) stays in the
+!> parent module.
+submodule(pound_newmark) pound_newmark_step
    implicit none
-   private
-
-   public :: predict_kernel, commit_kernel
 
 contains
 
+   !> Increment du of the step for the ground acceleration increment `dag` alone.
+   !>
+   !> Tridiagonal path: the right-hand side is formed inside the forward sweep of the
+   !> L D L^T solve and the back sweep multiplies by the stored 1/d: two passes over the
+   !> floors, no division. General path: the right-hand side, then dpbtrs.
+   module subroutine newmark_predict(st, b, dag)
+      !> Integrator state; `du` is set.
+      type(newmark_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Ground acceleration increment a_g(t+dt) - a_g(t) (m/s^2).
+      real(dp), intent(in) :: dag
+
+      if (st%tridiagonal) then
+         call predict_kernel(st%n, 2.0_dp*st%c2, dag, b%mass, st%v, st%a, st%cv, st%e, st%dinv, st%du)
+      else
+         call predict_general(st, b, dag)
+      end if
+
+   end subroutine newmark_predict
+
+   !> Complete the step with the increment `du` and account the energy.
+   !>
+   !> `ag_old` and `ag_new` are the ground accelerations at the start and end of the step;
+   !> the input work increment is du . (p_old + p_new)/2 with p = -M r a_g, the damping
+   !> increment du . (C v_old + C v_new)/2: the trapezoidal sums under which the average
+   !> acceleration method balances energy exactly for a linear system.
+   module subroutine newmark_commit(st, b, ag_old, ag_new)
+      !> Integrator state.
+      type(newmark_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Ground acceleration at the start and end of the step (m/s^2).
+      real(dp), intent(in) :: ag_old, ag_new
+      real(dp) :: mdu, ddamp
+
+      if (st%tridiagonal) then
+         call commit_kernel(st%n, st%c1, st%c2, b%a0, b%a1, b%mass, b%kt, st%du, st%u, st%v, st%a, &
+                            st%cv, mdu, ddamp, st%kinetic, st%strain)
+      else
+         call commit_general(st, b, mdu, ddamp)
+      end if
+      st%damping_energy = st%damping_energy + 0.5_dp*ddamp
+      st%input_work = st%input_work - 0.5_dp*(ag_old + ag_new)*mdu
+
+   end subroutine newmark_commit
+
+   ! Tridiagonal kernels (kd = 1).
    !> du = Khat^{-1} (M (4/dt v + 2 a - 1 dag) + 2 C v) with Khat = L D L^T.
    pure subroutine predict_kernel(n, c4, dag, mass, v, a, cv, e, dinv, du)
       integer, intent(in) :: n
@@ -132,4 +172,4 @@ contains
       cv = cvi
    end subroutine damp_floor
 
-end module pound_newmark_kernels
+end submodule pound_newmark_step
