@@ -19,6 +19,7 @@ module pound_run_case
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_shear_building, only: shear_building, build_shear_building
+   use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
@@ -102,6 +103,7 @@ contains
       type(case_options), intent(in), optional :: options
       type(ground_motion_t) :: deck_gm
       type(contact_pair), allocatable :: pairs(:)
+      type(structure_model), allocatable :: structures(:)
       character(len=64), allocatable :: names(:)
       character(len=:), allocatable :: prefix
       real(dp), allocatable :: ag(:)
@@ -148,10 +150,12 @@ contains
          end if
          names(ib) = res%models(ib)%name
       end do
+      ! What the analyses see of every building (a contiguous array: no temporary per call).
+      structures = res%models%structure_model
 
       ! Analyses.
       if (.not. coupled_only) then
-         call run_uncoupled(deck%analysis, res%models%structure_model, ag, res%unc, error)
+         call run_uncoupled(deck%analysis, structures, ag, res%unc, error)
          if (allocated(error)) return
          res%has_uncoupled = .true.
       end if
@@ -164,7 +168,7 @@ contains
          if (present(options)) then
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
-         call run_coupled(deck%analysis, res%models%structure_model, ag, pairs, res%cpl, res%cs, error)
+         call run_coupled(deck%analysis, structures, ag, pairs, res%cpl, res%cs, error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
@@ -173,7 +177,7 @@ contains
          if (res%has_uncoupled) then
             res%influence = influence_of(res%unc, res%cpl)
             if (deck%sweep%active) then
-               call run_sweep(deck%analysis, deck%sweep, res%models%structure_model, ag, pairs, res%unc, res%sweep, error)
+               call run_sweep(deck%analysis, deck%sweep, structures, ag, pairs, res%unc, res%sweep, error)
                if (allocated(error)) then
                   error%message = prefix//error%message
                   return
