@@ -51,6 +51,7 @@
 !> Khat^{-1} B is computed once (one tridiagonal solve per constraint end).
 module pound_contact
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
@@ -184,6 +185,10 @@ module pound_contact
       integer :: nonconvex = 0, fallbacks = 0, largest_lcp = 0
       !> Largest accepted natural residual.
       real(dp) :: residual_max = 0.0_dp
+      !> Wall-clock time (s) spent solving LCPs: assembly, Lemke, checks, re-solves and
+      !> fallbacks of the steps in which a joint is closed or predicted to close (the clock is
+      !> read only in those steps, so that timing does not slow the step loop).
+      real(dp) :: lcp_seconds = 0.0_dp
       !> Pivot cap of each Lemke run (0: Lemke's default, 50 (n + 1)).
       integer :: pivot_cap = 0
       !> Steps Lemke could not solve (fallbacks), in order.
@@ -514,8 +519,9 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(lemke_report) :: rep
       integer :: k, na, n, j, nxt
+      integer(int64) :: clock_start, clock_end, clock_rate
       real(dp) :: qnorm, wk, resid, reach
-      logical :: added, nonconvex
+      logical :: added, nonconvex, timed
 
       if (cs%m == 0) return
       qnorm = 0.0_dp
@@ -556,6 +562,9 @@ contains
 
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
+      ! The clock is read only when there is an LCP to solve.
+      timed = any(cs%in_lcp)
+      if (timed) call system_clock(clock_start, clock_rate)
       do
          call assemble(cs, na, n, nonconvex, error)
          if (allocated(error)) return
@@ -641,6 +650,10 @@ contains
       if (n > 0) qnorm = max(qnorm, maxval(abs(cs%qa(1:n))))
       resid = resid/qnorm
       cs%residual_max = max(cs%residual_max, resid)
+      if (timed) then
+         call system_clock(clock_end)
+         cs%lcp_seconds = cs%lcp_seconds + real(clock_end - clock_start, dp)/real(clock_rate, dp)
+      end if
       if (.not. (resid <= residual_limit)) then
          call fatal_error(error, 'contact LCP solution rejected at t = '//str(t)//' s (step '// &
                           str(step)//'): natural residual '//str(resid)//' > '//str(residual_limit)// &
