@@ -73,12 +73,12 @@ def main():
               f"{1e3 * median_of(runs, 'cpu'):.1f} ms")
         print(f"  integration loops, median: uncoupled {1e3 * median_of(runs, 'uncoupled'):.2f} ms, "
               f"coupled {1e3 * median_of(runs, 'coupled'):.2f} ms "
-              f"(contact/LCP {1e3 * median_of(runs, 'contact'):.2f} ms)")
+              f"(LCP solves {1e3 * median_of(runs, 'contact'):.2f} ms)")
         r = runs[0]
         print(f"  {r['impacts']} impacts, {r['solves']} LCP solves in {r['steps']} steps, "
               f"{r['pivots']} pivots (max {r['pivots_max']} per solve), energy balance error {r['energy']:.2e}")
         print()
-        print("| case | steps | time/step structure [us] | time/step contact+LCP [us] | LCP solves | "
+        print("| case | steps | time/step structure + joint bookkeeping [us] | time/step LCP solves [us] | LCP solves | "
               "pivots/step | pivots/solve (max) | impacts | process time [s] |")
         print("|---|--:|--:|--:|--:|--:|--:|--:|--:|")
         for name, text in scale_decks().items():

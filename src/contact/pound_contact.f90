@@ -51,6 +51,7 @@
 !> Khat^{-1} B is computed once (one tridiagonal solve per constraint end).
 module pound_contact
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
@@ -59,7 +60,8 @@ module pound_contact
    use pound_structure, only: structure_model
    use pound_contact_law, only: contact_law, make_elastic, make_elastic_plastic, make_bilinear, &
                                 make_piecewise, make_parabola_cubic, is_plastic, yield_force, &
-                                yield_segment, rate_trapezoidal, rate_backward_euler
+                                yield_segment, rate_trapezoidal, rate_backward_euler, &
+                                dashpot_of_restitution
    use pound_config, only: contact_config
    use pound_lemke, only: lemke_workspace, lemke_init, lemke_solve, lemke_report, lcp_evaluate, &
                           lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
@@ -183,6 +185,10 @@ module pound_contact
       integer :: nonconvex = 0, fallbacks = 0, largest_lcp = 0
       !> Largest accepted natural residual.
       real(dp) :: residual_max = 0.0_dp
+      !> Wall-clock time (s) spent solving LCPs: assembly, Lemke, checks, re-solves and
+      !> fallbacks of the steps in which a joint is closed or predicted to close (the clock is
+      !> read only in those steps, so that timing does not slow the step loop).
+      real(dp) :: lcp_seconds = 0.0_dp
       !> Pivot cap of each Lemke run (0: Lemke's default, 50 (n + 1)).
       integer :: pivot_cap = 0
       !> Steps Lemke could not solve (fallbacks), in order.
@@ -217,6 +223,10 @@ contains
             if (b == 0) cycle
             located(k)%dof(e) = models(b)%floor_dof(pairs(k)%floor(e))
          end do
+         if (pairs(k)%law%restitution > 0.0_dp) then
+            call calibrate_dashpot(located(k), models, error)
+            if (allocated(error)) return
+         end if
       end do
       allocate (y(2, m), f(m, m), stat=stat)
       if (stat /= 0) then
@@ -271,6 +281,33 @@ contains
       if (allocated(error)) return
       call move_alloc(y, cs%y)
    end subroutine contact_init
+
+   !> Dashpot of a joint calibrated to its coefficient of restitution: from the joint
+   !> stiffness and the lumped masses of the two facing DOFs (a rigid fixed end: infinite
+   !> mass), by the exact relation of the joint pound integrates (`dashpot_of_restitution`).
+   subroutine calibrate_dashpot(p, models, error)
+      !> The constraint, its DOFs located; its law's dashpot is set.
+      type(contact_pair), intent(inout) :: p
+      !> The structural models (the lumped masses).
+      type(structure_model), intent(in) :: models(:)
+      !> Error state (a facing DOF without mass).
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: mass(2)
+      integer :: e, b
+
+      mass = 0.0_dp
+      do e = 1, 2
+         b = p%building(e)
+         if (b == 0) cycle
+         mass(e) = models(b)%mass(p%dof(e))
+         if (.not. (mass(e) > 0.0_dp)) then
+            call fatal_error(error, 'contact '//p%label//': restitution needs the mass of floor '// &
+                             str(p%floor(e))//' of '//models(b)%name//', which is '//str(mass(e))//' t')
+            return
+         end if
+      end do
+      p%law%dashpot = dashpot_of_restitution(p%law%restitution, p%law%stiffness, mass(1), mass(2))
+   end subroutine calibrate_dashpot
 
    !> Set up the joints for a given condensed flexibility F (the structure enters only
    !> through F and v_pred, so F = 0 drives the joints by prescribed closing displacements).
@@ -399,6 +436,7 @@ contains
             else
                law%dashpot_rate = rate_backward_euler
             end if
+            law%restitution = c%restitution
             do k = 1, size(c%floor_left)
                n = n + 1
                pairs(n)%label = trim(names(c%left_index))//':'//str(c%floor_left(k))//'-'// &
@@ -481,8 +519,9 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(lemke_report) :: rep
       integer :: k, na, n, j, nxt
+      integer(int64) :: clock_start, clock_end, clock_rate
       real(dp) :: qnorm, wk, resid, reach
-      logical :: added, nonconvex
+      logical :: added, nonconvex, timed
 
       if (cs%m == 0) return
       qnorm = 0.0_dp
@@ -523,6 +562,9 @@ contains
 
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
+      ! The clock is read only when there is an LCP to solve.
+      timed = any(cs%in_lcp)
+      if (timed) call system_clock(clock_start, clock_rate)
       do
          call assemble(cs, na, n, nonconvex, error)
          if (allocated(error)) return
@@ -608,6 +650,10 @@ contains
       if (n > 0) qnorm = max(qnorm, maxval(abs(cs%qa(1:n))))
       resid = resid/qnorm
       cs%residual_max = max(cs%residual_max, resid)
+      if (timed) then
+         call system_clock(clock_end)
+         cs%lcp_seconds = cs%lcp_seconds + real(clock_end - clock_start, dp)/real(clock_rate, dp)
+      end if
       if (.not. (resid <= residual_limit)) then
          call fatal_error(error, 'contact LCP solution rejected at t = '//str(t)//' s (step '// &
                           str(step)//'): natural residual '//str(resid)//' > '//str(residual_limit)// &

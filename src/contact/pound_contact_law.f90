@@ -37,6 +37,7 @@ module pound_contact_law
    public :: make_elastic, make_elastic_plastic, make_bilinear, make_piecewise, make_parabola_cubic
    public :: envelope_force, yield_force, yield_segment, is_plastic, plastic_modulus
    public :: parabola_cubic_force, max_law_points
+   public :: restitution_of_ratio, ratio_of_restitution, dashpot_of_restitution
 
    !> Elastic compression-only spring: r = k0 d.
    integer, parameter :: law_elastic = 1
@@ -65,6 +66,10 @@ module pound_contact_law
       real(dp) :: dashpot = 0.0_dp
       !> How the dashpot rate is integrated (`rate_backward_euler` or `rate_trapezoidal`).
       integer :: dashpot_rate = rate_backward_euler
+      !> Coefficient of restitution e the dashpot is calibrated to (0 < e < 1; 0: the
+      !> dashpot is given as it is). `contact_init` sets `dashpot` from it and the masses of
+      !> the two facing points (`dashpot_of_restitution`).
+      real(dp) :: restitution = 0.0_dp
       !> Envelope nodes (d, r) after the origin, as used (chords of curved branches).
       real(dp), allocatable :: env_d(:), env_r(:)
       !> Envelope slope beyond the last node (kN/m).
@@ -427,5 +432,99 @@ contains
       end do
       law%yh(ns) = plastic_modulus(k0, law%tail_slope)
    end subroutine finish_envelope
+
+   !> Coefficient of restitution e of the joint pound integrates, as a function of the damping
+   !> ratio xi = c / (2 sqrt(k m_eff)) of the impact oscillator.
+   !>
+   !> The joint is a Kelvin-Voigt element with a tension cut-off: m_eff x'' + c x' + k x = 0,
+   !> started at x = 0, x' = v0, ends when its force k x + c x' reaches zero (not when x
+   !> returns to 0, which the classic formula assumes). With w = sqrt(k/m_eff),
+   !> s = sqrt(1 - xi^2), theta = w s t, the force is proportional to
+   !> sin(theta + 2 asin(xi)), which vanishes first at theta = pi - 2 asin(xi), and there
+   !> x' = -v0 exp(-xi theta / s) exactly. With beta = acos(xi):
+   !>
+   !>   e = exp(-2 beta cot(beta))           (xi < 1)
+   !>   e = exp(-2)                           (xi = 1)
+   !>   e = exp(-2 gamma coth(gamma)), gamma = acosh(xi)   (xi > 1, by continuation)
+   !>
+   !> e falls monotonically from 1 (xi = 0) to 0 (xi -> infinity). The classic relation
+   !> e = exp(-pi xi / s) gives less rebound for the same xi (it ignores that the dashpot
+   !> pulls the joint open earlier).
+   pure real(dp) function restitution_of_ratio(xi) result(e)
+      !> Damping ratio xi >= 0.
+      real(dp), intent(in) :: xi
+
+      e = exp(-decay_exponent(xi))
+   end function restitution_of_ratio
+
+   !> -ln(e) of `restitution_of_ratio`: 2 beta cot(beta) or 2 gamma coth(gamma).
+   pure real(dp) function decay_exponent(xi) result(l)
+      !> Damping ratio xi >= 0.
+      real(dp), intent(in) :: xi
+      real(dp) :: b
+
+      if (xi <= 0.0_dp) then
+         l = 0.0_dp
+      else if (xi < 1.0_dp) then
+         b = acos(xi)
+         l = 2.0_dp*b*xi/sqrt((1.0_dp - xi)*(1.0_dp + xi))
+      else if (xi == 1.0_dp) then
+         l = 2.0_dp
+      else
+         b = acosh(xi)
+         l = 2.0_dp*b*xi/sqrt((xi - 1.0_dp)*(xi + 1.0_dp))
+      end if
+   end function decay_exponent
+
+   !> The damping ratio xi whose joint returns the coefficient of restitution `e`
+   !> (inverse of `restitution_of_ratio`, by bisection on the monotone -ln e(xi); relative
+   !> accuracy near machine precision).
+   pure real(dp) function ratio_of_restitution(e) result(xi)
+      !> Coefficient of restitution, 0 < e < 1.
+      real(dp), intent(in) :: e
+      real(dp) :: target, lo, hi
+      integer :: it
+
+      target = -log(e)
+      lo = 0.0_dp
+      hi = 1.0_dp
+      do while (decay_exponent(hi) < target)
+         lo = hi
+         hi = 2.0_dp*hi
+      end do
+      do it = 1, 200
+         xi = 0.5_dp*(lo + hi)
+         if (xi <= lo .or. xi >= hi) exit
+         if (decay_exponent(xi) < target) then
+            lo = xi
+         else
+            hi = xi
+         end if
+      end do
+      xi = 0.5_dp*(lo + hi)
+   end function ratio_of_restitution
+
+   !> Dashpot c (kN s/m) that gives a joint of stiffness `k0` between the masses `m1` and
+   !> `m2` the coefficient of restitution `e`: c = 2 xi sqrt(k0 m_eff), m_eff = m1 m2/(m1 + m2)
+   !> (a rigid fixed end has infinite mass: m2 <= 0 stands for it, m_eff = m1), xi from
+   !> `ratio_of_restitution`.
+   pure real(dp) function dashpot_of_restitution(e, k0, m1, m2) result(c)
+      !> Coefficient of restitution, 0 < e < 1.
+      real(dp), intent(in) :: e
+      !> Joint stiffness (kN/m).
+      real(dp), intent(in) :: k0
+      !> Lumped masses (t) of the facing DOFs; <= 0 for a rigid fixed end.
+      real(dp), intent(in) :: m1, m2
+      real(dp) :: m_eff
+
+      if (m1 <= 0.0_dp) then
+         m_eff = m2
+      else if (m2 <= 0.0_dp) then
+         m_eff = m1
+      else
+         m_eff = m1*m2/(m1 + m2)
+      end if
+      c = 2.0_dp*ratio_of_restitution(e)*sqrt(k0*m_eff)
+   end function dashpot_of_restitution
 
 end module pound_contact_law

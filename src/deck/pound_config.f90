@@ -105,6 +105,9 @@ module pound_config
       character(len=:), allocatable :: law
       !> Joint (initial) stiffness k0 (kN/m) and dashpot c (kN s/m).
       real(dp) :: stiffness = 0.0_dp, dashpot = 0.0_dp
+      !> Coefficient of restitution the dashpot is calibrated to (0 < e < 1, elastic law
+      !> only); 0: none, the dashpot is `dashpot`.
+      real(dp) :: restitution = 0.0_dp
       !> Dashpot rate rule: 'backward_euler' or 'trapezoidal'.
       character(len=:), allocatable :: dashpot_rate
       !> Yield force (kN) and second slope (kN/m) of `elastic_plastic` and `bilinear`.

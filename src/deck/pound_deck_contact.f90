@@ -36,7 +36,7 @@ contains
       integer, allocatable :: floors_left(:), floors_right(:)
       real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:)
       real(dp) :: stiffness, dashpot, yield_force, second_slope, peak_force, peak_penetration, &
-                  fracture_penetration
+                  fracture_penetration, restitution
       integer :: n_segments
       character(len=:), allocatable :: buf
       character(len=512) :: msg
@@ -44,7 +44,7 @@ contains
       integer :: ios, n, k, i
       namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot, &
          dashpot_rate, yield_force, second_slope, envelope_d, envelope_r, peak_force, peak_penetration, &
-         fracture_penetration, n_segments
+         fracture_penetration, n_segments, restitution
 
       ! One slot more than allowed, so that too many pairs get our message, not gfortran's.
       allocate (floors_left(max_pairs + 1), floors_right(max_pairs + 1), gap(max_pairs + 1), &
@@ -65,7 +65,8 @@ contains
       peak_penetration = unset_real
       fracture_penetration = unset_real
       n_segments = unset_int
-      dashpot = 0.0_dp
+      dashpot = unset_real
+      restitution = unset_real
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -199,6 +200,25 @@ contains
          if (allocated(error)) return
       end select
 
+      if (is_set(restitution)) then
+         if (cfg%law /= 'elastic') then
+            call fail(at, 'restitution', "restitution is only for law = 'elastic' (law = '"//cfg%law// &
+                      "'; give the dashpot instead)", error)
+            return
+         end if
+         if (is_set(dashpot)) then
+            call fail(at, 'restitution', 'restitution and dashpot are both given; give one of them '// &
+                      '(restitution sets the dashpot from the joint stiffness and the facing masses)', error)
+            return
+         end if
+         if (.not. (restitution > 0.0_dp .and. restitution < 1.0_dp)) then
+            call fail(at, 'restitution', 'restitution = '//str(restitution)//', must be > 0 and < 1 '// &
+                      '(coefficient of restitution of an impact)', error)
+            return
+         end if
+         cfg%restitution = restitution
+      end if
+      if (.not. is_set(dashpot)) dashpot = 0.0_dp
       call check_real(at, 'dashpot', dashpot, '>=', 0.0_dp, error)
       if (allocated(error)) return
       cfg%dashpot = dashpot

@@ -51,7 +51,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(49) = [ &
+   type(var_spec), parameter :: variables(50) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -75,7 +75,7 @@ module pound_deck_variables
       var_spec('contact', 'second_slope', 'r', 0), var_spec('contact', 'envelope_d', 'r', max_envelope_points), &
       var_spec('contact', 'envelope_r', 'r', max_envelope_points), var_spec('contact', 'peak_force', 'r', 0), &
       var_spec('contact', 'peak_penetration', 'r', 0), var_spec('contact', 'fracture_penetration', 'r', 0), &
-      var_spec('contact', 'n_segments', 'i', 0), &
+      var_spec('contact', 'n_segments', 'i', 0), var_spec('contact', 'restitution', 'r', 0), &
       var_spec('sweep', 'gap_from', 'r', 0), var_spec('sweep', 'gap_to', 'r', 0), &
       var_spec('sweep', 'n_gaps', 'i', 0), var_spec('sweep', 'target_lambda', 'r', 0), &
       var_spec('sweep', 'target_quantities', 'c', 0)]

@@ -138,7 +138,7 @@ contains
       end if
       write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', res%unc%seconds, ' s'
       if (res%has_coupled .and. ios == 0) write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) &
-         '  coupled integration:   ', res%cpl%seconds, ' s, of which contact (LCP) ', res%cpl%contact_seconds, ' s'
+         '  coupled integration:   ', res%cpl%seconds, ' s, of which LCP solves ', res%cpl%contact_seconds, ' s'
       call close_listing(u, path, err)
    end subroutine write_listing
 

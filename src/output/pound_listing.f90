@@ -303,6 +303,11 @@ contains
                p%label, p%gap, law_name(p%law%kind), &
                p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
             call note_io()
+            if (p%law%restitution > 0.0_dp) then
+               write (u, '(16x,a,f6.3,a)', iostat=ios, iomsg=msg) 'c calibrated to the restitution e =', &
+                  p%law%restitution, ' (exact relation of the joint, README)'
+               call note_io()
+            end if
             call law_parameters(p%law)
          end associate
       end do
