@@ -37,6 +37,8 @@ set(POUND_SOURCES
   driver/pound_suite.f90
   # outputs: files, HDF5 layer, results file, listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
+  # outputs: the suite's listing sections and /suite
+  output/pound_suite_output.f90
 )
 # The structural model's recovery rows and storey-by-storey strain energy are summed without
 # fused multiply-adds, so that they give the same numbers with and without -march=native.

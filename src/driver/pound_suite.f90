@@ -78,8 +78,6 @@ module pound_suite
       !> Separation rules (n_motions + 1, n_pairs; the last row: the suite), over every pair of
       !> every `&contact` in deck order.
       type(separation_t), allocatable :: separation(:, :)
-      !> The case of the first motion (what a single-motion run writes).
-      type(case_result) :: first
    end type suite_result
 
 contains
@@ -203,11 +201,13 @@ contains
    end subroutine suite_pairs
 
    !> Run every motion of the deck's suite and gather the suite statistics.
-   subroutine run_suite(deck, suite, error, label)
+   subroutine run_suite(deck, suite, first, error, label)
       !> A validated configuration.
       type(deck_type), intent(in) :: deck
       !> Everything the suite computes.
       type(suite_result), intent(out) :: suite
+      !> The case of the first motion (what a single-motion run writes).
+      type(case_result), intent(out) :: first
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> Put before the messages of the configuration's errors (e.g. the deck path).
@@ -271,7 +271,7 @@ contains
          if (allocated(error)) return
          suite%sa_building(k, :) = sa
          if (k == 1) then
-            call run_case(deck, suite%first, error, options)
+            call run_case(deck, first, error, options)
          else
             call run_case(deck, res, error, options)
          end if
@@ -281,7 +281,7 @@ contains
             return
          end if
          if (k == 1) then
-            call gather(suite%first)
+            call gather(first)
          else
             call gather(res)
          end if
