@@ -78,6 +78,19 @@ module pound_suite
       !> Separation rules (n_motions + 1, n_pairs; the last row: the suite), over every pair of
       !> every `&contact` in deck order.
       type(separation_t), allocatable :: separation(:, :)
+      !> Whether the deck's `&sweep` ran for every motion.
+      logical :: has_sweep = .false.
+      !> Sweep gaps (m).
+      real(dp), allocatable :: sweep_gap(:)
+      !> Largest |lambda| (%) over the targeted quantities (all, without a target), buildings and
+      !> floors/storeys, per motion and gap (n_motions, n_gaps).
+      real(dp), allocatable :: sweep_lambda(:, :)
+      !> Per gap: the suite mean of the per-motion largest |lambda| of each quantity and
+      !> building, maximised over the targeted ones, and the largest over the motions (n_gaps).
+      real(dp), allocatable :: sweep_mean(:), sweep_max(:)
+      !> Smallest gap from which on every larger gap meets the target on the mean and on every
+      !> motion (m; -1 when none or no target).
+      real(dp) :: safe_gap_mean = -1.0_dp, safe_gap_every = -1.0_dp
    end type suite_result
 
 contains
@@ -217,7 +230,8 @@ contains
       type(case_result) :: res
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
       real(dp), allocatable :: ag(:), u1(:), u2(:), mean_unc(:, :, :), mean_cpl(:, :, :)
-      real(dp), allocatable :: z(:), sa(:)
+      real(dp), allocatable :: z(:), sa(:), sweep_sum(:, :, :)
+      logical :: targeted(n_history_quantities)
       integer :: nm, nb, k, ib, n_steps, np, ip, nmax
       logical :: has_u
 
@@ -255,6 +269,8 @@ contains
          end associate
       end do
       has_u = deck%analysis%store(1)
+      targeted = deck%sweep%target_quantities
+      if (.not. (deck%sweep%target > 0.0_dp)) targeted = .true.
       if (present(label)) options%label = label
 
       do k = 1, nm
@@ -304,6 +320,12 @@ contains
          call rules(mean_unc(fl(ip), 1, left(ip)), mean_unc(fr(ip), 1, right(ip)), ip, &
                     suite%separation(nm + 1, ip))
       end do
+      if (suite%has_sweep) then
+         suite%sweep_mean = maxval(reshape(sweep_sum, [n_history_quantities*nb, size(suite%sweep_gap)]), dim=1)
+         suite%sweep_max = maxval(suite%sweep_lambda, dim=1)
+         suite%safe_gap_mean = safe_gap(suite%sweep_mean)
+         suite%safe_gap_every = safe_gap(suite%sweep_max)
+      end if
 
    contains
 
@@ -311,7 +333,29 @@ contains
       subroutine gather(res)
          type(case_result), intent(in) :: res
 
+         integer :: iq, ig
+
          if (.not. (res%has_coupled .and. res%has_uncoupled)) return
+         if (res%has_sweep) then
+            if (k == 1) then
+               suite%has_sweep = .true.
+               suite%sweep_gap = res%sweep%gap
+               allocate (suite%sweep_lambda(nm, size(res%sweep%gap)))
+               allocate (sweep_sum(n_history_quantities, nb, size(res%sweep%gap)))
+               sweep_sum = 0.0_dp
+            end if
+            sweep_sum = sweep_sum + res%sweep%max_abs_lambda/nm
+            do ig = 1, size(res%sweep%gap)
+               suite%sweep_lambda(k, ig) = 0.0_dp
+               do iq = 1, n_history_quantities
+                  if (targeted(iq)) suite%sweep_lambda(k, ig) = max(suite%sweep_lambda(k, ig), &
+                                                                    maxval(res%sweep%max_abs_lambda(iq, :, ig)))
+               end do
+            end do
+            do iq = 1, n_history_quantities
+               if (.not. targeted(iq)) sweep_sum(iq, :, :) = 0.0_dp
+            end do
+         end if
          do ib = 1, nb
             associate (n => deck%buildings(ib)%n_storeys)
                suite%building(ib)%lambda(k, :, :) = res%influence(ib)%lambda
@@ -325,6 +369,19 @@ contains
                                                       suite%separation(k, ip)%no_contact/nm
          end do
       end subroutine gather
+
+      !> Smallest gap from which on every larger gap of the sweep `worst` <= the target.
+      real(dp) function safe_gap(worst)
+         real(dp), intent(in) :: worst(:)
+         integer :: ig
+
+         safe_gap = -1.0_dp
+         if (.not. (deck%sweep%target > 0.0_dp)) return
+         do ig = size(worst), 1, -1
+            if (worst(ig) > deck%sweep%target) exit
+            safe_gap = suite%sweep_gap(ig)
+         end do
+      end function safe_gap
 
       !> The rules of pair ip for one motion.
       subroutine separation_of(res, ip, sep)

@@ -11,6 +11,9 @@
 !>     /suite/mean/influence/<b>/<q>, /suite/max/influence/<b>/<q>, /suite/lambda_of_means/<b>/<q>  (n)
 !>     /suite/separation/<rule>                                 (n_motions + 1, n_pairs), m;
 !>        rule: abs, srss, ec8, ddc, no_contact; the last row is the suite value
+!>     /suite/sweep/gap, /suite/sweep/mean, /suite/sweep/max   (n_gaps), m and %
+!>     /suite/sweep/max_abs_lambda                              (n_motions, n_gaps), %
+!>     /suite/sweep/safe_gap_mean, /suite/sweep/safe_gap_every  scalars (m; -1: none)
 !>
 !> (the arrays are written in Fortran order, so h5py shows them transposed).
 module pound_suite_output
@@ -111,6 +114,20 @@ contains
             end associate
          end do
       end do
+      if (suite%has_sweep) then
+         call write_section(u, 'Suite gap sweep: largest |lambda| [%] over the targeted quantities')
+         write (u, '(a)', iostat=ios, iomsg=msg) '  mean: the suite mean of each quantity''s and '// &
+            'building''s largest |lambda|, then the largest; max: the largest over the motions'
+         write (u, '(2x,a14,2a14)', iostat=ios, iomsg=msg) 'gap (m)', 'mean', 'max'
+         do k = 1, size(suite%sweep_gap)
+            write (u, '(2x,es14.6,2es14.4)', iostat=ios, iomsg=msg) suite%sweep_gap(k), &
+               suite%sweep_mean(k), suite%sweep_max(k)
+         end do
+         write (u, '(a,es14.6,a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on the mean: ', &
+            suite%safe_gap_mean, ' m (-1: none in the range, or no target)'
+         write (u, '(a,es14.6,a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on every motion: ', &
+            suite%safe_gap_every, ' m'
+      end if
       if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
 
    contains
@@ -193,6 +210,13 @@ contains
             call h5_write(h5, '/suite/separation/'//trim(rule_names(r)), rule, error)
             if (allocated(error)) return
          end do
+         if (.not. suite%has_sweep) return
+         call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max_abs_lambda', suite%sweep_lambda, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/mean', suite%sweep_mean, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max', suite%sweep_max, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_mean', suite%safe_gap_mean, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_every', suite%safe_gap_every, error)
       end subroutine write_all
 
    end subroutine write_suite_h5
