@@ -33,8 +33,12 @@ set(POUND_SOURCES
   analysis/pound_spectrum.f90 analysis/pound_separation.f90
   # driver: one case from a validated configuration to all results (program, tests, suites)
   driver/pound_run_case.f90
+  # driver: a suite of ground motions (scaling, one case per motion, suite statistics, rules)
+  driver/pound_suite.f90
   # outputs: files, HDF5 layer, results file, listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
+  # outputs: the suite's listing sections and /suite
+  output/pound_suite_output.f90
 )
 # The structural model's recovery rows and storey-by-storey strain energy are summed without
 # fused multiply-adds, so that they give the same numbers with and without -march=native.

@@ -35,9 +35,11 @@ module pound_config
       logical :: store(n_history_quantities) = .true.
    end type analysis_config
 
-   !> `&ground`: the ground motion.
+   !> `&ground`: one ground motion (a deck with several `&ground` groups is a suite).
    type :: ground_config
-      !> 'pulse' or 'record'.
+      !> Name of the motion ('ground' when the deck has one `&ground` without a name).
+      character(len=:), allocatable :: name
+      !> 'pulse', 'record' or 'synthetic'.
       character(len=:), allocatable :: kind
       !> Pulse amplitude x0 (m), decay a (1/s), circular frequency b (rad/s).
       real(dp) :: x0 = 0.0_dp, a = 0.0_dp, b = 0.0_dp
@@ -45,8 +47,28 @@ module pound_config
       character(len=:), allocatable :: file
       !> Record format: 'auto', 'at2' or 'columns'.
       character(len=:), allocatable :: format
-      !> Scale factor applied to the record (values are in g).
+      !> Scale factor applied to the record or the synthetic motion (record values are in g).
       real(dp) :: scale = 1.0_dp
+      !> Scaling of the suite: '' (the factor `scale`), 'pga' or 'sa' (to `target`).
+      character(len=:), allocatable :: scale_to
+      !> Target of `scale_to` (m/s^2): the PGA, or the 5 %-damped Sa at `period`.
+      real(dp) :: target = 0.0_dp
+      !> Period (s) of `scale_to = 'sa'`; 0: the fundamental period of the most flexible building.
+      real(dp) :: period = 0.0_dp
+      !> Synthetic: filter ('kanai_tajimi' or 'clough_penzien') and envelope ('jennings' or
+      !> 'saragoni_hart'), see pound_synthetic_motion.
+      character(len=:), allocatable :: filter, envelope
+      !> Synthetic: ground filter frequency (rad/s) and damping, high-pass frequency (rad/s)
+      !> and damping (Clough-Penzien).
+      real(dp) :: ground_frequency = 15.0_dp, ground_damping = 0.6_dp
+      real(dp) :: filter_frequency = 1.5_dp, filter_damping = 0.6_dp
+      !> Synthetic: Jennings rise time t1 (s), end of plateau t2 (s), decay rate c (1/s).
+      real(dp) :: rise_time = 2.0_dp, plateau_end = 10.0_dp, decay_rate = 0.3_dp
+      !> Synthetic: Saragoni-Hart time of the peak (fraction of the duration) and end level.
+      real(dp) :: peak_fraction = 0.2_dp, end_level = 0.05_dp
+      !> Synthetic: duration (s), target PGA of the generator (m/s^2), seed.
+      real(dp) :: duration = 20.0_dp, pga = 0.0_dp
+      integer :: seed = 1
    end type ground_config
 
    !> `&building`: one shear building (rigid beams, one lateral DOF per floor).
@@ -142,8 +164,10 @@ module pound_config
       character(len=:), allocatable :: text
       !> `&analysis`.
       type(analysis_config) :: analysis
-      !> `&ground`.
+      !> `&ground` (the first one when the deck has several).
       type(ground_config) :: ground
+      !> Every `&ground`, in deck order: the suite (size 1 for a deck with one `&ground`).
+      type(ground_config), allocatable :: motions(:)
       !> `&building` occurrences, in deck order (left to right).
       type(building_config), allocatable :: buildings(:)
       !> `&contact` occurrences (size 0 when the deck declares none).

@@ -12,7 +12,9 @@
 !> matter and memory stays proportional to the deck. Raw inputs must also lie in the
 !> plausible ranges of `bounds` (README: Input bounds).
 !>
-!> * `&analysis` and `&ground` exactly once, `&building` once per building, left to right.
+!> * `&analysis` exactly once, `&building` once per building, left to right.
+!> * `&ground` once, or several times with distinct `name`s: a suite of ground motions
+!>   (pound_suite), each a pulse, a record or a synthetic motion with its scaling.
 !> * `&contact` zero or more times (none: the buildings are uncoupled).
 !> * `&sweep` at most once, with at least one `&contact`: gap_from, gap_to (m), n_gaps, and
 !>   optionally target_lambda (%) and target_quantities (default 'u a_abs drift storey_shear').
@@ -64,6 +66,7 @@ module pound_deck
    use pound_deck_sweep, only: read_sweep
    use pound_deck_variables, only: max_name_length, max_pairs, max_storeys
    use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
    use pound_text_file, only: read_whole_file
    implicit none
    private
@@ -104,7 +107,7 @@ contains
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
       type(group_ref), allocatable :: groups(:)
-      integer :: n_groups, i, k, nb, ia, ig
+      integer :: n_groups, i, j, k, nb, ia, ng
 
       d%path = path
       d%text = text
@@ -114,9 +117,12 @@ contains
       call find_single(path, groups(1:n_groups), 'analysis', &
                        'title, dt, t_end, output_every, history', ia, error)
       if (allocated(error)) return
-      call find_single(path, groups(1:n_groups), 'ground', &
-                       "kind = 'pulse' or 'record' and its parameters", ig, error)
-      if (allocated(error)) return
+      ng = count([(groups(i)%name == 'ground', i=1, n_groups)])
+      if (ng == 0) then
+         call fatal_error(error, path//': &ground is missing; at least one &ground is required '// &
+                          "(kind = 'pulse', 'record' or 'synthetic' and its parameters)")
+         return
+      end if
       nb = count([(groups(i)%name == 'building', i=1, n_groups)])
       if (nb == 0) then
          call fatal_error(error, path//': no &building group; give one &building per '// &
@@ -126,8 +132,23 @@ contains
 
       call read_analysis(path, text, groups(ia), d%analysis, error)
       if (allocated(error)) return
-      call read_ground(path, text, groups(ig), d%ground, error)
-      if (allocated(error)) return
+      allocate (d%motions(ng))
+      k = 0
+      do i = 1, n_groups
+         if (groups(i)%name /= 'ground') cycle
+         k = k + 1
+         call read_ground(path, text, groups(i), ng, d%motions(k), error)
+         if (allocated(error)) return
+         do j = 1, k - 1
+            if (d%motions(j)%name == d%motions(k)%name) then
+               call fatal_error(error, path//':'//str(groups(i)%line1)//': &ground #'//str(k)// &
+                                ": name = '"//d%motions(k)%name//"' is already the name of "// &
+                                '&ground #'//str(j)//'; the motions of a suite need distinct names')
+               return
+            end if
+         end do
+      end do
+      d%ground = d%motions(1)
       allocate (d%buildings(nb))
       k = 0
       do i = 1, n_groups

@@ -46,13 +46,21 @@ module pound_deck_checks
 
    !> The ranges: generous enough for any real structure and record, tight enough that every
    !> value inside gives finite derived quantities (12EI/h^3, masses, periods, forces).
-   type(bound_t), parameter :: bounds(27) = [ &
+   type(bound_t), parameter :: bounds(35) = [ &
       bound_t('analysis:dt', 1.0e-7_dp, 1.0_dp, 's', .false.), &
       bound_t('analysis:t_end', 0.0_dp, 1.0e4_dp, 's', .false.), &
       bound_t('ground:x0', 1.0e-9_dp, 10.0_dp, 'm', .true.), &
       bound_t('ground:a', 0.0_dp, 1.0e3_dp, '1/s', .false.), &
       bound_t('ground:b', 1.0e-3_dp, 1.0e4_dp, 'rad/s', .false.), &
       bound_t('ground:scale', 1.0e-6_dp, 1.0e3_dp, '', .true.), &
+      bound_t('ground:target', 1.0e-6_dp, 1.0e3_dp, 'm/s^2', .false.), &
+      bound_t('ground:period', 1.0e-3_dp, 1.0e2_dp, 's', .false.), &
+      bound_t('ground:ground_frequency', 1.0e-2_dp, 1.0e3_dp, 'rad/s', .false.), &
+      bound_t('ground:filter_frequency', 1.0e-3_dp, 1.0e3_dp, 'rad/s', .false.), &
+      bound_t('ground:duration', 1.0e-3_dp, 1.0e4_dp, 's', .false.), &
+      bound_t('ground:pga', 1.0e-6_dp, 1.0e3_dp, 'm/s^2', .false.), &
+      bound_t('ground:rise_time', 1.0e-3_dp, 1.0e4_dp, 's', .false.), &
+      bound_t('ground:decay_rate', 1.0e-4_dp, 1.0e3_dp, '1/s', .false.), &
       bound_t('building:height', 0.1_dp, 1.0e3_dp, 'm', .false.), &
       bound_t('building:mass', 1.0e-6_dp, 1.0e9_dp, 't', .false.), &
       bound_t('building:load_coeff', 1.0e-3_dp, 1.0e3_dp, '', .false.), &

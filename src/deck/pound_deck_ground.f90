@@ -1,8 +1,9 @@
-!> Reader of `&ground`: a pulse, or a record file resolved relative to the deck.
+!> Reader of `&ground`: a pulse, a record file resolved relative to the deck, or a synthetic
+!> motion (pound_synthetic_motion), each with a name and a scaling for a suite.
 module pound_deck_ground
    use pound_config, only: ground_config
    use pound_deck_checks, only: check_real, fail, is_set, read_failed, require_real, site, site_of, &
-                                unset_real
+                                unset_int, unset_real
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_deck_variables, only: path_len, word_len
    use pound_error, only: error_type
@@ -16,46 +17,87 @@ module pound_deck_ground
 contains
 
    !> `&ground`: a pulse or a record file.
-   subroutine read_ground(path, text, g, cfg, error)
+   subroutine read_ground(path, text, g, n_motions, cfg, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
       character(len=*), intent(in) :: text
       !> The group occurrence.
       type(group_ref), intent(in) :: g
+      !> Number of `&ground` groups in the deck (more than one: a suite, labelled `&ground #k`).
+      integer, intent(in) :: n_motions
       !> Resolved `&ground`.
       type(ground_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      character(len=word_len) :: kind, format
+      character(len=word_len) :: kind, format, name, scale_to, filter, envelope
       character(len=path_len) :: file
-      real(dp) :: x0, a, b, scale
-      integer :: ios
+      real(dp) :: x0, a, b, scale, target, period
+      real(dp) :: ground_frequency, ground_damping, filter_frequency, filter_damping
+      real(dp) :: rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga
+      integer :: ios, seed
       logical :: exists
       character(len=:), allocatable :: buf
       character(len=:), allocatable :: resolved
       character(len=512) :: msg
       type(site) :: at
-      namelist /ground/ kind, x0, a, b, file, format, scale
+      namelist /ground/ kind, x0, a, b, file, format, scale, name, scale_to, target, period, &
+         filter, ground_frequency, ground_damping, filter_frequency, filter_damping, envelope, &
+         rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga, seed
 
       kind = ' '
       format = ' '
       file = ' '
+      name = ' '
+      scale_to = ' '
+      filter = ' '
+      envelope = ' '
       x0 = unset_real
       a = unset_real
       b = unset_real
       scale = unset_real
+      target = unset_real
+      period = unset_real
+      ground_frequency = unset_real
+      ground_damping = unset_real
+      filter_frequency = unset_real
+      filter_damping = unset_real
+      rise_time = unset_real
+      plateau_end = unset_real
+      decay_rate = unset_real
+      peak_fraction = unset_real
+      end_level = unset_real
+      duration = unset_real
+      pga = unset_real
+      seed = unset_int
       at = site_of(path, g)
+      if (n_motions > 1) at%label = at%label//' #'//str(g%occurrence)
       call group_text(text, g, buf)
       msg = ' '
       read (buf, nml=ground, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
       if (allocated(error)) return
 
+      cfg%name = trim(adjustl(name))
+      if (len(cfg%name) == 0) then
+         if (n_motions > 1) then
+            call fail(at, 'name', 'name is missing: every motion of a suite (a deck with more '// &
+                      'than one &ground) needs a name', error)
+            return
+         end if
+         cfg%name = 'ground'
+      end if
+      if (n_motions > 1) at%label = at%label//' ('//cfg%name//')'
+      call read_scaling(error)
+      if (allocated(error)) return
       cfg%kind = lower(trim(adjustl(kind)))
+      if (cfg%kind /= 'synthetic') call no_synthetic(error)
+      if (allocated(error)) return
       select case (cfg%kind)
       case ('')
-         call fail(at, 'kind', "kind is missing, must be 'pulse' or 'record'", error)
+         call fail(at, 'kind', "kind is missing, must be 'pulse', 'record' or 'synthetic'", error)
+      case ('synthetic')
+         call read_synthetic(error)
       case ('pulse')
          if (len_trim(file) > 0) then
             call fail(at, 'file', "file applies only to kind = 'record'", error)
@@ -83,13 +125,7 @@ contains
          cfg%file = ''
          cfg%format = ''
       case ('record')
-         if (is_set(x0)) then
-            call fail(at, 'x0', "x0 applies only to kind = 'pulse'", error)
-         else if (is_set(a)) then
-            call fail(at, 'a', "a applies only to kind = 'pulse'", error)
-         else if (is_set(b)) then
-            call fail(at, 'b', "b applies only to kind = 'pulse'", error)
-         end if
+         call no_pulse(error)
          if (allocated(error)) return
          if (len_trim(file) == 0) then
             call fail(at, 'file', 'file is missing (record file, relative to the deck''s '// &
@@ -122,8 +158,174 @@ contains
          if (allocated(error)) return
          cfg%scale = scale
       case default
-         call fail(at, 'kind', "kind = '"//trim(adjustl(kind))//"', must be 'pulse' or 'record'", error)
+         call fail(at, 'kind', "kind = '"//trim(adjustl(kind))//"', must be 'pulse', 'record' "// &
+                   "or 'synthetic'", error)
       end select
+
+   contains
+
+      !> `scale_to`, `target`, `period`.
+      subroutine read_scaling(error)
+         type(error_type), allocatable, intent(out) :: error
+
+         cfg%scale_to = lower(trim(adjustl(scale_to)))
+         select case (cfg%scale_to)
+         case ('')
+            if (is_set(target)) then
+               call fail(at, 'target', "target applies only with scale_to = 'pga' or 'sa'", error)
+            else if (is_set(period)) then
+               call fail(at, 'period', "period applies only with scale_to = 'sa'", error)
+            end if
+         case ('pga', 'sa')
+            if (is_set(scale)) then
+               call fail(at, 'scale', 'scale and scale_to exclude each other: give one', error)
+               return
+            end if
+            call required_positive('target', target, 'target of scale_to in m/s^2', cfg%target, error)
+            if (allocated(error)) return
+            if (is_set(period)) then
+               if (cfg%scale_to == 'pga') then
+                  call fail(at, 'period', "period applies only with scale_to = 'sa'", error)
+                  return
+               end if
+               call check_real(at, 'period', period, '>', 0.0_dp, error)
+               if (allocated(error)) return
+               cfg%period = period
+            end if
+         case default
+            call fail(at, 'scale_to', "scale_to = '"//trim(adjustl(scale_to))//"', must be 'pga' "// &
+                      "or 'sa' (or absent: the factor scale)", error)
+         end select
+      end subroutine read_scaling
+
+      !> The variables of `kind = 'synthetic'` must not appear with another kind.
+      subroutine no_synthetic(error)
+         type(error_type), allocatable, intent(out) :: error
+         character(len=20), parameter :: names(15) = [character(len=20) :: 'filter', 'envelope', &
+            'ground_frequency', 'ground_damping', 'filter_frequency', 'filter_damping', 'rise_time', &
+            'plateau_end', 'decay_rate', 'peak_fraction', 'end_level', 'duration', 'pga', 'seed', '']
+         logical :: given(14)
+         integer :: i
+
+         given = [len_trim(filter) > 0, len_trim(envelope) > 0, is_set(ground_frequency), &
+                  is_set(ground_damping), is_set(filter_frequency), is_set(filter_damping), &
+                  is_set(rise_time), is_set(plateau_end), is_set(decay_rate), is_set(peak_fraction), &
+                  is_set(end_level), is_set(duration), is_set(pga), seed /= unset_int]
+         do i = 1, size(given)
+            if (given(i)) then
+               call fail(at, trim(names(i)), trim(names(i))//" applies only to kind = 'synthetic'", error)
+               return
+            end if
+         end do
+      end subroutine no_synthetic
+
+      !> `kind = 'synthetic'`: filter, envelope, duration, target PGA, seed (defaults of
+      !> `ground_config`); the rules of pound_synthetic_motion.
+      subroutine read_synthetic(error)
+         type(error_type), allocatable, intent(out) :: error
+
+         if (len_trim(file) > 0) then
+            call fail(at, 'file', "file applies only to kind = 'record'", error)
+         else if (len_trim(format) > 0) then
+            call fail(at, 'format', "format applies only to kind = 'record'", error)
+         else
+            call no_pulse(error)
+         end if
+         if (allocated(error)) return
+         cfg%filter = lower(trim(adjustl(filter)))
+         if (len(cfg%filter) == 0) cfg%filter = 'kanai_tajimi'
+         if (cfg%filter /= 'kanai_tajimi' .and. cfg%filter /= 'clough_penzien') then
+            call fail(at, 'filter', "filter = '"//trim(adjustl(filter))//"', must be "// &
+                      "'kanai_tajimi' or 'clough_penzien'", error)
+            return
+         end if
+         cfg%envelope = lower(trim(adjustl(envelope)))
+         if (len(cfg%envelope) == 0) cfg%envelope = 'jennings'
+         if (cfg%envelope /= 'jennings' .and. cfg%envelope /= 'saragoni_hart') then
+            call fail(at, 'envelope', "envelope = '"//trim(adjustl(envelope))//"', must be "// &
+                      "'jennings' or 'saragoni_hart'", error)
+            return
+         end if
+         call required_positive('duration', duration, 'duration of the motion in s', cfg%duration, error)
+         if (.not. allocated(error)) call required_positive('pga', pga, 'peak ground acceleration '// &
+                                                            'of the generator in m/s^2', cfg%pga, error)
+         if (allocated(error)) return
+         if (seed /= unset_int) cfg%seed = seed
+         call optional_real('ground_frequency', ground_frequency, .false., cfg%ground_frequency, error)
+         if (.not. allocated(error)) call optional_real('ground_damping', ground_damping, .true., &
+                                                        cfg%ground_damping, error)
+         if (.not. allocated(error)) call optional_real('filter_frequency', filter_frequency, .false., &
+                                                        cfg%filter_frequency, error)
+         if (.not. allocated(error)) call optional_real('filter_damping', filter_damping, .true., &
+                                                        cfg%filter_damping, error)
+         if (.not. allocated(error)) call optional_real('rise_time', rise_time, .false., cfg%rise_time, error)
+         if (.not. allocated(error)) call optional_real('decay_rate', decay_rate, .false., cfg%decay_rate, error)
+         if (.not. allocated(error)) call optional_real('peak_fraction', peak_fraction, .true., &
+                                                        cfg%peak_fraction, error)
+         if (.not. allocated(error)) call optional_real('end_level', end_level, .true., cfg%end_level, error)
+         if (allocated(error)) return
+         if (is_set(plateau_end)) cfg%plateau_end = plateau_end
+         if (cfg%envelope == 'jennings') then
+            if (.not. is_set(plateau_end)) cfg%plateau_end = min(cfg%plateau_end, cfg%duration)
+            call check_real(at, 'plateau_end', cfg%plateau_end, '>=', cfg%rise_time, error, &
+                            bound_text='rise_time = '//str(cfg%rise_time))
+            if (allocated(error)) return
+            if (cfg%plateau_end > cfg%duration) then
+               call fail(at, 'plateau_end', 'plateau_end = '//str(cfg%plateau_end)// &
+                         ', must be <= duration = '//str(cfg%duration), error)
+               return
+            end if
+         end if
+         if (is_set(scale)) then
+            call check_real(at, 'scale', scale, '/=', 0.0_dp, error)
+            if (allocated(error)) return
+            cfg%scale = scale
+         end if
+      end subroutine read_synthetic
+
+      !> The variables of `kind = 'pulse'` must not appear with another kind.
+      subroutine no_pulse(error)
+         type(error_type), allocatable, intent(out) :: error
+
+         if (is_set(x0)) then
+            call fail(at, 'x0', "x0 applies only to kind = 'pulse'", error)
+         else if (is_set(a)) then
+            call fail(at, 'a', "a applies only to kind = 'pulse'", error)
+         else if (is_set(b)) then
+            call fail(at, 'b', "b applies only to kind = 'pulse'", error)
+         end if
+      end subroutine no_pulse
+
+      !> A required variable > 0.
+      subroutine required_positive(var, x, what, value, error)
+         character(len=*), intent(in) :: var, what
+         real(dp), intent(in) :: x
+         real(dp), intent(inout) :: value
+         type(error_type), allocatable, intent(out) :: error
+
+         call require_real(at, var, x, what, error)
+         if (.not. allocated(error)) call check_real(at, var, x, '>', 0.0_dp, error)
+         if (.not. allocated(error)) value = x
+      end subroutine required_positive
+
+      !> A variable > 0 (and < 1 for a ratio) that keeps its default when not given.
+      subroutine optional_real(var, x, is_ratio, value, error)
+         character(len=*), intent(in) :: var
+         real(dp), intent(in) :: x
+         logical, intent(in) :: is_ratio
+         real(dp), intent(inout) :: value
+         type(error_type), allocatable, intent(out) :: error
+
+         if (.not. is_set(x)) return
+         call check_real(at, var, x, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         if (is_ratio .and. .not. (x < 1.0_dp)) then
+            call fail(at, var, var//' = '//str(x)//', must be < 1', error)
+            return
+         end if
+         value = x
+      end subroutine optional_real
+
    end subroutine read_ground
 
    !> `file` as given if absolute, else relative to the directory of the deck `deck_path`.

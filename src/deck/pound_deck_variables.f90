@@ -51,14 +51,23 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(50) = [ &
+   type(var_spec), parameter :: variables(68) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
       var_spec('ground', 'kind', 'c', 0), var_spec('ground', 'x0', 'r', 0), &
       var_spec('ground', 'a', 'r', 0), var_spec('ground', 'b', 'r', 0), &
       var_spec('ground', 'file', 'c', 0), var_spec('ground', 'format', 'c', 0), &
-      var_spec('ground', 'scale', 'r', 0), &
+      var_spec('ground', 'scale', 'r', 0), var_spec('ground', 'name', 'c', 0), &
+      var_spec('ground', 'scale_to', 'c', 0), var_spec('ground', 'target', 'r', 0), &
+      var_spec('ground', 'period', 'r', 0), var_spec('ground', 'filter', 'c', 0), &
+      var_spec('ground', 'ground_frequency', 'r', 0), var_spec('ground', 'ground_damping', 'r', 0), &
+      var_spec('ground', 'filter_frequency', 'r', 0), var_spec('ground', 'filter_damping', 'r', 0), &
+      var_spec('ground', 'envelope', 'c', 0), var_spec('ground', 'rise_time', 'r', 0), &
+      var_spec('ground', 'plateau_end', 'r', 0), var_spec('ground', 'decay_rate', 'r', 0), &
+      var_spec('ground', 'peak_fraction', 'r', 0), var_spec('ground', 'end_level', 'r', 0), &
+      var_spec('ground', 'duration', 'r', 0), var_spec('ground', 'pga', 'r', 0), &
+      var_spec('ground', 'seed', 'i', 0), &
       var_spec('building', 'name', 'c', 0), var_spec('building', 'n_storeys', 'i', 0), &
       var_spec('building', 'height', 'r', max_storeys), var_spec('building', 'mass', 'r', max_storeys), &
       var_spec('building', 'load_coeff', 'r', max_storeys), var_spec('building', 'ref_floor_load', 'r', 0), &

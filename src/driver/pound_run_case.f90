@@ -15,7 +15,7 @@ module pound_run_case
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_config, only: deck_type
+   use pound_config, only: deck_type, ground_config
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_shear_building, only: shear_building, build_shear_building
@@ -27,7 +27,7 @@ module pound_run_case
    implicit none
    private
 
-   public :: case_options, case_result, run_case, deck_ground_motion
+   public :: case_options, case_result, run_case, deck_ground_motion, configured_motion
 
    !> What distinguishes one case of a configuration from another; every component is
    !> optional (the defaults run the configuration as the deck states it).
@@ -82,13 +82,25 @@ contains
       !> Error state (a record that cannot be read).
       type(error_type), allocatable, intent(out) :: error
 
-      select case (deck%ground%kind)
-      case ('pulse')
-         call pulse_motion(gm, deck%ground%x0, deck%ground%a, deck%ground%b)
-      case default
-         call record_motion(gm, deck%ground%file, deck%ground%format, deck%ground%scale, error)
-      end select
+      call configured_motion(deck%ground, gm, error)
    end subroutine deck_ground_motion
+
+   !> The pulse or the record (read whole from its file) that one `&ground` describes.
+   subroutine configured_motion(g, gm, error)
+      !> One validated `&ground` of kind 'pulse' or 'record'.
+      type(ground_config), intent(in) :: g
+      !> The ground motion.
+      type(ground_motion_t), intent(out) :: gm
+      !> Error state (a record that cannot be read).
+      type(error_type), allocatable, intent(out) :: error
+
+      select case (g%kind)
+      case ('pulse')
+         call pulse_motion(gm, g%x0, g%a, g%b)
+      case default
+         call record_motion(gm, g%file, g%format, g%scale, error)
+      end select
+   end subroutine configured_motion
 
    !> Run one case of the validated configuration `deck`: ground sampling, models, joints,
    !> uncoupled and coupled analyses, influence coefficients, gap sweep and warnings.

@@ -19,6 +19,8 @@ program pound
    use pound_deck, only: read_deck
    use pound_ground_motion, only: ground_motion_t
    use pound_run_case, only: case_options, case_result, run_case, deck_ground_motion
+   use pound_suite, only: suite_result, run_suite
+   use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
                             write_contact_summary, write_influence_tables, write_sweep_table, &
                             open_listing, close_listing
@@ -39,6 +41,9 @@ program pound
    logical :: stdout_closed
    type(error_type), allocatable :: error
    character(len=512) :: ground_text(1)
+   type(suite_result) :: suite
+   logical :: is_suite
+   integer :: k
 
    call install_signal_cleanup()
    call guard_standard_descriptors()
@@ -46,12 +51,18 @@ program pound
    call read_deck(deck_path, deck, error)
    call check(error)
 
-   ! Ground motion (a record is read whole: its memory is proportional to the file).
-   allocate (options%ground)
-   call deck_ground_motion(deck, options%ground, error)
-   call check(error)
+   ! Ground motion (a record is read whole: its memory is proportional to the file). A suite
+   ! (several &ground, a synthetic motion or scale_to) builds its motions one at a time.
+   is_suite = size(deck%motions) > 1 .or. deck%ground%kind == 'synthetic' .or. len(deck%ground%scale_to) > 0
+   if (.not. is_suite) then
+      allocate (options%ground)
+      call deck_ground_motion(deck, options%ground, error)
+      call check(error)
+   end if
    record_path = ''
-   if (deck%ground%kind /= 'pulse') record_path = deck%ground%file
+   do k = 1, size(deck%motions)
+      if (deck%motions(k)%kind == 'record' .and. len(record_path) == 0) record_path = deck%motions(k)%file
+   end do
 
    ! Resources and the output folder, before anything large is allocated or computed.
    call check_memory()
@@ -61,7 +72,11 @@ program pound
 
    ! The analyses.
    options%label = deck_path
-   call run_case(deck, res, error, options)
+   if (is_suite) then
+      call run_suite(deck, suite, res, error, deck_path)
+   else
+      call run_case(deck, res, error, options)
+   end if
    call check(error)
    ground_text(1) = res%ground_text
 
@@ -78,6 +93,8 @@ program pound
    else
       call write_results_h5(outputs%h5_tmp, deck, res%models, trim(ground_text(1)), res%ag_out, res%unc, error)
    end if
+   if (.not. allocated(error) .and. size(deck%motions) > 1) &
+      call write_suite_h5(outputs%h5_tmp, res%models, suite, error)
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
    call publish_outputs(outputs, error)
@@ -135,6 +152,10 @@ contains
          call write_contact_summary(u, res%cs)
          call write_influence_tables(u, res%models, res%influence)
          if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
+      end if
+      if (size(deck%motions) > 1) then
+         call write_suite_listing(u, res%models, suite, err)
+         if (allocated(err)) return
       end if
       write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', res%unc%seconds, ' s'
       if (res%has_coupled .and. ios == 0) write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) &

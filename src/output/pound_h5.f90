@@ -46,7 +46,7 @@ module pound_h5
    use, intrinsic :: ieee_exceptions, only: ieee_status_type, ieee_get_status, ieee_set_status, &
                                             ieee_set_halting_mode, ieee_all
    use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
-                   h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, &
+                   h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, H5F_ACC_RDWR_F, &
                    h5pcreate_f, h5pclose_f, h5pset_fclose_degree_f, H5P_FILE_ACCESS_F, &
                    H5F_CLOSE_STRONG_F, &
                    h5lexists_f, h5oopen_f, h5oclose_f, h5iget_type_f, H5I_GROUP_F, &
@@ -143,17 +143,19 @@ contains
       file%writable = .true.
    end subroutine h5_create
 
-   !> Open an existing HDF5 file read-only.
-   subroutine h5_open(file, path, error)
+   !> Open an existing HDF5 file read-only (or for writing, to append, when `writable`).
+   subroutine h5_open(file, path, error, writable)
       !> Handle; must not be open already.
       type(h5_file), intent(inout) :: file
       !> File name.
       character(len=*), intent(in) :: path
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Open for reading and writing (default: read-only).
+      logical, intent(in), optional :: writable
       integer(hid_t) :: fapl
-      integer :: hdferr, ignore
-      logical :: there
+      integer :: hdferr, ignore, access
+      logical :: there, rw
 
       call start(file, path, error)
       if (allocated(error)) return
@@ -164,7 +166,11 @@ contains
       end if
       call file_access_list(path, fapl, error)
       if (allocated(error)) return
-      call h5fopen_f(path, H5F_ACC_RDONLY_F, file%id, hdferr, access_prp=fapl)
+      rw = .false.
+      if (present(writable)) rw = writable
+      access = H5F_ACC_RDONLY_F
+      if (rw) access = H5F_ACC_RDWR_F
+      call h5fopen_f(path, access, file%id, hdferr, access_prp=fapl)
       call h5pclose_f(fapl, ignore)
       if (hdferr /= 0) then
          file%id = -1_hid_t
@@ -173,7 +179,7 @@ contains
          return
       end if
       file%name = path
-      file%writable = .false.
+      file%writable = rw
    end subroutine h5_open
 
    !> Close the file (all its objects are closed with it). Closing a closed handle does nothing.

@@ -1,0 +1,424 @@
+!> A suite of ground motions: every `&ground` of the deck, scaled, run as one case each
+!> (`run_case`), with the suite statistics of the influence coefficients, the code separation
+!> rules per contact pair and the 5 %-damped spectra.
+!>
+!> Per motion k:
+!> 1. the motion: a pulse or a record (`deck_ground_motion`'s kinds), or a synthetic motion
+!>    (`pound_synthetic_motion`, sampled at the analysis step `dt`);
+!> 2. its scaling: the factor `scale` (records: applied on reading; synthetic: applied here), or
+!>    `scale_to = 'pga'` / `'sa'`: the factor f = target/PGA or target/Sa(T) (5 % damping,
+!>    T = `period`, by default the fundamental period of the most flexible building) of the
+!>    motion as the solver samples it, a_g(n dt), n = 0..n_steps. A scaled motion is run as
+!>    the samples f a_g(n dt) (a record of step dt, linear between samples: what the solver saw
+!>    before scaling, times f), so it meets its target up to rounding. A pulse or record without
+!>    `scale_to` is run as it is: a suite of one is today's single run, bit for bit;
+!> 3. `run_case` with that motion: peaks, influence coefficients lambda (%).
+!>
+!> Over the suite (n motions):
+!> * mean of the lambdas: (1/n) sum_k lambda_k (per floor/storey and quantity), and their
+!>   maximum; the lambda of the means: lambda(mean coupled peak, mean uncoupled peak). Codes
+!>   (ASCE 7 16.2.4, EC8 4.3.3.4.3) take the mean of the responses of the suite, i.e. the
+!>   peaks are averaged first: that is the lambda of the means; both are given.
+!> * separation rules at every contact pair (pound_separation), per motion from the uncoupled
+!>   peak displacements of the two facing floors and their stored uncoupled histories (the
+!>   no-contact gap needs `history` with 'u'; it is sampled every `output_every` steps), and
+!>   for the suite from the mean peak displacements (ABS, SRSS, EC8, DDC) and the mean of the
+!>   per-motion no-contact gaps. Elastic time-history peaks, no amplification factors.
+!> * spectra: Sa of every scaled motion at `n_spectrum` log-spaced periods from 0.02 to 4 s plus
+!>   the buildings' fundamental periods, and their mean.
+module pound_suite
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   use pound_config, only: deck_type, ground_config, n_history_quantities
+   use pound_deck_variables, only: word_len
+   use pound_ground_motion, only: ground_motion_t, sample_ground
+   use pound_synthetic_motion, only: synthetic_config, synthetic_motion
+   use pound_shear_building, only: shear_building, build_shear_building
+   use pound_spectrum, only: response_spectrum, period_grid, peak_ground_acceleration, &
+                             scale_to_pga, scale_to_sa
+   use pound_influence, only: influence_coefficient
+   use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
+                               separation_ddc, cqc_correlation, no_contact_gap
+   use pound_run_case, only: case_options, case_result, run_case, configured_motion
+   implicit none
+   private
+
+   public :: suite_result, run_suite, suite_motion, suite_pairs, n_spectrum, spectrum_damping
+
+   !> Log-spaced periods of the suite spectra (before the buildings' periods are added).
+   integer, parameter :: n_spectrum = 60
+   !> Damping ratio of the spectra and of `scale_to = 'sa'`.
+   real(dp), parameter :: spectrum_damping = 0.05_dp
+
+   !> Influence coefficients of one building over the suite, (n, n_history_quantities) each.
+   type :: building_suite
+      !> Mean and maximum of the per-motion lambdas, and the lambda of the mean peaks (%).
+      real(dp), allocatable :: mean_lambda(:, :), max_lambda(:, :), lambda_of_means(:, :)
+      !> Per motion lambda (%), (n_motions, n, n_history_quantities).
+      real(dp), allocatable :: lambda(:, :, :)
+   end type building_suite
+
+   !> Everything a suite computes.
+   type :: suite_result
+      !> Motion names, the scale factor applied by the suite (1 for `scale`), PGA (m/s^2) of
+      !> the motion as run.
+      character(len=word_len), allocatable :: names(:)
+      real(dp), allocatable :: scale_factor(:), pga(:)
+      !> Periods of the spectra (s), Sa (m/s^2, n_motions x n_periods) and its suite mean.
+      real(dp), allocatable :: period(:), sa(:, :), mean_sa(:)
+      !> Fundamental period of every building (s).
+      real(dp), allocatable :: building_period(:)
+      !> Sa of every motion at every building's fundamental period (n_motions, n_buildings).
+      real(dp), allocatable :: sa_building(:, :)
+      !> Whether the deck declares contact (influence and separation exist).
+      logical :: has_coupled = .false.
+      !> Per building.
+      type(building_suite), allocatable :: building(:)
+      !> Separation rules (n_motions + 1, n_pairs; the last row: the suite), over every pair of
+      !> every `&contact` in deck order.
+      type(separation_t), allocatable :: separation(:, :)
+      !> Whether the deck's `&sweep` ran for every motion.
+      logical :: has_sweep = .false.
+      !> Sweep gaps (m).
+      real(dp), allocatable :: sweep_gap(:)
+      !> Largest |lambda| (%) over the targeted quantities (all, without a target), buildings and
+      !> floors/storeys, per motion and gap (n_motions, n_gaps).
+      real(dp), allocatable :: sweep_lambda(:, :)
+      !> Per gap: the suite mean of the per-motion largest |lambda| of each quantity and
+      !> building, maximised over the targeted ones, and the largest over the motions (n_gaps).
+      real(dp), allocatable :: sweep_mean(:), sweep_max(:)
+      !> Smallest gap from which on every larger gap meets the target on the mean and on every
+      !> motion (m; -1 when none or no target).
+      real(dp) :: safe_gap_mean = -1.0_dp, safe_gap_every = -1.0_dp
+   end type suite_result
+
+contains
+
+   !> The ground motion k of the suite as it is run, and the factor the suite applied to it.
+   subroutine suite_motion(deck, k, models, gm, factor, error)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Motion index in `deck%motions`.
+      integer, intent(in) :: k
+      !> The buildings (their fundamental periods give the default period of `scale_to = 'sa'`).
+      type(shear_building), intent(in) :: models(:)
+      !> The motion as run.
+      type(ground_motion_t), intent(out) :: gm
+      !> Scale factor applied by the suite (1: none, or `scale` of a synthetic motion).
+      real(dp), intent(out) :: factor
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(ground_config) :: g
+      type(ground_motion_t) :: base
+      real(dp), allocatable :: ag(:)
+      real(dp) :: dt, period
+      integer :: n_steps, i, ib
+
+      g = deck%motions(k)
+      dt = deck%analysis%dt
+      n_steps = nint(deck%analysis%t_end/dt)
+      factor = 1.0_dp
+      if (g%kind == 'synthetic') then
+         call synthetic(base, error)
+         factor = g%scale
+      else
+         call configured_motion(g, base, error)
+      end if
+      if (allocated(error)) then
+         error%message = "&ground '"//g%name//"': "//error%message
+         return
+      end if
+      if (len(g%scale_to) == 0 .and. g%kind /= 'synthetic') then
+         gm = base
+         return
+      end if
+      allocate (ag(0:n_steps))
+      call sample_ground(base, dt, n_steps, ag)
+      select case (g%scale_to)
+      case ('pga')
+         call scale_to_pga(ag, g%target, factor, error)
+      case ('sa')
+         period = g%period
+         if (.not. (period > 0.0_dp)) then
+            period = 0.0_dp
+            do ib = 1, size(models)
+               period = max(period, models(ib)%period(1))
+            end do
+         end if
+         call scale_to_sa(ag, dt, period, spectrum_damping, g%target, factor, error)
+      end select
+      if (allocated(error)) then
+         error%message = "&ground '"//g%name//"': "//error%message
+         return
+      end if
+      gm%kind = 'record'
+      gm%path = g%name
+      gm%format = g%kind
+      gm%title = g%name
+      gm%scale = factor
+      gm%dt = dt
+      gm%time = [(real(i, dp)*dt, i=0, n_steps)]
+      gm%accel = factor*ag
+
+   contains
+
+      subroutine synthetic(s, error)
+         type(ground_motion_t), intent(out) :: s
+         type(error_type), allocatable, intent(out) :: error
+         type(synthetic_config) :: c
+
+         c%filter = g%filter
+         c%wg = g%ground_frequency
+         c%zg = g%ground_damping
+         c%wf = g%filter_frequency
+         c%zf = g%filter_damping
+         c%envelope = g%envelope
+         c%t1 = g%rise_time
+         c%t2 = g%plateau_end
+         c%c = g%decay_rate
+         c%eps = g%peak_fraction
+         c%eta = g%end_level
+         c%duration = g%duration
+         c%pga = g%pga
+         c%seed = g%seed
+         s%kind = 'record'
+         s%path = g%name
+         s%format = 'synthetic'
+         s%title = g%name
+         s%dt = dt
+         call synthetic_motion(c, dt, s%accel, error)
+         if (allocated(error)) return
+         s%time = [(real(i, dp)*dt, i=0, size(s%accel) - 1)]
+      end subroutine synthetic
+
+   end subroutine suite_motion
+
+   !> The contact pairs of the deck in order: building indices and floors (n_pairs each).
+   pure subroutine suite_pairs(deck, left, right, floor_left, floor_right)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Building on the left and on the right, facing floors.
+      integer, allocatable, intent(out) :: left(:), right(:), floor_left(:), floor_right(:)
+      integer :: ic
+
+      allocate (left(0), right(0), floor_left(0), floor_right(0))
+      do ic = 1, size(deck%contacts)
+         associate (c => deck%contacts(ic))
+            left = [left, spread(c%left_index, 1, size(c%floor_left))]
+            right = [right, spread(c%right_index, 1, size(c%floor_left))]
+            floor_left = [floor_left, c%floor_left]
+            floor_right = [floor_right, c%floor_right]
+         end associate
+      end do
+   end subroutine suite_pairs
+
+   !> Run every motion of the deck's suite and gather the suite statistics.
+   subroutine run_suite(deck, suite, first, error, label)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Everything the suite computes.
+      type(suite_result), intent(out) :: suite
+      !> The case of the first motion (what a single-motion run writes).
+      type(case_result), intent(out) :: first
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      !> Put before the messages of the configuration's errors (e.g. the deck path).
+      character(len=*), intent(in), optional :: label
+      type(shear_building), allocatable :: models(:)
+      type(case_options) :: options
+      type(case_result) :: res
+      integer, allocatable :: left(:), right(:), fl(:), fr(:)
+      real(dp), allocatable :: ag(:), u1(:), u2(:), mean_unc(:, :, :), mean_cpl(:, :, :)
+      real(dp), allocatable :: z(:), sa(:), sweep_sum(:, :, :)
+      logical :: targeted(n_history_quantities)
+      integer :: nm, nb, k, ib, n_steps, np, ip, nmax
+      logical :: has_u
+
+      nm = size(deck%motions)
+      nb = size(deck%buildings)
+      n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
+      allocate (models(nb), suite%building_period(nb), z(nb))
+      do ib = 1, nb
+         call build_shear_building(deck%buildings(ib), models(ib), error)
+         if (allocated(error)) return
+         suite%building_period(ib) = models(ib)%period(1)
+         z(ib) = deck%buildings(ib)%damping_ratio
+      end do
+      call period_grid(n_spectrum, suite%building_period, suite%period, error)
+      if (allocated(error)) return
+      call suite_pairs(deck, left, right, fl, fr)
+      np = size(left)
+      suite%has_coupled = np > 0
+      nmax = maxval(deck%buildings%n_storeys)
+      allocate (suite%names(nm))
+      allocate (suite%scale_factor(nm), suite%pga(nm), suite%sa(nm, size(suite%period)), &
+                suite%sa_building(nm, nb), ag(0:n_steps), mean_unc(nmax, n_history_quantities, nb), &
+                mean_cpl(nmax, n_history_quantities, nb))
+      mean_unc = 0.0_dp
+      mean_cpl = 0.0_dp
+      allocate (suite%building(nb), suite%separation(nm + 1, np))
+      do ib = 1, nb
+         associate (n => deck%buildings(ib)%n_storeys, s => suite%building(ib))
+            allocate (s%lambda(nm, n, n_history_quantities), s%mean_lambda(n, n_history_quantities), &
+                      s%max_lambda(n, n_history_quantities), s%lambda_of_means(n, n_history_quantities))
+            s%lambda = 0.0_dp
+            s%mean_lambda = 0.0_dp
+            s%max_lambda = 0.0_dp
+            s%lambda_of_means = 0.0_dp
+         end associate
+      end do
+      has_u = deck%analysis%store(1)
+      targeted = deck%sweep%target_quantities
+      if (.not. (deck%sweep%target > 0.0_dp)) targeted = .true.
+      if (present(label)) options%label = label
+
+      do k = 1, nm
+         suite%names(k) = deck%motions(k)%name
+         allocate (options%ground)
+         call suite_motion(deck, k, models, options%ground, suite%scale_factor(k), error)
+         if (allocated(error)) return
+         call sample_ground(options%ground, deck%analysis%dt, n_steps, ag)
+         suite%pga(k) = peak_ground_acceleration(ag)
+         call response_spectrum(ag, deck%analysis%dt, suite%period, spectrum_damping, sa, error)
+         if (allocated(error)) return
+         suite%sa(k, :) = sa
+         call response_spectrum(ag, deck%analysis%dt, suite%building_period, spectrum_damping, sa, error)
+         if (allocated(error)) return
+         suite%sa_building(k, :) = sa
+         if (k == 1) then
+            call run_case(deck, first, error, options)
+         else
+            call run_case(deck, res, error, options)
+         end if
+         deallocate (options%ground)
+         if (allocated(error)) then
+            error%message = "&ground '"//deck%motions(k)%name//"': "//error%message
+            return
+         end if
+         if (k == 1) then
+            call gather(first)
+         else
+            call gather(res)
+         end if
+      end do
+      suite%mean_sa = sum(suite%sa, dim=1)/nm
+
+      if (.not. suite%has_coupled) return
+      do ib = 1, nb
+         associate (s => suite%building(ib), n => deck%buildings(ib)%n_storeys)
+            s%max_lambda = maxval(s%lambda, dim=1)
+            where (any(s%lambda >= huge(1.0_dp), dim=1))
+               s%mean_lambda = huge(1.0_dp)
+            elsewhere
+               s%mean_lambda = sum(s%lambda, dim=1)/nm
+            end where
+            s%lambda_of_means = influence_coefficient(mean_cpl(1:n, :, ib), mean_unc(1:n, :, ib))
+         end associate
+      end do
+      do ip = 1, np
+         call rules(mean_unc(fl(ip), 1, left(ip)), mean_unc(fr(ip), 1, right(ip)), ip, &
+                    suite%separation(nm + 1, ip))
+      end do
+      if (suite%has_sweep) then
+         suite%sweep_mean = maxval(reshape(sweep_sum, [n_history_quantities*nb, size(suite%sweep_gap)]), dim=1)
+         suite%sweep_max = maxval(suite%sweep_lambda, dim=1)
+         suite%safe_gap_mean = safe_gap(suite%sweep_mean)
+         suite%safe_gap_every = safe_gap(suite%sweep_max)
+      end if
+
+   contains
+
+      !> Peaks, lambdas and rules of motion k.
+      subroutine gather(res)
+         type(case_result), intent(in) :: res
+
+         integer :: iq, ig
+
+         if (.not. (res%has_coupled .and. res%has_uncoupled)) return
+         if (res%has_sweep) then
+            if (k == 1) then
+               suite%has_sweep = .true.
+               suite%sweep_gap = res%sweep%gap
+               allocate (suite%sweep_lambda(nm, size(res%sweep%gap)))
+               allocate (sweep_sum(n_history_quantities, nb, size(res%sweep%gap)))
+               sweep_sum = 0.0_dp
+            end if
+            sweep_sum = sweep_sum + res%sweep%max_abs_lambda/nm
+            do ig = 1, size(res%sweep%gap)
+               suite%sweep_lambda(k, ig) = 0.0_dp
+               do iq = 1, n_history_quantities
+                  if (targeted(iq)) suite%sweep_lambda(k, ig) = max(suite%sweep_lambda(k, ig), &
+                                                                    maxval(res%sweep%max_abs_lambda(iq, :, ig)))
+               end do
+            end do
+            do iq = 1, n_history_quantities
+               if (.not. targeted(iq)) sweep_sum(iq, :, :) = 0.0_dp
+            end do
+         end if
+         do ib = 1, nb
+            associate (n => deck%buildings(ib)%n_storeys)
+               suite%building(ib)%lambda(k, :, :) = res%influence(ib)%lambda
+               mean_unc(1:n, :, ib) = mean_unc(1:n, :, ib) + res%unc%building(ib)%peak/nm
+               mean_cpl(1:n, :, ib) = mean_cpl(1:n, :, ib) + res%cpl%building(ib)%peak/nm
+            end associate
+         end do
+         do ip = 1, np
+            call separation_of(res, ip, suite%separation(k, ip))
+            suite%separation(nm + 1, ip)%no_contact = suite%separation(nm + 1, ip)%no_contact + &
+                                                      suite%separation(k, ip)%no_contact/nm
+         end do
+      end subroutine gather
+
+      !> Smallest gap from which on every larger gap of the sweep `worst` <= the target.
+      real(dp) function safe_gap(worst)
+         real(dp), intent(in) :: worst(:)
+         integer :: ig
+
+         safe_gap = -1.0_dp
+         if (.not. (deck%sweep%target > 0.0_dp)) return
+         do ig = size(worst), 1, -1
+            if (worst(ig) > deck%sweep%target) exit
+            safe_gap = suite%sweep_gap(ig)
+         end do
+      end function safe_gap
+
+      !> The rules of pair ip for one motion.
+      subroutine separation_of(res, ip, sep)
+         type(case_result), intent(in) :: res
+         integer, intent(in) :: ip
+         type(separation_t), intent(out) :: sep
+
+         associate (b1 => res%unc%building(left(ip)), b2 => res%unc%building(right(ip)))
+            call rules(b1%peak(fl(ip), 1), b2%peak(fr(ip), 1), ip, sep)
+            if (has_u) then
+               u1 = b1%u(fl(ip), 1:b1%n_out)
+               u2 = b2%u(fr(ip), 1:b2%n_out)
+               sep%no_contact = no_contact_gap(u1, u2)
+            else
+               sep%no_contact = -1.0_dp
+            end if
+         end associate
+      end subroutine separation_of
+
+      !> ABS, SRSS, EC8 and DDC of pair ip from the peaks p1, p2 (m).
+      subroutine rules(p1, p2, ip, sep)
+         real(dp), intent(in) :: p1, p2
+         integer, intent(in) :: ip
+         type(separation_t), intent(inout) :: sep
+         logical :: coincide
+
+         coincide = abs(sum(deck%buildings(left(ip))%height(1:fl(ip))) - &
+                        sum(deck%buildings(right(ip))%height(1:fr(ip)))) <= 1.0e-9_dp
+         sep%abs = separation_abs(p1, p2)
+         sep%srss = separation_srss(p1, p2)
+         sep%ec8 = separation_ec8(p1, p2, coincide)
+         sep%rho = cqc_correlation(suite%building_period(left(ip)), suite%building_period(right(ip)), &
+                                   z(left(ip)), z(right(ip)))
+         sep%ddc = separation_ddc(p1, p2, suite%building_period(left(ip)), &
+                                  suite%building_period(right(ip)), z(left(ip)), z(right(ip)))
+      end subroutine rules
+
+   end subroutine run_suite
+
+end module pound_suite

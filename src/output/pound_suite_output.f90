@@ -1,0 +1,224 @@
+!> Outputs of a suite of ground motions (`pound_suite`): the listing sections and the HDF5
+!> group `/suite`, written only when the deck has more than one motion.
+!>
+!> HDF5 (appended to the results file):
+!>
+!>     /suite/names, /suite/scale_factor, /suite/pga            (n_motions); m/s^2
+!>     /suite/building_period                                   (n_buildings), s
+!>     /suite/spectrum/period (n_periods), /suite/spectrum/sa   (n_motions, n_periods), m/s^2
+!>     /suite/spectrum/mean_sa                                  (n_periods)
+!>     /suite/influence/<b>/<q>                                 (n_motions, n), %
+!>     /suite/mean/influence/<b>/<q>, /suite/max/influence/<b>/<q>, /suite/lambda_of_means/<b>/<q>  (n)
+!>     /suite/separation/<rule>                                 (n_motions + 1, n_pairs), m;
+!>        rule: abs, srss, ec8, ddc, no_contact; the last row is the suite value
+!>     /suite/sweep/gap, /suite/sweep/mean, /suite/sweep/max   (n_gaps), m and %
+!>     /suite/sweep/max_abs_lambda                              (n_motions, n_gaps), %
+!>     /suite/sweep/safe_gap_mean, /suite/sweep/safe_gap_every  scalars (m; -1: none)
+!>
+!> (the arrays are written in Fortran order, so h5py shows them transposed).
+module pound_suite_output
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_config, only: history_names, n_history_quantities
+   use pound_strings, only: str
+   use pound_shear_building, only: shear_building
+   use pound_influence, only: building_influence
+   use pound_listing, only: write_section, write_influence_tables
+   use pound_h5, only: h5_file, h5_open, h5_close, h5_write
+   use pound_suite, only: suite_result
+   implicit none
+   private
+
+   public :: write_suite_listing, write_suite_h5
+
+   !> Separation rules, as named in HDF5.
+   character(len=*), parameter :: rule_names(5) = &
+      [character(len=10) :: 'abs', 'srss', 'ec8', 'ddc', 'no_contact']
+
+contains
+
+   !> Listing sections of the suite: motions, per-motion largest |lambda|, mean influence
+   !> tables, separation rules per pair.
+   subroutine write_suite_listing(u, models, suite, error)
+      !> Open listing unit.
+      integer, intent(in) :: u
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> The suite.
+      type(suite_result), intent(in) :: suite
+      !> Set when a write fails.
+      type(error_type), allocatable, intent(out) :: error
+      type(building_influence), allocatable :: infl(:)
+      integer :: ios, k, ib, q, ip, nm, nb
+      character(len=256) :: msg
+
+      nm = size(suite%names)
+      nb = size(models)
+      ios = 0
+      call write_section(u, 'Ground-motion suite ('//str(nm)//' motions)')
+      write (u, '(a)', iostat=ios, iomsg=msg) '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
+         'period of each building (m/s^2)'
+      write (u, '(2x,a20,a14,a14,*(a14))', iostat=ios, iomsg=msg) 'motion', 'scale factor', 'PGA m/s^2', &
+         ('Sa '//trim(models(ib)%name), ib=1, nb)
+      do k = 1, nm
+         write (u, '(2x,a20,*(es14.6))', iostat=ios, iomsg=msg) trim(suite%names(k)), &
+            suite%scale_factor(k), suite%pga(k), suite%sa_building(k, :)
+      end do
+      write (u, '(2x,a20,14x,es14.6,*(es14.6))', iostat=ios, iomsg=msg) 'mean', sum(suite%pga)/nm, &
+         sum(suite%sa_building, dim=1)/nm
+      write (u, '(2x,a20,28x,*(f14.4))', iostat=ios, iomsg=msg) 'period T1 (s)', suite%building_period
+      if (ios /= 0) then
+         call fatal_error(error, 'listing: '//trim(msg))
+         return
+      end if
+      if (.not. suite%has_coupled) return
+
+      call write_section(u, 'Suite: largest |lambda| per motion, building and quantity [%]')
+      write (u, '(2x,a20,a10,*(a14))', iostat=ios, iomsg=msg) 'motion', 'building', &
+         (trim(history_names(q)), q=1, n_history_quantities)
+      do k = 1, nm
+         do ib = 1, nb
+            write (u, '(2x,a20,a10,*(es14.4))', iostat=ios, iomsg=msg) trim(suite%names(k)), &
+               trim(models(ib)%name), (maxval(abs(suite%building(ib)%lambda(k, :, q))), &
+                                       q=1, n_history_quantities)
+         end do
+      end do
+
+      allocate (infl(nb))
+      write (u, '(/,a)', iostat=ios, iomsg=msg) '  Suite mean of the lambdas (each motion''s lambda, '// &
+         'then their arithmetic mean):'
+      do ib = 1, nb
+         infl(ib)%lambda = suite%building(ib)%mean_lambda
+      end do
+      call write_influence_tables(u, models, infl)
+      write (u, '(/,a)', iostat=ios, iomsg=msg) '  Suite lambda of the means (the mean coupled and '// &
+         'uncoupled peaks, then lambda; the codes average the responses: this is the one they ask for):'
+      do ib = 1, nb
+         infl(ib)%lambda = suite%building(ib)%lambda_of_means
+      end do
+      call write_influence_tables(u, models, infl)
+
+      call write_section(u, 'Separation rules per contact pair (m)')
+      write (u, '(a)', iostat=ios, iomsg=msg) '  Applied to the elastic time-history peaks of the '// &
+         'uncoupled runs, without displacement amplification factors.', &
+         '  ABS = u1 + u2, SRSS, EC8 4.4.2.7 (SRSS x 0.7 where floor levels coincide), DDC (CQC rho), ', &
+         '  no-contact gap = max_t (u1(t) - u2(t)) of the stored uncoupled histories (-1: u not stored).', &
+         '  The suite row: rules on the mean peaks; no-contact gap: mean over the motions.'
+      do ip = 1, size(suite%separation, 2)
+         write (u, '(/,a,i0)', iostat=ios, iomsg=msg) '  pair ', ip
+         write (u, '(2x,a20,*(a14))', iostat=ios, iomsg=msg) 'motion', (trim(rule_names(q)), q=1, 5)
+         do k = 1, nm + 1
+            associate (s => suite%separation(k, ip))
+               write (u, '(2x,a20,*(es14.6))', iostat=ios, iomsg=msg) trim(row_name(k)), s%abs, &
+                  s%srss, s%ec8, s%ddc, s%no_contact
+            end associate
+         end do
+      end do
+      if (suite%has_sweep) then
+         call write_section(u, 'Suite gap sweep: largest |lambda| [%] over the targeted quantities')
+         write (u, '(a)', iostat=ios, iomsg=msg) '  mean: the suite mean of each quantity''s and '// &
+            'building''s largest |lambda|, then the largest; max: the largest over the motions'
+         write (u, '(2x,a14,2a14)', iostat=ios, iomsg=msg) 'gap (m)', 'mean', 'max'
+         do k = 1, size(suite%sweep_gap)
+            write (u, '(2x,es14.6,2es14.4)', iostat=ios, iomsg=msg) suite%sweep_gap(k), &
+               suite%sweep_mean(k), suite%sweep_max(k)
+         end do
+         write (u, '(a,es14.6,a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on the mean: ', &
+            suite%safe_gap_mean, ' m (-1: none in the range, or no target)'
+         write (u, '(a,es14.6,a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on every motion: ', &
+            suite%safe_gap_every, ' m'
+      end if
+      if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
+
+   contains
+
+      function row_name(k) result(name)
+         integer, intent(in) :: k
+         character(len=:), allocatable :: name
+
+         if (k <= nm) then
+            name = trim(suite%names(k))
+         else
+            name = 'suite'
+         end if
+      end function row_name
+
+   end subroutine write_suite_listing
+
+   !> Append `/suite` to the results file at `path`.
+   subroutine write_suite_h5(path, models, suite, error)
+      !> Results file (written and closed).
+      character(len=*), intent(in) :: path
+      !> The buildings.
+      type(shear_building), intent(in) :: models(:)
+      !> The suite.
+      type(suite_result), intent(in) :: suite
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(error_type), allocatable :: close_error
+      type(h5_file) :: h5
+
+      call h5_open(h5, path, error, writable=.true.)
+      if (.not. allocated(error)) then
+         call write_all()
+         call h5_close(h5, close_error)
+         if (allocated(close_error) .and. .not. allocated(error)) call move_alloc(close_error, error)
+      end if
+
+   contains
+
+      subroutine write_all()
+         real(dp), allocatable :: rule(:, :)
+         integer :: ib, q, r
+         character(len=:), allocatable :: b, qn
+
+         call h5_write(h5, '/suite/names', suite%names, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/scale_factor', suite%scale_factor, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/pga', suite%pga, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/building_period', suite%building_period, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/period', suite%period, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/sa', suite%sa, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/mean_sa', suite%mean_sa, error)
+         if (allocated(error) .or. .not. suite%has_coupled) return
+         do ib = 1, size(models)
+            b = models(ib)%name
+            do q = 1, n_history_quantities
+               qn = trim(history_names(q))
+               call h5_write(h5, '/suite/influence/'//b//'/'//qn, suite%building(ib)%lambda(:, :, q), error)
+               if (.not. allocated(error)) call h5_write(h5, '/suite/mean/influence/'//b//'/'//qn, &
+                                                         suite%building(ib)%mean_lambda(:, q), error)
+               if (.not. allocated(error)) call h5_write(h5, '/suite/max/influence/'//b//'/'//qn, &
+                                                         suite%building(ib)%max_lambda(:, q), error)
+               if (.not. allocated(error)) call h5_write(h5, '/suite/lambda_of_means/'//b//'/'//qn, &
+                                                         suite%building(ib)%lambda_of_means(:, q), error)
+               if (allocated(error)) return
+            end do
+         end do
+         do r = 1, size(rule_names)
+            select case (r)
+            case (1)
+               rule = suite%separation%abs
+            case (2)
+               rule = suite%separation%srss
+            case (3)
+               rule = suite%separation%ec8
+            case (4)
+               rule = suite%separation%ddc
+            case default
+               rule = suite%separation%no_contact
+            end select
+            call h5_write(h5, '/suite/separation/'//trim(rule_names(r)), rule, error)
+            if (allocated(error)) return
+         end do
+         if (.not. suite%has_sweep) return
+         call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max_abs_lambda', suite%sweep_lambda, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/mean', suite%sweep_mean, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max', suite%sweep_max, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_mean', suite%safe_gap_mean, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_every', suite%safe_gap_every, error)
+      end subroutine write_all
+
+   end subroutine write_suite_h5
+
+end module pound_suite_output
