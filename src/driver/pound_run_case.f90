@@ -15,7 +15,7 @@ module pound_run_case
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_config, only: deck_type
+   use pound_config, only: deck_type, is_frame
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_shear_building, only: shear_building, build_shear_building
@@ -141,6 +141,11 @@ contains
       ! Models.
       allocate (res%models(size(deck%buildings)), names(size(deck%buildings)))
       do ib = 1, size(res%models)
+         if (is_frame(deck%buildings(ib))) then
+            call fatal_error(error, prefix//'building '//deck%buildings(ib)%name//": model = 'frame' "// &
+                             'is not run yet (the frame builder exists: pound_frame_building)')
+            return
+         end if
          call build_shear_building(deck%buildings(ib), res%models(ib), error)
          if (allocated(error)) then
             error%message = prefix//error%message
