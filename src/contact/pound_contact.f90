@@ -216,6 +216,8 @@ contains
             b = pairs(k)%building(e)
             if (b == 0) cycle
             located(k)%dof(e) = models(b)%floor_dof(pairs(k)%floor(e))
+            if (e == 2 .and. allocated(models(b)%floor_dof_left)) &
+               located(k)%dof(e) = models(b)%floor_dof_left(pairs(k)%floor(e))
          end do
       end do
       allocate (y(2, m), f(m, m), stat=stat)

@@ -15,10 +15,10 @@ module pound_run_case
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_config, only: deck_type, is_frame
+   use pound_config, only: deck_type
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
-   use pound_shear_building, only: shear_building, build_shear_building
+   use pound_building, only: building_model, build_building
    use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
@@ -47,7 +47,7 @@ module pound_run_case
    !> Everything a case computes, as the writers need it.
    type :: case_result
       !> The buildings, in configuration order.
-      type(shear_building), allocatable :: models(:)
+      type(building_model), allocatable :: models(:)
       !> One-line description of the ground motion.
       character(len=:), allocatable :: ground_text
       !> Ground acceleration at the output times (m/s^2).
@@ -141,22 +141,17 @@ contains
       ! Models.
       allocate (res%models(size(deck%buildings)), names(size(deck%buildings)))
       do ib = 1, size(res%models)
-         if (is_frame(deck%buildings(ib))) then
-            call fatal_error(error, prefix//'building '//deck%buildings(ib)%name//": model = 'frame' "// &
-                             'is not run yet (the frame builder exists: pound_frame_building)')
-            return
-         end if
-         call build_shear_building(deck%buildings(ib), res%models(ib), error)
+         call build_building(deck%buildings(ib), res%models(ib), error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
          end if
-         names(ib) = res%models(ib)%name
+         names(ib) = res%models(ib)%model%name
       end do
 
       ! Analyses.
       if (.not. coupled_only) then
-         call run_uncoupled(deck%analysis, res%models%structure_model, ag, res%unc, error)
+         call run_uncoupled(deck%analysis, res%models%model, ag, res%unc, error)
          if (allocated(error)) return
          res%has_uncoupled = .true.
       end if
@@ -169,7 +164,7 @@ contains
          if (present(options)) then
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
-         call run_coupled(deck%analysis, res%models%structure_model, ag, pairs, res%cpl, res%cs, error)
+         call run_coupled(deck%analysis, res%models%model, ag, pairs, res%cpl, res%cs, error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
@@ -178,7 +173,7 @@ contains
          if (res%has_uncoupled) then
             res%influence = influence_of(res%unc, res%cpl)
             if (deck%sweep%active) then
-               call run_sweep(deck%analysis, deck%sweep, res%models%structure_model, ag, pairs, res%unc, res%sweep, error)
+               call run_sweep(deck%analysis, deck%sweep, res%models%model, ag, pairs, res%unc, res%sweep, error)
                if (allocated(error)) then
                   error%message = prefix//error%message
                   return

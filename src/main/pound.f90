@@ -152,8 +152,8 @@ contains
       text = program_name//' '//program_version//': '//deck%analysis%title//new_line('a')
       associate (models => res%models, unc => res%unc, cpl => res%cpl, cs => res%cs, sweep => res%sweep)
          do ib = 1, size(models)
-            write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
-               ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
+            write (line, '(a,i0,a,a,a)') '  building '//models(ib)%model%name//': ', models(ib)%n_storeys, &
+               ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%model%period(1), 11, 5, .true.))), ' s'
             text = text//trim(line)//new_line('a')
          end do
          write (line, '(a,es10.3,a,es9.2)') '  uncoupled integration: ', unc%seconds, &

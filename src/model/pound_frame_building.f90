@@ -16,8 +16,8 @@
 !> - Periods: the lowest max(n_storeys, damping_modes(2)) modes (at most the DOFs with mass)
 !>   by subspace iteration in band storage (pound_band_eigen).
 !> - Response points `floor_dof`: each floor's lateral DOF on the RIGHTMOST column line (the
-!>   line facing a building to the right); `floor_dof_left` of `frame_data` holds the
-!>   leftmost line's (equal with a rigid diaphragm).
+!>   line facing a building to the right); `floor_dof_left` holds the leftmost line's (the
+!>   contact end when the frame stands on the right; equal with a rigid diaphragm).
 !> - Storey drift: lateral displacement difference of consecutive floors on the rightmost
 !>   line. Storey shear: sum of the storey's column shears at their bottom section (the
 !>   first-order end force f(2) of each column's lowest element, pound_frame_element),
@@ -54,8 +54,10 @@ module pound_frame_building
       logical :: p_delta = .false.
       !> 'chord' or 'consistent'.
       character(len=:), allocatable :: geometric
-      !> Each floor's lateral DOF on the leftmost column line.
-      integer, allocatable :: floor_dof_left(:)
+      !> 'fixed' or 'pinned'.
+      character(len=:), allocatable :: base
+      !> The constraints.
+      logical :: rigid_beams = .false., rigid_diaphragm = .false., rigid_columns = .false.
    end type frame_data
 
 contains
@@ -119,6 +121,11 @@ contains
          if (allocated(deck_entry%geometric)) fd%geometric = deck_entry%geometric
          kind = merge(geometric_consistent, geometric_chord, fd%geometric == 'consistent')
          fd%p_delta = deck_entry%p_delta
+         fd%base = 'fixed'
+         if (spec%base_pinned(1)) fd%base = 'pinned'
+         fd%rigid_beams = spec%rigid_beams
+         fd%rigid_diaphragm = spec%rigid_diaphragm
+         fd%rigid_columns = spec%rigid_columns
          if (fd%p_delta) then
             call frame_gravity(spec, fd%gravity, error)
             if (.not. allocated(error)) call check_frame_stability(f, fd%gravity%axial, kind, error)
@@ -156,10 +163,10 @@ contains
          do k = 1, f%n_nodes
             if (f%map_dof(1, 1, k) > 0) m%ground(f%map_dof(1, 1, k)) = 1.0_dp
          end do
-         allocate (m%floor_dof(ns), fd%floor_dof_left(ns))
+         allocate (m%floor_dof(ns), m%floor_dof_left(ns))
          do j = 1, ns
             m%floor_dof(j) = f%map_dof(1, 1, f%floor_node(nl, j))
-            fd%floor_dof_left(j) = f%map_dof(1, 1, f%floor_node(1, j))
+            m%floor_dof_left(j) = f%map_dof(1, 1, f%floor_node(1, j))
          end do
          call chain_rows(m%floor_dof, [(1.0_dp, j=1, ns)], m%drift, m%shear)
          call shear_rows(f, m%n, m%shear)
