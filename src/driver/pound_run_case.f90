@@ -19,6 +19,7 @@ module pound_run_case
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_building, only: building_model, build_building
+   use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
@@ -46,8 +47,10 @@ module pound_run_case
 
    !> Everything a case computes, as the writers need it.
    type :: case_result
-      !> The buildings, in configuration order.
-      type(building_model), allocatable :: models(:)
+      !> The buildings' structural models, in configuration order.
+      type(structure_model), allocatable :: models(:)
+      !> The buildings' per-kind data for the writers (shear storey table, frame), same order.
+      type(building_model), allocatable :: buildings(:)
       !> One-line description of the ground motion.
       character(len=:), allocatable :: ground_text
       !> Ground acceleration at the output times (m/s^2).
@@ -139,19 +142,19 @@ contains
       res%ag_out = ag(0:n_steps:deck%analysis%output_every)
 
       ! Models.
-      allocate (res%models(size(deck%buildings)), names(size(deck%buildings)))
+      allocate (res%models(size(deck%buildings)), res%buildings(size(deck%buildings)), names(size(deck%buildings)))
       do ib = 1, size(res%models)
-         call build_building(deck%buildings(ib), res%models(ib), error)
+         call build_building(deck%buildings(ib), res%models(ib), res%buildings(ib), error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
          end if
-         names(ib) = res%models(ib)%model%name
+         names(ib) = res%models(ib)%name
       end do
 
       ! Analyses.
       if (.not. coupled_only) then
-         call run_uncoupled(deck%analysis, res%models%model, ag, res%unc, error)
+         call run_uncoupled(deck%analysis, res%models, ag, res%unc, error)
          if (allocated(error)) return
          res%has_uncoupled = .true.
       end if
@@ -164,7 +167,7 @@ contains
          if (present(options)) then
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
-         call run_coupled(deck%analysis, res%models%model, ag, pairs, res%cpl, res%cs, error)
+         call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
@@ -173,7 +176,7 @@ contains
          if (res%has_uncoupled) then
             res%influence = influence_of(res%unc, res%cpl)
             if (deck%sweep%active) then
-               call run_sweep(deck%analysis, deck%sweep, res%models%model, ag, pairs, res%unc, res%sweep, error)
+               call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error)
                if (allocated(error)) then
                   error%message = prefix//error%message
                   return

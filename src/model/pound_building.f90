@@ -1,6 +1,8 @@
-!> One building of a deck, whatever its model: the `structure_model` the analyses read, and
-!> the per-kind data the writers need (the shear building's storey table, the frame's
-!> nodes, elements and gravity analysis).
+!> One building of a deck, whatever its model: `build_building` makes the `structure_model`
+!> the analyses read and, beside it, the per-kind data the writers need (`building_model`: the
+!> shear building's storey table, the frame's nodes, elements and gravity analysis). The two
+!> are kept in separate arrays by the run driver, so that the analyses get a contiguous
+!> array of structural models (no copy).
 module pound_building
    use pound_kinds, only: dp
    use pound_error, only: error_type
@@ -13,10 +15,9 @@ module pound_building
 
    public :: building_model, build_building
 
-   !> A built building (a plain data type, written once by `build_building`).
+   !> What the writers need of a building besides its structural model (a plain data type,
+   !> written once by `build_building`).
    type :: building_model
-      !> The structural model (what integrator, contact and response read).
-      type(structure_model) :: model
       !> Number of storeys (= floors, = response points).
       integer :: n_storeys = 0
       !> Storey heights (m) and floor masses (t).
@@ -33,10 +34,12 @@ module pound_building
 contains
 
    !> Build the model of a deck entry: a shear building or a frame (`model`).
-   subroutine build_building(deck_entry, b, error, number)
+   subroutine build_building(deck_entry, m, b, error, number)
       !> Validated deck entry.
       type(building_config), intent(in) :: deck_entry
-      !> The building.
+      !> The structural model.
+      type(structure_model), intent(out) :: m
+      !> The per-kind data.
       type(building_model), intent(out) :: b
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
@@ -50,7 +53,7 @@ contains
       b%p_delta = deck_entry%p_delta
       if (is_frame(deck_entry)) then
          allocate (b%frame)
-         call build_frame_building(deck_entry, b%model, b%frame, error, number)
+         call build_frame_building(deck_entry, m, b%frame, error, number)
          if (allocated(error)) return
          allocate (b%floor_mass(b%n_storeys))
          do j = 1, b%n_storeys
@@ -59,7 +62,7 @@ contains
       else
          call build_shear_building(deck_entry, sb, error, number)
          if (allocated(error)) return
-         b%model = sb%structure_model
+         m = sb%structure_model
          b%floor_mass = sb%mass
          call move_alloc(sb%storey_stiffness, b%storey_stiffness)
          call move_alloc(sb%geometric_stiffness, b%geometric_stiffness)

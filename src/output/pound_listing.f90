@@ -11,6 +11,7 @@ module pound_listing
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_building, only: building_model
+   use pound_structure, only: structure_model
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
@@ -189,22 +190,24 @@ contains
    end subroutine write_section
 
    !> Per building: storey data, periods and Rayleigh coefficients.
-   subroutine write_model_summary(u, models)
+   subroutine write_model_summary(u, models, buildings)
       !> Open unit.
       integer, intent(in) :: u
-      !> The buildings.
-      type(building_model), intent(in) :: models(:)
+      !> The buildings' structural models.
+      type(structure_model), intent(in) :: models(:)
+      !> Their per-kind data (storey table, frame).
+      type(building_model), intent(in) :: buildings(:)
       integer :: ib, j
       character(len=3) :: pd
 
       call write_section(u, 'Models (shear buildings: rigid beams, one lateral DOF per floor; '// &
                          'frames: planar beam-column elements)')
       do ib = 1, size(models)
-         associate (b => models(ib)%model, s => models(ib))
+         associate (b => models(ib), s => buildings(ib))
             pd = 'off'
             if (s%p_delta) pd = 'on'
             if (allocated(s%frame)) then
-               call write_frame_summary(u, s)
+               call write_frame_summary(u, b, s)
             else
                write (u, '(/,a,i0,a,a)', iostat=ios, iomsg=msg) &
                   '  Building '//b%name//': ', b%n, ' storeys, P-Delta ', trim(pd)
@@ -240,15 +243,17 @@ contains
    end subroutine write_model_summary
 
    !> A frame's geometry, sections, DOFs and (with P-Delta) its gravity analysis.
-   subroutine write_frame_summary(u, s)
+   subroutine write_frame_summary(u, b, s)
       !> Open unit.
       integer, intent(in) :: u
+      !> Its structural model.
+      type(structure_model), intent(in) :: b
       !> The building (a frame).
       type(building_model), intent(in) :: s
       character(len=:), allocatable :: cons
       integer :: j, e, ln, eb
 
-      associate (f => s%frame%frame, b => s%model)
+      associate (f => s%frame%frame)
          cons = ''
          if (s%frame%rigid_beams) cons = cons//' rigid_beams'
          if (s%frame%rigid_diaphragm) cons = cons//' rigid_diaphragm'
@@ -336,14 +341,14 @@ contains
       !> Analysis label, e.g. 'Uncoupled'.
       character(len=*), intent(in) :: label
       !> The buildings.
-      type(building_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> The analysis result.
       type(analysis_result), intent(in) :: res
       integer :: ib, j
 
       call write_section(u, label//' response: absolute maxima and the time they occur')
       do ib = 1, size(models)
-         associate (b => models(ib)%model, p => res%building(ib)%peak, t => res%building(ib)%peak_time)
+         associate (b => models(ib), p => res%building(ib)%peak, t => res%building(ib)%peak_time)
             write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//b%name
             call note_io()
             write (u, '(a)', iostat=ios, iomsg=msg) &
@@ -503,7 +508,7 @@ contains
       !> Open unit.
       integer, intent(in) :: u
       !> The buildings.
-      type(building_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> Influence coefficients of every building (`pound_influence`).
       type(building_influence), intent(in) :: infl(:)
 
@@ -527,16 +532,16 @@ contains
          call note_io()
          line = '  '//row//repeat(' ', 6 - len(row))
          do ib = 1, size(models)
-            cell = models(ib)%model%name(1:min(14, len(models(ib)%model%name)))
+            cell = models(ib)%name(1:min(14, len(models(ib)%name)))
             line = line//adjustr(cell)
          end do
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
-         do j = maxval(models(:)%n_storeys), 1, -1
+         do j = maxval([(size(models(ib)%floor_dof), ib=1, size(models))]), 1, -1
             write (cell, '(i6)') j
             line = '  '//cell(1:6)//'  '
             do ib = 1, size(models)
-               if (j > models(ib)%n_storeys) then
+               if (j > size(models(ib)%floor_dof)) then
                   cell = ''
                else
                   lambda = infl(ib)%lambda(j, q)
@@ -561,7 +566,7 @@ contains
       !> Open unit.
       integer, intent(in) :: u
       !> The buildings.
-      type(building_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> `&sweep`.
       type(sweep_config), intent(in) :: cfg
       !> The sweep result.
@@ -580,7 +585,7 @@ contains
       line = '    gap [mm]  impacts'
       do ib = 1, size(models)
          do k = 1, size(shown)
-            cell = trim(models(ib)%model%name(1:min(len(models(ib)%model%name), 4)))//':'//trim(heads(k))
+            cell = trim(models(ib)%name(1:min(len(models(ib)%name), 4)))//':'//trim(heads(k))
             line = line//adjustr(cell)
          end do
       end do

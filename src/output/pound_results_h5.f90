@@ -30,6 +30,7 @@ module pound_results_h5
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type, history_names, n_history_quantities
    use pound_building, only: building_model
+   use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
    use pound_contact_law, only: law_name
@@ -50,13 +51,15 @@ module pound_results_h5
 contains
 
    !> Write the whole results file at `path`.
-   subroutine write_results_h5(path, deck, models, ground_text, ag_out, unc, error, cpl, cs, influence, sweep)
+   subroutine write_results_h5(path, deck, models, buildings, ground_text, ag_out, unc, error, cpl, cs, influence, sweep)
       !> File to create (truncated).
       character(len=*), intent(in) :: path
       !> The deck.
       type(deck_type), intent(in) :: deck
       !> The buildings.
-      type(building_model), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
+      !> Their per-kind data (storey table, frame), same order.
+      type(building_model), intent(in) :: buildings(:)
       !> One-line description of the ground motion.
       character(len=*), intent(in) :: ground_text
       !> Ground acceleration at the output times (m/s^2).
@@ -105,7 +108,7 @@ contains
          call h5_write_attr(h5, '/ground', 'description', ground_text, error)
          if (allocated(error)) return
          do ib = 1, size(models)
-            call write_model(models(ib))
+            call write_model(models(ib), buildings(ib))
             if (allocated(error)) return
          end do
          call write_analysis('/uncoupled', unc)
@@ -120,7 +123,7 @@ contains
          if (present(influence)) then
             do ib = 1, size(models)
                do q = 1, n_history_quantities
-                  call h5_write(h5, '/influence/'//models(ib)%model%name//'/'//trim(history_names(q)), &
+                  call h5_write(h5, '/influence/'//models(ib)%name//'/'//trim(history_names(q)), &
                                 influence(ib)%lambda(:, q), error)
                   if (allocated(error)) return
                end do
@@ -138,7 +141,7 @@ contains
          if (allocated(error)) return
          do ib = 1, size(models)
             do q = 1, n_history_quantities
-               call h5_write(h5, '/sweep/max_abs_lambda/'//models(ib)%model%name//'/'//trim(history_names(q)), &
+               call h5_write(h5, '/sweep/max_abs_lambda/'//models(ib)%name//'/'//trim(history_names(q)), &
                              sweep%max_abs_lambda(q, ib, :), error)
                if (allocated(error)) return
             end do
@@ -148,11 +151,11 @@ contains
          call h5_write_attr(h5, '/sweep', 'safe_gap', sweep%safe_gap, error)
       end subroutine write_sweep
 
-      subroutine write_model(s)
+      subroutine write_model(b, s)
+         type(structure_model), intent(in) :: b
          type(building_model), intent(in) :: s
          character(len=:), allocatable :: g
 
-         associate (b => s%model)
          g = '/model/'//b%name//'/'
          call h5_write(h5, g//'height', s%height, error)
          if (allocated(error)) return
@@ -177,7 +180,6 @@ contains
          call h5_write_attr(h5, '/model/'//b%name, 'p_delta', merge(1, 0, s%p_delta), error)
          if (allocated(error)) return
          call h5_write_attr(h5, '/model/'//b%name, 'damping_ratio', b%damping_ratio, error)
-         end associate
       end subroutine write_model
 
       !> A frame's nodes (x, z per node), elements (end nodes, kind 1 column / 2 beam, storey
@@ -224,7 +226,7 @@ contains
          call h5_write_attr(h5, g, 'integration_seconds', res%seconds, error)
          if (allocated(error)) return
          do i = 1, size(models)
-            gb = g//'/'//models(i)%model%name//'/'
+            gb = g//'/'//models(i)%name//'/'
             associate (r => res%building(i))
                if (r%store(q_u)) call h5_write(h5, gb//'u', r%u(:, 1:n), error)
                if (allocated(error)) return
