@@ -11,7 +11,9 @@
 !> - contact histories (coupled analyses): force, closing, penetration, plastic penetration
 !>   and state per joint, 36 bytes x joints x n_out;
 !> - models and contact systems: a few hundred bytes per floor and per joint (banded
-!>   matrices), plus a fixed 64 MiB for the program, its libraries and HDF5.
+!>   matrices), plus a fixed 64 MiB for the program, its libraries and HDF5; a frame
+!>   (`model = 'frame'`) counts its DOFs, 3 per node (3 n_lines (n_storeys column_elements + 1)),
+!>   each with 8 band matrices of half-bandwidth 3 n_lines + 2 (K+G, M, C, factors, work).
 !>
 !> The memory available is the smallest of: MemAvailable of /proc/meminfo, the memory
 !> limit less the current use of the process's cgroup and of each of its ancestors
@@ -23,7 +25,7 @@ module pound_memory
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_config, only: deck_type, n_history_quantities, history_names
+   use pound_config, only: deck_type, n_history_quantities, history_names, is_frame
    use pound_posix, only: posix_address_space_limit
    implicit none
    private
@@ -59,7 +61,7 @@ contains
       !> A validated deck.
       type(deck_type), intent(in) :: deck
       type(memory_estimate) :: est
-      real(dp) :: joints, floors, every
+      real(dp) :: joints, floors, every, frame_bytes, lines, dofs
       integer :: ib, ic, n_stored
 
       est%n_steps = real(nint(deck%analysis%t_end/deck%analysis%dt, int64), dp)
@@ -72,6 +74,17 @@ contains
          do ib = 1, size(deck%buildings)
             floors = floors + real(deck%buildings(ib)%n_storeys, dp)
             est%history_columns = est%history_columns + deck%buildings(ib)%n_storeys*n_stored
+         end do
+      end if
+      frame_bytes = 0.0_dp
+      if (allocated(deck%buildings)) then
+         do ib = 1, size(deck%buildings)
+            if (.not. is_frame(deck%buildings(ib))) cycle
+            associate (b => deck%buildings(ib))
+               lines = real(size(b%bay_width) + 1, dp)
+               dofs = 3.0_dp*lines*(real(b%n_storeys, dp)*real(b%column_elements, dp) + 1.0_dp)
+               frame_bytes = frame_bytes + 8.0_dp*8.0_dp*dofs*(3.0_dp*lines + 3.0_dp)
+            end associate
          end do
       end if
       joints = 0.0_dp
@@ -88,7 +101,7 @@ contains
       est%ground = 8.0_dp*(est%n_steps + 1.0_dp) + 8.0_dp*est%n_out
       est%histories = real(est%n_analyses, dp)*8.0_dp*est%n_out*(7.0_dp + real(est%history_columns, dp))
       est%contact = real(est%n_analyses - 1, dp)*36.0_dp*joints*est%n_out
-      est%models = model_bytes_per_floor*floors + 8.0_dp*(4.0_dp*joints*floors + 16.0_dp*joints**2)
+      est%models = model_bytes_per_floor*floors + 8.0_dp*(4.0_dp*joints*floors + 16.0_dp*joints**2) + frame_bytes
       est%total = base_bytes + est%ground + est%histories + est%contact + est%models
    end function estimate_memory
 

@@ -222,6 +222,8 @@ contains
             b = pairs(k)%building(e)
             if (b == 0) cycle
             located(k)%dof(e) = models(b)%floor_dof(pairs(k)%floor(e))
+            if (e == 2 .and. allocated(models(b)%floor_dof_left)) &
+               located(k)%dof(e) = models(b)%floor_dof_left(pairs(k)%floor(e))
          end do
          if (pairs(k)%law%restitution > 0.0_dp) then
             call calibrate_dashpot(located(k), models, error)

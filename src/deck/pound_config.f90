@@ -10,7 +10,7 @@ module pound_config
    private
 
    public :: analysis_config, ground_config, building_config, contact_config, sweep_config, deck_type
-   public :: n_history_quantities, history_names, g_accel
+   public :: n_history_quantities, history_names, g_accel, is_frame
 
    !> Standard gravity used to turn floor loads into masses (m/s^2).
    real(dp), parameter :: g_accel = 9.81_dp
@@ -108,6 +108,24 @@ module pound_config
       character(len=:), allocatable :: mass_source
       !> How stiffness was given: 'stiffness' or 'columns' (for the echo).
       character(len=:), allocatable :: stiffness_source
+      !> Model: 'shear' (the default: the storey table above) or 'frame' (a planar frame of
+      !> column lines and floors, pound_frame_building; the variables below).
+      character(len=:), allocatable :: model
+      !> Frame: bay widths (m), n_bays values.
+      real(dp), allocatable :: bay_width(:)
+      !> Frame columns: E (kN/m^2), A (m^2), I (m^4), one value for all storeys or one per storey.
+      real(dp), allocatable :: column_e(:), column_area(:), column_inertia(:)
+      !> Frame beams: E (kN/m^2), A (m^2), I (m^4), one value for all floors or one per floor.
+      real(dp), allocatable :: beam_e(:), beam_area(:), beam_inertia(:)
+      !> Frame base of every column line: 'fixed' or 'pinned'.
+      character(len=:), allocatable :: base
+      !> Frame: elements per storey column (>= 1).
+      integer :: column_elements = 1
+      !> Frame constraints (exact, eliminated DOFs): flexurally rigid beams, rigid floor
+      !> diaphragms, axially rigid columns.
+      logical :: rigid_beams = .false., rigid_diaphragm = .false., rigid_columns = .false.
+      !> Frame geometric stiffness of the gravity axial forces (with p_delta): 'chord' or 'consistent'.
+      character(len=:), allocatable :: geometric
    end type building_config
 
    !> `&contact`: unilateral constraints between facing floors of two buildings.
@@ -175,5 +193,16 @@ module pound_config
       !> `&sweep` (inactive when the deck has none).
       type(sweep_config) :: sweep
    end type deck_type
+
+contains
+
+   !> Whether the building entry is a frame model (`model = 'frame'`; unset: a shear building).
+   pure logical function is_frame(cfg)
+      !> A building entry.
+      type(building_config), intent(in) :: cfg
+
+      is_frame = .false.
+      if (allocated(cfg%model)) is_frame = cfg%model == 'frame'
+   end function is_frame
 
 end module pound_config

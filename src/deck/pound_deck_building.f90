@@ -7,7 +7,8 @@ module pound_deck_building
    use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, require_real, &
                                 site, site_of, take_ints, take_reals, unset_int, unset_real
    use pound_deck_lexer, only: group_ref, group_text, is_name_char, lower
-   use pound_deck_variables, only: max_name_length, max_storeys, word_len
+   use pound_deck_variables, only: max_name_length, max_storeys, word_len, max_bays, max_column_elements, &
+                                   frame_variables
    use pound_error, only: error_type
    use pound_kinds, only: dp
    use pound_strings, only: str
@@ -15,6 +16,10 @@ module pound_deck_building
    private
 
    public :: read_building
+
+   !> The `&building` variables that give a shear building's storey stiffness (not with a frame).
+   character(len=*), parameter :: shear_variables(5) = [character(len=11) :: 'stiffness', 'n_columns', &
+      'e_modulus', 'inertia', 'column_ends']
 
 contains
 
@@ -32,8 +37,11 @@ contains
       type(building_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      character(len=word_len) :: name, column_ends
-      integer :: n_storeys, damping_modes(2)
+      character(len=word_len) :: name, column_ends, model, base, geometric
+      integer :: n_storeys, damping_modes(2), n_bays, column_elements
+      logical :: rigid_beams, rigid_diaphragm, rigid_columns
+      real(dp), allocatable :: bay_width(:), column_e(:), column_area(:), column_inertia(:), &
+                               beam_e(:), beam_area(:), beam_inertia(:)
       real(dp) :: ref_floor_load, damping_ratio
       logical :: p_delta
       real(dp), allocatable :: height(:), mass(:), load_coeff(:), stiffness(:), e_modulus(:), &
@@ -42,10 +50,12 @@ contains
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
-      integer :: ios, n
+      integer :: ios, n, i
       namelist /building/ name, n_storeys, height, mass, load_coeff, ref_floor_load, stiffness, &
          n_columns, e_modulus, inertia, column_ends, damping_ratio, damping_modes, p_delta, &
-         gravity_load
+         gravity_load, model, n_bays, bay_width, column_e, column_area, column_inertia, beam_e, &
+         beam_area, beam_inertia, base, column_elements, rigid_beams, rigid_diaphragm, rigid_columns, &
+         geometric
 
       allocate (height(max_storeys), mass(max_storeys), load_coeff(max_storeys), &
                 stiffness(max_storeys), e_modulus(max_storeys), inertia(max_storeys), &
@@ -65,6 +75,24 @@ contains
       inertia = unset_real
       gravity_load = unset_real
       n_columns = unset_int
+      model = ' '
+      base = ' '
+      geometric = ' '
+      n_bays = unset_int
+      column_elements = unset_int
+      rigid_beams = .false.
+      rigid_diaphragm = .false.
+      rigid_columns = .false.
+      allocate (bay_width(max_bays), column_e(max_storeys), column_area(max_storeys), &
+                column_inertia(max_storeys), beam_e(max_storeys), beam_area(max_storeys), &
+                beam_inertia(max_storeys))
+      bay_width = unset_real
+      column_e = unset_real
+      column_area = unset_real
+      column_inertia = unset_real
+      beam_e = unset_real
+      beam_area = unset_real
+      beam_inertia = unset_real
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -94,8 +122,56 @@ contains
 
       call resolve_masses(at, n, mass, load_coeff, ref_floor_load, cfg, error)
       if (allocated(error)) return
-      call resolve_stiffness(at, n, stiffness, n_columns, e_modulus, inertia, &
-                             column_ends, cfg, error)
+      select case (lower(trim(adjustl(model))))
+      case ('', 'shear')
+         cfg%model = 'shear'
+         do i = 1, size(frame_variables)
+            if (assigned(at, frame_variables(i))) then
+               call fail(at, trim(frame_variables(i)), trim(frame_variables(i))//" describes a frame: "// &
+                         "it applies only with model = 'frame' (this building is a shear building)", error)
+               return
+            end if
+         end do
+         call resolve_stiffness(at, n, stiffness, n_columns, e_modulus, inertia, &
+                                column_ends, cfg, error)
+      case ('frame')
+         cfg%model = 'frame'
+         do i = 1, size(shear_variables)
+            if (assigned(at, shear_variables(i))) then
+               call fail(at, trim(shear_variables(i)), trim(shear_variables(i))//" applies only to a "// &
+                         "shear building; a frame (model = 'frame') takes its stiffness from column_e, "// &
+                         'column_area, column_inertia and the beams', error)
+               return
+            end if
+         end do
+         call resolve_bays(at, n_bays, bay_width, cfg, error)
+         if (allocated(error)) return
+         call take_group(at, 'column_e', column_e, n, cfg%column_e, error)
+         if (.not. allocated(error)) call take_group(at, 'column_area', column_area, n, cfg%column_area, error)
+         if (.not. allocated(error)) call take_group(at, 'column_inertia', column_inertia, n, &
+                                                     cfg%column_inertia, error)
+         if (.not. allocated(error)) call take_group(at, 'beam_e', beam_e, n, cfg%beam_e, error)
+         if (.not. allocated(error)) call take_group(at, 'beam_area', beam_area, n, cfg%beam_area, error)
+         if (.not. allocated(error)) call take_group(at, 'beam_inertia', beam_inertia, n, cfg%beam_inertia, error)
+         if (allocated(error)) return
+         call choose(at, 'base', base, ['fixed ', 'pinned'], cfg%base, error)
+         if (allocated(error)) return
+         call choose(at, 'geometric', geometric, ['chord     ', 'consistent'], cfg%geometric, error)
+         if (allocated(error)) return
+         if (column_elements /= unset_int) then
+            if (column_elements < 1 .or. column_elements > max_column_elements) then
+               call fail(at, 'column_elements', 'column_elements = '//str(column_elements)// &
+                         ', must be in 1..'//str(max_column_elements), error)
+               return
+            end if
+            cfg%column_elements = column_elements
+         end if
+         cfg%rigid_beams = rigid_beams
+         cfg%rigid_diaphragm = rigid_diaphragm
+         cfg%rigid_columns = rigid_columns
+      case default
+         call fail(at, 'model', "model = '"//trim(adjustl(model))//"', must be 'shear' or 'frame'", error)
+      end select
       if (allocated(error)) return
 
       if (.not. ieee_is_finite(damping_ratio)) then
@@ -118,6 +194,117 @@ contains
          if (allocated(error)) return
       end if
    end subroutine read_building
+
+   !> Whether the deck assigns `var` in this group occurrence.
+   pure logical function assigned(at, var)
+      !> Where messages point (the group occurrence).
+      type(site), intent(in) :: at
+      !> Variable name, lower case.
+      character(len=*), intent(in) :: var
+      integer :: i
+
+      assigned = .false.
+      do i = 1, at%group%n_vars
+         if (at%group%vars(i)%name == trim(var)) assigned = .true.
+      end do
+   end function assigned
+
+   !> Bay widths of a frame: `bay_width` (required) with n_bays values, or one value repeated
+   !> `n_bays` times.
+   pure subroutine resolve_bays(at, n_bays, raw, cfg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> `n_bays` as read (`unset_int`: the number of widths given).
+      integer, intent(in) :: n_bays
+      !> `bay_width` as read.
+      real(dp), intent(in) :: raw(:)
+      !> Building being resolved.
+      type(building_config), intent(inout) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k, nb
+
+      k = given_count(raw)
+      if (k == 0) then
+         call fail(at, 'bay_width', "bay_width is missing (bay widths in m, left to right) for "// &
+                   "model = 'frame'", error)
+         return
+      end if
+      nb = k
+      if (n_bays /= unset_int) then
+         if (n_bays < 1 .or. n_bays > max_bays) then
+            call fail(at, 'n_bays', 'n_bays = '//str(n_bays)//', must be in 1..'//str(max_bays), error)
+            return
+         end if
+         if (k /= 1 .and. k /= n_bays) then
+            call fail(at, 'bay_width', 'bay_width has '//str(k)//' values, must have 1 or n_bays = '// &
+                      str(n_bays), error)
+            return
+         end if
+         nb = n_bays
+      end if
+      call take_group(at, 'bay_width', raw, nb, cfg%bay_width, error)
+   end subroutine resolve_bays
+
+   !> A frame section group: one value for all (repeated `n` times) or `n` values, each > 0.
+   pure subroutine take_group(at, var, raw, n, values, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name.
+      character(len=*), intent(in) :: var
+      !> Namelist array as read.
+      real(dp), intent(in) :: raw(:)
+      !> Number of values wanted.
+      integer, intent(in) :: n
+      !> The `n` values.
+      real(dp), allocatable, intent(out) :: values(:)
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: one(:)
+      integer :: k
+
+      if (given_count(raw) == 0) then
+         call fail(at, var, var//" is missing (one value for all, or "//str(n)//" values) for "// &
+                   "model = 'frame'", error)
+      else if (given_count(raw) == 1 .and. n > 1) then
+         call take_reals(at, var, raw, 1, '>', one, error)
+         if (.not. allocated(error)) values = [(one(1), k=1, n)]
+      else
+         call take_reals(at, var, raw, n, '>', values, error)
+      end if
+   end subroutine take_group
+
+   !> A word variable with a default (the first choice): lower case, one of `choices`.
+   pure subroutine choose(at, var, raw, choices, value, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name.
+      character(len=*), intent(in) :: var
+      !> As read.
+      character(len=*), intent(in) :: raw
+      !> The choices (first: the default).
+      character(len=*), intent(in) :: choices(:)
+      !> The choice.
+      character(len=:), allocatable, intent(out) :: value
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: w
+      integer :: i
+
+      w = lower(trim(adjustl(raw)))
+      if (len(w) == 0) then
+         value = trim(choices(1))
+         return
+      end if
+      do i = 1, size(choices)
+         if (w == trim(choices(i))) then
+            value = w
+            return
+         end if
+      end do
+      call fail(at, var, var//" = '"//trim(adjustl(raw))//"', must be '"//trim(choices(1))// &
+                "' or '"//trim(choices(2))//"'", error)
+   end subroutine choose
 
    !> Building name: given, at most `max_name_length` of letters, digits, '_', '-'; unique.
    pure subroutine check_name(at, raw, previous, error)

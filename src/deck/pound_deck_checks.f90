@@ -46,7 +46,7 @@ module pound_deck_checks
 
    !> The ranges: generous enough for any real structure and record, tight enough that every
    !> value inside gives finite derived quantities (12EI/h^3, masses, periods, forces).
-   type(bound_t), parameter :: bounds(35) = [ &
+   type(bound_t), parameter :: bounds(42) = [ &
       bound_t('analysis:dt', 1.0e-7_dp, 1.0_dp, 's', .false.), &
       bound_t('analysis:t_end', 0.0_dp, 1.0e4_dp, 's', .false.), &
       bound_t('ground:x0', 1.0e-9_dp, 10.0_dp, 'm', .true.), &
@@ -68,6 +68,13 @@ module pound_deck_checks
       bound_t('building:stiffness', 1.0e-3_dp, 1.0e12_dp, 'kN/m', .false.), &
       bound_t('building:e_modulus', 1.0e2_dp, 1.0e10_dp, 'kN/m^2', .false.), &
       bound_t('building:inertia', 1.0e-12_dp, 1.0e4_dp, 'm^4', .false.), &
+      bound_t('building:bay_width', 0.1_dp, 1.0e3_dp, 'm', .false.), &
+      bound_t('building:column_e', 1.0e2_dp, 1.0e10_dp, 'kN/m^2', .false.), &
+      bound_t('building:beam_e', 1.0e2_dp, 1.0e10_dp, 'kN/m^2', .false.), &
+      bound_t('building:column_area', 1.0e-8_dp, 1.0e3_dp, 'm^2', .false.), &
+      bound_t('building:beam_area', 1.0e-8_dp, 1.0e3_dp, 'm^2', .false.), &
+      bound_t('building:column_inertia', 1.0e-12_dp, 1.0e4_dp, 'm^4', .false.), &
+      bound_t('building:beam_inertia', 1.0e-12_dp, 1.0e4_dp, 'm^4', .false.), &
       bound_t('building:gravity_load', 0.0_dp, 1.0e10_dp, 'kN', .false.), &
       bound_t('contact:stiffness', 1.0e-3_dp, 1.0e13_dp, 'kN/m', .false.), &
       bound_t('contact:dashpot', 0.0_dp, 1.0e10_dp, 'kN s/m', .false.), &

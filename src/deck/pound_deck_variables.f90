@@ -12,12 +12,21 @@ module pound_deck_variables
    public :: var_spec, variables, known_groups, known_variable, variable_index, variable_type, &
              variable_list, group_variable_count, group_max_size, findloc_name, join
    public :: max_storeys, max_name_length, max_pairs, max_columns, max_steps, title_len, path_len, &
-             word_len, law_names, max_envelope_points, max_segments
+             word_len, law_names, max_envelope_points, max_segments, max_bays, max_column_elements, &
+             frame_variables
 
    !> Largest number of storeys a `&building` may have.
    integer, parameter :: max_storeys = 20000
    !> Longest building name (it is used as an HDF5 group name).
    integer, parameter :: max_name_length = 64
+   !> Largest number of bays of a frame (`&building model = 'frame'`).
+   integer, parameter :: max_bays = 1000
+   !> Largest number of elements per storey column of a frame.
+   integer, parameter :: max_column_elements = 100
+   !> The `&building` variables that describe a frame (only with model = 'frame').
+   character(len=*), parameter :: frame_variables(14) = [character(len=15) :: 'n_bays', 'bay_width', &
+      'column_e', 'column_area', 'column_inertia', 'beam_e', 'beam_area', 'beam_inertia', 'base', &
+      'column_elements', 'rigid_beams', 'rigid_diaphragm', 'rigid_columns', 'geometric']
    !> Largest number of floor pairs in one `&contact`.
    integer, parameter :: max_pairs = 1000
    !> Largest number of columns in one storey.
@@ -51,7 +60,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(68) = [ &
+   type(var_spec), parameter :: variables(83) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -76,6 +85,15 @@ module pound_deck_variables
       var_spec('building', 'column_ends', 'c', 0), var_spec('building', 'damping_ratio', 'r', 0), &
       var_spec('building', 'damping_modes', 'i', 2), var_spec('building', 'p_delta', 'l', 0), &
       var_spec('building', 'gravity_load', 'r', max_storeys), &
+      var_spec('building', 'model', 'c', 0), var_spec('building', 'n_bays', 'i', 0), &
+      var_spec('building', 'bay_width', 'r', max_bays), var_spec('building', 'column_e', 'r', max_storeys), &
+      var_spec('building', 'column_area', 'r', max_storeys), &
+      var_spec('building', 'column_inertia', 'r', max_storeys), &
+      var_spec('building', 'beam_e', 'r', max_storeys), var_spec('building', 'beam_area', 'r', max_storeys), &
+      var_spec('building', 'beam_inertia', 'r', max_storeys), var_spec('building', 'base', 'c', 0), &
+      var_spec('building', 'column_elements', 'i', 0), var_spec('building', 'rigid_beams', 'l', 0), &
+      var_spec('building', 'rigid_diaphragm', 'l', 0), var_spec('building', 'rigid_columns', 'l', 0), &
+      var_spec('building', 'geometric', 'c', 0), &
       var_spec('contact', 'left', 'c', 0), var_spec('contact', 'right', 'c', 0), &
       var_spec('contact', 'floors_left', 'i', max_pairs), var_spec('contact', 'floors_right', 'i', max_pairs), &
       var_spec('contact', 'gap', 'r', max_pairs), var_spec('contact', 'law', 'c', 0), &

@@ -18,7 +18,7 @@ module pound_run_case
    use pound_config, only: deck_type, ground_config
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
-   use pound_shear_building, only: shear_building, build_shear_building
+   use pound_building, only: building_model, build_building
    use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
@@ -47,8 +47,10 @@ module pound_run_case
 
    !> Everything a case computes, as the writers need it.
    type :: case_result
-      !> The buildings, in configuration order.
-      type(shear_building), allocatable :: models(:)
+      !> The buildings' structural models, in configuration order.
+      type(structure_model), allocatable :: models(:)
+      !> The buildings' per-kind data for the writers (shear storey table, frame), same order.
+      type(building_model), allocatable :: buildings(:)
       !> One-line description of the ground motion.
       character(len=:), allocatable :: ground_text
       !> Ground acceleration at the output times (m/s^2).
@@ -115,7 +117,6 @@ contains
       type(case_options), intent(in), optional :: options
       type(ground_motion_t) :: deck_gm
       type(contact_pair), allocatable :: pairs(:)
-      type(structure_model), allocatable :: structures(:)
       character(len=64), allocatable :: names(:)
       character(len=:), allocatable :: prefix
       real(dp), allocatable :: ag(:)
@@ -153,21 +154,19 @@ contains
       res%ag_out = ag(0:n_steps:deck%analysis%output_every)
 
       ! Models.
-      allocate (res%models(size(deck%buildings)), names(size(deck%buildings)))
+      allocate (res%models(size(deck%buildings)), res%buildings(size(deck%buildings)), names(size(deck%buildings)))
       do ib = 1, size(res%models)
-         call build_shear_building(deck%buildings(ib), res%models(ib), error)
+         call build_building(deck%buildings(ib), res%models(ib), res%buildings(ib), error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
          end if
          names(ib) = res%models(ib)%name
       end do
-      ! What the analyses see of every building (a contiguous array: no temporary per call).
-      structures = res%models%structure_model
 
       ! Analyses.
       if (.not. coupled_only) then
-         call run_uncoupled(deck%analysis, structures, ag, res%unc, error)
+         call run_uncoupled(deck%analysis, res%models, ag, res%unc, error)
          if (allocated(error)) return
          res%has_uncoupled = .true.
       end if
@@ -180,7 +179,7 @@ contains
          if (present(options)) then
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
-         call run_coupled(deck%analysis, structures, ag, pairs, res%cpl, res%cs, error)
+         call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
@@ -189,7 +188,7 @@ contains
          if (res%has_uncoupled) then
             res%influence = influence_of(res%unc, res%cpl)
             if (deck%sweep%active) then
-               call run_sweep(deck%analysis, deck%sweep, structures, ag, pairs, res%unc, res%sweep, error)
+               call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error)
                if (allocated(error)) then
                   error%message = prefix//error%message
                   return

@@ -85,13 +85,13 @@ program pound
    call check(error)
    call test_pause()
    if (res%has_sweep) then
-      call write_results_h5(outputs%h5_tmp, deck, res%models, trim(ground_text(1)), res%ag_out, res%unc, error, &
+      call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, res%unc, error, &
                             res%cpl, res%cs, res%influence, res%sweep)
    else if (res%has_coupled) then
-      call write_results_h5(outputs%h5_tmp, deck, res%models, trim(ground_text(1)), res%ag_out, res%unc, error, &
+      call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, res%unc, error, &
                             res%cpl, res%cs, res%influence)
    else
-      call write_results_h5(outputs%h5_tmp, deck, res%models, trim(ground_text(1)), res%ag_out, res%unc, error)
+      call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, res%unc, error)
    end if
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
       call write_suite_h5(outputs%h5_tmp, res%models, suite, error)
@@ -145,7 +145,7 @@ contains
       call open_listing(path, u, err)
       if (allocated(err)) return
       call write_listing_header(u, deck, ground_text)
-      call write_model_summary(u, res%models)
+      call write_model_summary(u, res%models, res%buildings)
       call write_peak_tables(u, 'Uncoupled', res%models, res%unc)
       if (res%has_coupled) then
          call write_peak_tables(u, 'Coupled', res%models, res%cpl)
@@ -173,7 +173,7 @@ contains
       text = program_name//' '//program_version//': '//deck%analysis%title//new_line('a')
       associate (models => res%models, unc => res%unc, cpl => res%cpl, cs => res%cs, sweep => res%sweep)
          do ib = 1, size(models)
-            write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', models(ib)%n, &
+            write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', size(models(ib)%floor_dof), &
                ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
             text = text//trim(line)//new_line('a')
          end do

@@ -72,8 +72,13 @@ module pound_structure
       integer :: damping_modes(2) = [1, 2]
       !> Circular natural frequencies (rad/s), ascending, and natural periods (s), descending.
       real(dp), allocatable :: omega(:), period(:)
-      !> Response points: the DOF of each floor's lateral displacement (n_floors).
+      !> Response points: the DOF of each floor's lateral displacement (n_floors); a contact
+      !> end on this building when it stands on the left (its right face).
       integer, allocatable :: floor_dof(:)
+      !> The DOF of each floor's lateral displacement on the building's left face, the contact
+      !> end when it stands on the right (a frame: its leftmost column line); unallocated:
+      !> `floor_dof`.
+      integer, allocatable :: floor_dof_left(:)
       !> Storey drift and storey shear recovery rows (n_storeys each, storey 1 at the bottom).
       type(recovery_rows) :: drift, shear
       !> Weights w_j of K+G = sum_j w_j d_j d_j^T over the drift rows d_j, when the builder

@@ -10,7 +10,8 @@ module pound_listing
    use pound_posix, only: posix_set_errno, posix_storage_error
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
-   use pound_shear_building, only: shear_building
+   use pound_building, only: building_model
+   use pound_structure, only: structure_model
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
@@ -189,40 +190,48 @@ contains
    end subroutine write_section
 
    !> Per building: storey data, periods and Rayleigh coefficients.
-   subroutine write_model_summary(u, models)
+   subroutine write_model_summary(u, models, buildings)
       !> Open unit.
       integer, intent(in) :: u
-      !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      !> The buildings' structural models.
+      type(structure_model), intent(in) :: models(:)
+      !> Their per-kind data (storey table, frame).
+      type(building_model), intent(in) :: buildings(:)
       integer :: ib, j
       character(len=3) :: pd
 
-      call write_section(u, 'Models (shear buildings, rigid beams, one lateral DOF per floor)')
+      call write_section(u, 'Models (shear buildings: rigid beams, one lateral DOF per floor; '// &
+                         'frames: planar beam-column elements)')
       do ib = 1, size(models)
-         associate (b => models(ib))
+         associate (b => models(ib), s => buildings(ib))
             pd = 'off'
-            if (b%p_delta) pd = 'on'
-            write (u, '(/,a,i0,a,a)', iostat=ios, iomsg=msg) &
-               '  Building '//b%name//': ', b%n, ' storeys, P-Delta ', trim(pd)
-            call note_io()
-            write (u, '(a)', iostat=ios, iomsg=msg) &
-               '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
-            call note_io()
-            do j = 1, b%n
-               write (u, '(2x,i6,a9,a12,es13.5,es12.4,es13.5,a14)', iostat=ios, iomsg=msg) &
-                  j, fixed_cell(b%height(j), 9, 3, .true.), fixed_cell(b%mass(j), 12, 4, .true.), &
-                  b%storey_stiffness(j), b%axial_load(j), b%geometric_stiffness(j), &
-                  fixed_cell(b%geometric_stiffness(j)/b%storey_stiffness(j), 14, 5)
+            if (s%p_delta) pd = 'on'
+            if (allocated(s%frame)) then
+               call write_frame_summary(u, b, s)
+            else
+               write (u, '(/,a,i0,a,a)', iostat=ios, iomsg=msg) &
+                  '  Building '//b%name//': ', b%n, ' storeys, P-Delta ', trim(pd)
                call note_io()
-            end do
+               write (u, '(a)', iostat=ios, iomsg=msg) &
+                  '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
+               call note_io()
+               do j = 1, b%n
+                  write (u, '(2x,i6,a9,a12,es13.5,es12.4,es13.5,a14)', iostat=ios, iomsg=msg) &
+                     j, fixed_cell(s%height(j), 9, 3, .true.), fixed_cell(s%floor_mass(j), 12, 4, .true.), &
+                     s%storey_stiffness(j), s%axial_load(j), s%geometric_stiffness(j), &
+                     fixed_cell(s%geometric_stiffness(j)/s%storey_stiffness(j), 14, 5)
+                  call note_io()
+               end do
+            end if
             write (u, '(a)', iostat=ios, iomsg=msg) '    mode      T [s]      f [Hz]  omega [rad/s]'
             call note_io()
-            do j = 1, min(b%n, max_listed_modes)
+            do j = 1, min(size(b%period), max_listed_modes)
                write (u, '(2x,i6,a11,a12,a15)', iostat=ios, iomsg=msg) j, fixed_cell(b%period(j), 11, 5, .true.), &
                   fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), fixed_cell(b%omega(j), 15, 4, .true.)
                call note_io()
             end do
-            if (b%n > max_listed_modes) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '    (', b%n - max_listed_modes, &
+            if (size(b%period) > max_listed_modes) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '    (', &
+               size(b%period) - max_listed_modes, &
                ' more modes in the HDF5 file)'
             call note_io()
             write (u, '(a,f6.2,a,i0,a,i0,a,es12.5,a,es12.5,a)', iostat=ios, iomsg=msg) '  Rayleigh damping ', &
@@ -233,6 +242,98 @@ contains
       end do
    end subroutine write_model_summary
 
+   !> A frame's geometry, sections, DOFs and (with P-Delta) its gravity analysis.
+   subroutine write_frame_summary(u, b, s)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> Its structural model.
+      type(structure_model), intent(in) :: b
+      !> The building (a frame).
+      type(building_model), intent(in) :: s
+      character(len=:), allocatable :: cons
+      integer :: j, e, ln, eb
+
+      associate (f => s%frame%frame)
+         cons = ''
+         if (s%frame%rigid_beams) cons = cons//' rigid_beams'
+         if (s%frame%rigid_diaphragm) cons = cons//' rigid_diaphragm'
+         if (s%frame%rigid_columns) cons = cons//' rigid_columns'
+         if (len(cons) == 0) cons = ' none'
+         write (u, '(/,a,i0,a,i0,a,i0,a,i0,a,i0,a)', iostat=ios, iomsg=msg) '  Building '//b%name// &
+            ' (frame): ', f%n_storeys, ' storeys, ', f%n_lines, ' column lines, ', f%n_nodes, ' nodes, ', &
+            f%n_elements, ' elements, ', b%n, ' DOFs'
+         call note_io()
+         write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '  half-bandwidth ', b%kd, ', constraints:'//cons// &
+            ', base '//s%frame%base
+         call note_io()
+         if (s%p_delta) then
+            write (u, '(a)', iostat=ios, iomsg=msg) "  P-Delta on, geometric stiffness '"//s%frame%geometric// &
+               "' of the gravity analysis (unconstrained frame)"
+         else
+            write (u, '(a)', iostat=ios, iomsg=msg) '  P-Delta off'
+         end if
+         call note_io()
+         write (u, '(a)', iostat=ios, iomsg=msg) '  x of the column lines [m]:'
+         call note_io()
+         write (u, '(4x,8f10.3)', iostat=ios, iomsg=msg) f%line_x
+         call note_io()
+         write (u, '(a)', iostat=ios, iomsg=msg) '  storey    h [m]    mass [t]  column E [kN/m2]'// &
+            '   A [m2]     I [m4]  beam E [kN/m2]   A [m2]     I [m4]'
+         call note_io()
+         do j = 1, f%n_storeys
+            e = first_element(j, 1)
+            eb = first_element(j, 2)
+            if (eb == 0) eb = e
+            write (u, '(2x,i6,a9,a12,es18.5,2es11.3,es16.5,2es11.3)', iostat=ios, iomsg=msg) j, &
+               fixed_cell(s%height(j), 9, 3, .true.), fixed_cell(s%floor_mass(j), 12, 4, .true.), &
+               f%element_e(e), f%element_a(e), f%element_i(e), f%element_e(eb), f%element_a(eb), &
+               f%element_i(eb)
+            call note_io()
+         end do
+         if (s%p_delta) then
+            write (u, '(a,es12.4,a)', iostat=ios, iomsg=msg) '  gravity analysis: total load ', &
+               s%frame%gravity%total_load, ' kN; base reactions per column line (H [kN], V [kN], M [kN m]):'
+            call note_io()
+            do ln = 1, f%n_lines
+               write (u, '(4x,i6,3es13.4)', iostat=ios, iomsg=msg) ln, s%frame%gravity%reactions(:, ln)
+               call note_io()
+            end do
+            write (u, '(a)', iostat=ios, iomsg=msg) '  column axial force N [kN] (tension +) at the '// &
+               'bottom of each storey, column lines 1.. (at most 8):'
+            call note_io()
+            do j = 1, f%n_storeys
+               write (u, '(4x,i6,8es13.4)', iostat=ios, iomsg=msg) j, &
+                  (s%frame%gravity%axial(bottom_column(j, ln)), ln=1, min(f%n_lines, 8))
+               call note_io()
+            end do
+         end if
+      end associate
+
+   contains
+
+      !> First element of storey/floor j of kind k (1 column, 2 beam); 0 if none.
+      integer function first_element(j, k) result(e)
+         integer, intent(in) :: j, k
+
+         do e = 1, s%frame%frame%n_elements
+            if (s%frame%frame%element_group(e) == j .and. s%frame%frame%element_kind(e) == k) return
+         end do
+         e = 0
+      end function first_element
+
+      !> The lowest column element of storey j on column line `line`.
+      integer function bottom_column(j, line) result(e)
+         integer, intent(in) :: j, line
+
+         do e = 1, s%frame%frame%n_elements
+            if (s%frame%frame%element_kind(e) == 1 .and. s%frame%frame%element_group(e) == j .and. &
+                s%frame%frame%node_line(s%frame%frame%element_nodes(1, e)) == line) return
+         end do
+         e = 1
+      end function bottom_column
+
+   end subroutine write_frame_summary
+
    !> Peak tables of an analysis: floors (u, v, a_abs) and storeys (drift, shear).
    subroutine write_peak_tables(u, label, models, res)
       !> Open unit.
@@ -240,7 +341,7 @@ contains
       !> Analysis label, e.g. 'Uncoupled'.
       character(len=*), intent(in) :: label
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> The analysis result.
       type(analysis_result), intent(in) :: res
       integer :: ib, j
@@ -253,7 +354,7 @@ contains
             write (u, '(a)', iostat=ios, iomsg=msg) &
                '   floor     |u| [m]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]'
             call note_io()
-            do j = b%n, 1, -1
+            do j = size(b%floor_dof), 1, -1
                write (u, '(2x,i6,es12.4,a9,es12.4,a9,es16.4,a9)', iostat=ios, iomsg=msg) &
                   j, p(j, q_u), fixed_cell(t(j, q_u), 9, 3), &
                   p(j, q_v), fixed_cell(t(j, q_v), 9, 3), p(j, q_a_abs), fixed_cell(t(j, q_a_abs), 9, 3)
@@ -261,7 +362,7 @@ contains
             end do
             write (u, '(a)', iostat=ios, iomsg=msg) '  storey   |drift| [m]    t [s]   |Q| [kN]     t [s]'
             call note_io()
-            do j = b%n, 1, -1
+            do j = size(b%floor_dof), 1, -1
                write (u, '(2x,i6,es14.4,a9,es11.4,a9)', iostat=ios, iomsg=msg) j, p(j, q_drift), &
                   fixed_cell(t(j, q_drift), 9, 3), p(j, q_shear), fixed_cell(t(j, q_shear), 9, 3)
                call note_io()
@@ -412,7 +513,7 @@ contains
       !> Open unit.
       integer, intent(in) :: u
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> Influence coefficients of every building (`pound_influence`).
       type(building_influence), intent(in) :: infl(:)
 
@@ -441,11 +542,11 @@ contains
          end do
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
-         do j = maxval(models(:)%n), 1, -1
+         do j = maxval([(size(models(ib)%floor_dof), ib=1, size(models))]), 1, -1
             write (cell, '(i6)') j
             line = '  '//cell(1:6)//'  '
             do ib = 1, size(models)
-               if (j > models(ib)%n) then
+               if (j > size(models(ib)%floor_dof)) then
                   cell = ''
                else
                   lambda = infl(ib)%lambda(j, q)
@@ -470,7 +571,7 @@ contains
       !> Open unit.
       integer, intent(in) :: u
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> `&sweep`.
       type(sweep_config), intent(in) :: cfg
       !> The sweep result.

@@ -29,7 +29,8 @@ module pound_results_h5
    use pound_error, only: error_type
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type, history_names, n_history_quantities
-   use pound_shear_building, only: shear_building
+   use pound_building, only: building_model
+   use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
    use pound_contact_law, only: law_name
@@ -50,13 +51,15 @@ module pound_results_h5
 contains
 
    !> Write the whole results file at `path`.
-   subroutine write_results_h5(path, deck, models, ground_text, ag_out, unc, error, cpl, cs, influence, sweep)
+   subroutine write_results_h5(path, deck, models, buildings, ground_text, ag_out, unc, error, cpl, cs, influence, sweep)
       !> File to create (truncated).
       character(len=*), intent(in) :: path
       !> The deck.
       type(deck_type), intent(in) :: deck
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
+      !> Their per-kind data (storey table, frame), same order.
+      type(building_model), intent(in) :: buildings(:)
       !> One-line description of the ground motion.
       character(len=*), intent(in) :: ground_text
       !> Ground acceleration at the output times (m/s^2).
@@ -105,7 +108,7 @@ contains
          call h5_write_attr(h5, '/ground', 'description', ground_text, error)
          if (allocated(error)) return
          do ib = 1, size(models)
-            call write_model(models(ib))
+            call write_model(models(ib), buildings(ib))
             if (allocated(error)) return
          end do
          call write_analysis('/uncoupled', unc)
@@ -148,20 +151,25 @@ contains
          call h5_write_attr(h5, '/sweep', 'safe_gap', sweep%safe_gap, error)
       end subroutine write_sweep
 
-      subroutine write_model(b)
-         type(shear_building), intent(in) :: b
+      subroutine write_model(b, s)
+         type(structure_model), intent(in) :: b
+         type(building_model), intent(in) :: s
          character(len=:), allocatable :: g
 
          g = '/model/'//b%name//'/'
-         call h5_write(h5, g//'height', b%height, error)
+         call h5_write(h5, g//'height', s%height, error)
          if (allocated(error)) return
-         call h5_write(h5, g//'mass', b%mass, error)
+         call h5_write(h5, g//'mass', s%floor_mass, error)
          if (allocated(error)) return
-         call h5_write(h5, g//'storey_stiffness', b%storey_stiffness, error)
-         if (allocated(error)) return
-         call h5_write(h5, g//'geometric_stiffness', b%geometric_stiffness, error)
-         if (allocated(error)) return
-         call h5_write(h5, g//'axial_load', b%axial_load, error)
+         if (allocated(s%frame)) then
+            call write_frame(g, s)
+         else
+            call h5_write(h5, g//'storey_stiffness', s%storey_stiffness, error)
+            if (allocated(error)) return
+            call h5_write(h5, g//'geometric_stiffness', s%geometric_stiffness, error)
+            if (allocated(error)) return
+            call h5_write(h5, g//'axial_load', s%axial_load, error)
+         end if
          if (allocated(error)) return
          call h5_write(h5, g//'periods', b%period, error)
          if (allocated(error)) return
@@ -169,10 +177,35 @@ contains
          if (allocated(error)) return
          call h5_write(h5, g//'rayleigh', [b%a0, b%a1], error)
          if (allocated(error)) return
-         call h5_write_attr(h5, '/model/'//b%name, 'p_delta', merge(1, 0, b%p_delta), error)
+         call h5_write_attr(h5, '/model/'//b%name, 'p_delta', merge(1, 0, s%p_delta), error)
          if (allocated(error)) return
          call h5_write_attr(h5, '/model/'//b%name, 'damping_ratio', b%damping_ratio, error)
       end subroutine write_model
+
+      !> A frame's nodes (x, z per node), elements (end nodes, kind 1 column / 2 beam, storey
+      !> or floor) and sections (E, A, I per element), and its gravity analysis.
+      subroutine write_frame(g, s)
+         character(len=*), intent(in) :: g
+         type(building_model), intent(in) :: s
+
+         associate (f => s%frame%frame)
+            call h5_write(h5, g//'nodes', reshape([f%node_x, f%node_z], [f%n_nodes, 2]), error)
+            if (allocated(error)) return
+            call h5_write_attr(h5, g//'nodes', 'columns', 'x z (m)', error)
+            if (allocated(error)) return
+            call h5_write(h5, g//'elements', reshape([f%element_nodes(1, :), f%element_nodes(2, :), &
+                          f%element_kind, f%element_group], [f%n_elements, 4]), error)
+            if (allocated(error)) return
+            call h5_write_attr(h5, g//'elements', 'columns', 'node1 node2 kind(1 column, 2 beam) storey', error)
+            if (allocated(error)) return
+            call h5_write(h5, g//'sections', reshape([f%element_e, f%element_a, f%element_i], &
+                          [f%n_elements, 3]), error)
+            if (allocated(error)) return
+            call h5_write_attr(h5, g//'sections', 'columns', 'E (kN/m2) A (m2) I (m4)', error)
+            if (allocated(error)) return
+            if (s%p_delta) call h5_write(h5, g//'gravity_axial_force', s%frame%gravity%axial, error)
+         end associate
+      end subroutine write_frame
 
       subroutine write_analysis(g, res)
          character(len=*), intent(in) :: g

@@ -3,7 +3,7 @@
 module pound_test_run
    use pound_error, only: error_type
    use pound_config, only: deck_type
-   use pound_shear_building, only: shear_building
+   use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
    use pound_run_case, only: case_options, case_result, run_case
@@ -28,7 +28,7 @@ contains
       !> The uncoupled result, if wanted.
       type(analysis_result), intent(out), optional :: unc
       !> The buildings, if wanted.
-      type(shear_building), allocatable, intent(out), optional :: models(:)
+      type(structure_model), allocatable, intent(out), optional :: models(:)
       type(case_options) :: options
       type(case_result) :: res
       type(deck_type) :: no_sweep

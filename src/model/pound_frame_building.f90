@@ -1,0 +1,259 @@
+!> Planar frame model of a `&building model = 'frame'` deck entry, as a `structure_model`.
+!>
+!> Choices (see README, How it works):
+!> - Geometry from `height` (storeys), `bay_width` (bays), sections per storey (columns) and
+!>   per floor (beams), `base`, `column_elements`; the constraints `rigid_beams`,
+!>   `rigid_diaphragm`, `rigid_columns` are exact (eliminated DOFs, pound_frame).
+!> - Mass: the building's floor masses (`mass` or `load_coeff`) lumped at the floor nodes by
+!>   tributary width, the same in both translations, no rotary inertia. The lumped mass must
+!>   stay diagonal on the reduced DOFs (rigid beams with axially deformable columns couple a
+!>   floor's vertical and rotational DOFs: refused).
+!> - P-Delta (`p_delta`): G of the column axial forces of the linear gravity analysis of the
+!>   unconstrained frame (gravity loads `gravity_load` or the floor weights, split like the
+!>   mass), `geometric` = 'chord' or 'consistent'; a frame that buckles is refused
+!>   (building, lowest factor, storey).
+!> - Ground vector r: 1 on the horizontal DOFs, 0 on the vertical and rotational ones.
+!> - Periods: the lowest max(n_storeys, damping_modes(2)) modes (at most the DOFs with mass)
+!>   by subspace iteration in band storage (pound_band_eigen).
+!> - Response points `floor_dof`: each floor's lateral DOF on the RIGHTMOST column line (the
+!>   line facing a building to the right); `floor_dof_left` holds the leftmost line's (the
+!>   contact end when the frame stands on the right; equal with a rigid diaphragm).
+!> - Storey drift: lateral displacement difference of consecutive floors on the rightmost
+!>   line. Storey shear: sum of the storey's column shears at their bottom section (the
+!>   first-order end force f(2) of each column's lowest element, pound_frame_element),
+!>   a linear row over the DOFs. Strain energy from the band (no `strain_weight`).
+module pound_frame_building
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   use pound_config, only: building_config
+   use pound_storey_properties, only: storey_properties
+   use pound_structure, only: structure_model, recovery_rows, chain_rows, structure_finish, structure_label
+   use pound_frame, only: frame_spec, frame_model, build_frame, frame_stiffness, frame_mass, &
+                          frame_geometric, element_column
+   use pound_frame_element, only: beam_local_stiffness, beam_transformation, geometric_chord, &
+                                  geometric_consistent
+   use pound_frame_gravity, only: frame_gravity_result, frame_gravity, check_frame_stability
+   use pound_band_eigen, only: band_lowest_modes
+   use pound_shear_building, only: rayleigh_coefficients
+   implicit none
+   private
+
+   public :: frame_data, build_frame_building, frame_spec_of
+
+   real(dp), parameter :: pi = acos(-1.0_dp)
+
+   !> What the writers need of a frame besides its structural model.
+   type :: frame_data
+      !> The frame: nodes, elements, DOF map.
+      type(frame_model) :: frame
+      !> Gravity analysis (computed only with p_delta).
+      type(frame_gravity_result) :: gravity
+      !> Whether the gravity analysis was made (p_delta).
+      logical :: p_delta = .false.
+      !> 'chord' or 'consistent'.
+      character(len=:), allocatable :: geometric
+      !> 'fixed' or 'pinned'.
+      character(len=:), allocatable :: base
+      !> The constraints.
+      logical :: rigid_beams = .false., rigid_diaphragm = .false., rigid_columns = .false.
+   end type frame_data
+
+contains
+
+   !> The frame description of a deck entry (masses and gravity loads derived as for a shear building).
+   pure function frame_spec_of(deck_entry) result(spec)
+      !> Validated deck entry with model = 'frame'.
+      type(building_config), intent(in) :: deck_entry
+      type(frame_spec) :: spec
+      type(building_config) :: cfg
+
+      cfg = storey_properties(deck_entry)
+      spec%name = cfg%name
+      spec%bay = cfg%bay_width
+      spec%height = cfg%height
+      spec%col_e = cfg%column_e
+      spec%col_a = cfg%column_area
+      spec%col_i = cfg%column_inertia
+      spec%beam_e = cfg%beam_e
+      spec%beam_a = cfg%beam_area
+      spec%beam_i = cfg%beam_inertia
+      spec%base_pinned = [.false.]
+      if (allocated(cfg%base)) spec%base_pinned = [cfg%base == 'pinned']
+      spec%n_sub = cfg%column_elements
+      spec%floor_mass = cfg%mass
+      spec%floor_load = cfg%gravity_load
+      spec%rigid_beams = cfg%rigid_beams
+      spec%rigid_diaphragm = cfg%rigid_diaphragm
+      spec%rigid_columns = cfg%rigid_columns
+   end function frame_spec_of
+
+   !> Build the structural model of a frame deck entry.
+   subroutine build_frame_building(deck_entry, m, fd, error, number)
+      !> Validated deck entry with model = 'frame'.
+      type(building_config), intent(in) :: deck_entry
+      !> The structural model.
+      type(structure_model), intent(out) :: m
+      !> The frame data for the writers.
+      type(frame_data), intent(out) :: fd
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      !> Occurrence of the `&building` group in the deck, for messages.
+      integer, intent(in), optional :: number
+      type(frame_spec) :: spec
+      real(dp), allocatable :: kb(:, :), gb(:, :), mb(:, :), mb_full(:, :), shapes(:, :)
+      integer :: kind, j, k, nl, ns, n_modes, kd
+
+      spec = frame_spec_of(deck_entry)
+      m%name = deck_entry%name
+      if (present(number)) m%number = number
+      call build_frame(spec, fd%frame, error)
+      if (allocated(error)) then
+         error%message = structure_label(m)//': '//error%message
+         return
+      end if
+      associate (f => fd%frame)
+         nl = f%n_lines
+         ns = f%n_storeys
+         call frame_stiffness(f, kb)
+         fd%geometric = 'chord'
+         if (allocated(deck_entry%geometric)) fd%geometric = deck_entry%geometric
+         kind = merge(geometric_consistent, geometric_chord, fd%geometric == 'consistent')
+         fd%p_delta = deck_entry%p_delta
+         fd%base = 'fixed'
+         if (spec%base_pinned(1)) fd%base = 'pinned'
+         fd%rigid_beams = spec%rigid_beams
+         fd%rigid_diaphragm = spec%rigid_diaphragm
+         fd%rigid_columns = spec%rigid_columns
+         if (fd%p_delta) then
+            call frame_gravity(spec, fd%gravity, error)
+            if (.not. allocated(error)) call check_frame_stability(f, fd%gravity%axial, kind, error)
+            if (allocated(error)) then
+               error%message = structure_label(m)//': '//error%message
+               return
+            end if
+            call frame_geometric(f, fd%gravity%axial, kind, gb)
+            kb = kb + gb
+         end if
+         call frame_mass(f, mb)
+         if (f%kd > 0) then
+            if (any(mb(1:f%kd, :) /= 0.0_dp)) then
+               call fatal_error(error, structure_label(m)//': rigid_beams with axially deformable '// &
+                                'columns couple the floors'' vertical and rotational masses; not supported: '// &
+                                'give rigid_columns = .true. as well, or flexible beams')
+               return
+            end if
+         end if
+         m%n = f%n_dof
+         kd = max(1, f%kd)
+         m%kd = kd
+         allocate (m%kt(kd + 1, m%n))
+         m%kt = 0.0_dp
+         m%kt(kd + 1 - f%kd:kd + 1, :) = kb
+         m%mass = mb(f%kd + 1, :)
+         if (.not. all(ieee_is_finite(m%kt))) then
+            call fatal_error(error, structure_label(m)//': stiffness matrix K+G is not finite (sections, '// &
+                             'height, bay_width)')
+            return
+         end if
+         ! Ground influence: 1 on the reduced DOFs that carry horizontal node displacements.
+         allocate (m%ground(m%n))
+         m%ground = 0.0_dp
+         do k = 1, f%n_nodes
+            if (f%map_dof(1, 1, k) > 0) m%ground(f%map_dof(1, 1, k)) = 1.0_dp
+         end do
+         allocate (m%floor_dof(ns), m%floor_dof_left(ns))
+         do j = 1, ns
+            m%floor_dof(j) = f%map_dof(1, 1, f%floor_node(nl, j))
+            m%floor_dof_left(j) = f%map_dof(1, 1, f%floor_node(1, j))
+         end do
+         call chain_rows(m%floor_dof, [(1.0_dp, j=1, ns)], m%drift, m%shear)
+         call shear_rows(f, m%n, m%shear)
+
+         m%damping_ratio = deck_entry%damping_ratio
+         m%damping_modes = deck_entry%damping_modes
+         n_modes = min(max(ns, m%damping_modes(2)), count(m%mass > 0.0_dp))
+         allocate (mb_full(kd + 1, m%n))
+         mb_full = 0.0_dp
+         mb_full(kd + 1, :) = m%mass
+         call band_lowest_modes(m%kt, mb_full, n_modes, m%omega, shapes, error)
+         if (allocated(error)) then
+            error%message = structure_label(m)//': natural modes: '//error%message
+            return
+         end if
+      end associate
+      m%period = 2.0_dp*pi/m%omega
+      call rayleigh_coefficients(m%omega, m%damping_ratio, m%damping_modes, m%a0, m%a1)
+      call structure_finish(m)
+   end subroutine build_frame_building
+
+   !> Storey shear rows: storey j = sum over the column lines of the shear f(2) at the bottom
+   !> end of the storey's lowest column element (first order: k_local T of the element,
+   !> mapped to the reduced DOFs; duplicates merged).
+   pure subroutine shear_rows(f, n, shear)
+      !> The frame.
+      type(frame_model), intent(in) :: f
+      !> Number of reduced DOFs.
+      integer, intent(in) :: n
+      !> The rows (replaced).
+      type(recovery_rows), intent(inout) :: shear
+      real(dp), allocatable :: work(:), coef(:)
+      integer, allocatable :: touched(:), dof(:), start(:)
+      logical, allocatable :: seen(:)
+      real(dp) :: row(6), kl(6, 6), t(6, 6)
+      integer :: j, e, k, c, tt, nt, n1, n2, node, q, ne
+
+      allocate (work(n), seen(n), touched(n), start(f%n_storeys + 1))
+      allocate (dof(0), coef(0))
+      work = 0.0_dp
+      seen = .false.
+      start(1) = 1
+      do j = 1, f%n_storeys
+         nt = 0
+         do e = 1, f%n_elements
+            if (f%element_kind(e) /= element_column .or. f%element_group(e) /= j) cycle
+            n1 = f%element_nodes(1, e)
+            n2 = f%element_nodes(2, e)
+            if (abs(f%node_z(n1) - f%floor_z(j - 1)) > 1.0e-6_dp) cycle
+            t = beam_transformation(f%node_x(n1), f%node_z(n1), f%node_x(n2), f%node_z(n2))
+            kl = beam_local_stiffness(f%element_e(e), f%element_a(e), f%element_i(e), &
+                                      hypot(f%node_x(n2) - f%node_x(n1), f%node_z(n2) - f%node_z(n1)))
+            row = matmul(kl(2, :), t)
+            do k = 1, 2
+               node = f%element_nodes(k, e)
+               do c = 1, 3
+                  do tt = 1, 2
+                     q = f%map_dof(tt, c, node)
+                     if (q == 0) cycle
+                     if (.not. seen(q)) then
+                        seen(q) = .true.
+                        nt = nt + 1
+                        touched(nt) = q
+                     end if
+                     work(q) = work(q) + f%map_coef(tt, c, node)*row(3*(k - 1) + c)
+                  end do
+               end do
+            end do
+         end do
+         ne = 0
+         do k = 1, nt
+            q = touched(k)
+            if (work(q) /= 0.0_dp) then
+               dof = [dof, q]
+               coef = [coef, work(q)]
+               ne = ne + 1
+            end if
+            work(q) = 0.0_dp
+            seen(q) = .false.
+         end do
+         start(j + 1) = start(j) + ne
+      end do
+      shear%n = f%n_storeys
+      shear%start = start
+      shear%dof = dof
+      shear%coef = coef
+      shear%scale = [(1.0_dp, j=1, f%n_storeys)]
+   end subroutine shear_rows
+
+end module pound_frame_building
