@@ -37,7 +37,7 @@ module pound_suite
    use pound_shear_building, only: shear_building, build_shear_building
    use pound_spectrum, only: response_spectrum, period_grid, peak_ground_acceleration, &
                              scale_to_pga, scale_to_sa
-   use pound_influence, only: influence_coefficient
+   use pound_influence, only: influence_coefficient, max_abs_influence
    use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
                                separation_ddc, cqc_correlation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion
@@ -45,6 +45,10 @@ module pound_suite
    private
 
    public :: suite_result, run_suite, suite_motion, suite_pairs, n_spectrum, spectrum_damping
+   public :: refine_tolerance
+
+   !> Tolerance of the bisection refinement of the threshold gap (m): 0.01 mm.
+   real(dp), parameter :: refine_tolerance = 1.0e-5_dp
 
    !> Log-spaced periods of the suite spectra (before the buildings' periods are added).
    integer, parameter :: n_spectrum = 60
@@ -91,6 +95,12 @@ module pound_suite
       !> Smallest gap from which on every larger gap meets the target on the mean and on every
       !> motion (m; -1 when none or no target).
       real(dp) :: safe_gap_mean = -1.0_dp, safe_gap_every = -1.0_dp
+      !> The same thresholds refined by bisection between the last failing and the first
+      !> passing gap of the grid, to `refine_tolerance` (m; -1 when not refined).
+      real(dp) :: refined_gap_mean = -1.0_dp, refined_gap_every = -1.0_dp
+      !> Grid gaps below the safe gap that pass nevertheless (non-monotone behaviour), on the
+      !> mean and on every motion.
+      integer :: non_monotone_mean = 0, non_monotone_every = 0
    end type suite_result
 
 contains
@@ -325,6 +335,11 @@ contains
          suite%sweep_max = maxval(suite%sweep_lambda, dim=1)
          suite%safe_gap_mean = safe_gap(suite%sweep_mean)
          suite%safe_gap_every = safe_gap(suite%sweep_max)
+         suite%non_monotone_mean = non_monotone(suite%sweep_mean, suite%safe_gap_mean)
+         suite%non_monotone_every = non_monotone(suite%sweep_max, suite%safe_gap_every)
+         call refine(suite%safe_gap_mean, .true., suite%refined_gap_mean, error)
+         if (allocated(error)) return
+         call refine(suite%safe_gap_every, .false., suite%refined_gap_every, error)
       end if
 
    contains
@@ -369,6 +384,92 @@ contains
                                                       suite%separation(k, ip)%no_contact/nm
          end do
       end subroutine gather
+
+      !> Number of grid gaps below `safe` whose `worst` meets the target.
+      integer function non_monotone(worst, safe)
+         real(dp), intent(in) :: worst(:), safe
+         integer :: ig
+
+         non_monotone = 0
+         if (.not. (safe > 0.0_dp)) return
+         do ig = 1, size(worst)
+            if (suite%sweep_gap(ig) < safe .and. worst(ig) <= deck%sweep%target) non_monotone = non_monotone + 1
+         end do
+      end function non_monotone
+
+      !> Bisection between the grid gap below `safe` (failing) and `safe` (passing), down to
+      !> `refine_tolerance`: every motion run at the trial gap (no sweep), the criterion on the
+      !> suite mean (`on_mean`) or on every motion.
+      subroutine refine(safe, on_mean, refined, error)
+         real(dp), intent(in) :: safe
+         logical, intent(in) :: on_mean
+         real(dp), intent(out) :: refined
+         type(error_type), allocatable, intent(out) :: error
+         type(deck_type) :: plain
+         real(dp) :: lo, hi, mid, worst_mean, worst_max
+         integer :: ig
+
+         refined = -1.0_dp
+         ig = findloc(suite%sweep_gap, safe, 1)
+         if (.not. (safe > 0.0_dp) .or. ig <= 1) return
+         plain = deck
+         plain%sweep%active = .false.
+         lo = suite%sweep_gap(ig - 1)
+         hi = safe
+         do while (hi - lo > refine_tolerance)
+            mid = 0.5_dp*(lo + hi)
+            call worst_at(plain, mid, worst_mean, worst_max, error)
+            if (allocated(error)) return
+            if (on_mean) then
+               if (worst_mean <= deck%sweep%target) then
+                  hi = mid
+               else
+                  lo = mid
+               end if
+            else
+               if (worst_max <= deck%sweep%target) then
+                  hi = mid
+               else
+                  lo = mid
+               end if
+            end if
+         end do
+         refined = hi
+      end subroutine refine
+
+      !> Every motion at one gap: the suite mean and the maximum over the motions of the
+      !> largest |lambda| over the targeted quantities and the buildings.
+      subroutine worst_at(plain, gap, worst_mean, worst_max, error)
+         type(deck_type), intent(in) :: plain
+         real(dp), intent(in) :: gap
+         real(dp), intent(out) :: worst_mean, worst_max
+         type(error_type), allocatable, intent(out) :: error
+         type(case_options) :: opt
+         type(case_result) :: r
+         real(dp) :: lam(n_history_quantities, nb), total(n_history_quantities, nb)
+         real(dp) :: factor
+         integer :: m, iq
+
+         total = 0.0_dp
+         worst_max = 0.0_dp
+         opt%gap = gap
+         if (present(label)) opt%label = label
+         do m = 1, nm
+            allocate (opt%ground)
+            call suite_motion(deck, m, models, opt%ground, factor, error)
+            if (allocated(error)) return
+            call run_case(plain, r, error, opt)
+            deallocate (opt%ground)
+            if (allocated(error)) return
+            lam = max_abs_influence(r%influence)
+            do iq = 1, n_history_quantities
+               if (.not. targeted(iq)) lam(iq, :) = 0.0_dp
+            end do
+            total = total + lam/nm
+            worst_max = max(worst_max, maxval(lam))
+         end do
+         worst_mean = maxval(total)
+      end subroutine worst_at
 
       !> Smallest gap from which on every larger gap of the sweep `worst` <= the target.
       real(dp) function safe_gap(worst)

@@ -14,6 +14,7 @@
 !>     /suite/sweep/gap, /suite/sweep/mean, /suite/sweep/max   (n_gaps), m and %
 !>     /suite/sweep/max_abs_lambda                              (n_motions, n_gaps), %
 !>     /suite/sweep/safe_gap_mean, /suite/sweep/safe_gap_every  scalars (m; -1: none)
+!>     /suite/sweep/refined_gap_mean, /suite/sweep/refined_gap_every  bisection to 1e-5 m (-1: none)
 !>
 !> (the arrays are written in Fortran order, so h5py shows them transposed).
 module pound_suite_output
@@ -127,6 +128,11 @@ contains
             suite%safe_gap_mean, ' m (-1: none in the range, or no target)'
          write (u, '(a,es14.6,a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on every motion: ', &
             suite%safe_gap_every, ' m'
+         write (u, '(a,2es14.6,a)', iostat=ios, iomsg=msg) '  refined by bisection (mean, every motion): ', &
+            suite%refined_gap_mean, suite%refined_gap_every, ' m (tolerance 1e-5 m; -1: not refined)'
+         write (u, '(a,2(1x,i0),a)', iostat=ios, iomsg=msg) '  non-monotone: grid gaps below the safe gap '// &
+            'that pass nevertheless (mean, every motion):', suite%non_monotone_mean, suite%non_monotone_every, &
+            '  (0: monotone on the grid)'
       end if
       if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
 
@@ -217,6 +223,8 @@ contains
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max', suite%sweep_max, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_mean', suite%safe_gap_mean, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_every', suite%safe_gap_every, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_mean', suite%refined_gap_mean, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_every', suite%refined_gap_every, error)
       end subroutine write_all
 
    end subroutine write_suite_h5
