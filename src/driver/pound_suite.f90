@@ -34,7 +34,8 @@ module pound_suite
    use pound_deck_variables, only: word_len
    use pound_ground_motion, only: ground_motion_t, sample_ground
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
-   use pound_shear_building, only: shear_building, build_shear_building
+   use pound_structure, only: structure_model
+   use pound_building, only: building_model, build_building
    use pound_spectrum, only: response_spectrum, period_grid, peak_ground_acceleration, &
                              scale_to_pga, scale_to_sa
    use pound_influence, only: influence_coefficient, max_abs_influence
@@ -112,7 +113,7 @@ contains
       !> Motion index in `deck%motions`.
       integer, intent(in) :: k
       !> The buildings (their fundamental periods give the default period of `scale_to = 'sa'`).
-      type(shear_building), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> The motion as run.
       type(ground_motion_t), intent(out) :: gm
       !> Scale factor applied by the suite (1: none, or `scale` of a synthetic motion).
@@ -235,7 +236,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Put before the messages of the configuration's errors (e.g. the deck path).
       character(len=*), intent(in), optional :: label
-      type(shear_building), allocatable :: models(:)
+      type(structure_model), allocatable :: models(:)
+      type(building_model), allocatable :: kinds(:)
       type(case_options) :: options
       type(case_result) :: res
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
@@ -248,9 +250,9 @@ contains
       nm = size(deck%motions)
       nb = size(deck%buildings)
       n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
-      allocate (models(nb), suite%building_period(nb), z(nb))
+      allocate (models(nb), kinds(nb), suite%building_period(nb), z(nb))
       do ib = 1, nb
-         call build_shear_building(deck%buildings(ib), models(ib), error)
+         call build_building(deck%buildings(ib), models(ib), kinds(ib), error)
          if (allocated(error)) return
          suite%building_period(ib) = models(ib)%period(1)
          z(ib) = deck%buildings(ib)%damping_ratio

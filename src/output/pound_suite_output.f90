@@ -22,7 +22,7 @@ module pound_suite_output
    use pound_error, only: error_type, fatal_error
    use pound_config, only: history_names, n_history_quantities
    use pound_strings, only: str
-   use pound_shear_building, only: shear_building
+   use pound_structure, only: structure_model
    use pound_influence, only: building_influence
    use pound_listing, only: write_section, write_influence_tables
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write
@@ -44,7 +44,7 @@ contains
       !> Open listing unit.
       integer, intent(in) :: u
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> The suite.
       type(suite_result), intent(in) :: suite
       !> Set when a write fails.
@@ -156,7 +156,7 @@ contains
       !> Results file (written and closed).
       character(len=*), intent(in) :: path
       !> The buildings.
-      type(shear_building), intent(in) :: models(:)
+      type(structure_model), intent(in) :: models(:)
       !> The suite.
       type(suite_result), intent(in) :: suite
       !> Error state.
