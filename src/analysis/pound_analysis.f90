@@ -244,7 +244,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: ib, step, k, every, nb
       integer(int64) :: c0, c1, rate
-      real(dp) :: t, sample(n_energy), resid, scale, e(4), win, eout, lcp_start
+      real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start
       type(state_view), allocatable :: view(:)
       logical :: out, coupled, finite
 

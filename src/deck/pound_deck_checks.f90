@@ -13,6 +13,11 @@ module pound_deck_checks
    implicit none
    private
 
+   !> Number of values given in a namelist array (real or integer).
+   interface given_count
+      module procedure given_count_real, given_count_int
+   end interface given_count
+
    public :: check_plausible, check_real, fail, given_count, is_set, parse_history, read_failed, &
              require_real, site, site_of, take_ints, take_reals, unset_int, unset_real, values_text
 
@@ -140,7 +145,7 @@ contains
    end subroutine read_failed
 
    !> Number of values given: position of the last one that is not `unset_real`.
-   pure integer function given_count(raw) result(k)
+   pure integer function given_count_real(raw) result(k)
       !> Namelist array as read (`unset_real` where not given).
       real(dp), intent(in) :: raw(:)
 
@@ -148,7 +153,18 @@ contains
          if (is_set(raw(k))) return
       end do
       k = 0
-   end function given_count
+   end function given_count_real
+
+   !> Number of values given: position of the last one that is not `unset_int`.
+   pure integer function given_count_int(raw) result(k)
+      !> Namelist array as read (`unset_int` where not given).
+      integer, intent(in) :: raw(:)
+
+      do k = size(raw), 1, -1
+         if (raw(k) /= unset_int) return
+      end do
+      k = 0
+   end function given_count_int
 
    !> Check a per-storey real array (exactly `n` values, each finite and `rule` 0); return them.
    pure subroutine take_reals(at, var, raw, n, rule, values, error)
@@ -199,9 +215,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: k, i
 
-      do k = size(raw), 1, -1
-         if (raw(k) /= unset_int) exit
-      end do
+      k = given_count(raw)
       call check_length(at, var, k, n, error)
       if (allocated(error)) return
       do i = 1, n

@@ -421,9 +421,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: k, i
 
-      do k = size(raw), 1, -1
-         if (raw(k) /= unset_int) exit
-      end do
+      k = given_count(raw)
       if (k == 0) then
          call fail(at, var, var//' is missing (floor of building '//b%name//' in each pair, '// &
                    '1..n_storeys = '//str(b%n_storeys)//')', error)
