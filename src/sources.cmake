@@ -24,7 +24,9 @@ set(POUND_SOURCES
   # solver: exact step of a linear oscillator under piecewise-linear forcing
   solver/pound_sdof.f90
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
-  contact/pound_contact_law.f90 contact/pound_contact.f90 contact/pound_lemke.f90
+  contact/pound_contact_law.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
+  contact/pound_joint_state.f90 contact/pound_lcp_statistics.f90 contact/pound_contact_lcp.f90
+  contact/pound_contact.f90
   contact/pound_lcp_enumerate.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_influence.f90

@@ -75,7 +75,7 @@ module pound_analysis
       type(joint_history) :: joints
       !> Wall-clock time of the time-step loops (s; set-up and output excluded), and the part
       !> of it spent solving the contact LCPs (assembly, Lemke, checks, re-solves, in the steps
-      !> where a joint is closed or predicted to close: `contact_system%lcp_seconds`; forming
+      !> where a joint is closed or predicted to close: `contact_system%stats%lcp_seconds`; forming
       !> q, applying and committing the forces are not in it).
       real(dp) :: seconds = 0.0_dp, contact_seconds = 0.0_dp
    end type analysis_result
@@ -264,7 +264,7 @@ contains
       k = 1
       resid = 0.0_dp
       scale = 0.0_dp
-      lcp_start = cs%lcp_seconds
+      lcp_start = cs%stats%lcp_seconds
       call system_clock(c0, rate)
       do step = 1, res%n_steps
          t = real(step, dp)*cfg%dt
@@ -305,7 +305,7 @@ contains
             if (coupled) then
                res%energy(e_contact, k) = cs%element_work - cs%plastic_work
                res%energy(e_plastic, k) = cs%plastic_work
-               call joint_history_record(res%joints, k, cs)
+               call joint_history_record(res%joints, k, cs%joint)
             end if
             sample = res%energy(:, k)
          end if
@@ -329,7 +329,7 @@ contains
       end do
       call system_clock(c1)
       res%seconds = real(c1 - c0, dp)/real(rate, dp)
-      res%contact_seconds = cs%lcp_seconds - lcp_start
+      res%contact_seconds = cs%stats%lcp_seconds - lcp_start
       do ib = 1, nb
          call response_finish(res%building(ib), models(ib))
       end do
@@ -490,7 +490,7 @@ contains
       kw = 0
       do k = 1, cs%m
          associate (p => cs%pair(k))
-            if (p%impacts == 0) cycle
+            if (cs%joint(k)%impacts == 0) cycle
             do e = 1, 2
                m(e) = 0.0_dp
                if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%dof(e))
@@ -614,12 +614,12 @@ contains
          end do
       end do
       do k = 1, cs%m
-         associate (p => cs%pair(k))
+         associate (p => cs%joint(k))
             x = [p%r, p%d, p%ddot, p%plastic, p%v]
             do q = 1, 5
                if (ieee_is_finite(x(q))) cycle
                if (allocated(error)) deallocate (error)
-               call fatal_error(error, 'contact '//p%label//': joint '//trim(joint(q))//' = '//str(x(q))//at// &
+               call fatal_error(error, 'contact '//cs%pair(k)%label//': joint '//trim(joint(q))//' = '//str(x(q))//at// &
                                 ': the first value of the run that is not finite (check the joint''s '// &
                                 'stiffness, dashpot and law)')
                return

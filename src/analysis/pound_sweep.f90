@@ -110,7 +110,7 @@ contains
                worst_text = 'gap = '//str(res%gap(i))//' m: '//trim(cpl%warnings(1))
             end if
          end if
-         res%impacts(i) = sum(cs%pair(:)%impacts)
+         res%impacts(i) = sum(cs%joint(:)%impacts)
          res%max_abs_lambda(:, :, i) = max_abs_influence(influence_of(unc, cpl))
          res%meets(i) = .true.
          do q = 1, n_history_quantities

@@ -58,22 +58,27 @@ module pound_contact
    use pound_newmark, only: newmark_state, newmark_solve, newmark_n, newmark_dt, newmark_predicted, &
                             newmark_u_at, newmark_add_response
    use pound_structure, only: structure_model
-   use pound_contact_law, only: contact_law, make_elastic, make_elastic_plastic, make_bilinear, &
-                                make_piecewise, make_parabola_cubic, is_plastic, yield_force, &
-                                yield_segment, rate_trapezoidal, rate_backward_euler, &
-                                dashpot_of_restitution
-   use pound_config, only: contact_config
-   use pound_lemke, only: lemke_workspace, lemke_init, lemke_solve, lemke_report, lcp_evaluate, &
+   use pound_contact_law, only: is_plastic, yield_segment, rate_trapezoidal, dashpot_of_restitution
+   use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
+   use pound_joint_state, only: joint_state, joint_advance, state_open, state_elastic, state_fractured, &
+                                joint_history, joint_history_init, joint_history_record
+   use pound_lcp_statistics, only: lcp_statistics, contact_event, statistics_count_solve, &
+                                   statistics_add_event
+   use pound_contact_lcp, only: lcp_layout, lcp_assemble, released_opening, lcp_residual
+   use pound_lemke, only: lemke_workspace, lemke_init, lemke_solve, lemke_report, &
                           lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
    use pound_lcp_enumerate, only: lcp_enumerate
    implicit none
    private
 
-   public :: contact_pair, contact_system, contact_event, contact_init, contact_init_flexibility
+   public :: contact_system, contact_init, contact_init_flexibility
    public :: contact_step, contact_solve, contact_commit, contact_update
-   public :: residual_limit, fallback_max_rows, initial_hinges, pairs_from_config
-   public :: state_open, state_elastic, state_fractured
+   public :: residual_limit, fallback_max_rows, initial_hinges
+   ! Re-exported: the constraint definitions, the joints' state and the LCP statistics.
+   public :: contact_pair, pairs_from_config
+   public :: joint_state, state_open, state_elastic, state_fractured
    public :: joint_history, joint_history_init, joint_history_record
+   public :: lcp_statistics, contact_event
 
    !> Largest accepted natural residual of a step's LCP, relative to ||q||.
    real(dp), parameter :: residual_limit = 1.0e-10_dp
@@ -82,78 +87,21 @@ module pound_contact
    !> Segment ends per joint modelled up front (rows held by the initial workspace); a step
    !> that passes more models them on demand and grows the workspace (no fixed limit).
    integer, parameter :: initial_hinges = 32
-   !> Joint state codes (per step; > 0: yielding on that yield segment, 1-based).
-   integer, parameter :: state_open = 0, state_elastic = -1, state_fractured = -2
 
    !> A vector of its own length (Khat^{-1} e of one constraint end).
    type :: column
       real(dp), allocatable :: x(:)
    end type column
 
-   !> One unilateral constraint and its state.
-   type :: contact_pair
-      !> Text for messages and the listing, e.g. 'A:2-B:2'.
-      character(len=:), allocatable :: label
-      !> Building index of each end (1 = left, 2 = right); 0 = rigid fixed neighbour.
-      integer :: building(2) = 0
-      !> Floor of each end (labels, messages, listing).
-      integer :: floor(2) = 0
-      !> DOF of each end in its building's model (set by `contact_init` from the model's
-      !> response points: the model says which DOF a floor is).
-      integer :: dof(2) = 0
-      !> Initial gap g (m).
-      real(dp) :: gap = 0.0_dp
-      !> Constraint law.
-      type(contact_law) :: law
-      !> Compressive force r (kN), joint compression d (m) and its rate (m/s).
-      real(dp) :: r = 0.0_dp, d = 0.0_dp, ddot = 0.0_dp
-      !> Plastic penetration d_p (m) and the plastic increment of the last step (m).
-      real(dp) :: plastic = 0.0_dp, x = 0.0_dp
-      !> Closing displacement v = B^T u (m).
-      real(dp) :: v = 0.0_dp
-      !> State after the last step: `state_open`, `state_elastic`, `state_fractured` or the
-      !> yield segment (1-based) the joint is yielding on.
-      integer :: state = state_open
-      !> The joint has fractured (carries nothing from then on), and when (s).
-      logical :: fractured = .false.
-      real(dp) :: fracture_time = 0.0_dp
-      !> Number of impacts (open -> closed transitions).
-      integer :: impacts = 0
-      !> Time in contact (s), peak force (kN) and its time (s).
-      real(dp) :: contact_time = 0.0_dp, peak_force = 0.0_dp, peak_time = 0.0_dp
-      !> Largest compression d reached (m).
-      real(dp) :: peak_penetration = 0.0_dp
-   end type contact_pair
-
-   !> Histories of every joint at the output samples, (n_pairs, n_out) each: what a
-   !> result holds of the joints (filled by `joint_history_record`, not field by field).
-   type :: joint_history
-      !> Contact force r (kN), closing displacement v (m), joint compression d (m) and
-      !> plastic penetration d_p (m).
-      real(dp), allocatable :: force(:, :), closing(:, :), penetration(:, :), plastic(:, :)
-      !> Joint state (`state_open`, `state_elastic`, `state_fractured` or the yield segment).
-      integer, allocatable :: state(:, :)
-   end type joint_history
-
-   !> A step whose LCP Lemke could not solve, and what was done.
-   type :: contact_event
-      !> Time (s) and step.
-      real(dp) :: time = 0.0_dp
-      integer :: step = 0
-      !> Lemke's status (`lemke_ray` or `lemke_max_iter`) and the LCP size.
-      integer :: status = 0, rows = 0
-      !> Solutions found by enumeration (the one nearest the previous state was taken).
-      integer :: solutions = 0
-      !> The constraints in the LCP.
-      character(len=:), allocatable :: pairs
-   end type contact_event
-
-   !> All constraints of an analysis, their condensed flexibility and LCP statistics.
+   !> All constraints of an analysis: their definitions, their joints' state, the condensed
+   !> flexibility, the step's LCP work arrays and the LCP statistics.
    type :: contact_system
       !> Number of constraints.
       integer :: m = 0
-      !> The constraints.
+      !> The constraints (what they join, gap, law; fixed during the analysis).
       type(contact_pair), allocatable :: pair(:)
+      !> The state of each constraint's joint.
+      type(joint_state), allocatable :: joint(:)
       !> Khat^{-1} e for each end, (2, m).
       type(column), allocatable :: y(:, :)
       !> Condensed flexibility F = B^T Khat^{-1} B (m, m).
@@ -171,29 +119,17 @@ module pound_contact
       !> Row bookkeeping: constraint of each contact row, row of each joint's yield variable,
       !> modelled segment ends per joint.
       integer, allocatable :: act(:), yrow(:), nh(:)
-      logical, allocatable :: in_lcp(:), guess(:)
+      logical, allocatable :: in_lcp(:), guess(:), left_out(:)
       type(lemke_workspace) :: ws
       !> Work of the contact forces on the structure, sum r_avg dv (kJ).
       real(dp) :: work = 0.0_dp
       !> Work stored in or dissipated by the joints, sum r_avg dd (kJ), and the part of it
       !> dissipated by plastic flow, sum r_s,avg dd_p (kJ).
       real(dp) :: element_work = 0.0_dp, plastic_work = 0.0_dp
-      !> LCP statistics: solves, total and largest pivot counts, steps needing no pivoting,
-      !> warm starts accepted, re-solves after an excluded constraint would have closed or a
-      !> segment end was passed, steps with softening rows (non-convex), enumeration fallbacks.
-      integer :: solves = 0, pivots_total = 0, pivots_max = 0, trivial = 0, warm = 0, resolves = 0
-      integer :: nonconvex = 0, fallbacks = 0, largest_lcp = 0
-      !> Largest accepted natural residual.
-      real(dp) :: residual_max = 0.0_dp
-      !> Wall-clock time (s) spent solving LCPs: assembly, Lemke, checks, re-solves and
-      !> fallbacks of the steps in which a joint is closed or predicted to close (the clock is
-      !> read only in those steps, so that timing does not slow the step loop).
-      real(dp) :: lcp_seconds = 0.0_dp
+      !> LCP statistics.
+      type(lcp_statistics) :: stats
       !> Pivot cap of each Lemke run (0: Lemke's default, 50 (n + 1)).
       integer :: pivot_cap = 0
-      !> Steps Lemke could not solve (fallbacks), in order.
-      type(contact_event), allocatable :: events(:)
-      integer :: n_events = 0
    end type contact_system
 
 contains
@@ -330,10 +266,11 @@ contains
       cs%m = m
       cs%pair = pairs
       cs%f = f
+      allocate (cs%joint(m), cs%stats%events(0))
       if (m == 0) return
       cs%c2 = 2.0_dp/dt
       allocate (cs%phat(m), cs%beta(m), cs%rate_a(m), cs%rate_b(m), cs%q(m), cs%vp(m), cs%r_new(m), &
-                cs%x_new(m), cs%in_lcp(m), cs%yrow(m), cs%nh(m), stat=k)
+                cs%x_new(m), cs%in_lcp(m), cs%left_out(m), cs%yrow(m), cs%nh(m), stat=k)
       if (k /= 0) then
          call fatal_error(error, 'contact: cannot allocate the joint data for '//str(m)//' pairs')
          return
@@ -371,7 +308,6 @@ contains
       cs%yrow = 0
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
-      allocate (cs%events(0))
       call lcp_workspace(cs, cs%n_max, error)
    end subroutine contact_init_flexibility
 
@@ -396,68 +332,7 @@ contains
       cs%n_max = n
    end subroutine lcp_workspace
 
-   !> One constraint per facing floor pair of the deck's `&contact` groups, in deck order.
-   function pairs_from_config(contacts, names, error) result(pairs)
-      !> The deck's contact groups.
-      type(contact_config), intent(in) :: contacts(:)
-      !> Building names, in deck order.
-      character(len=*), intent(in) :: names(:)
-      !> Error state (a law that cannot be built).
-      type(error_type), allocatable, intent(out) :: error
-      type(contact_pair), allocatable :: pairs(:)
-      type(contact_law) :: law
-      integer :: i, k, n
 
-      n = 0
-      do i = 1, size(contacts)
-         n = n + size(contacts(i)%floor_left)
-      end do
-      allocate (pairs(n))
-      n = 0
-      do i = 1, size(contacts)
-         associate (c => contacts(i))
-            select case (c%law)
-            case ('elastic_plastic')
-               call make_elastic_plastic(law, c%stiffness, c%yield_force, c%dashpot, error)
-            case ('bilinear')
-               call make_bilinear(law, c%stiffness, c%yield_force, c%second_slope, c%dashpot, error)
-            case ('piecewise')
-               call make_piecewise(law, c%envelope_d, c%envelope_r, c%dashpot, error)
-            case ('parabola_cubic')
-               call make_parabola_cubic(law, c%stiffness, c%peak_penetration, c%fracture_penetration, &
-                                        c%n_segments, c%dashpot, error)
-            case default
-               call make_elastic(law, c%stiffness, c%dashpot, error)
-            end select
-            if (allocated(error)) then
-               error%message = '&contact #'//str(i)//': '//error%message
-               return
-            end if
-            if (c%dashpot_rate == 'trapezoidal') then
-               law%dashpot_rate = rate_trapezoidal
-            else
-               law%dashpot_rate = rate_backward_euler
-            end if
-            law%restitution = c%restitution
-            do k = 1, size(c%floor_left)
-               n = n + 1
-               pairs(n)%label = trim(names(c%left_index))//':'//str(c%floor_left(k))//'-'// &
-                                trim(names(c%right_index))//':'//str(c%floor_right(k))
-               pairs(n)%building = [c%left_index, c%right_index]
-               pairs(n)%floor = [c%floor_left(k), c%floor_right(k)]
-               pairs(n)%gap = c%gap(k)
-               pairs(n)%law = law
-            end do
-         end associate
-      end do
-   end function pairs_from_config
-
-   !> Sign of a constraint end in B: +1 on the left, -1 on the right.
-   pure real(dp) function end_sign(e)
-      integer, intent(in) :: e
-
-      end_sign = merge(1.0_dp, -1.0_dp, e == 1)
-   end function end_sign
 
    !> Decide the contact forces at the end of the step and add their effect to du.
    !>
@@ -489,14 +364,14 @@ contains
          cs%vp(k) = vp
       end do
       do k = 1, cs%m
-         if (cs%pair(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%pair(k)%r
+         if (cs%joint(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%joint(k)%r
       end do
       call contact_solve(cs, cs%vp, t, step, error)
       if (allocated(error)) return
 
       ! du -= Khat^{-1} B (r_new - r_old), only where the force changed.
       do k = 1, cs%m
-         dr = cs%r_new(k) - cs%pair(k)%r
+         dr = cs%r_new(k) - cs%joint(k)%r
          if (dr == 0.0_dp) cycle
          do e = 1, 2
             b = cs%pair(k)%building(e)
@@ -528,20 +403,20 @@ contains
       if (cs%m == 0) return
       qnorm = 0.0_dp
       do k = 1, cs%m
-         associate (p => cs%pair(k), c => cs%pair(k)%law%dashpot)
-            cs%q(k) = p%gap - v_pred(k) + (c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + &
-                                           p%law%stiffness*p%plastic)/cs%phat(k)
+         associate (p => cs%joint(k), c => cs%pair(k)%law%dashpot)
+            cs%q(k) = cs%pair(k)%gap - v_pred(k) + (c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + &
+                                                    cs%pair(k)%law%stiffness*p%plastic)/cs%phat(k)
             cs%in_lcp(k) = .not. p%fractured .and. (p%r > 0.0_dp .or. cs%q(k) < 0.0_dp)
             if (.not. p%fractured) qnorm = max(qnorm, abs(cs%q(k)))
          end associate
       end do
       ! Guard: nothing that is not finite reaches the LCP solver.
       do k = 1, cs%m
-         if (cs%pair(k)%fractured .or. ieee_is_finite(cs%q(k))) cycle
+         if (cs%joint(k)%fractured .or. ieee_is_finite(cs%q(k))) cycle
          call fatal_error(error, 'contact '//cs%pair(k)%label//': the step''s LCP data is not finite at t = '// &
                           str(t)//' s (step '//str(step)//'): predicted closing displacement '// &
-                          str(v_pred(k))//' m, joint compression '//str(cs%pair(k)%d)//' m, rate '// &
-                          str(cs%pair(k)%ddot)//' m/s, plastic penetration '//str(cs%pair(k)%plastic)//' m')
+                          str(v_pred(k))//' m, joint compression '//str(cs%joint(k)%d)//' m, rate '// &
+                          str(cs%joint(k)%ddot)//' m/s, plastic penetration '//str(cs%joint(k)%plastic)//' m')
          return
       end do
       qnorm = max(qnorm, tiny(1.0_dp))
@@ -550,7 +425,7 @@ contains
       do k = 1, cs%m
          cs%nh(k) = 0
          if (.not. cs%in_lcp(k) .or. .not. is_plastic(cs%pair(k)%law)) cycle
-         associate (law => cs%pair(k)%law, pl => cs%pair(k)%plastic)
+         associate (law => cs%pair(k)%law, pl => cs%joint(k)%plastic)
             reach = pl + max(0.0_dp, -cs%q(k))/cs%beta(k)
             nxt = yield_segment(law, pl) + 1
             do while (nxt <= size(law%yp) - 1 .and. cs%nh(k) < initial_hinges)
@@ -571,23 +446,19 @@ contains
          call assemble(cs, na, n, nonconvex, error)
          if (allocated(error)) return
          if (n == 0) exit
-         cs%largest_lcp = max(cs%largest_lcp, n)
+         cs%stats%largest_lcp = max(cs%stats%largest_lcp, n)
          if (cs%pivot_cap > 0) then
             call lemke_solve(cs%ws, n, cs%mat, cs%qa, cs%za, cs%wa, rep, active_guess=cs%guess(1:n), &
                              max_pivots=cs%pivot_cap)
          else
             call lemke_solve(cs%ws, n, cs%mat, cs%qa, cs%za, cs%wa, rep, active_guess=cs%guess(1:n))
          end if
-         cs%solves = cs%solves + 1
-         cs%pivots_total = cs%pivots_total + rep%pivots
-         cs%pivots_max = max(cs%pivots_max, rep%pivots)
-         if (rep%status == LEMKE_TRIVIAL) cs%trivial = cs%trivial + 1
-         if (rep%warm_started) cs%warm = cs%warm + 1
+         call statistics_count_solve(cs%stats, rep%pivots, rep%status == LEMKE_TRIVIAL, rep%warm_started)
          if (rep%status /= LEMKE_SOLVED .and. rep%status /= LEMKE_TRIVIAL) then
             ! A missing segment end can leave the model without a solution (a softening
             ! line extended below r = 0): model one more wherever there is one, and retry.
             if (more_hinges(cs, na)) then
-               cs%resolves = cs%resolves + 1
+               cs%stats%resolves = cs%stats%resolves + 1
                cycle
             end if
             call fallback(cs, n, rep, t, step, error)
@@ -609,8 +480,8 @@ contains
          end do
          ! Constraints left out must stay open under the new forces.
          do k = 1, cs%m
-            if (cs%in_lcp(k) .or. cs%pair(k)%fractured) cycle
-            wk = cs%q(k) + dot_product(cs%f(k, cs%act(1:na)), cs%za(1:na))
+            if (cs%in_lcp(k) .or. cs%joint(k)%fractured) cycle
+            wk = released_opening(cs%f, cs%q, cs%act, na, cs%za, k)
             if (wk < -residual_limit*qnorm) then
                cs%in_lcp(k) = .true.
                added = .true.
@@ -620,7 +491,7 @@ contains
          do j = 1, na
             k = cs%act(j)
             if (cs%yrow(k) == 0 .or. cs%x_new(k) <= 0.0_dp) cycle
-            associate (law => cs%pair(k)%law, pl => cs%pair(k)%plastic)
+            associate (law => cs%pair(k)%law, pl => cs%joint(k)%plastic)
                reach = pl + cs%x_new(k) - residual_limit*qnorm
                nxt = yield_segment(law, pl) + cs%nh(k) + 1
                do while (nxt <= size(law%yp) - 1)
@@ -632,29 +503,18 @@ contains
             end associate
          end do
          if (.not. added) exit
-         cs%resolves = cs%resolves + 1
+         cs%stats%resolves = cs%stats%resolves + 1
       end do
-      if (nonconvex) cs%nonconvex = cs%nonconvex + 1
+      if (nonconvex) cs%stats%nonconvex = cs%stats%nonconvex + 1
 
       ! Verify the accepted solution on the full LCP: the assembled rows and the left-out
       ! constraints.
-      resid = 0.0_dp
-      if (n > 0) then
-         call lcp_evaluate(n, cs%mat, cs%qa, cs%za, cs%wa, resid)
-         resid = resid*max(maxval(abs(cs%qa(1:n))), tiny(1.0_dp))
-      end if
-      do k = 1, cs%m
-         if (cs%in_lcp(k) .or. cs%pair(k)%fractured) cycle
-         wk = cs%q(k)
-         if (na > 0) wk = wk + dot_product(cs%f(k, cs%act(1:na)), cs%za(1:na))
-         resid = max(resid, abs(min(0.0_dp, wk)))
-      end do
-      if (n > 0) qnorm = max(qnorm, maxval(abs(cs%qa(1:n))))
-      resid = resid/qnorm
-      cs%residual_max = max(cs%residual_max, resid)
+      cs%left_out = .not. (cs%in_lcp .or. cs%joint(:)%fractured)
+      call lcp_residual(n, cs%mat, cs%qa, cs%za, cs%wa, cs%f, cs%q, cs%act, na, cs%left_out, qnorm, resid)
+      cs%stats%residual_max = max(cs%stats%residual_max, resid)
       if (timed) then
          call system_clock(clock_end)
-         cs%lcp_seconds = cs%lcp_seconds + real(clock_end - clock_start, dp)/real(clock_rate, dp)
+         cs%stats%lcp_seconds = cs%stats%lcp_seconds + real(clock_end - clock_start, dp)/real(clock_rate, dp)
       end if
       if (.not. (resid <= residual_limit)) then
          call fatal_error(error, 'contact LCP solution rejected at t = '//str(t)//' s (step '// &
@@ -664,88 +524,29 @@ contains
       end if
    end subroutine contact_solve
 
-   !> Assemble the LCP of the constraints in `cs%in_lcp` (contact rows 1..na, then per
-   !> plastic joint its yield row and `cs%nh` hinge rows), the warm-start guess and the
-   !> reference point (previous forces, no plastic flow).
+   !> Lay out and assemble the LCP of the constraints in `cs%in_lcp` (`lcp_layout`,
+   !> `lcp_assemble`), growing the workspace first when more segment ends are modelled than
+   !> it holds (rare).
    subroutine assemble(cs, na, n, nonconvex, error)
       type(contact_system), intent(inout) :: cs
       integer, intent(out) :: na, n
       logical, intent(inout) :: nonconvex
       type(error_type), allocatable, intent(out) :: error
-      integer :: i, j, k, l, seg, iy, n_full
-      real(dp) :: k0, rs
+      integer :: k, n_full
 
-      na = 0
-      do k = 1, cs%m
-         cs%yrow(k) = 0
-         if (.not. cs%in_lcp(k)) cycle
-         na = na + 1
-         cs%act(na) = k
-      end do
-      n = na
-      do j = 1, na
-         k = cs%act(j)
-         if (.not. is_plastic(cs%pair(k)%law)) cycle
-         n = n + 1
-         cs%yrow(k) = n
-         n = n + cs%nh(k)
-      end do
+      call lcp_layout(cs%pair, cs%in_lcp, cs%nh, cs%act, cs%yrow, na, n)
       if (n == 0) return
       if (n > cs%n_max) then
-         ! More segment ends passed in one step than the workspace holds: grow it (rare).
          n_full = cs%m
          do k = 1, cs%m
             if (is_plastic(cs%pair(k)%law)) n_full = n_full + size(cs%pair(k)%law%yp)
          end do
          call lcp_workspace(cs, max(n, min(2*cs%n_max, n_full)), error)
          if (allocated(error)) return
-         ! act(1:na) was set above in the old arrays.
-         na = 0
-         do k = 1, cs%m
-            if (.not. cs%in_lcp(k)) cycle
-            na = na + 1
-            cs%act(na) = k
-         end do
+         call lcp_layout(cs%pair, cs%in_lcp, cs%nh, cs%act, cs%yrow, na, n)
       end if
-      cs%mat(1:n, 1:n) = 0.0_dp
-      do j = 1, na
-         do i = 1, na
-            cs%mat(i, j) = cs%f(cs%act(i), cs%act(j))
-         end do
-         k = cs%act(j)
-         cs%mat(j, j) = cs%mat(j, j) + 1.0_dp/cs%phat(k)
-         cs%qa(j) = cs%q(k)
-         cs%guess(j) = cs%pair(k)%r > 0.0_dp
-         cs%zref(j) = cs%pair(k)%r
-      end do
-      do j = 1, na
-         k = cs%act(j)
-         iy = cs%yrow(k)
-         if (iy == 0) cycle
-         associate (p => cs%pair(k), law => cs%pair(k)%law, b => cs%beta(k))
-            k0 = law%stiffness
-            seg = yield_segment(law, p%plastic)
-            rs = k0*(p%d - p%plastic)
-            cs%mat(j, iy) = b/k0
-            cs%mat(iy, j) = -b/k0
-            cs%mat(iy, iy) = (law%yh(seg) + k0*(1.0_dp - b))/k0**2
-            cs%qa(iy) = (yield_force(law, p%plastic) - (1.0_dp - b)*rs - &
-                         b*cs%rate_b(k)*law%dashpot*p%ddot)/k0
-            cs%guess(iy) = p%x > 0.0_dp
-            cs%zref(iy) = 0.0_dp
-            if (law%yh(seg) < 0.0_dp) nonconvex = .true.
-            do l = 1, cs%nh(k)
-               i = iy + l
-               cs%mat(iy, i) = (law%yh(seg + l) - law%yh(seg + l - 1))/k0**2
-               cs%mat(i, iy) = -1.0_dp/k0
-               cs%mat(i, i) = 1.0_dp/k0
-               cs%qa(i) = law%yp(seg + l) - p%plastic
-               cs%guess(i) = .false.
-               cs%zref(i) = 0.0_dp
-               if (law%yh(seg + l) < 0.0_dp) nonconvex = .true.
-            end do
-         end associate
-      end do
+      call lcp_assemble(cs%pair, cs%joint, cs%f, cs%phat, cs%beta, cs%rate_b, cs%q, cs%act, na, cs%yrow, &
+                        cs%nh, n, cs%mat, cs%qa, cs%guess, cs%zref, nonconvex)
    end subroutine assemble
 
    !> One more modelled segment end for every plastic joint in the LCP that has one left;
@@ -759,7 +560,7 @@ contains
       do j = 1, na
          k = cs%act(j)
          if (cs%yrow(k) == 0) cycle
-         if (yield_segment(cs%pair(k)%law, cs%pair(k)%plastic) + cs%nh(k) >= size(cs%pair(k)%law%yp) - 1) cycle
+         if (yield_segment(cs%pair(k)%law, cs%joint(k)%plastic) + cs%nh(k) >= size(cs%pair(k)%law%yp) - 1) cycle
          cs%nh(k) = cs%nh(k) + 1
          added = .true.
       end do
@@ -774,7 +575,6 @@ contains
       real(dp), intent(in) :: t
       integer, intent(in) :: step
       type(error_type), allocatable, intent(out) :: error
-      type(contact_event), allocatable :: grown(:)
       integer :: nsol, k
       character(len=:), allocatable :: who
 
@@ -803,15 +603,8 @@ contains
                           vector_text(cs%qa(1:n)))
          return
       end if
-      cs%fallbacks = cs%fallbacks + 1
-      cs%n_events = cs%n_events + 1
-      if (cs%n_events > size(cs%events)) then
-         allocate (grown(max(8, 2*size(cs%events))))
-         grown(1:size(cs%events)) = cs%events
-         call move_alloc(grown, cs%events)
-      end if
-      cs%events(cs%n_events) = contact_event(time=t, step=step, status=rep%status, rows=n, &
-                                             solutions=nsol, pairs=who)
+      call statistics_add_event(cs%stats, contact_event(time=t, step=step, status=rep%status, rows=n, &
+                                                        solutions=nsol, pairs=who))
    end subroutine fallback
 
    !> Update the joints after `newmark_commit`: compression, statistics and energy.
@@ -850,118 +643,14 @@ contains
       real(dp), intent(in) :: t
       !> Time step (s).
       real(dp), intent(in) :: dt
-      integer :: k, seg, ns
-      real(dp) :: r, r0, d, ddot, pl, k0, rs0, rs, tol
+      integer :: k
 
       do k = 1, cs%m
-         associate (p => cs%pair(k), c => cs%pair(k)%law%dashpot)
-            k0 = p%law%stiffness
-            r0 = p%r
-            r = cs%r_new(k)
-            if (p%fractured) then
-               cs%work = cs%work + 0.5_dp*r0*(v(k) - p%v)
-               p%r = 0.0_dp
-               p%v = v(k)
-               cycle
-            end if
-            pl = p%plastic + cs%x_new(k)
-            seg = 0
-            if (is_plastic(p%law)) then
-               ! Land exactly on a segment end passed within round-off.
-               seg = yield_segment(p%law, pl)
-               ns = size(p%law%yp) - 1
-               if (ns > 0) then
-                  tol = 1.0e-9_dp*(p%law%yp(min(seg + 1, ns)) - p%law%yp(min(seg + 1, ns) - 1))
-                  if (seg < ns .and. p%law%yp(min(seg + 1, ns)) - pl <= tol) then
-                     seg = seg + 1
-                     pl = p%law%yp(seg)
-                  else if (seg > 0 .and. pl - p%law%yp(seg) <= tol) then
-                     pl = p%law%yp(seg)
-                  end if
-               end if
-            end if
-            ! The spring-dashpot evolves by its own law also while the gap is open (r = 0):
-            ! k0 (d - d_p) + c d' = 0 relaxes d, which stays d_p without a dashpot.
-            d = (r + c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + k0*pl)/cs%phat(k)
-            ddot = cs%rate_a(k)*(d - p%d) - cs%rate_b(k)*p%ddot
-            rs0 = k0*(p%d - p%plastic)
-            rs = k0*(d - pl)
-            if (r > 0.0_dp) then
-               if (r0 == 0.0_dp) p%impacts = p%impacts + 1
-               p%contact_time = p%contact_time + dt
-               if (r > p%peak_force) then
-                  p%peak_force = r
-                  p%peak_time = t
-               end if
-               p%state = state_elastic
-               ! Yielding: on the segment the flow ended in (at a segment end, the one before).
-               if (cs%x_new(k) > 0.0_dp) p%state = seg + merge(0, 1, seg > 0 .and. pl == p%law%yp(seg))
-            else
-               p%state = state_open
-            end if
-            cs%work = cs%work + 0.5_dp*(r0 + r)*(v(k) - p%v)
-            cs%element_work = cs%element_work + 0.5_dp*(r0 + r)*(d - p%d)
-            cs%plastic_work = cs%plastic_work + 0.5_dp*(rs0 + rs)*cs%x_new(k)
-            p%peak_penetration = max(p%peak_penetration, d)
-            p%r = r
-            p%d = d
-            p%ddot = ddot
-            p%v = v(k)
-            p%x = cs%x_new(k)
-            p%plastic = pl
-            if (p%law%fractures) then
-               if (pl >= p%law%yp(size(p%law%yp) - 1)) then
-                  p%fractured = .true.
-                  p%fracture_time = t
-                  p%state = state_fractured
-               end if
-            end if
-         end associate
+         call joint_advance(cs%joint(k), cs%pair(k)%law, cs%r_new(k), cs%x_new(k), v(k), t, dt, cs%rate_a(k), &
+                            cs%rate_b(k), cs%phat(k), cs%work, cs%element_work, cs%plastic_work)
       end do
    end subroutine contact_update
 
-   !> Histories for `m` joints and `n` output samples, the first sample (t = 0) at rest and
-   !> open. `stat` /= 0 when the memory cannot be had (nothing is kept then).
-   pure subroutine joint_history_init(h, m, n, stat)
-      !> The histories.
-      type(joint_history), intent(out) :: h
-      !> Number of joints and of output samples.
-      integer, intent(in) :: m, n
-      !> Allocation status.
-      integer, intent(out) :: stat
-
-      allocate (h%force(m, n), h%closing(m, n), h%penetration(m, n), h%plastic(m, n), h%state(m, n), &
-                stat=stat)
-      if (stat /= 0) then
-         h = joint_history()
-         return
-      end if
-      if (n < 1) return
-      h%force(:, 1) = 0.0_dp
-      h%closing(:, 1) = 0.0_dp
-      h%penetration(:, 1) = 0.0_dp
-      h%plastic(:, 1) = 0.0_dp
-      h%state(:, 1) = state_open
-   end subroutine joint_history_init
-
-   !> Store the joints' state as output sample k.
-   pure subroutine joint_history_record(h, k, cs)
-      !> The histories.
-      type(joint_history), intent(inout) :: h
-      !> Output sample.
-      integer, intent(in) :: k
-      !> The contact system after the step.
-      type(contact_system), intent(in) :: cs
-      integer :: ip
-
-      do ip = 1, cs%m
-         h%force(ip, k) = cs%pair(ip)%r
-         h%closing(ip, k) = cs%pair(ip)%v
-         h%penetration(ip, k) = cs%pair(ip)%d
-         h%plastic(ip, k) = cs%pair(ip)%plastic
-         h%state(ip, k) = cs%pair(ip)%state
-      end do
-   end subroutine joint_history_record
 
    !> Labels of the listed constraints, comma separated.
    function labels(cs, idx) result(s)

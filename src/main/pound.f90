@@ -182,11 +182,11 @@ contains
          text = text//trim(line)//new_line('a')
          if (res%has_coupled) then
             write (line, '(a,es10.3,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
-               ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%pair(:)%impacts), ' impacts, ', &
-               cs%pivots_total, ' LCP pivots'
+               ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%joint(:)%impacts), ' impacts, ', &
+               cs%stats%pivots_total, ' LCP pivots'
             text = text//trim(line)//new_line('a')
             write (line, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
-               ' s, LCP solves ', cs%solves, ', pivots max ', cs%pivots_max, ', steps ', cpl%n_steps
+               ' s, LCP solves ', cs%stats%solves, ', pivots max ', cs%stats%pivots_max, ', steps ', cpl%n_steps
             text = text//trim(line)//new_line('a')
          end if
          if (res%has_sweep) then

@@ -417,56 +417,56 @@ contains
          '  plastic left [m]  fractured'
       call note_io()
       do k = 1, cs%m
-         associate (p => cs%pair(k))
+         associate (p => cs%joint(k))
             fractured = 'no'
             if (p%fractured) write (fractured, '(a,f9.4,a)') 'at', p%fracture_time, ' s'
             write (u, '(2x,a12,i8,f16.4,es13.4,f9.4,es14.4,es18.4,2x,a)', iostat=ios, iomsg=msg) &
-               p%label, p%impacts, p%contact_time, &
+               cs%pair(k)%label, p%impacts, p%contact_time, &
                p%peak_force, p%peak_time, p%peak_penetration, p%plastic, trim(fractured)
             call note_io()
          end associate
       end do
       do k = 1, cs%m
-         if (cs%pair(k)%fractured) write (u, '(a,f10.4,a)', iostat=ios, iomsg=msg) '  joint '//cs%pair(k)%label// &
-            ' FRACTURED at t = ', cs%pair(k)%fracture_time, ' s: it carries nothing for the rest of the analysis'
+         if (cs%joint(k)%fractured) write (u, '(a,f10.4,a)', iostat=ios, iomsg=msg) '  joint '//cs%pair(k)%label// &
+            ' FRACTURED at t = ', cs%joint(k)%fracture_time, ' s: it carries nothing for the rest of the analysis'
          call note_io()
       end do
       mean_pivots = 0.0_dp
-      if (cs%solves > 0) mean_pivots = real(cs%pivots_total, dp)/real(cs%solves, dp)
+      if (cs%stats%solves > 0) mean_pivots = real(cs%stats%pivots_total, dp)/real(cs%stats%solves, dp)
       write (u, '(/,a)', iostat=ios, iomsg=msg) '  LCP (Lemke, lexicographic) statistics:'
       call note_io()
       write (u, '(a,i0,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
-         '    solves ', cs%solves, ' (q >= 0 without pivoting: ', cs%trivial, &
-         '; warm start accepted: ', cs%warm, ')'
+         '    solves ', cs%stats%solves, ' (q >= 0 without pivoting: ', cs%stats%trivial, &
+         '; warm start accepted: ', cs%stats%warm, ')'
       call note_io()
-      write (u, '(a,i0,a,i0,a,f8.3)', iostat=ios, iomsg=msg) '    pivots total ', cs%pivots_total, ', max per solve ', &
-         cs%pivots_max, ', mean per solve ', mean_pivots
+      write (u, '(a,i0,a,i0,a,f8.3)', iostat=ios, iomsg=msg) '    pivots total ', cs%stats%pivots_total, ', max per solve ', &
+         cs%stats%pivots_max, ', mean per solve ', mean_pivots
       call note_io()
       write (u, '(a,i0)', iostat=ios, iomsg=msg) &
          '    re-solves (a left-out constraint would close, a segment end was passed): ', &
-         cs%resolves
+         cs%stats%resolves
       call note_io()
       write (u, '(a,i0)', iostat=ios, iomsg=msg) &
-         '    largest LCP (contact + yield + segment-end rows): ', cs%largest_lcp
+         '    largest LCP (contact + yield + segment-end rows): ', cs%stats%largest_lcp
       call note_io()
-      write (u, '(a,i0)', iostat=ios, iomsg=msg) '    non-convex steps (softening rows in the LCP): ', cs%nonconvex
+      write (u, '(a,i0)', iostat=ios, iomsg=msg) '    non-convex steps (softening rows in the LCP): ', cs%stats%nonconvex
       call note_io()
       write (u, '(a,i0)', iostat=ios, iomsg=msg) &
-         '    Lemke failures solved by enumeration (nearest the previous state): ', cs%fallbacks
+         '    Lemke failures solved by enumeration (nearest the previous state): ', cs%stats%fallbacks
       call note_io()
-      do k = 1, min(cs%n_events, max_listed_events)
-         associate (e => cs%events(k))
+      do k = 1, min(cs%stats%n_events, max_listed_events)
+         associate (e => cs%stats%events(k))
             write (u, '(a,f10.5,a,i0,a,a,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
                '      t = ', e%time, ' s, step ', e%step, ': Lemke ', &
                lemke_status_name(e%status), ', ', e%rows, ' rows, ', e%solutions, ' solutions; pairs '//e%pairs
             call note_io()
          end associate
       end do
-      if (cs%n_events > max_listed_events) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) &
-         '      ... ', cs%n_events - max_listed_events, &
+      if (cs%stats%n_events > max_listed_events) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) &
+         '      ... ', cs%stats%n_events - max_listed_events, &
          ' more in the HDF5 file (/coupled/contact/events)'
       call note_io()
-      write (u, '(a,es10.3)', iostat=ios, iomsg=msg) '    max natural residual ||min(z, w)|| / ||q||: ', cs%residual_max
+      write (u, '(a,es10.3)', iostat=ios, iomsg=msg) '    max natural residual ||min(z, w)|| / ||q||: ', cs%stats%residual_max
       call note_io()
 
    contains

@@ -267,13 +267,13 @@ contains
          call h5_write_attr(h5, c//'/state', 'codes', '0 open, -1 closed elastic, -2 fractured, '// &
                             'k > 0 yielding on yield segment k of the law', error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/impacts', cs%pair(:)%impacts, error)
+         call h5_write(h5, c//'/impacts', cs%joint(:)%impacts, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/contact_time', cs%pair(:)%contact_time, error)
+         call h5_write(h5, c//'/contact_time', cs%joint(:)%contact_time, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/peak_force', cs%pair(:)%peak_force, error)
+         call h5_write(h5, c//'/peak_force', cs%joint(:)%peak_force, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/peak_time', cs%pair(:)%peak_time, error)
+         call h5_write(h5, c//'/peak_time', cs%joint(:)%peak_time, error)
          if (allocated(error)) return
          call h5_write(h5, c//'/gap', cs%pair(:)%gap, error)
          if (allocated(error)) return
@@ -285,13 +285,13 @@ contains
          end do
          call h5_write(h5, c//'/law', laws, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/plastic_final', cs%pair(:)%plastic, error)
+         call h5_write(h5, c//'/plastic_final', cs%joint(:)%plastic, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/peak_penetration', cs%pair(:)%peak_penetration, error)
+         call h5_write(h5, c//'/peak_penetration', cs%joint(:)%peak_penetration, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/fractured', [(merge(1, 0, cs%pair(k)%fractured), k=1, cs%m)], error)
+         call h5_write(h5, c//'/fractured', [(merge(1, 0, cs%joint(k)%fractured), k=1, cs%m)], error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/fracture_time', cs%pair(:)%fracture_time, error)
+         call h5_write(h5, c//'/fracture_time', cs%joint(:)%fracture_time, error)
          if (allocated(error)) return
          do k = 1, cs%m
             associate (law => cs%pair(k)%law)
@@ -302,16 +302,16 @@ contains
                if (allocated(error)) return
             end associate
          end do
-         ne = cs%n_events
-         call h5_write(h5, c//'/events/time', cs%events(1:ne)%time, error)
+         ne = cs%stats%n_events
+         call h5_write(h5, c//'/events/time', cs%stats%events(1:ne)%time, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/events/step', cs%events(1:ne)%step, error)
+         call h5_write(h5, c//'/events/step', cs%stats%events(1:ne)%step, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/events/status', cs%events(1:ne)%status, error)
+         call h5_write(h5, c//'/events/status', cs%stats%events(1:ne)%status, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/events/rows', cs%events(1:ne)%rows, error)
+         call h5_write(h5, c//'/events/rows', cs%stats%events(1:ne)%rows, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/events/solutions', cs%events(1:ne)%solutions, error)
+         call h5_write(h5, c//'/events/solutions', cs%stats%events(1:ne)%solutions, error)
          if (allocated(error)) return
          call h5_write(h5, c//'/events/pairs', [(event_pairs(k), k=1, ne)], error)
          if (allocated(error)) return
@@ -326,21 +326,21 @@ contains
          end do
          call h5_write_attr(h5, c, 'pairs', labels, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, c, 'lcp_solves', cs%solves, error)
+         call h5_write_attr(h5, c, 'lcp_solves', cs%stats%solves, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, c, 'lcp_pivots_total', cs%pivots_total, error)
+         call h5_write_attr(h5, c, 'lcp_pivots_total', cs%stats%pivots_total, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, c, 'lcp_pivots_max', cs%pivots_max, error)
+         call h5_write_attr(h5, c, 'lcp_pivots_max', cs%stats%pivots_max, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, c, 'lcp_residual_max', cs%residual_max, error)
+         call h5_write_attr(h5, c, 'lcp_residual_max', cs%stats%residual_max, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, c, 'lcp_resolves', cs%resolves, error)
+         call h5_write_attr(h5, c, 'lcp_resolves', cs%stats%resolves, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, c, 'lcp_nonconvex_steps', cs%nonconvex, error)
+         call h5_write_attr(h5, c, 'lcp_nonconvex_steps', cs%stats%nonconvex, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, c, 'lcp_fallbacks', cs%fallbacks, error)
+         call h5_write_attr(h5, c, 'lcp_fallbacks', cs%stats%fallbacks, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, c, 'lcp_largest', cs%largest_lcp, error)
+         call h5_write_attr(h5, c, 'lcp_largest', cs%stats%largest_lcp, error)
       end subroutine write_contact
 
       !> Pairs of event k, padded to a common length for the string dataset.
@@ -348,7 +348,7 @@ contains
          integer, intent(in) :: k
          character(len=256) :: text
 
-         text = cs%events(k)%pairs
+         text = cs%stats%events(k)%pairs
       end function event_pairs
 
    end subroutine write_results_h5
