@@ -51,7 +51,7 @@ module pound_analysis
    real(dp), parameter :: resolved_steps = 5.0_dp
    !> `stepping = 'impact'` without `impact_substeps`: the substep is at most the shortest
    !> contact half-period pi sqrt(m_eff/k0) divided by this.
-   real(dp), parameter :: substeps_per_half_period = 10.0_dp
+   real(dp), parameter :: substeps_per_half_period = 40.0_dp
 
    !> Energy history components.
    integer, parameter :: e_input = 1, e_kinetic = 2, e_strain = 3, e_damping = 4, e_contact = 5
