@@ -9,7 +9,9 @@ dt_min / (ref_factor / 2). Errors, for the coupled and the uncoupled analysis se
   lambda absolute error of the storey-shear influence coefficients, percentage points
   L2     relative L2 error of the floor displacement histories (all floors, common times)
 plus the integration time (median of several runs) and the observed order between
-neighbouring steps.
+neighbouring steps. With --stepping uniform,impact the ladder is run once per time stepping
+(`&analysis stepping`; --substeps sets impact_substeps); the reference is always uniform.
+Columns stepping and steps taken (base steps plus substeps) tell the series apart.
 """
 import argparse
 import math
@@ -43,19 +45,24 @@ def analysis_group_span(text):
     raise SystemExit("work_precision: &analysis is not closed")
 
 
-def with_step(text, dt, output_every):
+def with_step(text, dt, output_every, stepping="uniform", substeps=0):
     a, b = analysis_group_span(text)
     body = text[a:b]
     value = r"""('[^']*'|"[^"]*"|[^,\s/]+)"""
-    body = re.sub(r"\b(dt|output_every|history)\s*=\s*" + value + r"\s*,?", " ", body, flags=re.I)
-    body = f" dt = {dt!r}, output_every = {output_every}, history = 'u'," + body
+    body = re.sub(r"\b(dt|output_every|history|stepping|impact_substeps)\s*=\s*" + value + r"\s*,?", " ", body,
+                  flags=re.I)
+    extra = f" stepping = '{stepping}',"
+    if stepping == "impact" and substeps > 0:
+        extra += f" impact_substeps = {substeps},"
+    body = f" dt = {dt!r}, output_every = {output_every}, history = 'u'," + extra + body
     return text[:a] + body + text[b:]
 
 
-def run(exe, deck_text, deck_dir, tag, outdir, dt, out_every, repeats):
+def run(exe, deck_text, deck_dir, tag, outdir, dt, out_every, repeats, stepping="uniform", substeps=0):
     path = os.path.join(deck_dir, f".work_precision_{tag}.nml")
     with open(path, "w") as f:
-        f.write(with_step(deck_text, dt, out_every))
+        f.write(with_step(deck_text, dt, out_every, stepping, substeps))
+    steps = None
     try:
         times_u, times_c = [], []
         for _ in range(repeats):
@@ -65,9 +72,13 @@ def run(exe, deck_text, deck_dir, tag, outdir, dt, out_every, repeats):
             times_u.append(float(re.search(r"uncoupled integration:\s+([0-9.Ee+-]+)", p.stdout).group(1)))
             m = re.search(r"\n\s*coupled integration:\s+([0-9.Ee+-]+)", p.stdout)
             times_c.append(float(m.group(1)) if m else float("nan"))
+            m = re.search(r"impact stepping:.*\((\d+) steps in all\)", p.stdout) or \
+                re.search(r"contact \(LCP\) time:.*, steps (\d+)", p.stdout)
+            steps = int(m.group(1)) if m else None
     finally:
         os.remove(path)
-    return os.path.join(outdir, f".work_precision_{tag}.h5"), statistics.median(times_u), statistics.median(times_c)
+    return (os.path.join(outdir, f".work_precision_{tag}.h5"), statistics.median(times_u), statistics.median(times_c),
+            steps)
 
 
 def load(h5path):
@@ -132,7 +143,12 @@ def main():
     ap.add_argument("--ref-factor", type=int, default=8, help="reference dt = smallest dt / this (power of 2)")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--outdir", default="out")
+    ap.add_argument("--stepping", default="uniform", help="comma separated: uniform, impact (one ladder each)")
+    ap.add_argument("--substeps", type=int, default=0, help="impact_substeps of the impact ladder (0: automatic)")
     a = ap.parse_args()
+    steppings = [x.strip() for x in a.stepping.split(",") if x.strip()]
+    if not steppings or any(x not in ("uniform", "impact") for x in steppings):
+        raise SystemExit("work_precision: --stepping takes uniform and/or impact")
     dts = sorted((float(s) for s in a.dts.split(",")), reverse=True)
     if len(dts) < 2:
         raise SystemExit("work_precision: give at least two time steps")
@@ -149,48 +165,58 @@ def main():
     stem = os.path.splitext(os.path.basename(a.deck))[0]
     os.makedirs(a.outdir, exist_ok=True)
     with tempfile.TemporaryDirectory() as tmp:
-        ref_path, _, _ = run(a.exe, text, deck_dir, "ref", tmp, dt_ref, every(dt_ref), 1)
+        ref_path, _, _, _ = run(a.exe, text, deck_dir, "ref", tmp, dt_ref, every(dt_ref), 1)
         ref = load(ref_path)
-        chk_path, _, _ = run(a.exe, text, deck_dir, "check", tmp, dt_check, every(dt_check), 1)
+        chk_path, _, _, _ = run(a.exe, text, deck_dir, "check", tmp, dt_check, every(dt_check), 1)
         check = errors(load(chk_path), ref)
-        rows = []
-        for i, dt in enumerate(dts):
-            p, tu, tc = run(a.exe, text, deck_dir, f"{i}", tmp, dt, every(dt), a.repeats)
-            rows.append((dt, tu, tc, errors(load(p), ref)))
+        series = {}
+        for sp in steppings:
+            rows = []
+            for i, dt in enumerate(dts):
+                p, tu, tc, steps = run(a.exe, text, deck_dir, f"{sp}{i}", tmp, dt, every(dt), a.repeats, sp,
+                                       a.substeps)
+                rows.append((dt, tu, tc, errors(load(p), ref), steps))
+            series[sp] = rows
     coupled = "coupled" in ref
-    lines = [f"Deck `{os.path.basename(a.deck)}`; reference dt = {dt_ref:g} s; outputs compared every {t_out:g} s; "
-             f"times: median of {a.repeats} runs of the time-step loop.", ""]
+    lines = [f"Deck `{os.path.basename(a.deck)}`; reference dt = {dt_ref:g} s (uniform); outputs compared every "
+             f"{t_out:g} s; times: median of {a.repeats} runs of the time-step loop.", ""]
     for an in ("uncoupled", "coupled") if coupled else ("uncoupled",):
         c = check[an]
         note = f"reference check (dt = {dt_check:g} against {dt_ref:g}): shear {fmt(c['shear'])}, L2 {fmt(c['L2'])}"
         if an == "coupled":
             note += f", force {fmt(c.get('force'))}, lambda {fmt(c.get('lambda'), '.3f')} pp"
         lines += [f"**{an}** — {note}", ""]
-        head = "| dt [s] | time [ms] | peak shear err | order | L2 u err | order |"
-        sep = "|--:|--:|--:|--:|--:|--:|"
+        head = "| stepping | dt [s] | steps taken | time [ms] | peak shear err | order | L2 u err | order |"
+        sep = "|---|--:|--:|--:|--:|--:|--:|--:|"
         if an == "coupled":
             head += " peak force err | order | lambda err [pp] |"
             sep += "--:|--:|--:|"
         lines += [head, sep]
-        for i, (dt, tu, tc, e) in enumerate(rows):
-            t = tc if an == "coupled" else tu
-            prev = rows[i - 1] if i > 0 else None
-            o_s = order(prev[3][an]["shear"], e[an]["shear"], prev[0], dt) if prev else None
-            o_l = order(prev[3][an]["L2"], e[an]["L2"], prev[0], dt) if prev else None
-            line = (f"| {dt:g} | {1e3 * t:.2f} | {fmt(e[an]['shear'])} | {fmt(o_s, '.2f')} | "
-                    f"{fmt(e[an]['L2'])} | {fmt(o_l, '.2f')} |")
-            if an == "coupled":
-                o_f = order(prev[3][an]["force"], e[an]["force"], prev[0], dt) if prev else None
-                line += f" {fmt(e[an].get('force'))} | {fmt(o_f, '.2f')} | {fmt(e[an].get('lambda'), '.3f')} |"
-            lines.append(line)
+        for sp, rows in series.items():
+            if an == "uncoupled" and sp != steppings[0]:
+                continue  # the uncoupled analysis is uniform whatever the stepping
+            for i, (dt, tu, tc, e, steps) in enumerate(rows):
+                t = tc if an == "coupled" else tu
+                prev = rows[i - 1] if i > 0 else None
+                o_s = order(prev[3][an]["shear"], e[an]["shear"], prev[0], dt) if prev else None
+                o_l = order(prev[3][an]["L2"], e[an]["L2"], prev[0], dt) if prev else None
+                shown = sp if an == "coupled" else "uniform"
+                taken = steps if (an == "coupled" and steps is not None) else "-"
+                line = (f"| {shown} | {dt:g} | {taken} | {1e3 * t:.2f} | {fmt(e[an]['shear'])} | {fmt(o_s, '.2f')} | "
+                        f"{fmt(e[an]['L2'])} | {fmt(o_l, '.2f')} |")
+                if an == "coupled":
+                    o_f = order(prev[3][an]["force"], e[an]["force"], prev[0], dt) if prev else None
+                    line += f" {fmt(e[an].get('force'))} | {fmt(o_f, '.2f')} | {fmt(e[an].get('lambda'), '.3f')} |"
+                lines.append(line)
         lines.append("")
     md = "\n".join(lines)
     print(md)
     with open(os.path.join(a.outdir, f"{stem}_wp.md"), "w") as f:
         f.write(md + "\n")
-    plot(rows, coupled, os.path.join(a.outdir, f"{stem}_wp"), os.path.basename(a.deck))
+    plot(series, coupled, os.path.join(a.outdir, f"{stem}_wp"), os.path.basename(a.deck))
     # The reference must be much closer to the limit than the finest run of the ladder.
     status = 0
+    rows = series[steppings[0]]
     for an in ("uncoupled", "coupled") if coupled else ("uncoupled",):
         finest = rows[-1][3][an]
         for key in ("shear", "L2"):
@@ -202,28 +228,35 @@ def main():
     return status
 
 
-def plot(rows, coupled, base, title):
+def plot(all_rows, coupled, base, title):
+    """Error against time, one front per stepping (the uniform and the impact-aware side by side)."""
     import matplotlib
 
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
-    series = [("uncoupled", "shear", "uncoupled: peak storey shear", "-", "o"),
-              ("uncoupled", "L2", "uncoupled: L2 of u", ":", "s")]
-    if coupled:
-        series += [("coupled", "shear", "coupled: peak storey shear", "-", "^"),
-                   ("coupled", "L2", "coupled: L2 of u", ":", "D"),
-                   ("coupled", "force", "coupled: peak contact force", "--", "v")]
-    for an, key, label, ls, mk in series:
-        t = [1e3 * (r[2] if an == "coupled" else r[1]) for r in rows]
-        e = [r[3][an][key] for r in rows]
-        ax.loglog(t, e, color="black", linestyle=ls, marker=mk, markersize=4, label=label)
+    colours = {"uniform": "black", "impact": "tab:red"}
+    first = next(iter(all_rows))
+    for sp, rows in all_rows.items():
+        lines = []
+        if sp == first:
+            lines += [("uncoupled", "shear", "uncoupled: peak storey shear", "-", "o"),
+                      ("uncoupled", "L2", "uncoupled: L2 of u", ":", "s")]
+        if coupled:
+            lines += [("coupled", "shear", f"coupled ({sp}): peak storey shear", "-", "^"),
+                      ("coupled", "L2", f"coupled ({sp}): L2 of u", ":", "D"),
+                      ("coupled", "force", f"coupled ({sp}): peak contact force", "--", "v")]
+        for an, key, label, ls, mk in lines:
+            t = [1e3 * (r[2] if an == "coupled" else r[1]) for r in rows]
+            e = [r[3][an][key] for r in rows]
+            colour = colours[sp] if an == "coupled" else "0.5"
+            ax.loglog(t, e, color=colour, linestyle=ls, marker=mk, markersize=4, label=label)
     ax.set_xlabel("time of the time-step loop [ms]")
     ax.set_ylabel("relative error against the reference")
     ax.set_title(f"Speed against error: {title}", fontsize=10)
     ax.grid(True, which="both", color="0.85", linewidth=0.5)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=6)
     fig.tight_layout()
     for ext in ("png", "pdf"):
         fig.savefig(f"{base}.{ext}", dpi=150)

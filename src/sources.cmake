@@ -5,6 +5,8 @@ set(POUND_SOURCES
   core/pound_version.f90 core/pound_posix.f90
   # core: pound's own pseudo-random numbers
   core/pound_random.f90
+  # core: exchanging values and allocatable arrays without copies
+  core/pound_swap.f90
   # core: the rules of a joint envelope (shared by the deck reader and the contact law)
   core/pound_envelope_rules.f90
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records

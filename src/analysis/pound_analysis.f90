@@ -26,13 +26,15 @@ module pound_analysis
    use pound_strings, only: str
    use pound_config, only: analysis_config
    use pound_structure, only: structure_model, building_label => structure_label
-   use pound_ground_motion, only: check_ground_samples
-   use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, &
+   use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
+   use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
                             newmark_energies, newmark_add_balance, newmark_n, en_input, en_kinetic, en_strain, en_damping
    use pound_response, only: response_record, response_init, response_sample, response_finish
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
-                            joint_history, joint_history_init, joint_history_record
+                            joint_history, joint_history_init, joint_history_record, contact_swap_step, &
+                            contact_may_act
+   use pound_deck_variables, only: max_substeps
    implicit none
    private
 
@@ -40,12 +42,16 @@ module pound_analysis
    public :: coupled_model, coupled_prepare, coupled_integrate
    public :: e_input, e_kinetic, e_strain, e_damping, e_contact, e_plastic, n_energy, energy_names
    public :: add_warning, write_warnings, audit_warning_limit, resolved_steps
+   public :: substeps_per_half_period, impact_substeps_of, contact_half_period, substep_text
 
    !> Relative energy residual above which the result carries a warning.
    real(dp), parameter :: audit_warning_limit = 1.0e-2_dp
    !> A joint is resolved when its contact half-period spans at least this many steps; the
    !> warning recommends a dt of a tenth of the half-period.
    real(dp), parameter :: resolved_steps = 5.0_dp
+   !> `stepping = 'impact'` without `impact_substeps`: the substep is at most the shortest
+   !> contact half-period pi sqrt(m_eff/k0) divided by this.
+   real(dp), parameter :: substeps_per_half_period = 40.0_dp
 
    !> Energy history components.
    integer, parameter :: e_input = 1, e_kinetic = 2, e_strain = 3, e_damping = 4, e_contact = 5
@@ -78,6 +84,11 @@ module pound_analysis
       !> where a joint is closed or predicted to close: `contact_system%stats%lcp_seconds`; forming
       !> q, applying and committing the forces are not in it).
       real(dp) :: seconds = 0.0_dp, contact_seconds = 0.0_dp
+      !> `stepping = 'impact'`: substeps per impact step (0: uniform stepping), the steps taken
+      !> as substeps and the substeps taken.
+      integer :: substep_factor = 0, substepped = 0, substeps = 0
+      !> The substep dt/m (s; 0: uniform stepping).
+      real(dp) :: substep = 0.0_dp
    end type analysis_result
 
    !> What the coupled analysis needs that does not depend on the gaps: the factored
@@ -88,7 +99,24 @@ module pound_analysis
       type(newmark_state), allocatable :: st(:)
       !> Contact system at t = 0.
       type(contact_system) :: cs
+      !> `stepping = 'impact'`: substeps per impact step (0: uniform stepping), and the
+      !> integrators and the condensed constraints at the substep dt/m (only their step data
+      !> are used: `newmark_swap_step`, `contact_swap_step`).
+      integer :: substeps = 0
+      type(newmark_state), allocatable :: st_sub(:)
+      type(contact_system) :: cs_sub
    end type coupled_model
+
+   !> What the time loop needs for impact-aware substeps (`stepping = 'impact'`).
+   type :: impact_stepping
+      !> Substeps per impact step.
+      integer :: m = 1
+      !> Integrators and contact system holding the substep's step data.
+      type(newmark_state), allocatable :: st(:)
+      type(contact_system) :: cs
+      !> The ground motion, evaluated at the substep times.
+      type(ground_motion_t) :: ground
+   end type impact_stepping
 
    !> The integrator's u, v, a of one building, taken once before the time loop.
    type :: state_view
@@ -138,7 +166,7 @@ contains
    end subroutine run_uncoupled
 
    !> Integrate all buildings together with the unilateral constraints `pairs`.
-   subroutine run_coupled(cfg, models, ag, pairs, res, cs, error)
+   subroutine run_coupled(cfg, models, ag, pairs, res, cs, error, ground)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
@@ -153,11 +181,14 @@ contains
       type(contact_system), intent(out) :: cs
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> The ground motion `ag` samples (needed by `stepping = 'impact'`, which evaluates it
+      !> at the substep times).
+      type(ground_motion_t), intent(in), optional :: ground
       type(coupled_model) :: prep
 
       call coupled_prepare(cfg, models, ag(0), pairs, prep, error)
       if (allocated(error)) return
-      call coupled_integrate(cfg, models, ag, prep, res, cs, error)
+      call coupled_integrate(cfg, models, ag, prep, res, cs, error, ground=ground)
    end subroutine run_coupled
 
    !> Factor every building's Khat and condense the structure onto the constraints.
@@ -184,11 +215,77 @@ contains
          if (allocated(error)) return
       end do
       call contact_init(prep%cs, pairs, prep%st, models, error)
+      if (allocated(error) .or. cfg%stepping /= 'impact' .or. size(pairs) == 0) return
+      ! Impact-aware substeps: Khat and F factored once more, for dt/m.
+      prep%substeps = impact_substeps_of(cfg, models, prep%cs)
+      allocate (prep%st_sub(size(models)))
+      do ib = 1, size(models)
+         call newmark_init(prep%st_sub(ib), models(ib), cfg%dt/real(prep%substeps, dp), ag0, error)
+         if (allocated(error)) return
+      end do
+      call contact_init(prep%cs_sub, pairs, prep%st_sub, models, error)
    end subroutine coupled_prepare
+
+   !> Substeps per impact step: `impact_substeps` when given, else the least m for which
+   !> dt/m is at most the shortest contact half-period of the joints divided by
+   !> `substeps_per_half_period` (at least 2, at most `max_substeps`).
+   integer function impact_substeps_of(cfg, models, cs) result(m)
+      !> `&analysis` settings.
+      type(analysis_config), intent(in) :: cfg
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> The constraints, their DOFs located (`contact_init`).
+      type(contact_system), intent(in) :: cs
+      real(dp) :: half
+      integer :: k
+
+      if (cfg%impact_substeps > 0) then
+         m = cfg%impact_substeps
+         return
+      end if
+      half = huge(1.0_dp)
+      do k = 1, cs%m
+         half = min(half, contact_half_period(cs%pair(k), models))
+      end do
+      m = max(2, min(max_substeps, ceiling(substeps_per_half_period*cfg%dt/half - 1.0e-9_dp)))
+   end function impact_substeps_of
+
+   !> Contact half-period pi sqrt(m_eff/k0) of a joint (s), m_eff = m1 m2/(m1 + m2) of the
+   !> facing floor masses (the mass of the one building against a rigid neighbour).
+   pure real(dp) function contact_half_period(p, models) result(half)
+      !> The constraint, its DOFs located.
+      type(contact_pair), intent(in) :: p
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      real(dp), parameter :: pi = acos(-1.0_dp)
+
+      half = pi*sqrt(effective_mass(p, models)/p%law%stiffness)
+   end function contact_half_period
+
+   !> m_eff = m1 m2/(m1 + m2) of a joint's facing floor masses (the mass of the one
+   !> building against a rigid neighbour) (t).
+   pure real(dp) function effective_mass(p, models) result(meff)
+      !> The constraint, its DOFs located.
+      type(contact_pair), intent(in) :: p
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      real(dp) :: m(2)
+      integer :: e
+
+      do e = 1, 2
+         m(e) = 0.0_dp
+         if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%dof(e))
+      end do
+      if (m(1) > 0.0_dp .and. m(2) > 0.0_dp) then
+         meff = m(1)*m(2)/(m(1) + m(2))
+      else
+         meff = max(m(1), m(2))
+      end if
+   end function effective_mass
 
    !> The coupled time integration from a prepared model (left unchanged, so that it can be
    !> reused); `gaps`, when given, replace the gaps of the constraints.
-   subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps)
+   subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps, ground)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
@@ -205,7 +302,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Gaps of the constraints (m), one per constraint.
       real(dp), intent(in), optional :: gaps(:)
+      !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
+      type(ground_motion_t), intent(in), optional :: ground
       type(newmark_state), allocatable :: st(:)
+      type(impact_stepping) :: sub
       integer :: nb
 
       nb = size(models)
@@ -216,7 +316,19 @@ contains
       if (present(gaps)) cs%pair(:)%gap = gaps
       call start_result(res, cfg, size(ag) - 1, nb, error, cs%m)
       if (allocated(error)) return
-      call integrate(cfg, models, ag, st, cs, res, error)
+      if (prep%substeps == 0) then
+         call integrate(cfg, models, ag, st, cs, res, error)
+         return
+      end if
+      if (.not. present(ground)) then
+         call fatal_error(error, "&analysis: stepping = 'impact' needs the ground motion itself (internal)")
+         return
+      end if
+      sub%m = prep%substeps
+      sub%st = prep%st_sub
+      sub%cs = prep%cs_sub
+      sub%ground = ground
+      call integrate(cfg, models, ag, st, cs, res, error, sub)
    end subroutine coupled_integrate
 
    !> The time-step loop of every analysis, from integrators at t = 0 and a contact system
@@ -227,7 +339,7 @@ contains
    !> and then over the buildings (the order the uncoupled run has always used, so that its
    !> audit residual stays bit-identical); with constraints each term is summed over the
    !> buildings first.
-   subroutine integrate(cfg, models, ag, st, cs, res, error)
+   subroutine integrate(cfg, models, ag, st, cs, res, error, sub)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
@@ -242,16 +354,27 @@ contains
       type(analysis_result), intent(inout) :: res
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: ib, step, k, every, nb
+      !> Impact-aware substeps (`stepping = 'impact'`): a step in which a joint carries force
+      !> at the start or is predicted to close (`contact_may_act`) is taken as `sub%m`
+      !> substeps of dt/m.
+      type(impact_stepping), intent(inout), optional :: sub
+      integer :: ib, step, k, every, nb, j
       integer(int64) :: c0, c1, rate
-      real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start
+      real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite
+      logical :: out, coupled, finite, impact
 
       nb = size(models)
       allocate (view(nb))
       coupled = cs%m > 0
+      impact = present(sub)
       every = cfg%output_every
+      h = cfg%dt
+      if (impact) then
+         h = cfg%dt/real(sub%m, dp)
+         res%substep_factor = sub%m
+         res%substep = h
+      end if
       do ib = 1, nb
          call response_init(res%building(ib), models(ib), cfg%store, res%n_out, error)
          if (allocated(error)) return
@@ -271,23 +394,87 @@ contains
          do ib = 1, nb
             call newmark_predict(st(ib), models(ib), ag(step) - ag(step - 1))
          end do
+         out = mod(step, every) == 0
+         if (impact) then
+            if (contact_may_act(cs, st)) then
+               ! The step again as m substeps of h = dt/m, the ground motion at their ends.
+               res%substepped = res%substepped + 1
+               call swap_steps()
+               ag_old = ag(step - 1)
+               do j = 1, sub%m
+                  if (j < sub%m) then
+                     t_sub = real(step - 1, dp)*cfg%dt + real(j, dp)*h
+                     ag_new = ground_accel(sub%ground, t_sub)
+                  else
+                     t_sub = t
+                     ag_new = ag(step)
+                  end if
+                  do ib = 1, nb
+                     call newmark_predict(st(ib), models(ib), ag_new - ag_old)
+                  end do
+                  call finish_step(ag_old, ag_new, t_sub, h, out .and. j == sub%m)
+                  if (allocated(error)) return
+                  res%substeps = res%substeps + 1
+                  ag_old = ag_new
+               end do
+               call swap_steps()
+               cycle
+            end if
+         end if
+         call finish_step(ag(step - 1), ag(step), t, cfg%dt, out)
+         if (allocated(error)) return
+      end do
+      call system_clock(c1)
+      res%seconds = real(c1 - c0, dp)/real(rate, dp)
+      res%contact_seconds = cs%stats%lcp_seconds - lcp_start
+      do ib = 1, nb
+         call response_finish(res%building(ib), models(ib))
+      end do
+      res%energy_error = audit_error(resid, scale)
+      if (res%energy_error <= audit_warning_limit) return
+      if (coupled) then
+         call warn_unresolved_joints(res, models, cs, h)
+      else
+         call add_warning(res%warnings, 'energy audit (uncoupled): relative residual '//str(res%energy_error)// &
+                          ' > '//str(audit_warning_limit)//' without contact: the integration is not '// &
+                          'trustworthy; reduce dt')
+      end if
+
+   contains
+
+      !> Exchange the step data of the integrators and the contact system with `sub`'s.
+      subroutine swap_steps()
+         integer :: i
+
+         do i = 1, nb
+            call newmark_swap_step(st(i), sub%st(i))
+         end do
+         call contact_swap_step(cs, sub%cs)
+      end subroutine swap_steps
+
+      !> The rest of a (sub)step of length `dt_now` ending at `t_end` whose increments are
+      !> predicted: the contact forces, commit, sample the response, audit the energy, store
+      !> an output sample when `output`.
+      subroutine finish_step(ag_start, ag_end, t_end, dt_now, output)
+         real(dp), intent(in) :: ag_start, ag_end, t_end, dt_now
+         logical, intent(in) :: output
+
          if (coupled) then
-            call contact_step(cs, st, t, step, error)
+            call contact_step(cs, st, t_end, step, error)
             if (allocated(error)) then
                ! A state that is not finite is named as such, not as a failed LCP.
-               call locate_nonfinite(st, models, cs, t, step, error, predicted=.true.)
+               call locate_nonfinite(st, models, cs, t_end, step, error, predicted=.true.)
                return
             end if
          end if
-         out = mod(step, every) == 0
          do ib = 1, nb
-            call newmark_commit(st(ib), models(ib), ag(step - 1), ag(step))
+            call newmark_commit(st(ib), models(ib), ag_start, ag_end)
             call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
-                                 ag(step), t, out)
+                                 ag_end, t_end, output)
          end do
          if (coupled) then
             call step_energy(st, sample)
-            call contact_commit(cs, st, t, cfg%dt)
+            call contact_commit(cs, st, t_end, dt_now)
             sample(e_contact) = cs%element_work - cs%plastic_work
             sample(e_plastic) = cs%plastic_work
          else
@@ -297,7 +484,7 @@ contains
                call newmark_add_balance(st(ib), win, eout)
             end do
          end if
-         if (out) then
+         if (output) then
             k = k + 1
             do ib = 1, nb
                call add_structure_energy(res%energy(:, k), st(ib), models(ib))
@@ -309,7 +496,7 @@ contains
             end if
             sample = res%energy(:, k)
          end if
-         if (coupled .or. out) then
+         if (coupled .or. output) then
             win = sample(e_input)
             eout = sum(sample(e_kinetic:n_energy))
          end if
@@ -326,23 +513,19 @@ contains
          end if
          resid = max(resid, abs(win - eout))
          scale = max(scale, abs(win), eout)
-      end do
-      call system_clock(c1)
-      res%seconds = real(c1 - c0, dp)/real(rate, dp)
-      res%contact_seconds = cs%stats%lcp_seconds - lcp_start
-      do ib = 1, nb
-         call response_finish(res%building(ib), models(ib))
-      end do
-      res%energy_error = audit_error(resid, scale)
-      if (res%energy_error <= audit_warning_limit) return
-      if (coupled) then
-         call warn_unresolved_joints(res, models, cs, cfg%dt)
-      else
-         call add_warning(res%warnings, 'energy audit (uncoupled): relative residual '//str(res%energy_error)// &
-                          ' > '//str(audit_warning_limit)//' without contact: the integration is not '// &
-                          'trustworthy; reduce dt')
-      end if
+      end subroutine finish_step
    end subroutine integrate
+
+   !> The substeps an analysis with `stepping = 'impact'` took, as one line of text.
+   function substep_text(res) result(text)
+      !> The result.
+      type(analysis_result), intent(in) :: res
+      character(len=:), allocatable :: text
+
+      text = 'm = '//str(res%substep_factor)//' substeps of '//str(res%substep)//' s; '// &
+             str(res%substepped)//' of '//str(res%n_steps)//' steps substepped, '//str(res%substeps)// &
+             ' substeps taken ('//str(res%n_steps - res%substepped + res%substeps)//' steps in all)'
+   end function substep_text
 
    !> Sizes, output times, a zero energy history and (with `n_pairs`) the contact histories
    !> of a result for `n_steps` steps; no warnings yet.
@@ -479,8 +662,8 @@ contains
       type(contact_system), intent(in) :: cs
       real(dp), intent(in) :: dt
       real(dp), parameter :: pi = acos(-1.0_dp)
-      real(dp) :: m(2), meff, half, worst
-      integer :: k, e, found, kw
+      real(dp) :: meff, half, worst
+      integer :: k, found, kw
       character(len=:), allocatable :: head
 
       head = 'energy audit (coupled): relative residual '//str(res%energy_error)//' > '// &
@@ -491,15 +674,7 @@ contains
       do k = 1, cs%m
          associate (p => cs%pair(k))
             if (cs%joint(k)%impacts == 0) cycle
-            do e = 1, 2
-               m(e) = 0.0_dp
-               if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%dof(e))
-            end do
-            if (m(1) > 0.0_dp .and. m(2) > 0.0_dp) then
-               meff = m(1)*m(2)/(m(1) + m(2))
-            else
-               meff = max(m(1), m(2))
-            end if
+            meff = effective_mass(p, models)
             half = pi*sqrt(meff/p%law%stiffness)
             if (half < worst) then
                worst = half

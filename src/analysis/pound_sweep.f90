@@ -13,6 +13,7 @@ module pound_sweep
    use pound_strings, only: str
    use pound_config, only: analysis_config, sweep_config, n_history_quantities
    use pound_structure, only: structure_model
+   use pound_ground_motion, only: ground_motion_t
    use pound_analysis, only: analysis_result, coupled_model, coupled_prepare, coupled_integrate, &
                              add_warning, audit_warning_limit
    use pound_contact, only: contact_pair, contact_system
@@ -58,7 +59,7 @@ contains
    end function sweep_gaps
 
    !> Run the coupled analysis for every gap of the sweep, against the uncoupled result `unc`.
-   subroutine run_sweep(cfg, sweep, models, ag, pairs, unc, res, error)
+   subroutine run_sweep(cfg, sweep, models, ag, pairs, unc, res, error, ground)
       !> `&analysis` settings (histories are not stored for the sweep runs).
       type(analysis_config), intent(in) :: cfg
       !> `&sweep`.
@@ -75,6 +76,8 @@ contains
       type(sweep_result), intent(out) :: res
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
+      type(ground_motion_t), intent(in), optional :: ground
       type(analysis_config) :: quiet
       type(coupled_model) :: prep
       type(analysis_result) :: cpl
@@ -98,7 +101,7 @@ contains
       if (allocated(error)) return
       do i = 1, sweep%n_gaps
          gaps = res%gap(i)
-         call coupled_integrate(quiet, models, ag, prep, cpl, cs, error, gaps)
+         call coupled_integrate(quiet, models, ag, prep, cpl, cs, error, gaps, ground)
          if (allocated(error)) then
             error%message = 'gap sweep, gap = '//str(res%gap(i))//' m: '//error%message
             return

@@ -56,7 +56,7 @@ module pound_contact
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_newmark, only: newmark_state, newmark_solve, newmark_n, newmark_dt, newmark_predicted, &
-                            newmark_u_at, newmark_add_response
+                            newmark_u_at, newmark_add_response, newmark_path
    use pound_structure, only: structure_model
    use pound_contact_law, only: is_plastic, yield_segment, rate_trapezoidal, dashpot_of_restitution
    use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
@@ -68,11 +68,13 @@ module pound_contact
    use pound_lemke, only: lemke_workspace, lemke_init, lemke_solve, lemke_report, &
                           lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
    use pound_lcp_enumerate, only: lcp_enumerate
+   use pound_swap, only: swap
    implicit none
    private
 
    public :: contact_system, contact_init, contact_init_flexibility
    public :: contact_step, contact_solve, contact_commit, contact_update
+   public :: contact_swap_step, contact_may_act
    public :: residual_limit, fallback_max_rows, initial_hinges
    ! Re-exported: the constraint definitions, the joints' state and the LCP statistics.
    public :: contact_pair, pairs_from_config
@@ -333,6 +335,76 @@ contains
    end subroutine lcp_workspace
 
 
+
+   !> Exchange the data that depend on the time step (Khat^{-1} B, F, the joints' phat, beta
+   !> and dashpot rate coefficients, c2) with `other`, a contact system of the same
+   !> constraints initialised for another dt; the joints' state and the statistics stay.
+   !> No copy, no allocation (`move_alloc`); swapping back restores both.
+   subroutine contact_swap_step(cs, other)
+      !> The contact system that goes on with the other step.
+      type(contact_system), intent(inout) :: cs
+      !> The same constraints at the other step (only its step data are used).
+      type(contact_system), intent(inout) :: other
+      type(column), allocatable :: ty(:, :)
+
+      call swap(cs%c2, other%c2)
+      call move_alloc(cs%y, ty)
+      call move_alloc(other%y, cs%y)
+      call move_alloc(ty, other%y)
+      call swap(cs%f, other%f)
+      call swap(cs%phat, other%phat)
+      call swap(cs%beta, other%beta)
+      call swap(cs%rate_a, other%rate_a)
+      call swap(cs%rate_b, other%rate_b)
+   end subroutine contact_swap_step
+
+   !> Whether a joint can act in the step predicted in `states` (after `newmark_predict`,
+   !> before `contact_step`): one carries force at the start, or one would close with every
+   !> force released, at the end of the step (the LCP's q < 0) or inside it (the closing
+   !> displacement along the step's average-acceleration path, a parabola, reaches the gap).
+   logical function contact_may_act(cs, states) result(acts)
+      !> The contact system (not changed).
+      type(contact_system), intent(in) :: cs
+      !> Integrators with the predicted increments du.
+      type(newmark_state), intent(in) :: states(:)
+      real(dp) :: c0, cv, ca, u0, v0, am, vmax, s, h, q
+      integer :: k, e, b
+
+      acts = .false.
+      if (cs%m == 0) return
+      h = 2.0_dp/cs%c2
+      do k = 1, cs%m
+         associate (p => cs%pair(k), j => cs%joint(k), c => cs%pair(k)%law%dashpot)
+            if (j%fractured) cycle
+            if (j%r > 0.0_dp) then
+               acts = .true.
+               return
+            end if
+            c0 = 0.0_dp
+            cv = 0.0_dp
+            ca = 0.0_dp
+            do e = 1, 2
+               b = p%building(e)
+               if (b == 0) cycle
+               call newmark_path(states(b), p%dof(e), u0, v0, am)
+               c0 = c0 + end_sign(e)*u0
+               cv = cv + end_sign(e)*v0
+               ca = ca + end_sign(e)*am
+            end do
+            ! Largest closing displacement over the step: at its end, or at the vertex.
+            vmax = c0 + cv*h + 0.5_dp*ca*h*h
+            if (ca < 0.0_dp .and. cv > 0.0_dp) then
+               s = -cv/ca
+               if (s < h) vmax = max(vmax, c0 + 0.5_dp*cv*s)
+            end if
+            q = p%gap - vmax + (c*(cs%rate_a(k)*j%d + cs%rate_b(k)*j%ddot) + p%law%stiffness*j%plastic)/cs%phat(k)
+            if (q < 0.0_dp) then
+               acts = .true.
+               return
+            end if
+         end associate
+      end do
+   end function contact_may_act
 
    !> Decide the contact forces at the end of the step and add their effect to du.
    !>

@@ -33,6 +33,12 @@ module pound_config
       integer :: output_every = 1
       !> Which history quantities are stored (same order as `history_names`).
       logical :: store(n_history_quantities) = .true.
+      !> Time stepping of the coupled analysis: 'uniform' (every step dt) or 'impact' (a step in
+      !> which a joint is closed or predicted to close is taken as `impact_substeps` substeps).
+      character(len=8) :: stepping = 'uniform'
+      !> Substeps per impact step (stepping = 'impact'); 0: chosen from the joints' contact
+      !> half-periods.
+      integer :: impact_substeps = 0
    end type analysis_config
 
    !> `&ground`: one ground motion (a deck with several `&ground` groups is a suite).

@@ -1,10 +1,10 @@
-!> Reader of `&analysis`: title, dt, t_end, output_every, history.
+!> Reader of `&analysis`: title, dt, t_end, output_every, history, stepping, impact_substeps.
 module pound_deck_analysis
    use pound_config, only: analysis_config
    use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
                                 site_of, unset_real
-   use pound_deck_lexer, only: base_name, group_ref, group_text
-   use pound_deck_variables, only: max_steps, path_len, title_len
+   use pound_deck_lexer, only: base_name, group_ref, group_text, lower
+   use pound_deck_variables, only: max_steps, max_substeps, path_len, title_len, word_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
    use pound_strings, only: str
@@ -29,18 +29,21 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=title_len) :: title
       character(len=path_len) :: history
+      character(len=word_len) :: stepping
       real(dp) :: dt, t_end
-      integer :: output_every, ios
+      integer :: output_every, ios, impact_substeps
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
-      namelist /analysis/ title, dt, t_end, output_every, history
+      namelist /analysis/ title, dt, t_end, output_every, history, stepping, impact_substeps
 
       title = ' '
       history = ' '
       dt = unset_real
       t_end = unset_real
       output_every = 1
+      stepping = 'uniform'
+      impact_substeps = 0
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -78,6 +81,23 @@ contains
       cfg%dt = dt
       cfg%t_end = t_end
       cfg%output_every = output_every
+      if (lower(trim(adjustl(stepping))) /= 'uniform' .and. lower(trim(adjustl(stepping))) /= 'impact') then
+         call fail(at, 'stepping', "stepping = '"//trim(adjustl(stepping))//"', must be 'uniform' or 'impact'", &
+                   error)
+         return
+      end if
+      cfg%stepping = lower(trim(adjustl(stepping)))
+      if (impact_substeps < 0 .or. impact_substeps > max_substeps) then
+         call fail(at, 'impact_substeps', 'impact_substeps = '//str(impact_substeps)//', must be 1..'// &
+                   str(max_substeps)//' (or 0 or not given: chosen from the joints'' contact half-periods)', error)
+         return
+      end if
+      if (impact_substeps > 0 .and. cfg%stepping /= 'impact') then
+         call fail(at, 'impact_substeps', "impact_substeps is only for stepping = 'impact' (stepping = '"// &
+                   trim(cfg%stepping)//"')", error)
+         return
+      end if
+      cfg%impact_substeps = impact_substeps
       call parse_history(at, history, cfg%store, error)
    end subroutine read_analysis
 

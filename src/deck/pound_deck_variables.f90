@@ -12,7 +12,7 @@ module pound_deck_variables
    public :: var_spec, variables, known_groups, known_variable, variable_index, variable_type, &
              variable_list, group_variable_count, group_max_size, findloc_name, join
    public :: max_storeys, max_name_length, max_pairs, max_columns, max_steps, title_len, path_len, &
-             word_len, law_names, max_envelope_points, max_segments, max_bays, max_column_elements, &
+             word_len, max_substeps, law_names, max_envelope_points, max_segments, max_bays, max_column_elements, &
              frame_variables
 
    !> Largest number of storeys a `&building` may have.
@@ -33,6 +33,8 @@ module pound_deck_variables
    integer, parameter :: max_columns = 100000
    !> Largest number of time steps t_end/dt.
    integer, parameter :: max_steps = 1000000000
+   !> Largest number of substeps per impact step (`&analysis impact_substeps`).
+   integer, parameter :: max_substeps = 1000
    !> Lengths of the character buffers the namelist reads into.
    integer, parameter :: title_len = 1024, path_len = 4096, word_len = 256
    !> Constraint laws, as written in the deck.
@@ -60,7 +62,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(83) = [ &
+   type(var_spec), parameter :: variables(85) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -105,7 +107,8 @@ module pound_deck_variables
       var_spec('contact', 'n_segments', 'i', 0), var_spec('contact', 'restitution', 'r', 0), &
       var_spec('sweep', 'gap_from', 'r', 0), var_spec('sweep', 'gap_to', 'r', 0), &
       var_spec('sweep', 'n_gaps', 'i', 0), var_spec('sweep', 'target_lambda', 'r', 0), &
-      var_spec('sweep', 'target_quantities', 'c', 0)]
+      var_spec('sweep', 'target_quantities', 'c', 0), &
+      var_spec('analysis', 'stepping', 'c', 0), var_spec('analysis', 'impact_substeps', 'i', 0)]
 
 contains
 

@@ -179,7 +179,11 @@ contains
          if (present(options)) then
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
-         call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error)
+         if (has_ground()) then
+            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, options%ground)
+         else
+            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, deck_gm)
+         end if
          if (allocated(error)) then
             error%message = prefix//error%message
             return
@@ -188,7 +192,12 @@ contains
          if (res%has_uncoupled) then
             res%influence = influence_of(res%unc, res%cpl)
             if (deck%sweep%active) then
-               call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error)
+               if (has_ground()) then
+                  call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, &
+                                 options%ground)
+               else
+                  call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, deck_gm)
+               end if
                if (allocated(error)) then
                   error%message = prefix//error%message
                   return

@@ -31,6 +31,7 @@ program pound
    use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror, &
                           posix_sleep
    use pound_strings, only: fixed_cell
+   use pound_analysis, only: substep_text
    implicit none
 
    character(len=:), allocatable :: deck_path, out_dir, record_path
@@ -160,6 +161,10 @@ contains
       write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', res%unc%seconds, ' s'
       if (res%has_coupled .and. ios == 0) write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) &
          '  coupled integration:   ', res%cpl%seconds, ' s, of which LCP solves ', res%cpl%contact_seconds, ' s'
+      if (res%has_coupled .and. ios == 0) then
+         if (res%cpl%substep_factor > 0) write (u, '(a)', iostat=ios) &
+            '  impact stepping:       '//substep_text(res%cpl)
+      end if
       call close_listing(u, path, err)
    end subroutine write_listing
 
@@ -188,6 +193,9 @@ contains
             write (line, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
                ' s, LCP solves ', cs%stats%solves, ', pivots max ', cs%stats%pivots_max, ', steps ', cpl%n_steps
             text = text//trim(line)//new_line('a')
+            if (cpl%substep_factor > 0) then
+               text = text//'  impact stepping:       '//substep_text(cpl)//new_line('a')
+            end if
          end if
          if (res%has_sweep) then
             write (line, '(a,i0,a,es10.3,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'

@@ -23,14 +23,16 @@ module pound_newmark
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_band, only: band_symv
+   use pound_swap, only: swap
    use pound_band_lapack, only: dpbtrf, dpbtrs
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
    implicit none
    private
 
    public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_solve
-   public :: newmark_add_response, newmark_set_state, newmark_dt, newmark_n
+   public :: newmark_add_response, newmark_set_state, newmark_dt, newmark_n, newmark_swap_step
    public :: newmark_u, newmark_v, newmark_a, newmark_du, newmark_u_at, newmark_v_at, newmark_predicted, newmark_energies
+   public :: newmark_path
    public :: kinetic_energy, strain_energy, newmark_add_balance
    public :: en_input, en_kinetic, en_strain, en_damping
 
@@ -234,6 +236,29 @@ contains
       end subroutine khat_not_finite
    end subroutine newmark_init
 
+   !> Exchange the time step, the Newmark constants and the factored Khat of `st` with those
+   !> of `other` (an integrator of the same model initialised with another dt): `st` goes on
+   !> from its state u, v, a with the other step size (average acceleration allows a change
+   !> of dt between steps: each step only needs the state at its start). No copy, no
+   !> allocation (`move_alloc`); swapping back restores both.
+   subroutine newmark_swap_step(st, other)
+      !> Integrator whose state continues with the other step.
+      type(newmark_state), intent(inout) :: st
+      !> Integrator of the same model at the other step (its state is not used).
+      type(newmark_state), intent(inout) :: other
+
+      call swap(st%dt, other%dt)
+      call swap(st%c1, other%c1)
+      call swap(st%c2, other%c2)
+      if (st%tridiagonal) then
+         call swap(st%d, other%d)
+         call swap(st%e, other%e)
+         call swap(st%dinv, other%dinv)
+      else
+         call swap(st%chol, other%chol)
+      end if
+   end subroutine newmark_swap_step
+
    !> Overwrite the state (tests: initial conditions other than rest). `a` defaults to
    !> unchanged; C v is recomputed from the new v.
    subroutine newmark_set_state(st, b, u, v, a)
@@ -362,6 +387,22 @@ contains
 
       newmark_predicted = st%u(i) + st%du(i)
    end function newmark_predicted
+
+   !> The motion of DOF i within the step in progress as predicted so far: average
+   !> acceleration gives u(s) = u0 + v0 s + am s^2/2 for 0 <= s <= dt, with am the mean of the
+   !> accelerations at the ends (u(dt) = u + du).
+   pure subroutine newmark_path(st, i, u0, v0, am)
+      !> Integrator state with the predicted `du`.
+      type(newmark_state), intent(in) :: st
+      !> DOF.
+      integer, intent(in) :: i
+      !> Displacement and velocity at the start of the step, mean acceleration of the step.
+      real(dp), intent(out) :: u0, v0, am
+
+      u0 = st%u(i)
+      v0 = st%v(i)
+      am = 0.5_dp*(st%c1*st%du(i) - 2.0_dp*st%c2*st%v(i))
+   end subroutine newmark_path
 
    !> Add the integrator's input work to `w_in` and its kinetic + strain + damping energy to
    !> `e_out` (the per-step audit; no array is formed).
