@@ -433,14 +433,30 @@ contains
          type(case_result), intent(in) :: res
 
          if (.not. deck%motions(k)%histories) return
-         associate (h => suite%histories(k))
-            h%stored = .true.
-            h%ag_out = res%ag_out
-            h%unc = res%unc
-            h%has_coupled = res%has_coupled
-            if (res%has_coupled) h%cpl = res%cpl
-         end associate
+         suite%histories(k)%stored = .true.
+         suite%histories(k)%ag_out = res%ag_out
+         call copy_histories(res%unc, suite%histories(k)%unc)
+         suite%histories(k)%has_coupled = res%has_coupled
+         if (res%has_coupled) call copy_histories(res%cpl, suite%histories(k)%cpl)
       end subroutine keep
+
+      !> What the writer needs of an analysis, component by component (the warnings, an array
+      !> of deferred-length strings, are left out: gfortran 12 does not copy such a component
+      !> of a derived type reliably).
+      subroutine copy_histories(src, dst)
+         type(analysis_result), intent(in) :: src
+         type(analysis_result), intent(inout) :: dst
+
+         dst%n_steps = src%n_steps
+         dst%n_out = src%n_out
+         dst%time = src%time
+         dst%building = src%building
+         dst%energy = src%energy
+         dst%energy_error = src%energy_error
+         dst%joints = src%joints
+         dst%seconds = src%seconds
+         dst%contact_seconds = src%contact_seconds
+      end subroutine copy_histories
 
       !> Peaks, lambdas and rules of motion k.
       subroutine gather(res)
