@@ -96,6 +96,9 @@ module pound_suite
       real(dp), allocatable :: period(:), sa(:, :), mean_sa(:)
       !> Fundamental period of every building (s).
       real(dp), allocatable :: building_period(:)
+      !> Scaling target of every motion (m/s^2; -1: scaled by a factor) and its period (s; the
+      !> period of a Sa target, 0 for a PGA target, the rigid limit of the spectrum; -1: none).
+      real(dp), allocatable :: target(:), target_period(:)
       !> Sa of every motion at every building's fundamental period (n_motions, n_buildings).
       real(dp), allocatable :: sa_building(:, :)
       !> Whether the deck declares contact (influence and separation exist).
@@ -331,7 +334,7 @@ contains
       np = size(left)
       suite%has_coupled = np > 0
       nmax = maxval(deck%buildings%n_storeys)
-      allocate (suite%names(nm))
+      allocate (suite%names(nm), suite%target(nm), suite%target_period(nm))
       allocate (suite%scale_factor(nm), suite%pga(nm), suite%sa(nm, size(suite%period)), &
                 suite%sa_building(nm, nb), ag(0:n_steps), mean_unc(nmax, n_history_quantities, nb), &
                 mean_cpl(nmax, n_history_quantities, nb))
@@ -356,6 +359,17 @@ contains
 
       do k = 1, nm
          suite%names(k) = deck%motions(k)%name
+         suite%target(k) = -1.0_dp
+         suite%target_period(k) = -1.0_dp
+         select case (deck%motions(k)%scale_to)
+         case ('pga')
+            suite%target(k) = deck%motions(k)%target
+            suite%target_period(k) = 0.0_dp
+         case ('sa')
+            suite%target(k) = deck%motions(k)%target
+            suite%target_period(k) = deck%motions(k)%period
+            if (.not. (suite%target_period(k) > 0.0_dp)) suite%target_period(k) = maxval(suite%building_period)
+         end select
          allocate (options%ground)
          call suite_motion(deck, k, models, options%ground, suite%scale_factor(k), error)
          if (allocated(error)) return

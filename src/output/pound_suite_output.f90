@@ -5,6 +5,8 @@
 !>
 !>     /suite/names, /suite/scale_factor, /suite/pga            (n_motions); m/s^2
 !>     /suite/building_period                                   (n_buildings), s
+!>     /suite/target, /suite/target_period   (n_motions) scaling target m/s^2 and its period s
+!>        (0: a PGA target; -1: scaled by a factor)
 !>     /suite/spectrum/period (n_periods), /suite/spectrum/sa   (n_motions, n_periods), m/s^2
 !>     /suite/spectrum/mean_sa                                  (n_periods)
 !>     /suite/influence/<b>/<q>                                 (n_motions, n), %
@@ -203,6 +205,8 @@ contains
          if (.not. allocated(error)) call h5_write(h5, '/suite/scale_factor', suite%scale_factor, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/pga', suite%pga, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/building_period', suite%building_period, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/target', suite%target, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/target_period', suite%target_period, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/period', suite%period, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/sa', suite%sa, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/mean_sa', suite%mean_sa, error)
