@@ -37,7 +37,7 @@ module pound_suite
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: deck_type, ground_config, n_history_quantities
-   use pound_deck_variables, only: word_len
+   use pound_deck_variables, only: word_len, path_len
    use pound_ground_motion, only: ground_motion_t, sample_ground
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
    use pound_structure, only: structure_model
@@ -91,6 +91,9 @@ module pound_suite
       !> Motion names, the scale factor applied by the suite (1 for `scale`), PGA (m/s^2) of
       !> the motion as run.
       character(len=word_len), allocatable :: names(:)
+      !> Where each motion comes from: the record file as resolved, 'synthetic, seed N' or
+      !> 'pulse'.
+      character(len=path_len), allocatable :: source(:)
       real(dp), allocatable :: scale_factor(:), pga(:)
       !> Periods of the spectra (s), Sa (m/s^2, n_motions x n_periods) and its suite mean.
       real(dp), allocatable :: period(:), sa(:, :), mean_sa(:)
@@ -334,7 +337,7 @@ contains
       np = size(left)
       suite%has_coupled = np > 0
       nmax = maxval(deck%buildings%n_storeys)
-      allocate (suite%names(nm), suite%target(nm), suite%target_period(nm))
+      allocate (suite%names(nm), suite%source(nm), suite%target(nm), suite%target_period(nm))
       allocate (suite%scale_factor(nm), suite%pga(nm), suite%sa(nm, size(suite%period)), &
                 suite%sa_building(nm, nb), ag(0:n_steps), mean_unc(nmax, n_history_quantities, nb), &
                 mean_cpl(nmax, n_history_quantities, nb))
@@ -359,6 +362,14 @@ contains
 
       do k = 1, nm
          suite%names(k) = deck%motions(k)%name
+         select case (deck%motions(k)%kind)
+         case ('record')
+            suite%source(k) = deck%motions(k)%file
+         case ('synthetic')
+            suite%source(k) = 'synthetic, seed '//str(deck%motions(k)%seed)
+         case default
+            suite%source(k) = deck%motions(k)%kind
+         end select
          suite%target(k) = -1.0_dp
          suite%target_period(k) = -1.0_dp
          select case (deck%motions(k)%scale_to)

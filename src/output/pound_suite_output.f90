@@ -4,6 +4,7 @@
 !> HDF5 (appended to the results file):
 !>
 !>     /suite/names, /suite/scale_factor, /suite/pga            (n_motions); m/s^2
+!>     /suite/source       (n_motions) record file as resolved, 'synthetic, seed N' or 'pulse'
 !>     /suite/building_period                                   (n_buildings), s
 !>     /suite/target, /suite/target_period   (n_motions) scaling target m/s^2 and its period s
 !>        (0: a PGA target; -1: scaled by a factor)
@@ -77,6 +78,10 @@ contains
       write (u, '(2x,a20,14x,es14.6,*(es14.6))', iostat=ios, iomsg=msg) 'mean', sum(suite%pga)/nm, &
          sum(suite%sa_building, dim=1)/nm
       write (u, '(2x,a20,28x,*(f14.4))', iostat=ios, iomsg=msg) 'period T1 (s)', suite%building_period
+      write (u, '(/,2x,a20,2x,a)', iostat=ios, iomsg=msg) 'motion', 'source'
+      do k = 1, nm
+         write (u, '(2x,a20,2x,a)', iostat=ios, iomsg=msg) trim(suite%names(k)), trim(suite%source(k))
+      end do
       if (ios /= 0) then
          call fatal_error(error, 'listing: '//trim(msg))
          return
@@ -202,6 +207,7 @@ contains
          character(len=:), allocatable :: b, qn
 
          call h5_write(h5, '/suite/names', suite%names, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/source', suite%source, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/scale_factor', suite%scale_factor, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/pga', suite%pga, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/building_period', suite%building_period, error)
