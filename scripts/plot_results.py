@@ -6,7 +6,9 @@ Plots (names for --only): displacement (facing floors, gap shaded), force (conta
 histories), loops (force-penetration loops of each joint), shear (storey-shear envelopes, coupled
 against uncoupled), influence (influence coefficients, storeys x buildings as in the paper's
 Table 1), ground (ground motion), sweep (largest |lambda| against the joint gap, when the file
-holds a gap study). Files are named <stem>_<plot>.png / .pdf.
+holds a gap study), suite (a file with /suite, from a deck with several &ground: the plots of
+scripts/plot_suite.py, <stem>_suite_spectra, _suite_lambda, _suite_separation, _suite_sweep).
+Files are named <stem>_<plot>.png / .pdf.
 
 Any problem with the file (missing, not HDF5, not a pound results file) gives one line
 "plot: error: ..." on stderr and exit status 1; usage errors exit 2. POUND_DEBUG=1 shows
@@ -18,7 +20,7 @@ import re
 import sys
 import tempfile
 
-PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep")
+PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite")
 CONTACT_PLOTS = ("displacement", "force", "loops")
 QUANTITY_LABEL = {
     "storey_shear": ("storey shear Q", "storey"),
@@ -605,8 +607,30 @@ def plot_sweep(plt, r, args, written, notes):
     plt.close(fig)
 
 
+def plot_suite_group(plt, r, args, written, notes):
+    """The suite plots (scripts/plot_suite.py: spectra, lambda, separation, sweep) of /suite."""
+    import h5py
+    import numpy as np
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import plot_suite
+
+    def save_suite(fig, what):
+        save(fig, r, "suite_" + what, args, written)
+        plt.close(fig)
+
+    with h5py.File(r.path, "r") as f:
+        plot_suite.plot_all(f["suite"], plt, np, save_suite)
+
+
+def has_suite(path):
+    import h5py
+    with h5py.File(path, "r") as f:
+        return "suite" in f
+
+
 PLOTTERS = {"displacement": plot_displacement, "force": plot_force, "loops": plot_loops,
-            "shear": plot_shear, "influence": plot_influence, "ground": plot_ground, "sweep": plot_sweep}
+            "shear": plot_shear, "influence": plot_influence, "ground": plot_ground, "sweep": plot_sweep,
+            "suite": plot_suite_group}
 
 
 # --------------------------------------------------------------------------------------------
@@ -653,6 +677,10 @@ def run(argv):
         if name in CONTACT_PLOTS and r.contact is None:
             why = "uncoupled-only file" if "coupled" not in r.analyses else "no /coupled/contact"
             notes.append(f"{name}: skipped ({why}: no contact pairs)")
+            continue
+        if name == "suite" and not has_suite(r.path):
+            if "suite" in args.explicit:
+                notes.append("suite: skipped (no /suite in this file: the deck has one &ground)")
             continue
         if name == "sweep" and r.sweep is None:
             if "sweep" in args.explicit:

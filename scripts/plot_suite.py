@@ -3,12 +3,16 @@
 
     plot_suite.py FILE.h5 [--outdir DIR]
 
-Writes <stem>_suite_spectra, <stem>_suite_lambda and <stem>_suite_separation (.png and .pdf):
-the 5 %-damped Sa of every scaled motion (thin) with the suite mean (thick) and the buildings'
-fundamental periods; the largest |lambda| per storey of storey shear per motion (thin) with
-the mean of the lambdas (thick) per building; the separation rules per contact pair against the
-exact no-contact gap, per motion and for the suite. Run with /usr/bin/python3 (numpy, h5py,
-matplotlib). Exit status 1 with one 'plot_suite: error: ...' line on a bad file.
+Writes <stem>_suite_spectra, <stem>_suite_lambda, <stem>_suite_separation and, with a gap
+sweep, <stem>_suite_sweep (.png and .pdf): the 5 %-damped Sa of every scaled motion (thin) with
+the suite mean (thick), the scaling targets (stars) and the buildings' fundamental periods; the
+lambda of the storey shear per storey per motion (thin) with the mean of the lambdas (thick) per
+building; the separation rules per contact pair against the time-history threshold gap of the
+sweep and the exact no-contact gap, per motion and for the suite; the sweep's suite mean and
+maximum of the largest |lambda| against the gap (each motion thin) with the target and the
+refined thresholds. `scripts/plot FILE.h5` draws the same plots for a file with /suite
+(plot_results.py calls `plot_all`). Run with /usr/bin/python3 (numpy, h5py, matplotlib). Exit
+status 1 with one 'plot_suite: error: ...' line on a bad file.
 """
 import argparse
 import os
@@ -18,6 +22,112 @@ import sys
 def fail(message):
     sys.stderr.write("plot_suite: error: " + message + "\n")
     sys.exit(1)
+
+
+def _cols(a, n, np):
+    """A (n_x, n) view of a dataset written (n, n_x) in Fortran order (h5py transposes)."""
+    a = np.atleast_2d(a)
+    return a if a.shape[1] == n else a.T
+
+
+def plot_all(s, plt, np, save):
+    """Every suite plot of the /suite group `s`; save(fig, what) writes and closes a figure."""
+    names = [n.decode() if isinstance(n, bytes) else str(n) for n in s["names"][...]]
+    nm = len(names)
+
+    # Spectra: (n_motions, n_periods) in Fortran order -> h5py (n_periods, n_motions).
+    period = s["spectrum/period"][...]
+    sa = _cols(s["spectrum/sa"][...], nm, np)
+    fig, ax = plt.subplots(figsize=(7, 4.5))
+    for k, name in enumerate(names):
+        ax.loglog(period, sa[:, k], lw=0.8, alpha=0.7, label=name)
+    ax.loglog(period, s["spectrum/mean_sa"][...], "k", lw=2.5, label="mean")
+    if "target" in s:
+        shown = False
+        for t, tp in zip(s["target"][...], s["target_period"][...]):
+            if t > 0 and tp >= 0:
+                ax.plot(tp if tp > 0 else period[0], t, "r*", ms=12, label=None if shown else
+                        ("target Sa(T)" if tp > 0 else "target PGA (rigid limit)"))
+                shown = True
+    for t in s["building_period"][...]:
+        ax.axvline(t, color="grey", ls="--", lw=0.8)
+    ax.set_xlabel("period T (s)")
+    ax.set_ylabel("Sa (m/s$^2$), 5 % damping")
+    ax.set_title("Spectra of the scaled motions; dashed: fundamental periods")
+    ax.legend(fontsize=7, ncol=2)
+    fig.tight_layout()
+    save(fig, "spectra")
+
+    # Lambda of the storey shear per storey: per motion (thin) and the mean (thick).
+    if "influence" in s:
+        buildings = list(s["influence"].keys())
+        fig, axes = plt.subplots(1, len(buildings), figsize=(4 * len(buildings), 5), squeeze=False)
+        for ax, b in zip(axes[0], buildings):
+            lam = _cols(s[f"influence/{b}/storey_shear"][...], nm, np)   # (n, n_motions)
+            storeys = np.arange(1, lam.shape[0] + 1)
+            for k in range(nm):
+                ax.plot(lam[:, k], storeys, lw=0.8, alpha=0.7, label=names[k])
+            ax.plot(s[f"mean/influence/{b}/storey_shear"][...], storeys, "k", lw=2.5, label="mean of lambdas")
+            ax.plot(s[f"lambda_of_means/{b}/storey_shear"][...], storeys, "r--", lw=1.5, label="lambda of means")
+            ax.axvline(0, color="grey", lw=0.5)
+            ax.set_title(f"building {b}: storey shear")
+            ax.set_xlabel("lambda (%)")
+            ax.set_ylabel("storey")
+            ax.legend(fontsize=6)
+        fig.tight_layout()
+        save(fig, "lambda")
+
+    # Separation rules against the time-history threshold gap and the no-contact gap, per pair.
+    if "separation" in s:
+        nc = _cols(s["separation/no_contact"][...], nm + 1, np)             # (n_pairs, nm + 1)
+        th = None
+        if "separation/time_history" in s:
+            th = _cols(s["separation/time_history"][...], nm + 1, np)
+        n_pairs = nc.shape[0]
+        fig, axes = plt.subplots(1, n_pairs, figsize=(3.2 * n_pairs + 1, 4), squeeze=False)
+        x = np.arange(nm + 1)
+        for p, ax in enumerate(axes[0]):
+            if th is not None and (th[p] >= 0).any():
+                ok = th[p] >= 0
+                ax.plot(x[ok], 1e3 * th[p][ok], "rs-", lw=2.5, label="time-history threshold")
+            ax.plot(x, 1e3 * nc[p], "ko-", lw=2, label="no-contact gap")
+            for r, m in zip(["abs", "srss", "ec8", "ddc"], ["^", "v", "D", "x"]):
+                v = _cols(s[f"separation/{r}"][...], nm + 1, np)
+                ax.plot(x, 1e3 * v[p], marker=m, lw=0.8, ms=4, label=r.upper())
+            ax.set_xticks(x)
+            ax.set_xticklabels(names + ["suite"], rotation=90, fontsize=7)
+            ax.set_title(f"pair {p + 1}")
+            ax.set_ylabel("separation (mm)")
+        axes[0][0].legend(fontsize=7)
+        fig.suptitle("Code rules on elastic peaks (no amplification) vs the time-history gap", fontsize=9)
+        fig.tight_layout()
+        save(fig, "separation")
+
+    # The sweep: suite mean and maximum of the largest |lambda| against the gap.
+    if "sweep/gap" in s:
+        sw = s["sweep"]
+        gap = 1e3 * sw["gap"][...]
+        per = _cols(sw["max_abs_lambda"][...], nm, np)                    # (n_gaps, n_motions)
+        fig, ax = plt.subplots(figsize=(7, 4.5))
+        for k in range(nm):
+            ax.plot(gap, per[:, k], lw=0.6, alpha=0.6, color="grey")
+        ax.plot(gap, sw["mean"][...], "k-", lw=2.5, label="suite mean")
+        ax.plot(gap, sw["max"][...], "k--", lw=1.5, label="maximum over the motions")
+        root = s.file
+        target = float(root["sweep"].attrs.get("target_lambda", -1.0)) if "sweep" in root else -1.0
+        if target > 0:
+            ax.axhline(target, color="grey", lw=1, label=f"target {target:g} %")
+        for key, style, label in (("refined_gap_mean", "b:", "refined threshold, mean"),
+                                  ("refined_gap_every", "r-.", "refined threshold, every motion")):
+            g = float(sw[key][()])
+            if g >= 0:
+                ax.axvline(1e3 * g, color=style[0], ls=style[1:], lw=1.5, label=f"{label}: {1e3 * g:.3f} mm")
+        ax.set_xlabel("gap (mm)")
+        ax.set_ylabel("largest |lambda| (%), targeted quantities")
+        ax.set_title("Gap sweep over the suite (thin: each motion)")
+        ax.legend(fontsize=7)
+        fig.tight_layout()
+        save(fig, "sweep")
 
 
 def main(argv=None):
@@ -40,7 +150,6 @@ def main(argv=None):
     if "suite" not in f:
         fail(f"{args.file}: no /suite (the deck has one ground motion)")
     s = f["suite"]
-    names = [n.decode() if isinstance(n, bytes) else str(n) for n in s["names"][...]]
     outdir = args.outdir or os.path.dirname(os.path.abspath(args.file))
     stem = os.path.join(outdir, os.path.splitext(os.path.basename(args.file))[0])
     written = []
@@ -52,70 +161,7 @@ def main(argv=None):
             written.append(path)
         plt.close(fig)
 
-    # Spectra: (n_motions, n_periods) in Fortran order -> h5py (n_periods, n_motions).
-    period = s["spectrum/period"][...]
-    sa = np.atleast_2d(s["spectrum/sa"][...])
-    if sa.shape[0] != len(period):
-        sa = sa.T
-    fig, ax = plt.subplots(figsize=(7, 4.5))
-    for k, name in enumerate(names):
-        ax.loglog(period, sa[:, k], lw=0.8, alpha=0.7, label=name)
-    ax.loglog(period, s["spectrum/mean_sa"][...], "k", lw=2.5, label="mean")
-    for t in s["building_period"][...]:
-        ax.axvline(t, color="grey", ls="--", lw=0.8)
-    ax.set_xlabel("period T (s)")
-    ax.set_ylabel("Sa (m/s$^2$), 5 % damping")
-    ax.set_title("Spectra of the scaled motions; dashed: fundamental periods")
-    ax.legend(fontsize=7, ncol=2)
-    fig.tight_layout()
-    save(fig, "spectra")
-
-    # Lambda of the storey shear per storey: per motion (thin) and the mean (thick).
-    if "influence" in s:
-        buildings = list(s["influence"].keys())
-        fig, axes = plt.subplots(1, len(buildings), figsize=(4 * len(buildings), 5), squeeze=False)
-        for ax, b in zip(axes[0], buildings):
-            lam = np.atleast_2d(s[f"influence/{b}/storey_shear"][...])   # (n, n_motions)
-            if lam.shape[1] != len(names):
-                lam = lam.T
-            storeys = np.arange(1, lam.shape[0] + 1)
-            for k in range(len(names)):
-                ax.plot(lam[:, k], storeys, lw=0.8, alpha=0.7)
-            ax.plot(s[f"mean/influence/{b}/storey_shear"][...], storeys, "k", lw=2.5, label="mean of lambdas")
-            ax.plot(s[f"lambda_of_means/{b}/storey_shear"][...], storeys, "r--", lw=1.5, label="lambda of means")
-            ax.axvline(0, color="grey", lw=0.5)
-            ax.set_title(f"building {b}: storey shear")
-            ax.set_xlabel("lambda (%)")
-            ax.set_ylabel("storey")
-            ax.legend(fontsize=7)
-        fig.tight_layout()
-        save(fig, "lambda")
-
-    # Separation rules against the no-contact gap, per pair.
-    if "separation" in s:
-        rules = ["abs", "srss", "ec8", "ddc"]
-        nc = np.atleast_2d(s["separation/no_contact"][...])
-        if nc.shape[1] != len(names) + 1:
-            nc = nc.T
-        n_pairs = nc.shape[0]
-        fig, axes = plt.subplots(1, n_pairs, figsize=(3.2 * n_pairs, 4), squeeze=False)
-        for p, ax in enumerate(axes[0]):
-            x = np.arange(len(names) + 1)
-            ax.plot(x, 1e3 * nc[p], "ko-", lw=2, label="no-contact gap")
-            for r in rules:
-                v = np.atleast_2d(s[f"separation/{r}"][...])
-                if v.shape[1] != len(names) + 1:
-                    v = v.T
-                ax.plot(x, 1e3 * v[p], "o-", lw=0.8, ms=3, label=r.upper())
-            ax.set_xticks(x)
-            ax.set_xticklabels(names + ["suite"], rotation=90, fontsize=7)
-            ax.set_title(f"pair {p + 1}")
-            ax.set_ylabel("separation (mm)")
-        axes[0][0].legend(fontsize=7)
-        fig.suptitle("Code rules on elastic peaks (no amplification) vs the exact no-contact gap", fontsize=9)
-        fig.tight_layout()
-        save(fig, "separation")
-
+    plot_all(s, plt, np, save)
     for path in written:
         print("wrote " + path)
 

@@ -11,7 +11,8 @@
 !>   correlation of two oscillators (Der Kiureghian 1981), r = T1/T2:
 !>   rho = 8 sqrt(z1 z2) (z1 + r z2) r^1.5 / ((1 - r^2)^2 + 4 z1 z2 r (1 + r^2) + 4 (z1^2 + z2^2) r^2);
 !> * the exact no-contact gap max_t (u1(t) - u2(t)) of the uncoupled histories (0 if the
-!>   joint never closes): the smallest gap at which the buildings never touch.
+!>   joint never closes): the smallest gap at which the buildings never touch;
+!> * (held here, computed by pound_suite) the time-history threshold gap of the gap sweep.
 !>
 !> The formulas are pure elemental functions that assume valid arguments; `separation_rules`
 !> checks the arguments and returns all of them.
@@ -37,6 +38,10 @@ module pound_separation
       real(dp) :: rho = 0.0_dp
       !> Exact no-contact gap from the histories.
       real(dp) :: no_contact = 0.0_dp
+      !> Time-history threshold gap of a suite's gap sweep (pound_suite): the smallest gap
+      !> meeting the sweep's target, the same for every pair (a sweep gives every pair the same
+      !> gap); -1 when not computed (no `&sweep`, no target, or no gap of the range meets it).
+      real(dp) :: time_history = -1.0_dp
    end type separation_t
 
 contains

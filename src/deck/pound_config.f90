@@ -75,6 +75,8 @@ module pound_config
       !> Synthetic: duration (s), target PGA of the generator (m/s^2), seed.
       real(dp) :: duration = 20.0_dp, pga = 0.0_dp
       integer :: seed = 1
+      !> Suite: write this motion's histories under /suite/<name>/ of the HDF5 file.
+      logical :: histories = .false.
    end type ground_config
 
    !> `&building`: one shear building (rigid beams, one lateral DOF per floor).
@@ -178,6 +180,8 @@ module pound_config
       real(dp) :: target = -1.0_dp
       !> Quantities the target applies to (same order as `history_names`).
       logical :: target_quantities(n_history_quantities) = .true.
+      !> Tolerance (m) of the bisection refinement of a suite's threshold gaps (pound_suite).
+      real(dp) :: refine_tolerance = 1.0e-5_dp
    end type sweep_config
 
    !> A whole, validated deck.

@@ -51,7 +51,7 @@ module pound_deck_checks
 
    !> The ranges: generous enough for any real structure and record, tight enough that every
    !> value inside gives finite derived quantities (12EI/h^3, masses, periods, forces).
-   type(bound_t), parameter :: bounds(42) = [ &
+   type(bound_t), parameter :: bounds(43) = [ &
       bound_t('analysis:dt', 1.0e-7_dp, 1.0_dp, 's', .false.), &
       bound_t('analysis:t_end', 0.0_dp, 1.0e4_dp, 's', .false.), &
       bound_t('ground:x0', 1.0e-9_dp, 10.0_dp, 'm', .true.), &
@@ -93,7 +93,8 @@ module pound_deck_checks
       bound_t('contact:peak_penetration', 1.0e-9_dp, 10.0_dp, 'm', .false.), &
       bound_t('contact:fracture_penetration', 1.0e-9_dp, 10.0_dp, 'm', .false.), &
       bound_t('contact:envelope_r', 0.0_dp, 1.0e10_dp, 'kN', .false.), &
-      bound_t('sweep:target_lambda', 0.0_dp, 1.0e6_dp, '%', .false.)]
+      bound_t('sweep:target_lambda', 0.0_dp, 1.0e6_dp, '%', .false.), &
+      bound_t('sweep:refine_tolerance', 1.0e-9_dp, 1.0_dp, 'm', .false.)]
 
 contains
 

@@ -36,14 +36,14 @@ contains
       real(dp) :: ground_frequency, ground_damping, filter_frequency, filter_damping
       real(dp) :: rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga
       integer :: ios, seed
-      logical :: exists
+      logical :: exists, histories
       character(len=:), allocatable :: buf
       character(len=:), allocatable :: resolved
       character(len=512) :: msg
       type(site) :: at
       namelist /ground/ kind, x0, a, b, file, format, scale, name, scale_to, target, period, &
          filter, ground_frequency, ground_damping, filter_frequency, filter_damping, envelope, &
-         rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga, seed
+         rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga, seed, histories
 
       kind = ' '
       format = ' '
@@ -70,6 +70,7 @@ contains
       duration = unset_real
       pga = unset_real
       seed = unset_int
+      histories = .false.
       at = site_of(path, g)
       if (n_motions > 1) at%label = at%label//' #'//str(g%occurrence)
       call group_text(text, g, buf)
@@ -79,6 +80,7 @@ contains
       if (allocated(error)) return
 
       cfg%name = trim(adjustl(name))
+      cfg%histories = histories
       if (len(cfg%name) == 0) then
          if (n_motions > 1) then
             call fail(at, 'name', 'name is missing: every motion of a suite (a deck with more '// &

@@ -29,17 +29,18 @@ contains
       type(sweep_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: gap_from, gap_to, target_lambda
+      real(dp) :: gap_from, gap_to, target_lambda, refine_tolerance
       integer :: n_gaps, ios
       character(len=path_len) :: target_quantities
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
-      namelist /sweep/ gap_from, gap_to, n_gaps, target_lambda, target_quantities
+      namelist /sweep/ gap_from, gap_to, n_gaps, target_lambda, target_quantities, refine_tolerance
 
       gap_from = unset_real
       gap_to = unset_real
       target_lambda = unset_real
+      refine_tolerance = unset_real
       n_gaps = unset_int
       target_quantities = 'u a_abs drift storey_shear'
       at = site_of(path, g)
@@ -73,6 +74,11 @@ contains
          call check_real(at, 'target_lambda', target_lambda, '>', 0.0_dp, error)
          if (allocated(error)) return
          cfg%target = target_lambda
+      end if
+      if (is_set(refine_tolerance)) then
+         call check_real(at, 'refine_tolerance', refine_tolerance, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%refine_tolerance = refine_tolerance
       end if
       call parse_history(at, target_quantities, cfg%target_quantities, error, 'target_quantities')
       if (allocated(error)) return

@@ -24,6 +24,12 @@
 !>   no-contact gap needs `history` with 'u'; it is sampled every `output_every` steps), and
 !>   for the suite from the mean peak displacements (ABS, SRSS, EC8, DDC) and the mean of the
 !>   per-motion no-contact gaps. Elastic time-history peaks, no amplification factors.
+!> * the time-history threshold gap (with `&sweep` and a target): per motion, the smallest gap
+!>   of the sweep from which on the motion's own largest |lambda| meets the target, refined by
+!>   bisection; for the suite, that of the suite mean. One value for every pair (the sweep gives
+!>   every pair the same gap); -1 when not computed (no sweep, no target, none in the range).
+!> * per-motion histories, for the motions whose `&ground` sets `histories` (kept for the
+!>   HDF5 writer; the other motions keep only their peaks).
 !> * spectra: Sa of every scaled motion at `n_spectrum` log-spaced periods from 0.02 to 4 s plus
 !>   the buildings' fundamental periods, and their mean.
 module pound_suite
@@ -31,7 +37,7 @@ module pound_suite
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: deck_type, ground_config, n_history_quantities
-   use pound_deck_variables, only: word_len
+   use pound_deck_variables, only: word_len, path_len
    use pound_ground_motion, only: ground_motion_t, sample_ground
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
    use pound_structure, only: structure_model
@@ -42,19 +48,35 @@ module pound_suite
    use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
                                separation_ddc, cqc_correlation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion
+   use pound_analysis, only: analysis_result
    implicit none
    private
 
    public :: suite_result, run_suite, suite_motion, suite_pairs, n_spectrum, spectrum_damping
-   public :: refine_tolerance
-
-   !> Tolerance of the bisection refinement of the threshold gap (m): 0.01 mm.
-   real(dp), parameter :: refine_tolerance = 1.0e-5_dp
+   public :: motion_histories, bisection, bisection_step, bisection_update, time_history_gap
 
    !> Log-spaced periods of the suite spectra (before the buildings' periods are added).
    integer, parameter :: n_spectrum = 60
    !> Damping ratio of the spectra and of `scale_to = 'sa'`.
    real(dp), parameter :: spectrum_damping = 0.05_dp
+
+   !> Bisection for a threshold gap: `lo` fails the target, `hi` meets it; halved until
+   !> hi - lo <= tol (reverse communication: `bisection_step` gives the trial gap,
+   !> `bisection_update` takes its verdict).
+   type :: bisection
+      !> Failing and passing gap, tolerance (m).
+      real(dp) :: lo = 0.0_dp, hi = 0.0_dp, tol = 0.0_dp
+   end type bisection
+
+   !> The histories of one motion of the suite, kept when its `&ground` sets `histories`.
+   type :: motion_histories
+      !> Whether they were kept, and whether the coupled analysis ran.
+      logical :: stored = .false., has_coupled = .false.
+      !> Ground acceleration at the output times (m/s^2).
+      real(dp), allocatable :: ag_out(:)
+      !> Uncoupled and coupled results.
+      type(analysis_result) :: unc, cpl
+   end type motion_histories
 
    !> Influence coefficients of one building over the suite, (n, n_history_quantities) each.
    type :: building_suite
@@ -69,11 +91,17 @@ module pound_suite
       !> Motion names, the scale factor applied by the suite (1 for `scale`), PGA (m/s^2) of
       !> the motion as run.
       character(len=word_len), allocatable :: names(:)
+      !> Where each motion comes from: the record file as resolved, 'synthetic, seed N' or
+      !> 'pulse'.
+      character(len=path_len), allocatable :: source(:)
       real(dp), allocatable :: scale_factor(:), pga(:)
       !> Periods of the spectra (s), Sa (m/s^2, n_motions x n_periods) and its suite mean.
       real(dp), allocatable :: period(:), sa(:, :), mean_sa(:)
       !> Fundamental period of every building (s).
       real(dp), allocatable :: building_period(:)
+      !> Scaling target of every motion (m/s^2; -1: scaled by a factor) and its period (s; the
+      !> period of a Sa target, 0 for a PGA target, the rigid limit of the spectrum; -1: none).
+      real(dp), allocatable :: target(:), target_period(:)
       !> Sa of every motion at every building's fundamental period (n_motions, n_buildings).
       real(dp), allocatable :: sa_building(:, :)
       !> Whether the deck declares contact (influence and separation exist).
@@ -102,9 +130,55 @@ module pound_suite
       !> Grid gaps below the safe gap that pass nevertheless (non-monotone behaviour), on the
       !> mean and on every motion.
       integer :: non_monotone_mean = 0, non_monotone_every = 0
+      !> Per motion: the safe grid gap and its refinement on the motion's own largest |lambda|
+      !> (m; -1 when none), and the grid gaps below it that pass nevertheless (n_motions).
+      real(dp), allocatable :: safe_gap_motion(:), refined_gap_motion(:)
+      integer, allocatable :: non_monotone_motion(:)
+      !> Tolerance of the refinements (m, `&sweep refine_tolerance`).
+      real(dp) :: refine_tolerance = 0.0_dp
+      !> Per motion: its histories, when asked (n_motions).
+      type(motion_histories), allocatable :: histories(:)
    end type suite_result
 
 contains
+
+   !> Next trial gap `mid` of the bisection `b`, or `more` false when hi - lo <= tol.
+   pure subroutine bisection_step(b, mid, more)
+      !> The bisection.
+      type(bisection), intent(in) :: b
+      !> Trial gap (m), the midpoint; unchanged when `more` is false.
+      real(dp), intent(inout) :: mid
+      !> Whether a trial is needed.
+      logical, intent(out) :: more
+
+      more = b%hi - b%lo > b%tol
+      if (more) mid = 0.5_dp*(b%lo + b%hi)
+   end subroutine bisection_step
+
+   !> The verdict on the trial gap `mid`: it becomes `hi` when it meets the target, else `lo`.
+   pure subroutine bisection_update(b, mid, passes)
+      !> The bisection.
+      type(bisection), intent(inout) :: b
+      !> Trial gap (m).
+      real(dp), intent(in) :: mid
+      !> Whether `mid` meets the target.
+      logical, intent(in) :: passes
+
+      if (passes) then
+         b%hi = mid
+      else
+         b%lo = mid
+      end if
+   end subroutine bisection_update
+
+   !> The time-history threshold gap: the refined gap when there is one, else the safe grid
+   !> gap (the first gap of the grid when it already meets the target: an upper bound), else -1.
+   elemental real(dp) function time_history_gap(safe, refined) result(gap)
+      !> Safe grid gap and its refinement (m; -1: none).
+      real(dp), intent(in) :: safe, refined
+
+      gap = merge(refined, safe, refined >= 0.0_dp)
+   end function time_history_gap
 
    !> The ground motion k of the suite as it is run, and the factor the suite applied to it.
    subroutine suite_motion(deck, k, models, gm, factor, error)
@@ -263,13 +337,13 @@ contains
       np = size(left)
       suite%has_coupled = np > 0
       nmax = maxval(deck%buildings%n_storeys)
-      allocate (suite%names(nm))
+      allocate (suite%names(nm), suite%source(nm), suite%target(nm), suite%target_period(nm))
       allocate (suite%scale_factor(nm), suite%pga(nm), suite%sa(nm, size(suite%period)), &
                 suite%sa_building(nm, nb), ag(0:n_steps), mean_unc(nmax, n_history_quantities, nb), &
                 mean_cpl(nmax, n_history_quantities, nb))
       mean_unc = 0.0_dp
       mean_cpl = 0.0_dp
-      allocate (suite%building(nb), suite%separation(nm + 1, np))
+      allocate (suite%building(nb), suite%separation(nm + 1, np), suite%histories(nm))
       do ib = 1, nb
          associate (n => deck%buildings(ib)%n_storeys, s => suite%building(ib))
             allocate (s%lambda(nm, n, n_history_quantities), s%mean_lambda(n, n_history_quantities), &
@@ -281,12 +355,32 @@ contains
          end associate
       end do
       has_u = deck%analysis%store(1)
+      suite%refine_tolerance = deck%sweep%refine_tolerance
       targeted = deck%sweep%target_quantities
       if (.not. (deck%sweep%target > 0.0_dp)) targeted = .true.
       if (present(label)) options%label = label
 
       do k = 1, nm
          suite%names(k) = deck%motions(k)%name
+         select case (deck%motions(k)%kind)
+         case ('record')
+            suite%source(k) = deck%motions(k)%file
+         case ('synthetic')
+            suite%source(k) = 'synthetic, seed '//str(deck%motions(k)%seed)
+         case default
+            suite%source(k) = deck%motions(k)%kind
+         end select
+         suite%target(k) = -1.0_dp
+         suite%target_period(k) = -1.0_dp
+         select case (deck%motions(k)%scale_to)
+         case ('pga')
+            suite%target(k) = deck%motions(k)%target
+            suite%target_period(k) = 0.0_dp
+         case ('sa')
+            suite%target(k) = deck%motions(k)%target
+            suite%target_period(k) = deck%motions(k)%period
+            if (.not. (suite%target_period(k) > 0.0_dp)) suite%target_period(k) = maxval(suite%building_period)
+         end select
          allocate (options%ground)
          call suite_motion(deck, k, models, options%ground, suite%scale_factor(k), error)
          if (allocated(error)) return
@@ -310,8 +404,10 @@ contains
          end if
          if (k == 1) then
             call gather(first)
+            call keep(first)
          else
             call gather(res)
+            call keep(res)
          end if
       end do
       suite%mean_sa = sum(suite%sa, dim=1)/nm
@@ -339,12 +435,53 @@ contains
          suite%safe_gap_every = safe_gap(suite%sweep_max)
          suite%non_monotone_mean = non_monotone(suite%sweep_mean, suite%safe_gap_mean)
          suite%non_monotone_every = non_monotone(suite%sweep_max, suite%safe_gap_every)
-         call refine(suite%safe_gap_mean, .true., suite%refined_gap_mean, error)
+         call refine(suite%safe_gap_mean, 0, suite%refined_gap_mean, error)
          if (allocated(error)) return
-         call refine(suite%safe_gap_every, .false., suite%refined_gap_every, error)
+         call refine(suite%safe_gap_every, -1, suite%refined_gap_every, error)
+         if (allocated(error)) return
+         allocate (suite%safe_gap_motion(nm), suite%refined_gap_motion(nm), suite%non_monotone_motion(nm))
+         do k = 1, nm
+            suite%safe_gap_motion(k) = safe_gap(suite%sweep_lambda(k, :))
+            suite%non_monotone_motion(k) = non_monotone(suite%sweep_lambda(k, :), suite%safe_gap_motion(k))
+            call refine(suite%safe_gap_motion(k), k, suite%refined_gap_motion(k), error)
+            if (allocated(error)) return
+            suite%separation(k, :)%time_history = time_history_gap(suite%safe_gap_motion(k), &
+                                                                   suite%refined_gap_motion(k))
+         end do
+         suite%separation(nm + 1, :)%time_history = time_history_gap(suite%safe_gap_mean, suite%refined_gap_mean)
       end if
 
    contains
+
+      !> The histories of motion k, when its `&ground` asks for them.
+      subroutine keep(res)
+         type(case_result), intent(in) :: res
+
+         if (.not. deck%motions(k)%histories) return
+         suite%histories(k)%stored = .true.
+         suite%histories(k)%ag_out = res%ag_out
+         call copy_histories(res%unc, suite%histories(k)%unc)
+         suite%histories(k)%has_coupled = res%has_coupled
+         if (res%has_coupled) call copy_histories(res%cpl, suite%histories(k)%cpl)
+      end subroutine keep
+
+      !> What the writer needs of an analysis, component by component (the warnings, an array
+      !> of deferred-length strings, are left out: gfortran 12 does not copy such a component
+      !> of a derived type reliably).
+      subroutine copy_histories(src, dst)
+         type(analysis_result), intent(in) :: src
+         type(analysis_result), intent(inout) :: dst
+
+         dst%n_steps = src%n_steps
+         dst%n_out = src%n_out
+         dst%time = src%time
+         dst%building = src%building
+         dst%energy = src%energy
+         dst%energy_error = src%energy_error
+         dst%joints = src%joints
+         dst%seconds = src%seconds
+         dst%contact_seconds = src%contact_seconds
+      end subroutine copy_histories
 
       !> Peaks, lambdas and rules of motion k.
       subroutine gather(res)
@@ -400,63 +537,62 @@ contains
       end function non_monotone
 
       !> Bisection between the grid gap below `safe` (failing) and `safe` (passing), down to
-      !> `refine_tolerance`: every motion run at the trial gap (no sweep), the criterion on the
-      !> suite mean (`on_mean`) or on every motion.
-      subroutine refine(safe, on_mean, refined, error)
+      !> the tolerance: the motions run at the trial gap (no sweep), the criterion on the suite
+      !> mean (`which` = 0), on every motion (-1) or on motion `which` alone (> 0).
+      subroutine refine(safe, which, refined, error)
          real(dp), intent(in) :: safe
-         logical, intent(in) :: on_mean
+         integer, intent(in) :: which
          real(dp), intent(out) :: refined
          type(error_type), allocatable, intent(out) :: error
          type(deck_type) :: plain
-         real(dp) :: lo, hi, mid, worst_mean, worst_max
+         type(bisection) :: b
+         real(dp) :: mid, worst
          integer :: ig
+         logical :: more
 
          refined = -1.0_dp
          ig = findloc(suite%sweep_gap, safe, 1)
          if (.not. (safe > 0.0_dp) .or. ig <= 1) return
          plain = deck
          plain%sweep%active = .false.
-         lo = suite%sweep_gap(ig - 1)
-         hi = safe
-         do while (hi - lo > refine_tolerance)
-            mid = 0.5_dp*(lo + hi)
-            call worst_at(plain, mid, worst_mean, worst_max, error)
+         b = bisection(suite%sweep_gap(ig - 1), safe, deck%sweep%refine_tolerance)
+         mid = safe
+         do
+            call bisection_step(b, mid, more)
+            if (.not. more) exit
+            call worst_at(plain, mid, which, worst, error)
             if (allocated(error)) return
-            if (on_mean) then
-               if (worst_mean <= deck%sweep%target) then
-                  hi = mid
-               else
-                  lo = mid
-               end if
-            else
-               if (worst_max <= deck%sweep%target) then
-                  hi = mid
-               else
-                  lo = mid
-               end if
-            end if
+            call bisection_update(b, mid, worst <= deck%sweep%target)
          end do
-         refined = hi
+         refined = b%hi
       end subroutine refine
 
-      !> Every motion at one gap: the suite mean and the maximum over the motions of the
-      !> largest |lambda| over the targeted quantities and the buildings.
-      subroutine worst_at(plain, gap, worst_mean, worst_max, error)
+      !> The motions at one gap: the largest |lambda| over the targeted quantities and the
+      !> buildings, as the suite mean (`which` = 0: the mean per quantity and building, then the
+      !> largest), the largest over the motions (-1), or of motion `which` alone (> 0).
+      subroutine worst_at(plain, gap, which, worst, error)
          type(deck_type), intent(in) :: plain
          real(dp), intent(in) :: gap
-         real(dp), intent(out) :: worst_mean, worst_max
+         integer, intent(in) :: which
+         real(dp), intent(out) :: worst
          type(error_type), allocatable, intent(out) :: error
          type(case_options) :: opt
          type(case_result) :: r
          real(dp) :: lam(n_history_quantities, nb), total(n_history_quantities, nb)
-         real(dp) :: factor
-         integer :: m, iq
+         real(dp) :: factor, worst_max
+         integer :: m, iq, m_first, m_last
 
          total = 0.0_dp
          worst_max = 0.0_dp
          opt%gap = gap
          if (present(label)) opt%label = label
-         do m = 1, nm
+         m_first = 1
+         m_last = nm
+         if (which > 0) then
+            m_first = which
+            m_last = which
+         end if
+         do m = m_first, m_last
             allocate (opt%ground)
             call suite_motion(deck, m, models, opt%ground, factor, error)
             if (allocated(error)) return
@@ -470,7 +606,11 @@ contains
             total = total + lam/nm
             worst_max = max(worst_max, maxval(lam))
          end do
-         worst_mean = maxval(total)
+         if (which == 0) then
+            worst = maxval(total)
+         else
+            worst = worst_max
+         end if
       end subroutine worst_at
 
       !> Smallest gap from which on every larger gap of the sweep `worst` <= the target.

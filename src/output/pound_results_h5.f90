@@ -42,7 +42,7 @@ module pound_results_h5
    implicit none
    private
 
-   public :: write_results_h5
+   public :: write_results_h5, write_analysis_h5
 
    !> Units, as written in the root attribute.
    character(len=*), parameter :: units = 'kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
@@ -111,10 +111,10 @@ contains
             call write_model(models(ib), buildings(ib))
             if (allocated(error)) return
          end do
-         call write_analysis('/uncoupled', unc)
+         call write_analysis_h5(h5, '/uncoupled', models, unc, error)
          if (allocated(error)) return
          if (.not. present(cpl)) return
-         call write_analysis('/coupled', cpl)
+         call write_analysis_h5(h5, '/coupled', models, cpl, error)
          if (allocated(error)) return
          if (present(cs)) then
             call write_contact()
@@ -207,46 +207,6 @@ contains
          end associate
       end subroutine write_frame
 
-      subroutine write_analysis(g, res)
-         character(len=*), intent(in) :: g
-         type(analysis_result), intent(in) :: res
-         character(len=:), allocatable :: gb
-         integer :: i, n
-
-         n = res%n_out
-         call h5_write(h5, g//'/time', res%time, error)
-         if (allocated(error)) return
-         call h5_write(h5, g//'/energy', res%energy, error)
-         if (allocated(error)) return
-         call h5_write_attr(h5, g//'/energy', 'components', 'input kinetic strain damping contact plastic', &
-                            error)
-         if (allocated(error)) return
-         call h5_write_attr(h5, g//'/energy', 'relative_error', res%energy_error, error)
-         if (allocated(error)) return
-         call h5_write_attr(h5, g, 'integration_seconds', res%seconds, error)
-         if (allocated(error)) return
-         do i = 1, size(models)
-            gb = g//'/'//models(i)%name//'/'
-            associate (r => res%building(i))
-               if (r%store(q_u)) call h5_write(h5, gb//'u', r%u(:, 1:n), error)
-               if (allocated(error)) return
-               if (r%store(q_v)) call h5_write(h5, gb//'v', r%v(:, 1:n), error)
-               if (allocated(error)) return
-               if (r%store(q_a_abs)) call h5_write(h5, gb//'a_abs', r%a_abs(:, 1:n), error)
-               if (allocated(error)) return
-               if (r%store(q_drift)) call h5_write(h5, gb//'drift', r%drift(:, 1:n), error)
-               if (allocated(error)) return
-               if (r%store(q_shear)) call h5_write(h5, gb//'storey_shear', r%shear(:, 1:n), error)
-               if (allocated(error)) return
-               do q = 1, n_history_quantities
-                  call h5_write(h5, gb//'peak/'//trim(history_names(q)), r%peak(:, q), error)
-                  if (allocated(error)) return
-                  call h5_write(h5, gb//'peak_time/'//trim(history_names(q)), r%peak_time(:, q), error)
-                  if (allocated(error)) return
-               end do
-            end associate
-         end do
-      end subroutine write_analysis
 
       subroutine write_contact()
          character(len=:), allocatable :: labels
@@ -352,5 +312,56 @@ contains
       end function event_pairs
 
    end subroutine write_results_h5
+
+   !> Write one analysis (time, energy, the stored histories and the peaks of every building)
+   !> under the group `g` of an open file.
+   subroutine write_analysis_h5(h5, g, models, res, error)
+      !> Open file.
+      type(h5_file), intent(inout) :: h5
+      !> Group path, e.g. '/uncoupled'.
+      character(len=*), intent(in) :: g
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> The analysis.
+      type(analysis_result), intent(in) :: res
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: gb
+      integer :: i, n, q
+
+      n = res%n_out
+      call h5_write(h5, g//'/time', res%time, error)
+      if (allocated(error)) return
+      call h5_write(h5, g//'/energy', res%energy, error)
+      if (allocated(error)) return
+      call h5_write_attr(h5, g//'/energy', 'components', 'input kinetic strain damping contact plastic', &
+                         error)
+      if (allocated(error)) return
+      call h5_write_attr(h5, g//'/energy', 'relative_error', res%energy_error, error)
+      if (allocated(error)) return
+      call h5_write_attr(h5, g, 'integration_seconds', res%seconds, error)
+      if (allocated(error)) return
+      do i = 1, size(models)
+         gb = g//'/'//models(i)%name//'/'
+         associate (r => res%building(i))
+            if (r%store(q_u)) call h5_write(h5, gb//'u', r%u(:, 1:n), error)
+            if (allocated(error)) return
+            if (r%store(q_v)) call h5_write(h5, gb//'v', r%v(:, 1:n), error)
+            if (allocated(error)) return
+            if (r%store(q_a_abs)) call h5_write(h5, gb//'a_abs', r%a_abs(:, 1:n), error)
+            if (allocated(error)) return
+            if (r%store(q_drift)) call h5_write(h5, gb//'drift', r%drift(:, 1:n), error)
+            if (allocated(error)) return
+            if (r%store(q_shear)) call h5_write(h5, gb//'storey_shear', r%shear(:, 1:n), error)
+            if (allocated(error)) return
+            do q = 1, n_history_quantities
+               call h5_write(h5, gb//'peak/'//trim(history_names(q)), r%peak(:, q), error)
+               if (allocated(error)) return
+               call h5_write(h5, gb//'peak_time/'//trim(history_names(q)), r%peak_time(:, q), error)
+               if (allocated(error)) return
+            end do
+         end associate
+      end do
+   end subroutine write_analysis_h5
 
 end module pound_results_h5

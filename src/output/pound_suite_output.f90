@@ -4,17 +4,26 @@
 !> HDF5 (appended to the results file):
 !>
 !>     /suite/names, /suite/scale_factor, /suite/pga            (n_motions); m/s^2
+!>     /suite/source       (n_motions) record file as resolved, 'synthetic, seed N' or 'pulse'
 !>     /suite/building_period                                   (n_buildings), s
+!>     /suite/target, /suite/target_period   (n_motions) scaling target m/s^2 and its period s
+!>        (0: a PGA target; -1: scaled by a factor)
 !>     /suite/spectrum/period (n_periods), /suite/spectrum/sa   (n_motions, n_periods), m/s^2
 !>     /suite/spectrum/mean_sa                                  (n_periods)
 !>     /suite/influence/<b>/<q>                                 (n_motions, n), %
 !>     /suite/mean/influence/<b>/<q>, /suite/max/influence/<b>/<q>, /suite/lambda_of_means/<b>/<q>  (n)
 !>     /suite/separation/<rule>                                 (n_motions + 1, n_pairs), m;
-!>        rule: abs, srss, ec8, ddc, no_contact; the last row is the suite value
+!>        rule: abs, srss, ec8, ddc, no_contact, time_history; the last row is the suite value
+!>        (time_history: the threshold gap of the sweep, -1 when not computed)
 !>     /suite/sweep/gap, /suite/sweep/mean, /suite/sweep/max   (n_gaps), m and %
 !>     /suite/sweep/max_abs_lambda                              (n_motions, n_gaps), %
 !>     /suite/sweep/safe_gap_mean, /suite/sweep/safe_gap_every  scalars (m; -1: none)
-!>     /suite/sweep/refined_gap_mean, /suite/sweep/refined_gap_every  bisection to 1e-5 m (-1: none)
+!>     /suite/sweep/refined_gap_mean, /suite/sweep/refined_gap_every  bisection (-1: none)
+!>     /suite/sweep/safe_gap_motion, refined_gap_motion, non_monotone_motion  (n_motions)
+!>     /suite/sweep attributes refine_tolerance (m), non_monotone_mean, non_monotone_every
+!>     /suite/<motion>/ground/acceleration, /suite/<motion>/uncoupled/..., /suite/<motion>/coupled/...
+!>        (as /uncoupled and /coupled) and /suite/<motion>/coupled/contact/force, closing
+!>        (n_out, n_pairs): only for the motions whose `&ground` sets `histories`
 !>
 !> (the arrays are written in Fortran order, so h5py shows them transposed).
 module pound_suite_output
@@ -25,16 +34,17 @@ module pound_suite_output
    use pound_structure, only: structure_model
    use pound_influence, only: building_influence
    use pound_listing, only: write_section, write_influence_tables
-   use pound_h5, only: h5_file, h5_open, h5_close, h5_write
+   use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
+   use pound_results_h5, only: write_analysis_h5
    implicit none
    private
 
    public :: write_suite_listing, write_suite_h5
 
    !> Separation rules, as named in HDF5.
-   character(len=*), parameter :: rule_names(5) = &
-      [character(len=10) :: 'abs', 'srss', 'ec8', 'ddc', 'no_contact']
+   character(len=*), parameter :: rule_names(6) = &
+      [character(len=12) :: 'abs', 'srss', 'ec8', 'ddc', 'no_contact', 'time_history']
 
 contains
 
@@ -68,6 +78,10 @@ contains
       write (u, '(2x,a20,14x,es14.6,*(es14.6))', iostat=ios, iomsg=msg) 'mean', sum(suite%pga)/nm, &
          sum(suite%sa_building, dim=1)/nm
       write (u, '(2x,a20,28x,*(f14.4))', iostat=ios, iomsg=msg) 'period T1 (s)', suite%building_period
+      write (u, '(/,2x,a20,2x,a)', iostat=ios, iomsg=msg) 'motion', 'source'
+      do k = 1, nm
+         write (u, '(2x,a20,2x,a)', iostat=ios, iomsg=msg) trim(suite%names(k)), trim(suite%source(k))
+      end do
       if (ios /= 0) then
          call fatal_error(error, 'listing: '//trim(msg))
          return
@@ -104,14 +118,17 @@ contains
          'uncoupled runs, without displacement amplification factors.', &
          '  ABS = u1 + u2, SRSS, EC8 4.4.2.7 (SRSS x 0.7 where floor levels coincide), DDC (CQC rho), ', &
          '  no-contact gap = max_t (u1(t) - u2(t)) of the stored uncoupled histories (-1: u not stored).', &
+         '  time_history = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
+         '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
+         '  (-1: not computed: no &sweep, no target_lambda, or no gap of the range meets it).', &
          '  The suite row: rules on the mean peaks; no-contact gap: mean over the motions.'
       do ip = 1, size(suite%separation, 2)
          write (u, '(/,a,i0)', iostat=ios, iomsg=msg) '  pair ', ip
-         write (u, '(2x,a20,*(a14))', iostat=ios, iomsg=msg) 'motion', (trim(rule_names(q)), q=1, 5)
+         write (u, '(2x,a20,*(a14))', iostat=ios, iomsg=msg) 'motion', (trim(rule_names(q)), q=1, size(rule_names))
          do k = 1, nm + 1
             associate (s => suite%separation(k, ip))
                write (u, '(2x,a20,*(es14.6))', iostat=ios, iomsg=msg) trim(row_name(k)), s%abs, &
-                  s%srss, s%ec8, s%ddc, s%no_contact
+                  s%srss, s%ec8, s%ddc, s%no_contact, s%time_history
             end associate
          end do
       end do
@@ -128,11 +145,22 @@ contains
             suite%safe_gap_mean, ' m (-1: none in the range, or no target)'
          write (u, '(a,es14.6,a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on every motion: ', &
             suite%safe_gap_every, ' m'
-         write (u, '(a,2es14.6,a)', iostat=ios, iomsg=msg) '  refined by bisection (mean, every motion): ', &
-            suite%refined_gap_mean, suite%refined_gap_every, ' m (tolerance 1e-5 m; -1: not refined)'
+         write (u, '(a,2es14.6,a,es10.3,a)', iostat=ios, iomsg=msg) '  refined by bisection (mean, every '// &
+            'motion): ', suite%refined_gap_mean, suite%refined_gap_every, ' m (tolerance ', suite%refine_tolerance, &
+            ' m; -1: not refined)'
          write (u, '(a,2(1x,i0),a)', iostat=ios, iomsg=msg) '  non-monotone: grid gaps below the safe gap '// &
             'that pass nevertheless (mean, every motion):', suite%non_monotone_mean, suite%non_monotone_every, &
             '  (0: monotone on the grid)'
+         if (suite%non_monotone_mean > 0 .or. suite%non_monotone_every > 0) write (u, '(a)', iostat=ios, &
+            iomsg=msg) '  WARNING: |lambda| is not monotone in the gap: a smaller gap of the grid passes, '// &
+            'yet the thresholds above are the gaps from which on every larger gap passes'
+         write (u, '(/,a)', iostat=ios, iomsg=msg) '  Per motion: the threshold on its own largest |lambda| '// &
+            '(the time_history rule)'
+         write (u, '(2x,a20,3a14)', iostat=ios, iomsg=msg) 'motion', 'grid (m)', 'refined (m)', 'non-monotone'
+         do k = 1, nm
+            write (u, '(2x,a20,2es14.6,i14)', iostat=ios, iomsg=msg) trim(suite%names(k)), &
+               suite%safe_gap_motion(k), suite%refined_gap_motion(k), suite%non_monotone_motion(k)
+         end do
       end if
       if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
 
@@ -179,9 +207,12 @@ contains
          character(len=:), allocatable :: b, qn
 
          call h5_write(h5, '/suite/names', suite%names, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/source', suite%source, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/scale_factor', suite%scale_factor, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/pga', suite%pga, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/building_period', suite%building_period, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/target', suite%target, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/target_period', suite%target_period, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/period', suite%period, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/sa', suite%sa, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/mean_sa', suite%mean_sa, error)
@@ -210,13 +241,16 @@ contains
                rule = suite%separation%ec8
             case (4)
                rule = suite%separation%ddc
-            case default
+            case (5)
                rule = suite%separation%no_contact
+            case default
+               rule = suite%separation%time_history
             end select
             call h5_write(h5, '/suite/separation/'//trim(rule_names(r)), rule, error)
             if (allocated(error)) return
          end do
-         if (.not. suite%has_sweep) return
+         call write_histories()
+         if (allocated(error) .or. .not. suite%has_sweep) return
          call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max_abs_lambda', suite%sweep_lambda, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/mean', suite%sweep_mean, error)
@@ -225,7 +259,41 @@ contains
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_every', suite%safe_gap_every, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_mean', suite%refined_gap_mean, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_every', suite%refined_gap_every, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_motion', suite%safe_gap_motion, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_motion', suite%refined_gap_motion, &
+                                                   error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/non_monotone_motion', &
+                                                   suite%non_monotone_motion, error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'non_monotone_mean', &
+                                                        suite%non_monotone_mean, error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'non_monotone_every', &
+                                                        suite%non_monotone_every, error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'refine_tolerance', &
+                                                        suite%refine_tolerance, error)
       end subroutine write_all
+
+      !> /suite/<motion>/... for the motions whose histories were kept.
+      subroutine write_histories()
+         character(len=:), allocatable :: g
+         integer :: k
+
+         do k = 1, size(suite%names)
+            if (.not. suite%histories(k)%stored) cycle
+            associate (h => suite%histories(k))
+               g = '/suite/'//trim(suite%names(k))
+               call h5_write(h5, g//'/ground/time', h%unc%time, error)
+               if (.not. allocated(error)) call h5_write(h5, g//'/ground/acceleration', h%ag_out, error)
+               if (.not. allocated(error)) call write_analysis_h5(h5, g//'/uncoupled', models, h%unc, error)
+               if (allocated(error)) return
+               if (.not. h%has_coupled) cycle
+               call write_analysis_h5(h5, g//'/coupled', models, h%cpl, error)
+               if (.not. allocated(error)) call h5_write(h5, g//'/coupled/contact/force', h%cpl%joints%force, error)
+               if (.not. allocated(error)) call h5_write(h5, g//'/coupled/contact/closing', &
+                                                         h%cpl%joints%closing, error)
+               if (allocated(error)) return
+            end associate
+         end do
+      end subroutine write_histories
 
    end subroutine write_suite_h5
 
