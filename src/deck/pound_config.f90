@@ -33,6 +33,8 @@ module pound_config
       integer :: output_every = 1
       !> Which history quantities are stored (same order as `history_names`).
       logical :: store(n_history_quantities) = .true.
+      !> Histories in the HDF5 file in compressed (deflate) chunks.
+      logical :: compress = .false.
    end type analysis_config
 
    !> `&ground`: one ground motion (a deck with several `&ground` groups is a suite).

@@ -1,4 +1,4 @@
-!> Reader of `&analysis`: title, dt, t_end, output_every, history.
+!> Reader of `&analysis`: title, dt, t_end, output_every, history, compress.
 module pound_deck_analysis
    use pound_config, only: analysis_config
    use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
@@ -31,16 +31,18 @@ contains
       character(len=path_len) :: history
       real(dp) :: dt, t_end
       integer :: output_every, ios
+      logical :: compress
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
-      namelist /analysis/ title, dt, t_end, output_every, history
+      namelist /analysis/ title, dt, t_end, output_every, history, compress
 
       title = ' '
       history = ' '
       dt = unset_real
       t_end = unset_real
       output_every = 1
+      compress = .false.
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -78,6 +80,7 @@ contains
       cfg%dt = dt
       cfg%t_end = t_end
       cfg%output_every = output_every
+      cfg%compress = compress
       call parse_history(at, history, cfg%store, error)
    end subroutine read_analysis
 

@@ -9,6 +9,7 @@
 !>     /<analysis>/time                          (n_out), analysis = uncoupled | coupled
 !>     /<analysis>/<b>/u, v, a_abs               (n_out, n_floors), only those stored
 !>     /<analysis>/<b>/drift, storey_shear       (n_out, n_storeys), only those stored
+!>                                               (with `&analysis compress`: chunked, deflate)
 !>     /<analysis>/<b>/peak/<q>, peak_time/<q>   (n) for every quantity q
 !>     /<analysis>/energy                        (n_out, 6): input, kinetic, strain, damping,
 !>                                               contact, plastic; attributes components, relative_error
@@ -36,7 +37,7 @@ module pound_results_h5
    use pound_contact_law, only: law_name
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
-   use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr
+   use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
    use pound_config, only: sweep_config
    implicit none
@@ -228,15 +229,15 @@ contains
          do i = 1, size(models)
             gb = g//'/'//models(i)%name//'/'
             associate (r => res%building(i))
-               if (r%store(q_u)) call h5_write(h5, gb//'u', r%u(:, 1:n), error)
+               if (r%store(q_u)) call write_history(gb//'u', r%u(:, 1:n))
                if (allocated(error)) return
-               if (r%store(q_v)) call h5_write(h5, gb//'v', r%v(:, 1:n), error)
+               if (r%store(q_v)) call write_history(gb//'v', r%v(:, 1:n))
                if (allocated(error)) return
-               if (r%store(q_a_abs)) call h5_write(h5, gb//'a_abs', r%a_abs(:, 1:n), error)
+               if (r%store(q_a_abs)) call write_history(gb//'a_abs', r%a_abs(:, 1:n))
                if (allocated(error)) return
-               if (r%store(q_drift)) call h5_write(h5, gb//'drift', r%drift(:, 1:n), error)
+               if (r%store(q_drift)) call write_history(gb//'drift', r%drift(:, 1:n))
                if (allocated(error)) return
-               if (r%store(q_shear)) call h5_write(h5, gb//'storey_shear', r%shear(:, 1:n), error)
+               if (r%store(q_shear)) call write_history(gb//'storey_shear', r%shear(:, 1:n))
                if (allocated(error)) return
                do q = 1, n_history_quantities
                   call h5_write(h5, gb//'peak/'//trim(history_names(q)), r%peak(:, q), error)
@@ -247,6 +248,20 @@ contains
             end associate
          end do
       end subroutine write_analysis
+
+      !> One building history (n, n_out): contiguous, or chunked and compressed when the
+      !> deck asks for `compress`.
+      subroutine write_history(path, values)
+         character(len=*), intent(in) :: path
+         real(dp), intent(in), contiguous :: values(:, :)
+
+         if (deck%analysis%compress) then
+            call h5_create_history(h5, path, size(values, 1), size(values, 2), .true., error)
+            if (.not. allocated(error)) call h5_write_columns(h5, path, 1, values, error)
+         else
+            call h5_write(h5, path, values, error)
+         end if
+      end subroutine write_history
 
       subroutine write_contact()
          character(len=:), allocatable :: labels
