@@ -35,14 +35,29 @@ def integration_time(exe, path, out_dir):
     return float(m.group(1))
 
 
-def main():
-    args = sys.argv[1:]
+def parse_args(argv):
+    """EXE REPEATS [--vs OTHER_EXE] -> (EXE, REPEATS, OTHER_EXE or None); shared by bench_eigen.py."""
+    args = list(argv)
     other = None
     if "--vs" in args:
         i = args.index("--vs")
         other = args[i + 1]
         del args[i:i + 2]
-    exe, repeats = args[0], int(args[1])
+    return args[0], int(args[1]), other
+
+
+def interleaved(measure, exe, other, path, count, dir_a, dir_b):
+    """measure(EXE, deck, out_dir) count times, alternating with OTHER_EXE when given: (A times, B times)."""
+    times_a, times_b = [], []
+    for _ in range(count):
+        times_a.append(measure(exe, path, dir_a))
+        if other is not None:
+            times_b.append(measure(other, path, dir_b))
+    return times_a, times_b
+
+
+def main():
+    exe, repeats, other = parse_args(sys.argv[1:])
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         dir_a, dir_b = os.path.join(tmp, "a"), os.path.join(tmp, "b")
@@ -53,12 +68,7 @@ def main():
             with open(path, "w") as f:
                 f.write(deck(n))
             count = repeats if other is not None or n < 10000 else max(3, repeats // 2)
-            times_a, times_b = [], []
-            for _ in range(count):
-                times_a.append(integration_time(exe, path, dir_a))
-                if other is not None:
-                    times_b.append(integration_time(other, path, dir_b))
-            rows.append((n, times_a, times_b))
+            rows.append((n, *interleaved(integration_time, exe, other, path, count, dir_a, dir_b)))
     if other is None:
         print("| storeys | integration time [s] (median) | DOF-steps/s | time per DOF-step [ns] |")
         print("|--:|--:|--:|--:|")

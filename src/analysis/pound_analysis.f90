@@ -27,6 +27,7 @@ module pound_analysis
    use pound_config, only: analysis_config
    use pound_structure, only: structure_model, building_label => structure_label
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
+   use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
                             newmark_energies, newmark_add_balance, newmark_n, en_input, en_kinetic, en_strain, en_damping
@@ -390,6 +391,7 @@ contains
       lcp_start = cs%stats%lcp_seconds
       call system_clock(c0, rate)
       do step = 1, res%n_steps
+         if (mod(step, progress_stride) == 0) call progress_steps(step, res%n_steps)
          t = real(step, dp)*cfg%dt
          do ib = 1, nb
             call newmark_predict(st(ib), models(ib), ag(step) - ag(step - 1))
@@ -425,6 +427,7 @@ contains
          if (allocated(error)) return
       end do
       call system_clock(c1)
+      call progress_run_done()
       res%seconds = real(c1 - c0, dp)/real(rate, dp)
       res%contact_seconds = cs%stats%lcp_seconds - lcp_start
       do ib = 1, nb

@@ -17,6 +17,7 @@ module pound_spectrum
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_sdof, only: sdof_step_t, sdof_step, sdof_advance
+   use pound_sort, only: sort_ascending
    implicit none
    private
 
@@ -169,8 +170,8 @@ contains
       real(dp), intent(in), optional :: t_min
       !> Longest log-spaced period (s), > t_min; default 4.
       real(dp), intent(in), optional :: t_max
-      real(dp) :: lo, hi, all(n + size(extra)), key
-      integer :: k, i, m
+      real(dp) :: lo, hi, all(n + size(extra))
+      integer :: k, m
 
       lo = default_t_min
       hi = default_t_max
@@ -197,17 +198,7 @@ contains
       end do
       all(n) = hi
       all(n + 1:) = extra
-      ! Insertion sort (a few hundred periods at most).
-      do k = 2, size(all)
-         key = all(k)
-         i = k - 1
-         do while (i >= 1)
-            if (all(i) <= key) exit
-            all(i + 1) = all(i)
-            i = i - 1
-         end do
-         all(i + 1) = key
-      end do
+      call sort_ascending(all)
       m = 1
       do k = 2, size(all)
          if (all(k) - all(m) > same_period*all(k)) then

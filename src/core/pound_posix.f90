@@ -1,6 +1,6 @@
 !> The few POSIX (Linux, glibc) calls that Fortran has no statement for: errno and its text,
 !> process id, rename/unlink/mkdir, file identity (device and inode), directory test and lock,
-!> signal dispositions, `_exit`, the standard descriptors and the address-space limit.
+!> signal dispositions, `_exit`, the standard descriptors (open, a terminal) and the address-space limit.
 !>
 !> Every procedure is a thin wrapper that returns the C result or errno; the callers turn
 !> failures into messages. Paths are Fortran strings (a NUL is appended here).
@@ -16,6 +16,7 @@ module pound_posix
    public :: posix_lock_directory, posix_unlock_directory, posix_exit_now
    public :: posix_ignore_signal, posix_set_handler, posix_std_fd_open, posix_reserve_fd
    public :: posix_address_space_limit, posix_unlink_c, posix_write_stderr_c, posix_write, posix_sleep
+   public :: posix_isatty
    public :: sig_int, sig_term, sig_xfsz, sig_pipe, errno_enoent, errno_eexist, errno_eintr
 
    !> Signal numbers (Linux).
@@ -109,6 +110,12 @@ module pound_posix
          type(c_funptr), value :: handler
          type(c_funptr) :: previous
       end function c_signal
+
+      function c_isatty(fd) bind(C, name='isatty') result(yes)
+         import :: c_int
+         integer(c_int), value :: fd
+         integer(c_int) :: yes
+      end function c_isatty
 
       function c_dup(fd) bind(C, name='dup') result(new_fd)
          import :: c_int
@@ -414,6 +421,15 @@ contains
       is_open = copy >= 0
       if (is_open) ignore = c_close(copy)
    end function posix_std_fd_open
+
+   !> Whether file descriptor `fd` is a terminal (isatty(3)).
+   function posix_isatty(fd) result(is_tty)
+      !> Descriptor.
+      integer, intent(in) :: fd
+      logical :: is_tty
+
+      is_tty = c_isatty(int(fd, c_int)) == 1
+   end function posix_isatty
 
    !> Occupy the lowest free descriptor with /dev/null, so that a closed standard
    !> descriptor is never reused by a file of the run; returns the descriptor (or -1).

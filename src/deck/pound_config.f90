@@ -39,6 +39,8 @@ module pound_config
       !> Substeps per impact step (stepping = 'impact'); 0: chosen from the joints' contact
       !> half-periods.
       integer :: impact_substeps = 0
+      !> Histories in the HDF5 file in compressed (deflate) chunks.
+      logical :: compress = .false.
    end type analysis_config
 
    !> `&ground`: one ground motion (a deck with several `&ground` groups is a suite).

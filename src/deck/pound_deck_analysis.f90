@@ -1,4 +1,5 @@
-!> Reader of `&analysis`: title, dt, t_end, output_every, history, stepping, impact_substeps.
+!> Reader of `&analysis`: title, dt, t_end, output_every, history, stepping, impact_substeps,
+!> compress.
 module pound_deck_analysis
    use pound_config, only: analysis_config
    use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
@@ -32,10 +33,11 @@ contains
       character(len=word_len) :: stepping
       real(dp) :: dt, t_end
       integer :: output_every, ios, impact_substeps
+      logical :: compress
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
-      namelist /analysis/ title, dt, t_end, output_every, history, stepping, impact_substeps
+      namelist /analysis/ title, dt, t_end, output_every, history, stepping, impact_substeps, compress
 
       title = ' '
       history = ' '
@@ -44,6 +46,7 @@ contains
       output_every = 1
       stepping = 'uniform'
       impact_substeps = 0
+      compress = .false.
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -98,6 +101,7 @@ contains
          return
       end if
       cfg%impact_substeps = impact_substeps
+      cfg%compress = compress
       call parse_history(at, history, cfg%store, error)
    end subroutine read_analysis
 

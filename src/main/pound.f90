@@ -1,7 +1,11 @@
 !> pound: seismic pounding of adjacent buildings.
 !>
-!>     pound DECK.nml [-o DIR]     writes DIR/<stem>.out (listing) and DIR/<stem>.h5 (histories)
+!>     pound DECK.nml [-o DIR] [--progress | --quiet]
+!>                                 writes DIR/<stem>.out (listing) and DIR/<stem>.h5 (histories)
 !>     pound --help | --version
+!>
+!> Long runs show a progress line on standard error when it is a terminal (pound_progress);
+!> `--progress` forces it, `--quiet` silences it.
 !>
 !> The program keeps the command line, the writers and the exit status; the analyses are one
 !> case of the library's run driver (`pound_run_case`): the buildings uncoupled and, when the
@@ -32,6 +36,8 @@ program pound
                           posix_sleep
    use pound_strings, only: fixed_cell
    use pound_analysis, only: substep_text
+   use pound_progress, only: progress_setup, progress_start, progress_finish, progress_auto, progress_on, &
+                             progress_off
    implicit none
 
    character(len=:), allocatable :: deck_path, out_dir, record_path
@@ -45,6 +51,7 @@ program pound
    type(suite_result) :: suite
    logical :: is_suite
    integer :: k
+   integer :: progress_mode = progress_auto
 
    call install_signal_cleanup()
    call guard_standard_descriptors()
@@ -73,12 +80,15 @@ program pound
 
    ! The analyses.
    options%label = deck_path
+   call progress_setup(progress_mode)
+   call progress_start(planned_runs())
    if (is_suite) then
       call run_suite(deck, suite, res, error, deck_path)
    else
       call run_case(deck, res, error, options)
    end if
    call check(error)
+   call progress_finish(.true.)
    ground_text(1) = res%ground_text
 
    ! Outputs: this run's temporaries first, published together when both are complete.
@@ -121,11 +131,24 @@ contains
       integer, intent(in) :: status
       integer :: ios
 
+      call progress_finish(.false.)
       write (error_unit, '(a)', iostat=ios) program_name//': error: '//message
       flush (error_unit, iostat=ios)
       flush (output_unit, iostat=ios)
       call posix_exit_now(status)
    end subroutine stop_with
+
+   !> The integration runs the analyses make (the progress line's total): per motion, the
+   !> uncoupled run and, with contact, the coupled run and one per gap of the sweep (a suite's
+   !> refinement adds runs beyond these).
+   integer function planned_runs()
+      planned_runs = 1
+      if (size(deck%contacts) > 0) then
+         planned_runs = 2
+         if (deck%sweep%active) planned_runs = planned_runs + deck%sweep%n_gaps
+      end if
+      if (is_suite) planned_runs = planned_runs*size(deck%motions)
+   end function planned_runs
 
    !> Refuse the run if its estimated memory exceeds what the machine can give.
    subroutine check_memory()
@@ -246,11 +269,13 @@ contains
    subroutine usage(unit)
       integer, intent(in) :: unit
 
-      write (unit, '(a)') 'usage: pound DECK.nml [-o DIR]'
+      write (unit, '(a)') 'usage: pound DECK.nml [-o DIR] [--progress | --quiet]'
       write (unit, '(a)') '       pound --help | --version'
       write (unit, '(a)') 'Seismic pounding of adjacent buildings: runs the deck''s buildings uncoupled and'
       write (unit, '(a)') 'coupled by unilateral contact and writes DIR/<deck>.out (listing) and'
       write (unit, '(a)') 'DIR/<deck>.h5 (histories, HDF5). DIR defaults to the current directory.'
+      write (unit, '(a)') 'A progress line goes to standard error when it is a terminal; --progress'
+      write (unit, '(a)') 'shows it anyway, --quiet never.'
    end subroutine usage
 
    subroutine parse_arguments()
@@ -273,6 +298,10 @@ contains
          case ('-V', '--version')
             write (output_unit, '(a)') program_name//' '//program_version
             stop
+         case ('--progress')
+            progress_mode = progress_on
+         case ('-q', '--quiet')
+            progress_mode = progress_off
          case ('-o', '--output')
             if (i == n) call bad_usage('option '//arg//' needs a directory')
             i = i + 1

@@ -13,7 +13,7 @@
 !>   mass), `geometric` = 'chord' or 'consistent'; a frame that buckles is refused
 !>   (building, lowest factor, storey).
 !> - Ground vector r: 1 on the horizontal DOFs, 0 on the vertical and rotational ones.
-!> - Periods: the lowest max(n_storeys, damping_modes(2)) modes (at most the DOFs with mass)
+!> - Periods: the lowest max(min(n_storeys, modes_listed), damping_modes) modes (at most the DOFs with mass)
 !>   by subspace iteration in band storage (pound_band_eigen).
 !> - Response points `floor_dof`: each floor's lateral DOF on the RIGHTMOST column line (the
 !>   line facing a building to the right); `floor_dof_left` holds the leftmost line's (the
@@ -29,7 +29,7 @@ module pound_frame_building
    use pound_strings, only: str
    use pound_config, only: building_config
    use pound_storey_properties, only: storey_properties
-   use pound_structure, only: structure_model, recovery_rows, chain_rows, structure_finish, structure_label
+   use pound_structure, only: structure_model, recovery_rows, chain_rows, structure_finish, structure_label, modes_listed
    use pound_frame, only: frame_spec, frame_model, build_frame, frame_stiffness, frame_mass, &
                           frame_geometric, element_column
    use pound_frame_element, only: beam_local_stiffness, beam_transformation, geometric_chord, &
@@ -173,7 +173,9 @@ contains
 
          m%damping_ratio = deck_entry%damping_ratio
          m%damping_modes = deck_entry%damping_modes
-         n_modes = min(max(ns, m%damping_modes(2)), count(m%mass > 0.0_dp))
+         ! The lateral modes the listing shows (one per storey, at most modes_listed) and the
+         ! Rayleigh modes.
+         n_modes = min(max(min(ns, modes_listed), maxval(m%damping_modes)), count(m%mass > 0.0_dp))
          allocate (mb_full(kd + 1, m%n))
          mb_full = 0.0_dp
          mb_full(kd + 1, :) = m%mass

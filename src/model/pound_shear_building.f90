@@ -3,9 +3,10 @@
 !> Floor i (1 = lowest) carries the lumped mass m_i; storey j joins floor j-1 and floor j
 !> (floor 0 is the ground). First-order stiffness K and, where the deck asks for P-Delta,
 !> the constant geometric stiffness G with storey term -P_j/h_j (P_j = gravity load at and
-!> above floor j) are assembled in LAPACK upper band storage with kd = 1. The natural
-!> periods come from the banded generalized eigenproblem (K+G) phi = omega^2 M phi (dsbgv),
-!> and Rayleigh damping C = a0 M + a1 (K+G) is fitted at two chosen modes.
+!> above floor j) are assembled in LAPACK upper band storage with kd = 1. The lowest natural
+!> periods (those the listing shows and the two Rayleigh modes) come from the banded
+!> generalized eigenproblem (K+G) phi = omega^2 M phi (dsbgvx, eigenvalues il..iu only), and
+!> Rayleigh damping C = a0 M + a1 (K+G) is fitted at two chosen modes.
 module pound_shear_building
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
@@ -14,7 +15,8 @@ module pound_shear_building
    use pound_config, only: building_config
    use pound_storey_properties, only: storey_properties
    use pound_band, only: band_add_storey
-   use pound_structure, only: structure_model, structure_label, chain_rows, structure_finish
+   use pound_sort, only: sort_ascending
+   use pound_structure, only: structure_model, structure_label, chain_rows, structure_finish, modes_listed
    implicit none
    private
 
@@ -43,14 +45,24 @@ module pound_shear_building
    end type shear_building
 
    interface
-      subroutine dsbgv(jobz, uplo, n, ka, kb, ab, ldab, bb, ldbb, w, z, ldz, work, info)
+      !> Selected eigenvalues (and optionally eigenvectors) of a symmetric-definite banded
+      !> generalized eigenproblem A x = lambda B x.
+      subroutine dsbgvx(jobz, range, uplo, n, ka, kb, ab, ldab, bb, ldbb, q, ldq, vl, vu, il, iu, &
+                        abstol, m, w, z, ldz, work, iwork, ifail, info)
          import :: dp
-         character, intent(in) :: jobz, uplo
-         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldz
+         character, intent(in) :: jobz, range, uplo
+         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldq, il, iu, ldz
          real(dp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
-         real(dp), intent(out) :: w(*), z(ldz, *), work(*)
-         integer, intent(out) :: info
-      end subroutine dsbgv
+         real(dp), intent(in) :: vl, vu, abstol
+         real(dp), intent(out) :: q(ldq, *), w(*), z(ldz, *), work(*)
+         integer, intent(out) :: m, iwork(*), ifail(*), info
+      end subroutine dsbgvx
+      !> Machine parameters ('S': safe minimum).
+      function dlamch(cmach) result(r)
+         import :: dp
+         character, intent(in) :: cmach
+         real(dp) :: r
+      end function dlamch
    end interface
 
 contains
@@ -225,7 +237,11 @@ contains
       end do
    end subroutine check_inputs
 
-   !> Natural frequencies from the banded generalized eigenproblem (K+G, M) by dsbgv.
+   !> The lowest natural frequencies from the banded generalized eigenproblem (K+G, M) by
+   !> dsbgvx: modes 1 .. min(n, max(modes_listed, damping modes)). With every mode wanted
+   !> dsbgvx takes the same path as dsbgv (QL on the tridiagonal form, dsterf); with fewer it
+   !> bisects for the wanted ones only (dstebz, O(n) per eigenvalue instead of O(n^2) for all),
+   !> to full relative precision (abstol = 2 x the safe minimum).
    !>
    !> Guarded: the largest omega^2 is bounded by max_i sum_j |(K+G)_ij| / m_i (Gershgorin);
    !> if that bound overflows, or the frequencies come out zero (underflow) or not finite,
@@ -235,8 +251,9 @@ contains
       type(building_config), intent(in) :: cfg
       type(error_type), allocatable, intent(out) :: error
       real(dp), allocatable :: ab(:, :), bb(:, :), w(:), work(:)
-      real(dp) :: z(1, 1), bound
-      integer :: info, i, stat
+      integer, allocatable :: iwork(:), ifail(:)
+      real(dp) :: z(1, 1), q(1, 1), bound
+      integer :: info, i, stat, m, n_wanted
       character(len=:), allocatable :: sources
 
       sources = 'mass ('//origin(cfg, 'mass')//') and storey stiffness ('//origin(cfg, 'stiffness')//')'
@@ -251,29 +268,34 @@ contains
             return
          end if
       end do
-      allocate (ab(2, b%n), bb(1, b%n), w(b%n), work(3*b%n), stat=stat)
+      n_wanted = min(b%n, max(modes_listed, maxval(b%damping_modes)))
+      allocate (ab(2, b%n), bb(1, b%n), w(b%n), work(7*b%n), iwork(5*b%n), ifail(b%n), stat=stat)
       if (stat /= 0) then
          call fatal_error(error, building_label(b)//': cannot allocate the eigenvalue workspace ('// &
-                          str(6*b%n)//' reals; n_storeys = '//str(b%n)//')')
+                          str(11*b%n)//' reals; n_storeys = '//str(b%n)//')')
          return
       end if
       ab = b%kt
       bb(1, :) = b%mass
-      call dsbgv('N', 'U', b%n, 1, 0, ab, 2, bb, 1, w, z, 1, work, info)
-      if (info /= 0) then
-         call fatal_error(error, building_label(b)//': eigenvalue solver dsbgv failed (info = '// &
-                          str(info)//'); check '//sources)
+      ! abstol <= 0 on the full range keeps dsbgv's path (dsterf); bisection gets 2 x safe minimum.
+      call dsbgvx('N', 'I', 'U', b%n, 1, 0, ab, 2, bb, 1, q, 1, 0.0_dp, 0.0_dp, 1, n_wanted, &
+                  merge(0.0_dp, 2.0_dp*dlamch('S'), n_wanted == b%n), m, w, z, 1, work, iwork, ifail, info)
+      if (info /= 0 .or. m /= n_wanted) then
+         call fatal_error(error, building_label(b)//': eigenvalue solver dsbgvx failed (info = '// &
+                          str(info)//', '//str(m)//' of '//str(n_wanted)//' eigenvalues); check '//sources)
          return
       end if
-      if (.not. (w(1) > 0.0_dp .and. ieee_is_finite(w(b%n)))) then
+      ! Without eigenvectors dsbgvx leaves them in order within each split-off block only.
+      call sort_ascending(w(1:m))
+      if (.not. (w(1) > 0.0_dp .and. ieee_is_finite(w(m)))) then
          call fatal_error(error, building_label(b)//': natural frequencies out of range (omega^2 from '// &
-                          str(w(1))//' to '//str(w(b%n))//' 1/s^2) from '//sources)
+                          str(w(1))//' to '//str(w(m))//' 1/s^2) from '//sources)
          return
       end if
-      b%omega = sqrt(w)
+      b%omega = sqrt(w(1:m))
       b%period = 2.0_dp*pi/b%omega
-      if (.not. (ieee_is_finite(b%period(1)) .and. b%period(b%n) > 0.0_dp)) then
-         call fatal_error(error, building_label(b)//': natural periods out of range ('//str(b%period(b%n))// &
+      if (.not. (ieee_is_finite(b%period(1)) .and. b%period(m) > 0.0_dp)) then
+         call fatal_error(error, building_label(b)//': natural periods out of range ('//str(b%period(m))// &
                           ' to '//str(b%period(1))//' s) from '//sources)
       end if
    end subroutine natural_frequencies

@@ -30,7 +30,11 @@ module pound_structure
    private
 
    public :: structure_model, recovery_rows, recover, recover_all, structure_label, structure_strain_energy
-   public :: structure_check, chain_rows, structure_is_stick, structure_finish
+   public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed
+
+   !> Natural modes a builder computes besides the two Rayleigh modes: the periods the listing
+   !> shows (the lowest `modes_listed`; fewer when the model has fewer modes).
+   integer, parameter :: modes_listed = 12
 
    !> Linear recovery operators over the DOFs, one per row, in compressed sparse rows: row j
    !> is value_j = scale(j) * sum_i coef(i) u(dof(i)), i = start(j) .. start(j+1)-1, the sum
@@ -70,7 +74,8 @@ module pound_structure
       !> Damping ratio and the modes it is fitted at.
       real(dp) :: damping_ratio = 0.0_dp
       integer :: damping_modes(2) = [1, 2]
-      !> Circular natural frequencies (rad/s), ascending, and natural periods (s), descending.
+      !> Circular natural frequencies (rad/s), ascending, and natural periods (s), descending:
+      !> the lowest modes only (`modes_listed` and the Rayleigh modes, see the builders).
       real(dp), allocatable :: omega(:), period(:)
       !> Response points: the DOF of each floor's lateral displacement (n_floors); a contact
       !> end on this building when it stands on the left (its right face).

@@ -31,7 +31,10 @@
 !> elements lose their trailing blanks (Fortran padding); a string attribute is stored
 !> exactly as given. Strings must not contain NUL characters. Datasets are contiguous,
 !> without chunking or compression, and are written once: writing a dataset whose path
-!> exists is an error.
+!> exists is an error. Histories can instead be created chunked, optionally compressed,
+!> at their final shape (`h5_create_history`) and filled a block of columns (output samples)
+!> at a time (`h5_write_columns`): chunks of whole columns, at most `chunk_bytes` each,
+!> shuffle + deflate level `deflate_level` when compressed.
 !>
 !> Every HDF5 return code is checked; a failure comes back as an `error_type` naming the
 !> file, the object and the HDF5 call. HDF5's automatic error-stack printing is switched
@@ -55,7 +58,9 @@ module pound_h5
                    h5acreate_f, h5aclose_f, h5awrite_f, h5aexists_f, h5adelete_f, &
                    h5tcopy_f, h5tclose_f, h5tset_size_f, h5tset_cset_f, &
                    H5T_C_S1, H5T_CSET_UTF8_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
-                   H5T_IEEE_F64LE, H5T_STD_I32LE
+                   H5T_IEEE_F64LE, H5T_STD_I32LE, &
+                   H5P_DATASET_CREATE_F, h5pset_chunk_f, h5pset_shuffle_f, h5pset_deflate_f, &
+                   h5dopen_f, h5dget_space_f, h5sselect_hyperslab_f, H5S_SELECT_SET_F
    use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f, h5ltset_attribute_double_f
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
@@ -65,7 +70,7 @@ module pound_h5
 
    public :: h5_file, h5_create, h5_open, h5_close, h5_is_open, h5_file_id, h5_file_name
    public :: h5_create_group, h5_exists
-   public :: h5_write, h5_write_attr
+   public :: h5_write, h5_write_attr, h5_create_history, h5_write_columns
 
    !> An open HDF5 file (or none: the default state).
    type :: h5_file
@@ -108,6 +113,9 @@ module pound_h5
 
    !> H5T_VARIABLE: the size that makes a string type variable-length ((size_t)-1 in C).
    integer(size_t), parameter :: variable_size = -1_size_t
+
+   !> Largest chunk of a history dataset (bytes), and the deflate level of compressed ones.
+   integer, parameter :: chunk_bytes = 2**20, deflate_level = 4
 
    !> HDF5 initialised and its error printing silenced.
    logical :: library_ready = .false.
@@ -351,6 +359,103 @@ contains
       call h5ltmake_dataset_int_f(file%id, p, 2, shape(values, kind=hsize_t), values, hdferr)
       call check_lt(hdferr, file, p, 'h5ltmake_dataset_int_f', error)
    end subroutine write_int_2d
+
+   ! ------------------------------------------------------------------ chunked histories
+
+   !> Create the 2-D real dataset `path` of Fortran shape (rows, columns) (h5py: (columns,
+   !> rows)), chunked by whole columns, compressed (shuffle + deflate) when `compress`; its
+   !> columns are written by `h5_write_columns` (columns never written read as 0).
+   subroutine h5_create_history(file, path, rows, columns, compress, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Rows (floors) and columns (output samples), both >= 1.
+      integer, intent(in) :: rows, columns
+      !> Whether to compress.
+      logical, intent(in) :: compress
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: p
+      integer(hid_t) :: dcpl
+      integer(hsize_t) :: chunk(2)
+      integer :: hdferr, ignore
+
+      call dataset_path(file, path, p, error)
+      if (allocated(error)) return
+      chunk = [int(rows, hsize_t), int(max(1, min(columns, chunk_bytes/(8*max(1, rows)))), hsize_t)]
+      call h5pcreate_f(H5P_DATASET_CREATE_F, dcpl, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'write', 'dataset', p, 'h5pcreate_f failed')
+         return
+      end if
+      call h5pset_chunk_f(dcpl, 2, chunk, hdferr)
+      if (hdferr == 0 .and. compress) call h5pset_shuffle_f(dcpl, hdferr)
+      if (hdferr == 0 .and. compress) call h5pset_deflate_f(dcpl, deflate_level, hdferr)
+      if (hdferr /= 0) then
+         call h5pclose_f(dcpl, ignore)
+         call fail(error, file, 'write', 'dataset', p, 'h5pset_chunk_f/h5pset_deflate_f failed')
+         return
+      end if
+      call new_space([int(rows, hsize_t), int(columns, hsize_t)], ids, file, 'write', 'dataset', p, error)
+      if (.not. allocated(error)) then
+         call h5dcreate_f(file%id, p, H5T_IEEE_F64LE, ids%space, ids%obj, hdferr, dcpl_id=dcpl)
+         if (hdferr /= 0) then
+            ids%obj = -1_hid_t
+            call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+         end if
+      end if
+      call h5pclose_f(dcpl, ignore)
+      call release(ids, file, 'write', 'dataset', p, error)
+   end subroutine h5_create_history
+
+   !> Write `values` (rows, k) into columns first .. first+k-1 of the history `path`
+   !> (made by `h5_create_history`).
+   subroutine h5_write_columns(file, path, first, values, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> First column written (1-based).
+      integer, intent(in) :: first
+      !> The columns.
+      real(dp), intent(in), target, contiguous :: values(:, :)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids, mem
+      character(len=:), allocatable :: p
+      integer(hsize_t) :: count(2)
+      integer :: hdferr
+
+      if (size(values) == 0) return
+      call check_path(file, path, .true., 'write', p, error)
+      if (allocated(error)) return
+      count = shape(values, kind=hsize_t)
+      call h5dopen_f(file%id, p, ids%obj, hdferr)
+      if (hdferr /= 0) then
+         ids%obj = -1_hid_t
+         call fail(error, file, 'write', 'dataset', p, 'h5dopen_f failed')
+         return
+      end if
+      call h5dget_space_f(ids%obj, ids%space, hdferr)
+      if (hdferr /= 0) then
+         ids%space = -1_hid_t
+         call fail(error, file, 'write', 'dataset', p, 'h5dget_space_f failed')
+      end if
+      if (.not. allocated(error)) then
+         call h5sselect_hyperslab_f(ids%space, H5S_SELECT_SET_F, [0_hsize_t, int(first - 1, hsize_t)], count, hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5sselect_hyperslab_f failed')
+      end if
+      if (.not. allocated(error)) call new_space(count, mem, file, 'write', 'dataset', p, error)
+      if (.not. allocated(error)) then
+         call h5dwrite_f(ids%obj, H5T_NATIVE_DOUBLE, c_loc(values), hdferr, mem_space_id=mem%space, &
+                         file_space_id=ids%space)
+         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
+      end if
+      call release(mem, file, 'write', 'dataset', p, error)
+      call release(ids, file, 'write', 'dataset', p, error)
+   end subroutine h5_write_columns
 
    ! ------------------------------------------------------------------ what H5LT lacks
 

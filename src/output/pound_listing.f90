@@ -11,7 +11,7 @@ module pound_listing
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_building, only: building_model
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, modes_listed
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
@@ -28,8 +28,8 @@ module pound_listing
    public :: write_contact_summary, write_influence_tables, write_sweep_table
    public :: listing_io_error, open_listing, close_listing
 
-   !> Modes listed in the model summary (all are in the HDF5 file).
-   integer, parameter :: max_listed_modes = 12
+   !> Modes listed in the model summary (the HDF5 file has every mode the builder computed).
+   integer, parameter :: max_listed_modes = modes_listed
 
    !> Status and message of the last write, and the first failure since the last check.
    integer, save :: ios = 0

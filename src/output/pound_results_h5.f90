@@ -9,6 +9,7 @@
 !>     /<analysis>/time                          (n_out), analysis = uncoupled | coupled
 !>     /<analysis>/<b>/u, v, a_abs               (n_out, n_floors), only those stored
 !>     /<analysis>/<b>/drift, storey_shear       (n_out, n_storeys), only those stored
+!>                                               (with `&analysis compress`: chunked, deflate)
 !>     /<analysis>/<b>/peak/<q>, peak_time/<q>   (n) for every quantity q
 !>     /<analysis>/energy                        (n_out, 6): input, kinetic, strain, damping,
 !>                                               contact, plastic; attributes components, relative_error
@@ -36,7 +37,7 @@ module pound_results_h5
    use pound_contact_law, only: law_name
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
-   use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr
+   use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
    use pound_config, only: sweep_config
    implicit none
@@ -111,10 +112,10 @@ contains
             call write_model(models(ib), buildings(ib))
             if (allocated(error)) return
          end do
-         call write_analysis_h5(h5, '/uncoupled', models, unc, error)
+         call write_analysis_h5(h5, '/uncoupled', models, unc, error, deck%analysis%compress)
          if (allocated(error)) return
          if (.not. present(cpl)) return
-         call write_analysis_h5(h5, '/coupled', models, cpl, error)
+         call write_analysis_h5(h5, '/coupled', models, cpl, error, deck%analysis%compress)
          if (allocated(error)) return
          if (present(cs)) then
             call write_contact()
@@ -206,6 +207,7 @@ contains
             if (s%p_delta) call h5_write(h5, g//'gravity_axial_force', s%frame%gravity%axial, error)
          end associate
       end subroutine write_frame
+
 
 
       subroutine write_contact()
@@ -315,7 +317,7 @@ contains
 
    !> Write one analysis (time, energy, the stored histories and the peaks of every building)
    !> under the group `g` of an open file.
-   subroutine write_analysis_h5(h5, g, models, res, error)
+   subroutine write_analysis_h5(h5, g, models, res, error, compress)
       !> Open file.
       type(h5_file), intent(inout) :: h5
       !> Group path, e.g. '/uncoupled'.
@@ -326,9 +328,14 @@ contains
       type(analysis_result), intent(in) :: res
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> The building histories chunked and compressed (`&analysis compress`; default no).
+      logical, intent(in), optional :: compress
       character(len=:), allocatable :: gb
       integer :: i, n, q
+      logical :: packed
 
+      packed = .false.
+      if (present(compress)) packed = compress
       n = res%n_out
       call h5_write(h5, g//'/time', res%time, error)
       if (allocated(error)) return
@@ -344,15 +351,15 @@ contains
       do i = 1, size(models)
          gb = g//'/'//models(i)%name//'/'
          associate (r => res%building(i))
-            if (r%store(q_u)) call h5_write(h5, gb//'u', r%u(:, 1:n), error)
+            if (r%store(q_u)) call write_history(h5, gb//'u', r%u(:, 1:n), packed, error)
             if (allocated(error)) return
-            if (r%store(q_v)) call h5_write(h5, gb//'v', r%v(:, 1:n), error)
+            if (r%store(q_v)) call write_history(h5, gb//'v', r%v(:, 1:n), packed, error)
             if (allocated(error)) return
-            if (r%store(q_a_abs)) call h5_write(h5, gb//'a_abs', r%a_abs(:, 1:n), error)
+            if (r%store(q_a_abs)) call write_history(h5, gb//'a_abs', r%a_abs(:, 1:n), packed, error)
             if (allocated(error)) return
-            if (r%store(q_drift)) call h5_write(h5, gb//'drift', r%drift(:, 1:n), error)
+            if (r%store(q_drift)) call write_history(h5, gb//'drift', r%drift(:, 1:n), packed, error)
             if (allocated(error)) return
-            if (r%store(q_shear)) call h5_write(h5, gb//'storey_shear', r%shear(:, 1:n), error)
+            if (r%store(q_shear)) call write_history(h5, gb//'storey_shear', r%shear(:, 1:n), packed, error)
             if (allocated(error)) return
             do q = 1, n_history_quantities
                call h5_write(h5, gb//'peak/'//trim(history_names(q)), r%peak(:, q), error)
@@ -363,5 +370,26 @@ contains
          end associate
       end do
    end subroutine write_analysis_h5
+
+   !> One building history (n, n_out): contiguous, or chunked and compressed.
+   subroutine write_history(h5, path, values, compress, error)
+      !> Open file.
+      type(h5_file), intent(inout) :: h5
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The history.
+      real(dp), intent(in), contiguous :: values(:, :)
+      !> Chunked and compressed.
+      logical, intent(in) :: compress
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (compress) then
+         call h5_create_history(h5, path, size(values, 1), size(values, 2), .true., error)
+         if (.not. allocated(error)) call h5_write_columns(h5, path, 1, values, error)
+      else
+         call h5_write(h5, path, values, error)
+      end if
+   end subroutine write_history
 
 end module pound_results_h5
