@@ -60,7 +60,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(83) = [ &
+   type(var_spec), parameter :: variables(84) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -105,7 +105,8 @@ module pound_deck_variables
       var_spec('contact', 'n_segments', 'i', 0), var_spec('contact', 'restitution', 'r', 0), &
       var_spec('sweep', 'gap_from', 'r', 0), var_spec('sweep', 'gap_to', 'r', 0), &
       var_spec('sweep', 'n_gaps', 'i', 0), var_spec('sweep', 'target_lambda', 'r', 0), &
-      var_spec('sweep', 'target_quantities', 'c', 0)]
+      var_spec('sweep', 'target_quantities', 'c', 0), &
+      var_spec('contact', 'elevations', 'r', max_pairs)]
 
 contains
 
