@@ -14,7 +14,8 @@
 !>   (building, lowest factor, storey).
 !> - Ground vector r: 1 on the horizontal DOFs, 0 on the vertical and rotational ones.
 !> - Periods: the lowest max(n_storeys, damping_modes(2)) modes (at most the DOFs with mass)
-!>   by subspace iteration in band storage (pound_band_eigen).
+!>   by subspace iteration in band storage (pound_band_eigen); each mode's participation
+!>   factor phi^T M r and effective mass fraction (phi^T M r)^2 / (r^T M r) (phi^T M phi = 1).
 !> - Response points `floor_dof`: each floor's lateral DOF on the RIGHTMOST column line (the
 !>   line facing a building to the right); `floor_dof_left` holds the leftmost line's (the
 !>   contact end when the frame stands on the right; equal with a rigid diaphragm).
@@ -62,6 +63,9 @@ module pound_frame_building
       character(len=:), allocatable :: base
       !> The constraints.
       logical :: rigid_beams = .false., rigid_diaphragm = .false., rigid_columns = .false.
+      !> Per computed mode: participation factor Gamma_n = phi_n^T M r (mass-normalized
+      !> phi_n, sign as computed) and effective mass fraction Gamma_n^2 / (r^T M r).
+      real(dp), allocatable :: participation(:), effective_mass(:)
    end type frame_data
 
 contains
@@ -193,6 +197,8 @@ contains
             error%message = structure_label(m)//': natural modes: '//error%message
             return
          end if
+         fd%participation = matmul(m%mass*m%ground, shapes)
+         fd%effective_mass = fd%participation**2/sum(m%mass*m%ground**2)
       end associate
       m%period = 2.0_dp*pi/m%omega
       call rayleigh_coefficients(m%omega, m%damping_ratio, m%damping_modes, m%a0, m%a1)
