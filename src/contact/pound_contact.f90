@@ -460,7 +460,9 @@ contains
 
    !> A pair end in labels: its floor, or its elevation for a point between floors ('z3.25m').
    pure function end_text(p, e) result(s)
+      !> The pair (its floors and elevation set).
       type(contact_pair), intent(in) :: p
+      !> End: 1 (left building) or 2 (right building).
       integer, intent(in) :: e
       character(len=:), allocatable :: s
       character(len=32) :: buf
