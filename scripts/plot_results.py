@@ -7,8 +7,9 @@ histories), loops (force-penetration loops of each joint), shear (storey-shear e
 against uncoupled), influence (influence coefficients, storeys x buildings as in the paper's
 Table 1), ground (ground motion), sweep (largest |lambda| against the joint gap, when the file
 holds a gap study), suite (a file with /suite, from a deck with several &ground: the plots of
-scripts/plot_suite.py, <stem>_suite_spectra, _suite_lambda, _suite_separation, _suite_sweep).
-Files are named <stem>_<plot>.png / .pdf.
+scripts/plot_suite.py, <stem>_suite_spectra, _suite_lambda, _suite_separation, _suite_sweep),
+frame (the buildings' geometry side by side, frames with their nodes and elements, with the
+contact points: only when the file holds a frame model). Files are named <stem>_<plot>.png / .pdf.
 
 Any problem with the file (missing, not HDF5, not a pound results file) gives one line
 "plot: error: ..." on stderr and exit status 1; usage errors exit 2. POUND_DEBUG=1 shows
@@ -20,7 +21,7 @@ import re
 import sys
 import tempfile
 
-PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite")
+PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite", "frame")
 CONTACT_PLOTS = ("displacement", "force", "loops")
 QUANTITY_LABEL = {
     "storey_shear": ("storey shear Q", "storey"),
@@ -95,6 +96,28 @@ def parse_pair(label, names):
     return None
 
 
+def pair_elevations(label, names, heights):
+    """'A:z3m-B:1' -> ('A', 3.0, 'B', z of B's floor 1): each end's elevation (m) from its floor
+    (the building's storey heights) or from the 'z<metres>m' of a column point; None if unknown."""
+    import numpy as np
+
+    def end(text):
+        m = re.fullmatch(r"(.+):(?:(\d+)|z([0-9.]+)m)", text)
+        if not m or m.group(1) not in names:
+            return None
+        if m.group(2) is not None:
+            j = int(m.group(2))
+            h = heights[m.group(1)]
+            return (m.group(1), float(np.sum(h[:j]))) if 1 <= j <= len(h) else None
+        return m.group(1), float(m.group(3))
+
+    for m in re.finditer(r"-", label):
+        a, b = end(label[: m.start()]), end(label[m.end():])
+        if a and b:
+            return a[0], a[1], b[0], b[1]
+    return None
+
+
 def read_results(path):
     import h5py
     import numpy as np
@@ -143,6 +166,9 @@ def read_results(path):
             for k in ("periods", "mass", "storey_stiffness"):
                 if f"/model/{b}/{k}" in f:
                     r.model[b][k] = arr(f"/model/{b}/{k}", 1)
+            if f"/model/{b}/nodes" in f and f"/model/{b}/elements" in f:
+                r.model[b]["nodes"] = arr(f"/model/{b}/nodes", 2)
+                r.model[b]["elements"] = arr(f"/model/{b}/elements", 2)
         r.ground["time"] = arr("/ground/time", 1)
         r.ground["acceleration"] = arr("/ground/acceleration", 1)
         if r.ground["time"].shape != r.ground["acceleration"].shape:
@@ -185,6 +211,8 @@ def read_results(path):
                                 f"the histories hold {m}")
             c["labels"] = labels
             c["pairs"] = [parse_pair(lab, r.buildings) for lab in labels]
+            heights = {b: r.model[b]["height"] for b in r.buildings}
+            c["elevations"] = [pair_elevations(lab, r.buildings, heights) for lab in labels]
             c["penetration"] = None
             c["notes"] = []
             if "/coupled/contact/penetration" in f:
@@ -636,6 +664,59 @@ PLOTTERS = {"displacement": plot_displacement, "force": plot_force, "loops": plo
 # --------------------------------------------------------------------------------------------
 
 
+def plot_frame(plt, r, args, written, notes):
+    """The buildings side by side (frames: elements and nodes; shear buildings: a stick with its
+    floors), the contact points marked on the facing column lines and joined across the joint."""
+    import numpy as np
+
+    fig, ax = plt.subplots(figsize=(8.0, 6.0))
+    widths = []
+    for b in r.buildings:
+        m = r.model[b]
+        widths.append(float(np.ptp(m["nodes"][0])) if "nodes" in m else 0.0)
+    space = max(2.0, 0.4 * max(widths))
+    x0, faces = 0.0, {}
+    for i, b in enumerate(r.buildings):
+        m = r.model[b]
+        if "nodes" in m:
+            x, z = m["nodes"][0] + x0, m["nodes"][1]
+            for e in m["elements"].T.astype(int):
+                n1, n2, kind = e[0] - 1, e[1] - 1, e[2]
+                ax.plot([x[n1], x[n2]], [z[n1], z[n2]], color="black" if kind == 1 else COLOURS[1],
+                        lw=2.0 if kind == 1 else 1.5, ls="-" if kind == 1 else "--")
+            ax.plot(x, z, "o", color="black", ms=3)
+        else:
+            zf = np.concatenate([[0.0], np.cumsum(m["height"])])
+            ax.plot(np.full_like(zf, x0), zf, "-", color="black", lw=2.0)
+            ax.plot(np.full_like(zf[1:], x0), zf[1:], "s", color="black", ms=6)
+        faces[b] = (x0, x0 + widths[i])
+        ax.text(x0 + 0.5 * widths[i], -0.6, b, ha="center", va="top", fontsize=11)
+        x0 += widths[i] + space
+    count = 0
+    if r.contact is not None:
+        for k, pe in enumerate(r.contact.get("elevations", [])):
+            if pe is None:
+                continue
+            bl, zl, br, zr = pe
+            xl, xr = faces[bl][1], faces[br][0]
+            ax.plot([xl, xr], [zl, zr], ":", color=COLOURS[2], lw=1.2)
+            ax.plot([xl, xr], [zl, zr], "x", color=COLOURS[2], ms=8, mew=2)
+            count += 1
+    ax.set_aspect("equal")
+    ax.set_xlabel("x [m] (buildings drawn apart; the joint is not to scale)")
+    ax.set_ylabel("elevation z [m]")
+    ax.plot([], [], "-", color="black", lw=2.0, label="column")
+    ax.plot([], [], "--", color=COLOURS[1], lw=1.5, label="beam")
+    ax.plot([], [], "x:", color=COLOURS[2], ms=8, mew=2, label=f"contact pair ({count})")
+    ax.legend(loc="upper left", bbox_to_anchor=(1.01, 1.0), fontsize=8)
+    suptitle(fig, r, "geometry and contact points")
+    save(fig, r, "frame", args, written)
+    plt.close(fig)
+
+
+PLOTTERS["frame"] = plot_frame
+
+
 def parse_args(argv):
     ap = argparse.ArgumentParser(prog="plot", description="Plots of a pound results file (PNG and PDF).")
     ap.add_argument("h5file", help="results file written by pound (DECK.h5)")
@@ -681,6 +762,10 @@ def run(argv):
         if name == "suite" and not has_suite(r.path):
             if "suite" in args.explicit:
                 notes.append("suite: skipped (no /suite in this file: the deck has one &ground)")
+            continue
+        if name == "frame" and not any("nodes" in r.model[b] for b in r.buildings):
+            if "frame" in args.explicit:
+                notes.append("frame: skipped (no frame model in this file)")
             continue
         if name == "sweep" and r.sweep is None:
             if "sweep" in args.explicit:

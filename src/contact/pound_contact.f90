@@ -57,7 +57,7 @@ module pound_contact
    use pound_strings, only: str
    use pound_newmark, only: newmark_state, newmark_solve, newmark_n, newmark_dt, newmark_predicted, &
                             newmark_u_at, newmark_add_response, newmark_path
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_end_dof
    use pound_contact_law, only: is_plastic, yield_segment, rate_trapezoidal, dashpot_of_restitution
    use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
    use pound_joint_state, only: joint_state, joint_advance, state_open, state_elastic, state_fractured, &
@@ -159,9 +159,12 @@ contains
          do e = 1, 2
             b = pairs(k)%building(e)
             if (b == 0) cycle
-            located(k)%dof(e) = models(b)%floor_dof(pairs(k)%floor(e))
-            if (e == 2 .and. allocated(models(b)%floor_dof_left)) &
-               located(k)%dof(e) = models(b)%floor_dof_left(pairs(k)%floor(e))
+            located(k)%dof(e) = structure_end_dof(models(b), e, pairs(k)%floor(e), pairs(k)%elevation)
+            if (located(k)%dof(e) == 0) then
+               call fatal_error(error, 'contact '//pairs(k)%label//': building '//models(b)%name// &
+                                ' has no node at the contact point')
+               return
+            end if
          end do
          if (pairs(k)%law%restitution > 0.0_dp) then
             call calibrate_dashpot(located(k), models, error)

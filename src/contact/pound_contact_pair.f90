@@ -24,8 +24,10 @@ module pound_contact_pair
       character(len=:), allocatable :: label
       !> Building index of each end (1 = left, 2 = right); 0 = rigid fixed neighbour.
       integer :: building(2) = 0
-      !> Floor of each end (labels, messages, listing).
+      !> Floor of each end (labels, messages, listing); 0: a point between floors at `elevation`.
       integer :: floor(2) = 0
+      !> Elevation of the pair (m) when given by elevation (locates ends between floors).
+      real(dp) :: elevation = 0.0_dp
       !> DOF of each end in its building's model (set by `contact_init` from the model's
       !> response points: the model says which DOF a floor is).
       integer :: dof(2) = 0
@@ -82,16 +84,40 @@ contains
             law%restitution = c%restitution
             do k = 1, size(c%floor_left)
                n = n + 1
-               pairs(n)%label = trim(names(c%left_index))//':'//str(c%floor_left(k))//'-'// &
-                                trim(names(c%right_index))//':'//str(c%floor_right(k))
                pairs(n)%building = [c%left_index, c%right_index]
                pairs(n)%floor = [c%floor_left(k), c%floor_right(k)]
+               if (allocated(c%elevation)) pairs(n)%elevation = c%elevation(k)
+               pairs(n)%label = trim(names(c%left_index))//':'//end_text(pairs(n), 1)//'-'// &
+                                trim(names(c%right_index))//':'//end_text(pairs(n), 2)
                pairs(n)%gap = c%gap(k)
                pairs(n)%law = law
             end do
          end associate
       end do
    end function pairs_from_config
+
+   !> A pair end in labels: its floor, or its elevation for a point between floors ('z3.25m').
+   pure function end_text(p, e) result(s)
+      !> The pair (its floors and elevation set).
+      type(contact_pair), intent(in) :: p
+      !> End: 1 (left building) or 2 (right building).
+      integer, intent(in) :: e
+      character(len=:), allocatable :: s
+      character(len=32) :: buf
+
+      if (p%floor(e) > 0) then
+         s = str(p%floor(e))
+      else
+         write (buf, '(f0.3)') p%elevation
+         s = trim(adjustl(buf))
+         if (s(1:1) == '.') s = '0'//s
+         do while (s(len(s):len(s)) == '0')
+            s = s(1:len(s) - 1)
+         end do
+         if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+         s = 'z'//s//'m'
+      end if
+   end function end_text
 
    !> Sign of a constraint end in B: +1 on the left, -1 on the right.
    pure real(dp) function end_sign(e)

@@ -136,19 +136,28 @@ module pound_config
       logical :: rigid_beams = .false., rigid_diaphragm = .false., rigid_columns = .false.
       !> Frame geometric stiffness of the gravity axial forces (with p_delta): 'chord' or 'consistent'.
       character(len=:), allocatable :: geometric
+      !> Frame: elevations (m) of contact points between floors on the leftmost and on the
+      !> rightmost column line (from the `&contact elevations` that face no floor of this
+      !> building; the builder adds a column node at each); unallocated: none.
+      real(dp), allocatable :: contact_z_left(:), contact_z_right(:)
    end type building_config
 
    !> `&contact`: unilateral constraints between facing floors of two buildings.
    !>
    !> Pair k joins floor `floor_left(k)` of building `left` with floor `floor_right(k)` of
-   !> building `right`; a displacement of `left` towards `right` closes the gap.
+   !> building `right`; a displacement of `left` towards `right` closes the gap. Pairs given
+   !> by `elevations` join the two facing column lines at elevation `elevation(k)`: the floor
+   !> there, or 0 for a point between floors (a column node of a frame).
    type :: contact_config
       !> Names of the building on the left and on the right.
       character(len=:), allocatable :: left, right
       !> Their indices in `deck%buildings`.
       integer :: left_index = 0, right_index = 0
-      !> Facing floors, one entry per pair.
+      !> Facing floors, one entry per pair (0: a point between floors, see `elevation`).
       integer, allocatable :: floor_left(:), floor_right(:)
+      !> Elevation of each pair above the common base (m) when the deck gives `elevations`;
+      !> unallocated when the pairs are given by floor.
+      real(dp), allocatable :: elevation(:)
       !> Initial gap of each pair (m).
       real(dp), allocatable :: gap(:)
       !> Constraint law: 'elastic', 'elastic_plastic', 'bilinear', 'piecewise' or 'parabola_cubic'.

@@ -37,7 +37,10 @@
 !>
 !> `left`, `right` (building names, any case, distinct), `floors_left`, `floors_right` (same
 !> count, 1..`max_pairs` pairs, each floor in 1..n_storeys of its building), `gap` (>= 0) and
-!> `law` are required. The same floor pair may appear more than once. Laws and their variables:
+!> `law` are required. Instead of the floors, `elevations` (m above the common base, one per
+!> pair) joins the facing column lines at that elevation: a building's floor there, or a node
+!> added to a frame's facing column (refused between the floors of a shear building, above a
+!> roof, and in a suite). The same floor pair may appear more than once. Laws and their variables:
 !> 'elastic' (stiffness), 'elastic_plastic' (stiffness, yield_force), 'bilinear' (stiffness,
 !> yield_force, second_slope < stiffness), 'piecewise' (envelope_d, envelope_r: points after the
 !> origin), 'parabola_cubic' (peak_penetration, fracture_penetration, peak_force or stiffness,
@@ -57,7 +60,8 @@
 !> `deck.nml:14: &building #2 (B): n_columns(5) = 0, must be >= 1`
 !> (line of the variable's assignment, or of the group start when the variable is missing).
 module pound_deck
-   use pound_config, only: deck_type
+   use pound_config, only: building_config, contact_config, deck_type
+   use pound_kinds, only: dp
    use pound_deck_analysis, only: read_analysis
    use pound_deck_building, only: read_building
    use pound_deck_contact, only: read_contact
@@ -162,8 +166,9 @@ contains
       do i = 1, n_groups
          if (groups(i)%name /= 'contact') cycle
          k = k + 1
-         call read_contact(path, text, groups(i), d%buildings, d%contacts(k), error)
+         call read_contact(path, text, groups(i), d%buildings, d%contacts(k), error, suite=ng > 1)
          if (allocated(error)) return
+         call add_contact_points(d%contacts(k), d%buildings)
       end do
       k = count([(groups(i)%name == 'sweep', i=1, n_groups)])
       if (k == 0) return
@@ -171,6 +176,35 @@ contains
       if (allocated(error)) return
       call read_sweep(path, text, groups(i), size(d%contacts), d%sweep, error)
    end subroutine parse_deck
+
+   !> The pairs of `c` between floors (by elevation) become column nodes of the frames: the
+   !> left building's rightmost column line, the right building's leftmost.
+   pure subroutine add_contact_points(c, buildings)
+      !> A resolved `&contact`.
+      type(contact_config), intent(in) :: c
+      !> The deck's buildings (their `contact_z_left`, `contact_z_right` extended).
+      type(building_config), intent(inout) :: buildings(:)
+      integer :: k
+
+      if (.not. allocated(c%elevation)) return
+      do k = 1, size(c%elevation)
+         if (c%floor_left(k) == 0) call append(buildings(c%left_index)%contact_z_right, c%elevation(k))
+         if (c%floor_right(k) == 0) call append(buildings(c%right_index)%contact_z_left, c%elevation(k))
+      end do
+
+   contains
+
+      pure subroutine append(v, z)
+         real(dp), allocatable, intent(inout) :: v(:)
+         real(dp), intent(in) :: z
+
+         if (allocated(v)) then
+            v = [v, z]
+         else
+            v = [z]
+         end if
+      end subroutine append
+   end subroutine add_contact_points
 
    !> Read the whole deck file; its text with LF line ends, without a UTF-8 byte-order mark
    !> and without the final newline.

@@ -2,7 +2,7 @@
 !> parameters (envelope rules: pound_envelope_rules).
 module pound_deck_contact
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use pound_config, only: building_config, contact_config
+   use pound_config, only: building_config, contact_config, is_frame
    use pound_deck_checks, only: check_plausible, check_real, fail, given_count, is_set, read_failed, &
                                 require_real, site, site_of, unset_int, unset_real, values_text
    use pound_deck_lexer, only: group_ref, group_text, lower
@@ -14,12 +14,15 @@ module pound_deck_contact
    implicit none
    private
 
-   public :: read_contact
+   public :: read_contact, elevation_tol
+
+   !> Elevations closer than this are the same point (m): a pair's elevation and a floor's.
+   real(dp), parameter :: elevation_tol = 1.0e-6_dp
 
 contains
 
    !> `&contact`: unilateral constraints between facing floors of two buildings.
-   subroutine read_contact(path, text, g, buildings, cfg, error)
+   subroutine read_contact(path, text, g, buildings, cfg, error, suite)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
@@ -32,9 +35,11 @@ contains
       type(contact_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
+      !> The deck is a suite (several `&ground`): its separation rules need floors at both ends.
+      logical, intent(in), optional :: suite
       character(len=word_len) :: left, right, law, dashpot_rate
       integer, allocatable :: floors_left(:), floors_right(:)
-      real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:)
+      real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:), elevations(:)
       real(dp) :: stiffness, dashpot, yield_force, second_slope, peak_force, peak_penetration, &
                   fracture_penetration, restitution
       integer :: n_segments
@@ -44,11 +49,12 @@ contains
       integer :: ios, n, k, i
       namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot, &
          dashpot_rate, yield_force, second_slope, envelope_d, envelope_r, peak_force, peak_penetration, &
-         fracture_penetration, n_segments, restitution
+         fracture_penetration, n_segments, restitution, elevations
 
       ! One slot more than allowed, so that too many pairs get our message, not gfortran's.
       allocate (floors_left(max_pairs + 1), floors_right(max_pairs + 1), gap(max_pairs + 1), &
-                envelope_d(max_envelope_points + 1), envelope_r(max_envelope_points + 1))
+                envelope_d(max_envelope_points + 1), envelope_r(max_envelope_points + 1), &
+                elevations(max_pairs + 1))
       left = ' '
       right = ' '
       law = ' '
@@ -56,6 +62,7 @@ contains
       floors_left = unset_int
       floors_right = unset_int
       gap = unset_real
+      elevations = unset_real
       envelope_d = unset_real
       envelope_r = unset_real
       stiffness = unset_real
@@ -93,10 +100,20 @@ contains
       end if
       at%label = at%label//' ('//cfg%left//', '//cfg%right//')'
 
-      call take_floors(at, 'floors_left', floors_left, buildings(cfg%left_index), cfg%floor_left, error)
-      if (allocated(error)) return
-      call take_floors(at, 'floors_right', floors_right, buildings(cfg%right_index), cfg%floor_right, error)
-      if (allocated(error)) return
+      if (given_count(elevations) > 0) then
+         if (given_count(floors_left) > 0 .or. given_count(floors_right) > 0) then
+            call fail(at, 'elevations', 'elevations and floors_left/floors_right are both given; give '// &
+                      'the pairs by floor (floors_left, floors_right) or by elevation (elevations), not both', error)
+            return
+         end if
+         call take_elevations(error)
+         if (allocated(error)) return
+      else
+         call take_floors(at, 'floors_left', floors_left, buildings(cfg%left_index), cfg%floor_left, error)
+         if (allocated(error)) return
+         call take_floors(at, 'floors_right', floors_right, buildings(cfg%right_index), cfg%floor_right, error)
+         if (allocated(error)) return
+      end if
       n = size(cfg%floor_left)
       if (size(cfg%floor_right) /= n) then
          call fail(at, 'floors_right', 'floors_right has '//values_text(size(cfg%floor_right))// &
@@ -216,6 +233,14 @@ contains
                       '(coefficient of restitution of an impact)', error)
             return
          end if
+         do i = 1, n
+            if (cfg%floor_left(i) == 0 .or. cfg%floor_right(i) == 0) then
+               call fail(at, 'restitution', 'restitution needs the masses of both facing points, but '// &
+                         'elevations('//str(i)//') = '//str(cfg%elevation(i))//' m is a column point '// &
+                         'between floors (no mass); give the dashpot instead', error)
+               return
+            end if
+         end do
          cfg%restitution = restitution
       end if
       if (.not. is_set(dashpot)) dashpot = 0.0_dp
@@ -230,6 +255,38 @@ contains
       end if
 
    contains
+
+      !> Pairs by elevation: 1..`max_pairs` values, each > 0, at a floor or on a frame's
+      !> facing column of each building (pound_deck_contact's `point_at`).
+      subroutine take_elevations(error)
+         type(error_type), allocatable, intent(out) :: error
+         integer :: ne, j
+         logical :: in_suite
+
+         in_suite = .false.
+         if (present(suite)) in_suite = suite
+         ne = given_count(elevations)
+         if (ne > max_pairs) then
+            call fail(at, 'elevations', 'elevations has '//values_text(ne)//', must have at most '// &
+                      str(max_pairs)//' (one per pair)', error)
+            return
+         end if
+         allocate (cfg%elevation(ne), cfg%floor_left(ne), cfg%floor_right(ne))
+         do j = 1, ne
+            if (.not. is_set(elevations(j))) then
+               call fail(at, 'elevations', 'elevations('//str(j)//') is missing; give one elevation '// &
+                         '(m above the base) per pair', error)
+               return
+            end if
+            call check_real(at, 'elevations', elevations(j), '>', 0.0_dp, error, name='elevations('//str(j)//')')
+            if (allocated(error)) return
+            cfg%elevation(j) = elevations(j)
+            call point_at(at, j, elevations(j), buildings(cfg%left_index), in_suite, cfg%floor_left(j), error)
+            if (allocated(error)) return
+            call point_at(at, j, elevations(j), buildings(cfg%right_index), in_suite, cfg%floor_right(j), error)
+            if (allocated(error)) return
+         end do
+      end subroutine take_elevations
 
       !> `var` was given (`given`) although the law does not use it (`not_used`).
       pure subroutine unused(var, given, not_used, error)
@@ -404,6 +461,54 @@ contains
       end do
    end function building_names
 
+   !> The floor of building `b` at elevation `z` of pair `k` (within `elevation_tol`), or 0 for a
+   !> point between floors, which only a frame has (a node on its facing column); above the
+   !> roof, between the floors of a shear building, or between floors in a suite: an error.
+   pure subroutine point_at(at, k, z, b, suite, floor, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Pair (for messages).
+      integer, intent(in) :: k
+      !> Elevation above the base (m), > 0.
+      real(dp), intent(in) :: z
+      !> The building.
+      type(building_config), intent(in) :: b
+      !> The deck is a suite.
+      logical, intent(in) :: suite
+      !> The floor at z, or 0 between floors.
+      integer, intent(out) :: floor
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: what
+      real(dp) :: zf
+      integer :: j
+
+      what = 'elevations('//str(k)//') = '//str(z)//' m'
+      floor = 0
+      zf = 0.0_dp
+      do j = 1, b%n_storeys
+         zf = zf + b%height(j)
+         if (abs(zf - z) <= elevation_tol) then
+            floor = j
+            return
+         end if
+         if (zf > z) exit
+      end do
+      if (z > zf) then
+         call fail(at, 'elevations', what//' is above the roof of building '//b%name//' ('//str(zf)// &
+                   ' m); every pair needs a point of both buildings', error)
+      else if (.not. is_frame(b)) then
+         call fail(at, 'elevations', what//' lies between floors '//str(j - 1)//' ('//str(zf - b%height(j))// &
+                   ' m) and '//str(j)//' ('//str(zf)//' m) of building '//b%name//', a shear building '// &
+                   "(DOFs only at its floors): give a floor's elevation, or model = 'frame' for "//b%name// &
+                   ' (its facing column gets a node there)', error)
+      else if (suite) then
+         call fail(at, 'elevations', what//' lies between floors of building '//b%name//'; a suite '// &
+                   '(several &ground) needs the pairs at floors of both buildings (its separation rules '// &
+                   'take the floors'' peaks)', error)
+      end if
+   end subroutine point_at
+
    !> Floors of building `b` in each pair: 1..`max_pairs` values, none missing, each in
    !> 1..n_storeys of `b`.
    pure subroutine take_floors(at, var, raw, b, values, error)
@@ -424,7 +529,7 @@ contains
       k = given_count(raw)
       if (k == 0) then
          call fail(at, var, var//' is missing (floor of building '//b%name//' in each pair, '// &
-                   '1..n_storeys = '//str(b%n_storeys)//')', error)
+                   '1..n_storeys = '//str(b%n_storeys)//'; or give the pairs by elevations, m)', error)
          return
       end if
       if (k > max_pairs) then

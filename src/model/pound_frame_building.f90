@@ -14,10 +14,15 @@
 !>   (building, lowest factor, storey).
 !> - Ground vector r: 1 on the horizontal DOFs, 0 on the vertical and rotational ones.
 !> - Periods: the lowest max(min(n_storeys, modes_listed), damping_modes) modes (at most the DOFs with mass)
-!>   by subspace iteration in band storage (pound_band_eigen).
+!>   by subspace iteration in band storage (pound_band_eigen); each mode's participation
+!>   factor phi^T M r and effective mass fraction (phi^T M r)^2 / (r^T M r) (phi^T M phi = 1).
 !> - Response points `floor_dof`: each floor's lateral DOF on the RIGHTMOST column line (the
 !>   line facing a building to the right); `floor_dof_left` holds the leftmost line's (the
 !>   contact end when the frame stands on the right; equal with a rigid diaphragm).
+!> - Contact points between floors (`&contact elevations`): the deck's elevations facing no
+!>   floor become nodes of the facing column (`contact_z_left`, `contact_z_right`, splitting
+!>   that column there); `point_z`/`point_dof` list every column node between floors on the
+!>   rightmost line, `point_z_left`/`point_dof_left` on the leftmost.
 !> - Storey drift: lateral displacement difference of consecutive floors on the rightmost
 !>   line. Storey shear: sum of the storey's column shears at their bottom section (the
 !>   first-order end force f(2) of each column's lowest element, pound_frame_element),
@@ -58,6 +63,9 @@ module pound_frame_building
       character(len=:), allocatable :: base
       !> The constraints.
       logical :: rigid_beams = .false., rigid_diaphragm = .false., rigid_columns = .false.
+      !> Per computed mode: participation factor Gamma_n = phi_n^T M r (mass-normalized
+      !> phi_n, sign as computed) and effective mass fraction Gamma_n^2 / (r^T M r).
+      real(dp), allocatable :: participation(:), effective_mass(:)
    end type frame_data
 
 contains
@@ -82,6 +90,8 @@ contains
       spec%base_pinned = [.false.]
       if (allocated(cfg%base)) spec%base_pinned = [cfg%base == 'pinned']
       spec%n_sub = cfg%column_elements
+      if (allocated(deck_entry%contact_z_left)) spec%extra_z_first = deck_entry%contact_z_left
+      if (allocated(deck_entry%contact_z_right)) spec%extra_z_last = deck_entry%contact_z_right
       spec%floor_mass = cfg%mass
       spec%floor_load = cfg%gravity_load
       spec%rigid_beams = cfg%rigid_beams
@@ -168,6 +178,11 @@ contains
             m%floor_dof(j) = f%map_dof(1, 1, f%floor_node(nl, j))
             m%floor_dof_left(j) = f%map_dof(1, 1, f%floor_node(1, j))
          end do
+         ! Contact points between floors: every column node between floors on the two faces.
+         m%point_dof = pack(f%map_dof(1, 1, :), f%node_line == nl .and. f%node_floor == 0)
+         m%point_z = pack(f%node_z, f%node_line == nl .and. f%node_floor == 0)
+         m%point_dof_left = pack(f%map_dof(1, 1, :), f%node_line == 1 .and. f%node_floor == 0)
+         m%point_z_left = pack(f%node_z, f%node_line == 1 .and. f%node_floor == 0)
          call chain_rows(m%floor_dof, [(1.0_dp, j=1, ns)], m%drift, m%shear)
          call shear_rows(f, m%n, m%shear)
 
@@ -184,6 +199,8 @@ contains
             error%message = structure_label(m)//': natural modes: '//error%message
             return
          end if
+         fd%participation = matmul(m%mass*m%ground, shapes)
+         fd%effective_mass = fd%participation**2/sum(m%mass*m%ground**2)
       end associate
       m%period = 2.0_dp*pi/m%omega
       call rayleigh_coefficients(m%omega, m%damping_ratio, m%damping_modes, m%a0, m%a1)

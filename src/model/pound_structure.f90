@@ -30,7 +30,7 @@ module pound_structure
    private
 
    public :: structure_model, recovery_rows, recover, recover_all, structure_label, structure_strain_energy
-   public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed
+   public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof
 
    !> Natural modes a builder computes besides the two Rayleigh modes: the periods the listing
    !> shows (the lowest `modes_listed`; fewer when the model has fewer modes).
@@ -84,6 +84,12 @@ module pound_structure
       !> end when it stands on the right (a frame: its leftmost column line); unallocated:
       !> `floor_dof`.
       integer, allocatable :: floor_dof_left(:)
+      !> Contact points between floors (a frame's column nodes): elevation (m) and lateral DOF
+      !> of each such node on the right face (`point_z`, `point_dof`: contact ends when the
+      !> building stands on the left) and on the left face (`point_z_left`, `point_dof_left`);
+      !> unallocated: none (a shear building).
+      real(dp), allocatable :: point_z(:), point_z_left(:)
+      integer, allocatable :: point_dof(:), point_dof_left(:)
       !> Storey drift and storey shear recovery rows (n_storeys each, storey 1 at the bottom).
       type(recovery_rows) :: drift, shear
       !> Weights w_j of K+G = sum_j w_j d_j d_j^T over the drift rows d_j, when the builder
@@ -229,6 +235,33 @@ contains
          chain = .true.
       end function chain
    end function structure_is_stick
+
+   !> The DOF of a contact end on model `m`: floor `floor` (> 0) or, for floor 0, the point at
+   !> elevation `z` (m, within 1e-6 m), on the right face when `side` = 1 (the building stands
+   !> on the left of the pair) or on the left face when `side` = 2. 0 if there is no such point.
+   pure integer function structure_end_dof(m, side, floor, z) result(dof)
+      !> The model.
+      class(structure_model), intent(in) :: m
+      !> End of the pair: 1 (left building) or 2 (right building).
+      integer, intent(in) :: side
+      !> Floor (0: a point between floors).
+      integer, intent(in) :: floor
+      !> Elevation of a point between floors (m).
+      real(dp), intent(in) :: z
+      integer :: k
+
+      dof = 0
+      if (floor > 0) then
+         dof = m%floor_dof(floor)
+         if (side == 2 .and. allocated(m%floor_dof_left)) dof = m%floor_dof_left(floor)
+      else if (side == 1 .and. allocated(m%point_z)) then
+         k = findloc(abs(m%point_z - z) <= 1.0e-6_dp, .true., 1)
+         if (k > 0) dof = m%point_dof(k)
+      else if (side == 2 .and. allocated(m%point_z_left)) then
+         k = findloc(abs(m%point_z_left - z) <= 1.0e-6_dp, .true., 1)
+         if (k > 0) dof = m%point_dof_left(k)
+      end if
+   end function structure_end_dof
 
    !> `&building #k (name)` when the occurrence is known, else `building name`.
    pure function structure_label(m) result(s)

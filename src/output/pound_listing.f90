@@ -223,11 +223,24 @@ contains
                   call note_io()
                end do
             end if
-            write (u, '(a)', iostat=ios, iomsg=msg) '    mode      T [s]      f [Hz]  omega [rad/s]'
+            if (allocated(s%frame)) then
+               write (u, '(a)', iostat=ios, iomsg=msg) '    mode      T [s]      f [Hz]  omega [rad/s]'// &
+                  '  Gamma [t^0.5]  eff. mass [%]  cumulative [%]'
+            else
+               write (u, '(a)', iostat=ios, iomsg=msg) '    mode      T [s]      f [Hz]  omega [rad/s]'
+            end if
             call note_io()
             do j = 1, min(size(b%period), max_listed_modes)
-               write (u, '(2x,i6,a11,a12,a15)', iostat=ios, iomsg=msg) j, fixed_cell(b%period(j), 11, 5, .true.), &
-                  fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), fixed_cell(b%omega(j), 15, 4, .true.)
+               if (allocated(s%frame)) then
+                  write (u, '(2x,i6,a11,a12,a15,es15.5,2a15)', iostat=ios, iomsg=msg) j, &
+                     fixed_cell(b%period(j), 11, 5, .true.), fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), &
+                     fixed_cell(b%omega(j), 15, 4, .true.), s%frame%participation(j), &
+                     fixed_cell(100.0_dp*s%frame%effective_mass(j), 15, 3), &
+                     fixed_cell(100.0_dp*sum(s%frame%effective_mass(1:j)), 15, 3)
+               else
+                  write (u, '(2x,i6,a11,a12,a15)', iostat=ios, iomsg=msg) j, fixed_cell(b%period(j), 11, 5, .true.), &
+                     fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), fixed_cell(b%omega(j), 15, 4, .true.)
+               end if
                call note_io()
             end do
             if (size(b%period) > max_listed_modes) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '    (', &
