@@ -270,6 +270,18 @@ contains
                                                         suite%non_monotone_every, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'refine_tolerance', &
                                                         suite%refine_tolerance, error)
+         ! /sweep (the first motion's own sweep, per quantity) gets the suite statistics beside it.
+         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_mean', suite%sweep_mean, error)
+         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_max', suite%sweep_max, error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'motion', trim(suite%names(1)), error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'suite_safe_gap_mean', suite%safe_gap_mean, &
+                                                        error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'suite_safe_gap_every', suite%safe_gap_every, &
+                                                        error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'suite_refined_gap_mean', &
+                                                        suite%refined_gap_mean, error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'suite_refined_gap_every', &
+                                                        suite%refined_gap_every, error)
       end subroutine write_all
 
       !> /suite/<motion>/... for the motions whose histories were kept.

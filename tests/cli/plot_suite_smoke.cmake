@@ -25,6 +25,14 @@ assert (th[:, 2] == f['suite/sweep/refined_gap_mean'][()]).all() and (th > 0).al
 assert 'p' in f['suite'] and 's1' not in f['suite']
 assert f['suite/p/uncoupled/A/u'].shape == f['uncoupled/A/u'].shape
 assert (f['suite/p/coupled/B/u'][...] == f['coupled/B/u'][...]).all()
+sw = f['sweep']
+assert (sw['suite_mean'][...] == f['suite/sweep/mean'][...]).all()
+assert (sw['suite_max'][...] == f['suite/sweep/max'][...]).all()
+assert (sw['suite_max'][...] >= sw['suite_mean'][...]).all()
+assert sw.attrs['suite_refined_gap_mean'] == f['suite/sweep/refined_gap_mean'][()]
+assert sw.attrs['suite_safe_gap_every'] == f['suite/sweep/safe_gap_every'][()]
+m = sw.attrs['motion']; m = m.decode() if isinstance(m, bytes) else m
+assert m == f['suite/names'][0].decode().strip(), m
 print('ok')
 " RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 expect_equal("HDF5 checks (${err})" 0 "${rc}")
