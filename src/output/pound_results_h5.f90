@@ -134,6 +134,9 @@ contains
       end subroutine write_all
 
       subroutine write_sweep()
+         ! A contiguous copy of each (quantity, building) row (no array temporary at the call).
+         real(dp), allocatable :: row(:)
+
          call h5_write(h5, '/sweep/gap', sweep%gap, error)
          if (allocated(error)) return
          call h5_write(h5, '/sweep/impacts', sweep%impacts, error)
@@ -142,8 +145,9 @@ contains
          if (allocated(error)) return
          do ib = 1, size(models)
             do q = 1, n_history_quantities
+               row = sweep%max_abs_lambda(q, ib, :)
                call h5_write(h5, '/sweep/max_abs_lambda/'//models(ib)%name//'/'//trim(history_names(q)), &
-                             sweep%max_abs_lambda(q, ib, :), error)
+                             row, error)
                if (allocated(error)) return
             end do
          end do
@@ -215,6 +219,9 @@ contains
          character(len=*), parameter :: c = '/coupled/contact'
          character(len=16), allocatable :: laws(:)
          integer :: k, ne
+         ! Contiguous copies of component sections (no array temporaries at the calls).
+         real(dp), allocatable :: rv(:)
+         integer, allocatable :: iv(:)
 
          call h5_write(h5, c//'/force', cpl%joints%force, error)
          if (allocated(error)) return
@@ -229,15 +236,20 @@ contains
          call h5_write_attr(h5, c//'/state', 'codes', '0 open, -1 closed elastic, -2 fractured, '// &
                             'k > 0 yielding on yield segment k of the law', error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/impacts', cs%joint(:)%impacts, error)
+         iv = cs%joint(:)%impacts
+         call h5_write(h5, c//'/impacts', iv, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/contact_time', cs%joint(:)%contact_time, error)
+         rv = cs%joint(:)%contact_time
+         call h5_write(h5, c//'/contact_time', rv, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/peak_force', cs%joint(:)%peak_force, error)
+         rv = cs%joint(:)%peak_force
+         call h5_write(h5, c//'/peak_force', rv, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/peak_time', cs%joint(:)%peak_time, error)
+         rv = cs%joint(:)%peak_time
+         call h5_write(h5, c//'/peak_time', rv, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/gap', cs%pair(:)%gap, error)
+         rv = cs%pair(:)%gap
+         call h5_write(h5, c//'/gap', rv, error)
          if (allocated(error)) return
          call h5_write(h5, c//'/stiffness', [(cs%pair(k)%law%stiffness, k=1, cs%m)], error)
          if (allocated(error)) return
@@ -247,13 +259,16 @@ contains
          end do
          call h5_write(h5, c//'/law', laws, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/plastic_final', cs%joint(:)%plastic, error)
+         rv = cs%joint(:)%plastic
+         call h5_write(h5, c//'/plastic_final', rv, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/peak_penetration', cs%joint(:)%peak_penetration, error)
+         rv = cs%joint(:)%peak_penetration
+         call h5_write(h5, c//'/peak_penetration', rv, error)
          if (allocated(error)) return
          call h5_write(h5, c//'/fractured', [(merge(1, 0, cs%joint(k)%fractured), k=1, cs%m)], error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/fracture_time', cs%joint(:)%fracture_time, error)
+         rv = cs%joint(:)%fracture_time
+         call h5_write(h5, c//'/fracture_time', rv, error)
          if (allocated(error)) return
          do k = 1, cs%m
             associate (law => cs%pair(k)%law)
@@ -265,15 +280,20 @@ contains
             end associate
          end do
          ne = cs%stats%n_events
-         call h5_write(h5, c//'/events/time', cs%stats%events(1:ne)%time, error)
+         rv = cs%stats%events(1:ne)%time
+         call h5_write(h5, c//'/events/time', rv, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/events/step', cs%stats%events(1:ne)%step, error)
+         iv = cs%stats%events(1:ne)%step
+         call h5_write(h5, c//'/events/step', iv, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/events/status', cs%stats%events(1:ne)%status, error)
+         iv = cs%stats%events(1:ne)%status
+         call h5_write(h5, c//'/events/status', iv, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/events/rows', cs%stats%events(1:ne)%rows, error)
+         iv = cs%stats%events(1:ne)%rows
+         call h5_write(h5, c//'/events/rows', iv, error)
          if (allocated(error)) return
-         call h5_write(h5, c//'/events/solutions', cs%stats%events(1:ne)%solutions, error)
+         iv = cs%stats%events(1:ne)%solutions
+         call h5_write(h5, c//'/events/solutions', iv, error)
          if (allocated(error)) return
          call h5_write(h5, c//'/events/pairs', [(event_pairs(k), k=1, ne)], error)
          if (allocated(error)) return

@@ -22,3 +22,5 @@ file(WRITE ${WORK_DIR}/plain "not a folder\n")
 run_pound(d ${SOURCE_DIR}/input/two_frames_pdelta.nml -o plain/sub)
 expect_equal("exit status, bad -o" 1 "${d_rc}")
 expect_contains("bad -o" "${d_err}" "cannot create the output folder plain/sub: plain exists and is not a folder")
+# Nothing on stderr (Debug: no array temporaries in the writers of the contact results).
+expect_equal("stderr" "" "${r_err}")
