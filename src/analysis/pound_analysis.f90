@@ -359,11 +359,11 @@ contains
       !> at the start or is predicted to close (`contact_may_act`) is taken as `sub%m`
       !> substeps of dt/m.
       type(impact_stepping), intent(inout), optional :: sub
-      integer :: ib, step, k, every, nb, j
+      integer :: ib, step, k, every, nb, j, n_sub
       integer(int64) :: c0, c1, rate
-      real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new
+      real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact
+      logical :: out, coupled, finite, impact, output
 
       nb = size(models)
       allocate (view(nb))
@@ -397,34 +397,93 @@ contains
             call newmark_predict(st(ib), models(ib), ag(step) - ag(step - 1))
          end do
          out = mod(step, every) == 0
+         ! A step is one pass of the body below, or, with impact stepping when a joint can act,
+         ! m passes of h = dt/m with the ground motion at the substeps' ends.
+         n_sub = 1
          if (impact) then
             if (contact_may_act(cs, st)) then
-               ! The step again as m substeps of h = dt/m, the ground motion at their ends.
+               n_sub = sub%m
                res%substepped = res%substepped + 1
                call swap_steps()
-               ag_old = ag(step - 1)
-               do j = 1, sub%m
-                  if (j < sub%m) then
-                     t_sub = real(step - 1, dp)*cfg%dt + real(j, dp)*h
-                     ag_new = ground_accel(sub%ground, t_sub)
-                  else
-                     t_sub = t
-                     ag_new = ag(step)
-                  end if
-                  do ib = 1, nb
-                     call newmark_predict(st(ib), models(ib), ag_new - ag_old)
-                  end do
-                  call finish_step(ag_old, ag_new, t_sub, h, out .and. j == sub%m)
-                  if (allocated(error)) return
-                  res%substeps = res%substeps + 1
-                  ag_old = ag_new
-               end do
-               call swap_steps()
-               cycle
             end if
          end if
-         call finish_step(ag(step - 1), ag(step), t, cfg%dt, out)
-         if (allocated(error)) return
+         ag_old = ag(step - 1)
+         ag_new = ag(step)
+         t_sub = t
+         dt_now = cfg%dt
+         do j = 1, n_sub
+            if (n_sub > 1) then
+               dt_now = h
+               if (j < n_sub) then
+                  t_sub = real(step - 1, dp)*cfg%dt + real(j, dp)*h
+                  ag_new = ground_accel(sub%ground, t_sub)
+               else
+                  t_sub = t
+                  ag_new = ag(step)
+               end if
+               do ib = 1, nb
+                  call newmark_predict(st(ib), models(ib), ag_new - ag_old)
+               end do
+               res%substeps = res%substeps + 1
+            end if
+            output = out .and. j == n_sub
+            if (coupled) then
+               call contact_step(cs, st, t_sub, step, error)
+               if (allocated(error)) then
+                  ! A state that is not finite is named as such, not as a failed LCP.
+                  call locate_nonfinite(st, models, cs, t_sub, step, error, predicted=.true.)
+                  return
+               end if
+            end if
+            do ib = 1, nb
+               call newmark_commit(st(ib), models(ib), ag_old, ag_new)
+               call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
+                                    ag_new, t_sub, output)
+            end do
+            if (coupled) then
+               call step_energy(st, sample)
+               call contact_commit(cs, st, t_sub, dt_now)
+               sample(e_contact) = cs%element_work - cs%plastic_work
+               sample(e_plastic) = cs%plastic_work
+            else
+               win = 0.0_dp
+               eout = 0.0_dp
+               do ib = 1, nb
+                  call newmark_add_balance(st(ib), win, eout)
+               end do
+            end if
+            if (output) then
+               k = k + 1
+               do ib = 1, nb
+                  call add_structure_energy(res%energy(:, k), st(ib), models(ib))
+               end do
+               if (coupled) then
+                  res%energy(e_contact, k) = cs%element_work - cs%plastic_work
+                  res%energy(e_plastic, k) = cs%plastic_work
+                  call joint_history_record(res%joints, k, cs%joint)
+               end if
+               sample = res%energy(:, k)
+            end if
+            if (coupled .or. output) then
+               win = sample(e_input)
+               eout = sum(sample(e_kinetic:n_energy))
+            end if
+            ! One test per step: every value of the state feeds these sums.
+            if (coupled) then
+               finite = abs(sum(sample) + cs%work) <= huge(1.0_dp)
+            else
+               finite = abs(win + eout) <= huge(1.0_dp)
+            end if
+            if (.not. finite) then
+               if (.not. coupled) call step_energy(st, sample)
+               call state_failure(st, models, cs, sample, ag, cfg%dt, step, error)
+               return
+            end if
+            resid = max(resid, abs(win - eout))
+            scale = max(scale, abs(win), eout)
+            ag_old = ag_new
+         end do
+         if (n_sub > 1) call swap_steps()
       end do
       call system_clock(c1)
       call progress_run_done()
@@ -454,69 +513,6 @@ contains
          end do
          call contact_swap_step(cs, sub%cs)
       end subroutine swap_steps
-
-      !> The rest of a (sub)step of length `dt_now` ending at `t_end` whose increments are
-      !> predicted: the contact forces, commit, sample the response, audit the energy, store
-      !> an output sample when `output`.
-      subroutine finish_step(ag_start, ag_end, t_end, dt_now, output)
-         real(dp), intent(in) :: ag_start, ag_end, t_end, dt_now
-         logical, intent(in) :: output
-
-         if (coupled) then
-            call contact_step(cs, st, t_end, step, error)
-            if (allocated(error)) then
-               ! A state that is not finite is named as such, not as a failed LCP.
-               call locate_nonfinite(st, models, cs, t_end, step, error, predicted=.true.)
-               return
-            end if
-         end if
-         do ib = 1, nb
-            call newmark_commit(st(ib), models(ib), ag_start, ag_end)
-            call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
-                                 ag_end, t_end, output)
-         end do
-         if (coupled) then
-            call step_energy(st, sample)
-            call contact_commit(cs, st, t_end, dt_now)
-            sample(e_contact) = cs%element_work - cs%plastic_work
-            sample(e_plastic) = cs%plastic_work
-         else
-            win = 0.0_dp
-            eout = 0.0_dp
-            do ib = 1, nb
-               call newmark_add_balance(st(ib), win, eout)
-            end do
-         end if
-         if (output) then
-            k = k + 1
-            do ib = 1, nb
-               call add_structure_energy(res%energy(:, k), st(ib), models(ib))
-            end do
-            if (coupled) then
-               res%energy(e_contact, k) = cs%element_work - cs%plastic_work
-               res%energy(e_plastic, k) = cs%plastic_work
-               call joint_history_record(res%joints, k, cs%joint)
-            end if
-            sample = res%energy(:, k)
-         end if
-         if (coupled .or. output) then
-            win = sample(e_input)
-            eout = sum(sample(e_kinetic:n_energy))
-         end if
-         ! One test per step: every value of the state feeds these sums.
-         if (coupled) then
-            finite = abs(sum(sample) + cs%work) <= huge(1.0_dp)
-         else
-            finite = abs(win + eout) <= huge(1.0_dp)
-         end if
-         if (.not. finite) then
-            if (.not. coupled) call step_energy(st, sample)
-            call state_failure(st, models, cs, sample, ag, cfg%dt, step, error)
-            return
-         end if
-         resid = max(resid, abs(win - eout))
-         scale = max(scale, abs(win), eout)
-      end subroutine finish_step
    end subroutine integrate
 
    !> The substeps an analysis with `stepping = 'impact'` took, as one line of text.
