@@ -40,7 +40,7 @@ program pound
                              progress_off
    implicit none
 
-   character(len=:), allocatable :: deck_path, out_dir, record_path
+   character(len=:), allocatable :: deck_path, out_dir
    type(deck_type) :: deck
    type(case_options) :: options
    type(case_result) :: res
@@ -67,15 +67,10 @@ program pound
       call deck_ground_motion(deck, options%ground, error)
       call check(error)
    end if
-   record_path = ''
-   do k = 1, size(deck%motions)
-      if (deck%motions(k)%kind == 'record' .and. len(record_path) == 0) record_path = deck%motions(k)%file
-   end do
 
    ! Resources and the output folder, before anything large is allocated or computed.
    call check_memory()
-   call plan_outputs(out_dir, deck_path, [character(len=max(len(deck_path), len(record_path))) :: &
-                                          deck_path, record_path], outputs, error)
+   call plan_run_outputs()
    call check(error)
 
    ! The analyses.
@@ -151,6 +146,30 @@ contains
    end function planned_runs
 
    !> Refuse the run if its estimated memory exceeds what the machine can give.
+   !> Plan the outputs (`plan_outputs`): they must not be the deck or any record it reads.
+   !> The paths are copied into an explicit-length array, never an array constructor
+   !> `[character(len=n) :: a, b]`: gfortran 12 sizes such a constructor of deferred-length
+   !> strings by `len(a)`, not `n`, and writes past the heap block when `b` is longer (an
+   !> absolute record path longer than the deck path crashed the program).
+   subroutine plan_run_outputs()
+      integer :: i, n
+
+      n = len(deck_path)
+      do i = 1, size(deck%motions)
+         if (deck%motions(i)%kind == 'record') n = max(n, len(deck%motions(i)%file))
+      end do
+      block
+         character(len=n) :: inputs(1 + size(deck%motions))
+
+         inputs = ''
+         inputs(1) = deck_path
+         do i = 1, size(deck%motions)
+            if (deck%motions(i)%kind == 'record') inputs(1 + i) = deck%motions(i)%file
+         end do
+         call plan_outputs(out_dir, deck_path, inputs, outputs, error)
+      end block
+   end subroutine plan_run_outputs
+
    subroutine check_memory()
       real(dp) :: available
       character(len=:), allocatable :: source

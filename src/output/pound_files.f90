@@ -81,8 +81,11 @@ contains
       do i = 1, size(inputs)
          n = max(n, len_trim(inputs(i)))
       end do
+      ! Element by element into the allocated length: no reallocation on assignment.
       allocate (character(len=n) :: set%inputs(size(inputs)))
-      set%inputs = inputs
+      do i = 1, size(inputs)
+         set%inputs(i) = inputs(i)
+      end do
       set%dir = dir
       call make_directories(dir, error)
       if (allocated(error)) return
