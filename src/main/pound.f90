@@ -50,7 +50,6 @@ program pound
    character(len=512) :: ground_text(1)
    type(suite_result) :: suite
    logical :: is_suite
-   integer :: k
    integer :: progress_mode = progress_auto
 
    call install_signal_cleanup()
