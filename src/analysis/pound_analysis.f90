@@ -377,7 +377,8 @@ contains
          res%substep = h
       end if
       do ib = 1, nb
-         call response_init(res%building(ib), models(ib), cfg%store, res%n_out, error)
+         call response_init(res%building(ib), models(ib), cfg%store, res%n_out, error, &
+                            nodes=cfg%node_histories .and. allocated(models(ib)%dof_node))
          if (allocated(error)) return
          view(ib)%u => newmark_u(st(ib))
          view(ib)%v => newmark_v(st(ib))

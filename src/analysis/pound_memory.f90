@@ -7,7 +7,8 @@
 !>   the output times written to the HDF5 file;
 !> - histories, per analysis (uncoupled; coupled when the deck has contact; one more coupled
 !>   result while a `&sweep` runs): output times and the 6 energy terms (7 n_out), and
-!>   n_out x floors x stored quantities for every building;
+!>   n_out x floors x stored quantities for every building, and with `node_histories`
+!>   n_out x DOFs of every frame (the frame's DOF bound below);
 !> - contact histories (coupled analyses): force, closing, penetration, plastic penetration
 !>   and state per joint, 36 bytes x joints x n_out;
 !> - models and contact systems: a few hundred bytes per floor and per joint (banded
@@ -48,6 +49,8 @@ module pound_memory
       integer :: n_analyses = 0
       !> Floors x stored quantities, summed over the buildings.
       integer :: history_columns = 0
+      !> DOF histories (`node_histories`): the frames' DOFs (an upper bound), summed.
+      real(dp) :: node_columns = 0.0_dp
       !> Parts (bytes).
       real(dp) :: ground = 0.0_dp, histories = 0.0_dp, contact = 0.0_dp, models = 0.0_dp
       !> Sum of the parts and the fixed allowance (bytes).
@@ -84,6 +87,7 @@ contains
                lines = real(size(b%bay_width) + 1, dp)
                dofs = 3.0_dp*lines*(real(b%n_storeys, dp)*real(b%column_elements, dp) + 1.0_dp)
                frame_bytes = frame_bytes + 8.0_dp*8.0_dp*dofs*(3.0_dp*lines + 3.0_dp)
+               if (deck%analysis%node_histories) est%node_columns = est%node_columns + dofs
             end associate
          end do
       end if
@@ -99,7 +103,8 @@ contains
       if (joints > 0.0_dp .and. deck%sweep%active) est%n_analyses = 3
 
       est%ground = 8.0_dp*(est%n_steps + 1.0_dp) + 8.0_dp*est%n_out
-      est%histories = real(est%n_analyses, dp)*8.0_dp*est%n_out*(7.0_dp + real(est%history_columns, dp))
+      est%histories = real(est%n_analyses, dp)*8.0_dp*est%n_out*(7.0_dp + real(est%history_columns, dp) + &
+                                                                  est%node_columns)
       est%contact = real(est%n_analyses - 1, dp)*36.0_dp*joints*est%n_out
       est%models = model_bytes_per_floor*floors + 8.0_dp*(4.0_dp*joints*floors + 16.0_dp*joints**2) + frame_bytes
       est%total = base_bytes + est%ground + est%histories + est%contact + est%models
@@ -180,7 +185,7 @@ contains
       character(len=*), intent(in) :: source
       !> Error state: set when the run does not fit.
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: stored
+      character(len=:), allocatable :: stored, nodes
       integer :: q
 
       if (est%total <= usable_fraction*available) return
@@ -191,16 +196,19 @@ contains
          stored = stored//trim(history_names(q))
       end do
       if (len(stored) == 0) stored = 'none'
+      nodes = ''
+      if (est%node_columns > 0.0_dp) nodes = ' + '//str_count(est%node_columns)//' DOF histories (node_histories)'
       call fatal_error(error, deck_label(deck)//'&analysis: the run needs about '// &
                        format_bytes(est%total)//' of memory (histories '//format_bytes(est%histories)// &
                        ' = '//str_count(est%n_out)//' output times x '//str(est%history_columns)// &
-                       ' floor histories x '//str(est%n_analyses)//' analyses; contact histories '// &
+                       ' floor histories'//nodes//' x '//str(est%n_analyses)//' analyses; contact histories '// &
                        format_bytes(est%contact)//'; ground motion '//format_bytes(est%ground)// &
                        ' for '//str_count(est%n_steps)//' steps), more than the '// &
                        format_bytes(usable_fraction*available)//' a run may use ('// &
                        str(nint(100*usable_fraction))//' % of '//format_bytes(available)//', '// &
                        source//'): raise output_every (now '//str(deck%analysis%output_every)// &
-                       '), store fewer history quantities (now '//stored//'), shorten t_end (now '// &
+                       '), store fewer history quantities (now '//stored//')'//trim(merge(' or no DOF histories', &
+                       '                    ', est%node_columns > 0.0_dp))//', shorten t_end (now '// &
                        short_real(deck%analysis%t_end)//' s) or enlarge dt (now '// &
                        short_real(deck%analysis%dt)//' s)')
    end subroutine memory_refusal

@@ -8,7 +8,9 @@
 !> only the stored ones; the drift peaks are tracked in the fused pass over the floors
 !> (consecutive response points), the storey-shear peaks are the shear rows' scales times
 !> the drift peaks (each shear row is its drift row scaled: see `response_finish`). Histories are held
-!> as (n, n_out) so that h5py reads them as (n_out, n).
+!> as (n, n_out) so that h5py reads them as (n_out, n). On request (`nodes`) the record also holds
+!> every DOF's displacement at the output steps, `u_nodes` (n_dofs, n_out): a copy of the
+!> integrator's u, so its floor DOFs' rows equal the floor history `u` bit for bit.
 module pound_response
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
@@ -34,6 +36,9 @@ module pound_response
       integer :: n_out = 0, capacity = 0
       !> Histories (n, capacity), allocated only for stored quantities.
       real(dp), allocatable :: u(:, :), v(:, :), a_abs(:, :), drift(:, :), shear(:, :)
+      !> Whether every DOF's displacement is stored, and that history (n_dofs, capacity).
+      logical :: nodes = .false.
+      real(dp), allocatable :: u_nodes(:, :)
       !> Peak absolute value per floor/storey and quantity (n, n_history_quantities).
       real(dp), allocatable :: peak(:, :)
       !> Time of each peak (s).
@@ -54,7 +59,7 @@ contains
    !>
    !> Fails (nothing allocated is kept) when the memory cannot be had, with the size asked
    !> for and the deck variables that set it.
-   pure subroutine response_init(rec, b, store, capacity, error)
+   pure subroutine response_init(rec, b, store, capacity, error, nodes)
       !> The record (reset).
       type(response_record), intent(out) :: rec
       !> The structural model: its response points (floors) and storey rows.
@@ -65,9 +70,11 @@ contains
       integer, intent(in) :: capacity
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: stat(6)
+      !> Store every DOF's displacement as well (`u_nodes`); default no.
+      logical, intent(in), optional :: nodes
+      integer :: stat(7)
       real(dp) :: mib
-      integer :: n
+      integer :: n, n_node
 
       n = size(b%floor_dof)
       rec%stick = b%stick
@@ -82,6 +89,10 @@ contains
       rec%store = store
       rec%capacity = capacity
       rec%n_out = 0
+      rec%nodes = .false.
+      if (present(nodes)) rec%nodes = nodes
+      n_node = 0
+      if (rec%nodes) n_node = b%n
       stat = 0
       ! Histories are zeroed here, so that their memory is touched before the time loop.
       if (store(q_u)) allocate (rec%u(n, capacity), source=0.0_dp, stat=stat(1))
@@ -89,15 +100,16 @@ contains
       if (store(q_a_abs)) allocate (rec%a_abs(n, capacity), source=0.0_dp, stat=stat(3))
       if (store(q_drift)) allocate (rec%drift(n, capacity), source=0.0_dp, stat=stat(4))
       if (store(q_shear)) allocate (rec%shear(n, capacity), source=0.0_dp, stat=stat(5))
+      if (rec%nodes) allocate (rec%u_nodes(n_node, capacity), source=0.0_dp, stat=stat(7))
       allocate (rec%peak(n, n_history_quantities), rec%peak_time(n, n_history_quantities), rec%work(n), &
                 stat=stat(6))
       if (any(stat /= 0)) then
-         mib = 8.0_dp*real(n, dp)*real(capacity, dp)*real(count(store), dp)/2.0_dp**20
+         mib = 8.0_dp*(real(n, dp)*real(count(store), dp) + real(n_node, dp))*real(capacity, dp)/2.0_dp**20
          rec = response_record()
-         call fatal_error(error, 'cannot allocate the response histories: '//str(count(store))// &
-                          ' quantities x '//str(n)//' floors x '//str(capacity)//' output samples = '// &
-                          str(mib)//' MiB; store fewer or less often (history, output_every) or '// &
-                          'shorten the run (t_end, dt)')
+         call fatal_error(error, 'cannot allocate the response histories: ('//str(count(store))// &
+                          ' quantities x '//str(n)//' floors + '//str(n_node)//' node DOFs) x '//str(capacity)// &
+                          ' output samples = '//str(mib)//' MiB; store fewer or less often (history, '// &
+                          'node_histories, output_every) or shorten the run (t_end, dt)')
          return
       end if
       rec%peak = 0.0_dp
@@ -125,6 +137,7 @@ contains
          if (.not. output) return
          rec%n_out = rec%n_out + 1
          k = rec%n_out
+         if (rec%nodes) rec%u_nodes(:, k) = u
          if (rec%store(q_u)) rec%u(:, k) = u
          if (rec%store(q_v)) rec%v(:, k) = v
          if (rec%store(q_a_abs)) rec%a_abs(:, k) = a + ag
@@ -144,6 +157,7 @@ contains
       if (.not. output) return
       rec%n_out = rec%n_out + 1
       k = rec%n_out
+      if (rec%nodes) rec%u_nodes(:, k) = u
       if (rec%store(q_u)) rec%u(:, k) = rec%pu
       if (rec%store(q_v)) rec%v(:, k) = rec%pv
       if (rec%store(q_a_abs)) rec%a_abs(:, k) = rec%pa

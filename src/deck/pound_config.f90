@@ -41,6 +41,9 @@ module pound_config
       integer :: impact_substeps = 0
       !> Histories in the HDF5 file in compressed (deflate) chunks.
       logical :: compress = .false.
+      !> Every DOF's displacement history of each frame building (`u_nodes` in the HDF5 file,
+      !> the DOF layout in `/model/<b>/dofs`); default off.
+      logical :: node_histories = .false.
    end type analysis_config
 
    !> `&ground`: one ground motion (a deck with several `&ground` groups is a suite).

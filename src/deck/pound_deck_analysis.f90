@@ -1,5 +1,5 @@
 !> Reader of `&analysis`: title, dt, t_end, output_every, history, stepping, impact_substeps,
-!> compress.
+!> compress, node_histories.
 module pound_deck_analysis
    use pound_config, only: analysis_config
    use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
@@ -33,11 +33,12 @@ contains
       character(len=word_len) :: stepping
       real(dp) :: dt, t_end
       integer :: output_every, ios, impact_substeps
-      logical :: compress
+      logical :: compress, node_histories
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
-      namelist /analysis/ title, dt, t_end, output_every, history, stepping, impact_substeps, compress
+      namelist /analysis/ title, dt, t_end, output_every, history, stepping, impact_substeps, compress, &
+                          node_histories
 
       title = ' '
       history = ' '
@@ -47,6 +48,7 @@ contains
       stepping = 'uniform'
       impact_substeps = 0
       compress = .false.
+      node_histories = .false.
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -102,6 +104,7 @@ contains
       end if
       cfg%impact_substeps = impact_substeps
       cfg%compress = compress
+      cfg%node_histories = node_histories
       call parse_history(at, history, cfg%store, error)
    end subroutine read_analysis
 

@@ -21,17 +21,24 @@ contains
       !> Result y = A x (n).
       real(dp), intent(out) :: y(:)
       integer :: n, kd, i, j
+      real(dp) :: xj, yj
 
       n = size(ab, 2)
       kd = size(ab, 1) - 1
       do j = 1, n
          y(j) = ab(kd + 1, j)*x(j)
       end do
+      ! Column j: y(j) is still its diagonal term here (the later columns add to it after), so
+      ! summing it in a local in the same order gives the same numbers without a store and load
+      ! of y(j) per entry.
       do j = 2, n
+         xj = x(j)
+         yj = y(j)
          do i = max(1, j - kd), j - 1
-            y(i) = y(i) + ab(kd + 1 + i - j, j)*x(j)
-            y(j) = y(j) + ab(kd + 1 + i - j, j)*x(i)
+            y(i) = y(i) + ab(kd + 1 + i - j, j)*xj
+            yj = yj + ab(kd + 1 + i - j, j)*x(i)
          end do
+         y(j) = yj
       end do
    end subroutine band_symv
 

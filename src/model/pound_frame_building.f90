@@ -113,7 +113,7 @@ contains
       integer, intent(in), optional :: number
       type(frame_spec) :: spec
       real(dp), allocatable :: kb(:, :), gb(:, :), mb(:, :), mb_full(:, :), shapes(:, :)
-      integer :: kind, j, k, nl, ns, n_modes, kd
+      integer :: kind, j, k, nl, ns, n_modes, kd, q
 
       spec = frame_spec_of(deck_entry)
       m%name = deck_entry%name
@@ -172,6 +172,20 @@ contains
          m%ground = 0.0_dp
          do k = 1, f%n_nodes
             if (f%map_dof(1, 1, k) > 0) m%ground(f%map_dof(1, 1, k)) = 1.0_dp
+         end do
+         ! DOF layout: each reduced DOF at the node and direction it was created at (nodes are
+         ! numbered before their slaves, so the first appearance of a DOF is its master).
+         allocate (m%dof_node(m%n), m%dof_direction(m%n))
+         m%dof_node = 0
+         m%dof_direction = 0
+         do k = 1, f%n_nodes
+            do j = 1, 3
+               q = f%map_dof(1, j, k)
+               if (q == 0) cycle
+               if (m%dof_node(q) > 0) cycle
+               m%dof_node(q) = k
+               m%dof_direction(q) = j
+            end do
          end do
          allocate (m%floor_dof(ns), m%floor_dof_left(ns))
          do j = 1, ns

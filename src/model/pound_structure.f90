@@ -99,6 +99,10 @@ module pound_structure
       !> every builder calls last. Consumers then take floors and storeys straight from the DOF
       !> vectors (same numbers as through the rows, fewer operations).
       logical :: stick = .false.
+      !> DOF layout, when the builder has nodes (a frame): the node (1-based, as in the builder's
+      !> node list) and the direction (1 horizontal, 2 vertical, 3 rotation) each DOF was
+      !> created at (n each); unallocated: the DOFs are the floors' lateral displacements.
+      integer, allocatable :: dof_node(:), dof_direction(:)
    end type structure_model
 
 contains

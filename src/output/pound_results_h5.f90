@@ -10,6 +10,13 @@
 !>     /<analysis>/<b>/u, v, a_abs               (n_out, n_floors), only those stored
 !>     /<analysis>/<b>/drift, storey_shear       (n_out, n_storeys), only those stored
 !>                                               (with `&analysis compress`: chunked, deflate)
+!>     /<analysis>/<b>/u_nodes                   (n_out, n_dofs) every DOF of a frame, only with
+!>                                               `&analysis node_histories`; its layout in
+!>     /model/<b>/dofs                           (2, n_dofs) integer: node, direction (1 horizontal,
+!>                                               2 vertical, 3 rotation) each DOF was created at
+!>     /model/<b>/node_dofs, node_coefficients   (6, n_nodes) integer, real: node k's horizontal,
+!>                                               vertical and rotation = sum of coefficient x DOF
+!>                                               over two terms each (DOF 0: no term)
 !>     /<analysis>/<b>/peak/<q>, peak_time/<q>   (n) for every quantity q
 !>     /<analysis>/energy                        (n_out, 6): input, kinetic, strain, damping,
 !>                                               contact, plastic; attributes components, relative_error
@@ -48,6 +55,9 @@ module pound_results_h5
    !> Units, as written in the root attribute.
    character(len=*), parameter :: units = 'kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
                                           'influence coefficients percent'
+   !> Columns of a frame's node map (`node_dofs`, `node_coefficients`): two terms per direction.
+   character(len=*), parameter :: node_map_columns = 'horizontal(term 1, term 2) vertical(term 1, term 2) '// &
+                                                     'rotation(term 1, term 2); DOF 0: no term'
 
 contains
 
@@ -168,6 +178,7 @@ contains
          if (allocated(error)) return
          if (allocated(s%frame)) then
             call write_frame(g, s)
+            if (.not. allocated(error) .and. deck%analysis%node_histories) call write_dof_layout(g, b, s)
          else
             call h5_write(h5, g//'storey_stiffness', s%storey_stiffness, error)
             if (allocated(error)) return
@@ -213,6 +224,29 @@ contains
       end subroutine write_frame
 
 
+
+      !> The DOF layout of a frame's `u_nodes`: node and direction of each DOF, and each node's
+      !> displacements as combinations of the DOFs (the constraints' master-slave map).
+      subroutine write_dof_layout(g, b, s)
+         character(len=*), intent(in) :: g
+         type(structure_model), intent(in) :: b
+         type(building_model), intent(in) :: s
+
+         associate (f => s%frame%frame)
+            call h5_write(h5, g//'dofs', reshape([b%dof_node, b%dof_direction], [b%n, 2]), error)
+            if (allocated(error)) return
+            call h5_write_attr(h5, g//'dofs', 'columns', 'node direction(1 horizontal, 2 vertical, 3 rotation)', &
+                               error)
+            if (allocated(error)) return
+            call h5_write(h5, g//'node_dofs', transpose(reshape(f%map_dof, [6, f%n_nodes])), error)
+            if (allocated(error)) return
+            call h5_write_attr(h5, g//'node_dofs', 'columns', node_map_columns, error)
+            if (allocated(error)) return
+            call h5_write(h5, g//'node_coefficients', transpose(reshape(f%map_coef, [6, f%n_nodes])), error)
+            if (allocated(error)) return
+            call h5_write_attr(h5, g//'node_coefficients', 'columns', node_map_columns, error)
+         end associate
+      end subroutine write_dof_layout
 
       subroutine write_contact()
          character(len=:), allocatable :: labels
@@ -381,6 +415,13 @@ contains
             if (allocated(error)) return
             if (r%store(q_shear)) call write_history(h5, gb//'storey_shear', r%shear(:, 1:n), packed, error)
             if (allocated(error)) return
+            if (r%nodes) then
+               call write_history(h5, gb//'u_nodes', r%u_nodes(:, 1:n), packed, error)
+               if (allocated(error)) return
+               call h5_write_attr(h5, gb//'u_nodes', 'dofs', 'column i: DOF i, its node and direction in '// &
+                                  '/model/'//models(i)%name//'/dofs', error)
+               if (allocated(error)) return
+            end if
             do q = 1, n_history_quantities
                call h5_write(h5, gb//'peak/'//trim(history_names(q)), r%peak(:, q), error)
                if (allocated(error)) return
