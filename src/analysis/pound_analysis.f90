@@ -31,7 +31,8 @@ module pound_analysis
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
                             newmark_energies, newmark_add_balance, newmark_n, en_input, en_kinetic, en_strain, en_damping
-   use pound_response, only: response_record, response_init, response_sample, response_finish
+   use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
+                             response_flush, history_block
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record, contact_swap_step, &
                             contact_may_act
@@ -39,7 +40,7 @@ module pound_analysis
    implicit none
    private
 
-   public :: analysis_result, run_uncoupled, run_coupled, output_steps
+   public :: analysis_result, run_uncoupled, run_coupled, output_steps, history_sink
    public :: coupled_model, coupled_prepare, coupled_integrate
    public :: e_input, e_kinetic, e_strain, e_damping, e_contact, e_plastic, n_energy, energy_names
    public :: add_warning, write_warnings, audit_warning_limit, resolved_steps
@@ -137,7 +138,7 @@ contains
    end function output_steps
 
    !> Integrate every building without contact: the coupled run with no constraints.
-   subroutine run_uncoupled(cfg, models, ag, res, error)
+   subroutine run_uncoupled(cfg, models, ag, res, error, sink)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
@@ -148,6 +149,8 @@ contains
       type(analysis_result), intent(out) :: res
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Where the histories are streamed (none: held whole in `res`).
+      class(history_sink), intent(inout), optional :: sink
       type(newmark_state), allocatable :: st(:)
       type(contact_system) :: cs
       integer :: ib, nb
@@ -163,11 +166,11 @@ contains
          call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error)
          if (allocated(error)) return
       end do
-      call integrate(cfg, models, ag, st, cs, res, error)
+      call integrate(cfg, models, ag, st, cs, res, error, sink=sink)
    end subroutine run_uncoupled
 
    !> Integrate all buildings together with the unilateral constraints `pairs`.
-   subroutine run_coupled(cfg, models, ag, pairs, res, cs, error, ground)
+   subroutine run_coupled(cfg, models, ag, pairs, res, cs, error, ground, sink)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
@@ -185,11 +188,13 @@ contains
       !> The ground motion `ag` samples (needed by `stepping = 'impact'`, which evaluates it
       !> at the substep times).
       type(ground_motion_t), intent(in), optional :: ground
+      !> Where the histories are streamed (none: held whole in `res`).
+      class(history_sink), intent(inout), optional :: sink
       type(coupled_model) :: prep
 
       call coupled_prepare(cfg, models, ag(0), pairs, prep, error)
       if (allocated(error)) return
-      call coupled_integrate(cfg, models, ag, prep, res, cs, error, ground=ground)
+      call coupled_integrate(cfg, models, ag, prep, res, cs, error, ground=ground, sink=sink)
    end subroutine run_coupled
 
    !> Factor every building's Khat and condense the structure onto the constraints.
@@ -286,7 +291,7 @@ contains
 
    !> The coupled time integration from a prepared model (left unchanged, so that it can be
    !> reused); `gaps`, when given, replace the gaps of the constraints.
-   subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps, ground)
+   subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps, ground, sink)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
@@ -305,6 +310,8 @@ contains
       real(dp), intent(in), optional :: gaps(:)
       !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
       type(ground_motion_t), intent(in), optional :: ground
+      !> Where the histories are streamed (none: held whole in `res`).
+      class(history_sink), intent(inout), optional :: sink
       type(newmark_state), allocatable :: st(:)
       type(impact_stepping) :: sub
       integer :: nb
@@ -318,7 +325,7 @@ contains
       call start_result(res, cfg, size(ag) - 1, nb, error, cs%m)
       if (allocated(error)) return
       if (prep%substeps == 0) then
-         call integrate(cfg, models, ag, st, cs, res, error)
+         call integrate(cfg, models, ag, st, cs, res, error, sink=sink)
          return
       end if
       if (.not. present(ground)) then
@@ -329,7 +336,7 @@ contains
       sub%st = prep%st_sub
       sub%cs = prep%cs_sub
       sub%ground = ground
-      call integrate(cfg, models, ag, st, cs, res, error, sub)
+      call integrate(cfg, models, ag, st, cs, res, error, sub, sink)
    end subroutine coupled_integrate
 
    !> The time-step loop of every analysis, from integrators at t = 0 and a contact system
@@ -340,7 +347,7 @@ contains
    !> and then over the buildings (the order the uncoupled run has always used, so that its
    !> audit residual stays bit-identical); with constraints each term is summed over the
    !> buildings first.
-   subroutine integrate(cfg, models, ag, st, cs, res, error, sub)
+   subroutine integrate(cfg, models, ag, st, cs, res, error, sub, sink)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
@@ -359,7 +366,10 @@ contains
       !> at the start or is predicted to close (`contact_may_act`) is taken as `sub%m`
       !> substeps of dt/m.
       type(impact_stepping), intent(inout), optional :: sub
-      integer :: ib, step, k, every, nb, j, n_sub
+      !> Where the histories are streamed: each building holds one block of output samples,
+      !> handed over when full and after the loop (none: the whole history is held).
+      class(history_sink), intent(inout), optional :: sink
+      integer :: ib, step, k, every, nb, j, n_sub, capacity
       integer(int64) :: c0, c1, rate
       real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
@@ -377,14 +387,23 @@ contains
          res%substep = h
       end if
       do ib = 1, nb
-         call response_init(res%building(ib), models(ib), cfg%store, res%n_out, error, &
-                            nodes=cfg%node_histories .and. allocated(models(ib)%dof_node))
+         capacity = res%n_out
+         if (present(sink)) capacity = history_block(size(models(ib)%floor_dof), res%n_out, sink%block)
+         ! Node histories are held whole: the program streams only without them.
+         call response_init(res%building(ib), models(ib), cfg%store, capacity, error, &
+                            nodes=cfg%node_histories .and. allocated(models(ib)%dof_node) .and. &
+                                  .not. present(sink))
          if (allocated(error)) return
+         res%building(ib)%streamed = present(sink)
          view(ib)%u => newmark_u(st(ib))
          view(ib)%v => newmark_v(st(ib))
          view(ib)%a => newmark_a(st(ib))
          call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, ag(0), &
                               0.0_dp, .true.)
+         if (present(sink)) then
+            call response_flush(res%building(ib), sink, cs%m > 0, ib, .true., error)
+            if (allocated(error)) return
+         end if
       end do
       k = 1
       resid = 0.0_dp
@@ -441,6 +460,12 @@ contains
                call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
                                     ag_new, t_sub, output)
             end do
+            if (output .and. present(sink)) then
+               do ib = 1, nb
+                  call response_flush(res%building(ib), sink, coupled, ib, .true., error)
+                  if (allocated(error)) return
+               end do
+            end if
             if (coupled) then
                call step_energy(st, sample)
                call contact_commit(cs, st, t_sub, dt_now)
@@ -487,6 +512,12 @@ contains
          if (n_sub > 1) call swap_steps()
       end do
       call system_clock(c1)
+      if (present(sink)) then
+         do ib = 1, nb
+            call response_flush(res%building(ib), sink, coupled, ib, .false., error)
+            if (allocated(error)) return
+         end do
+      end if
       call progress_run_done()
       res%seconds = real(c1 - c0, dp)/real(rate, dp)
       res%contact_seconds = cs%stats%lcp_seconds - lcp_start

@@ -8,7 +8,10 @@
 !> - histories, per analysis (uncoupled; coupled when the deck has contact; one more coupled
 !>   result while a `&sweep` runs): output times and the 6 energy terms (7 n_out), and
 !>   n_out x floors x stored quantities for every building, and with `node_histories`
-!>   n_out x DOFs of every frame (the frame's DOF bound below);
+!>   n_out x DOFs of every frame (the frame's DOF bound below); when the histories of the
+!>   uncoupled and coupled runs are streamed to the file (`streamed`: the program's one
+!>   deck, one motion, without node histories), one block of output samples
+!>   (`history_block`) instead of n_out;
 !> - contact histories (coupled analyses): force, closing, penetration, plastic penetration
 !>   and state per joint, 36 bytes x joints x n_out;
 !> - models and contact systems: a few hundred bytes per floor and per joint (banded
@@ -28,6 +31,7 @@ module pound_memory
    use pound_strings, only: str
    use pound_config, only: deck_type, n_history_quantities, history_names, is_frame
    use pound_posix, only: posix_address_space_limit
+   use pound_response, only: history_block
    implicit none
    private
 
@@ -51,6 +55,8 @@ module pound_memory
       integer :: history_columns = 0
       !> DOF histories (`node_histories`): the frames' DOFs (an upper bound), summed.
       real(dp) :: node_columns = 0.0_dp
+      !> The uncoupled and coupled histories are streamed (one block held).
+      logical :: streamed = .false.
       !> Parts (bytes).
       real(dp) :: ground = 0.0_dp, histories = 0.0_dp, contact = 0.0_dp, models = 0.0_dp
       !> Sum of the parts and the fixed allowance (bytes).
@@ -60,12 +66,14 @@ module pound_memory
 contains
 
    !> Estimate the memory the run of `deck` needs (see the module notes).
-   pure function estimate_memory(deck) result(est)
+   pure function estimate_memory(deck, streamed) result(est)
       !> A validated deck.
       type(deck_type), intent(in) :: deck
+      !> The uncoupled and coupled histories are streamed to the file (default no).
+      logical, intent(in), optional :: streamed
       type(memory_estimate) :: est
-      real(dp) :: joints, floors, every, frame_bytes, lines, dofs
-      integer :: ib, ic, n_stored
+      real(dp) :: joints, floors, every, frame_bytes, lines, dofs, blocks
+      integer :: ib, ic, n_stored, n_held
 
       est%n_steps = real(nint(deck%analysis%t_end/deck%analysis%dt, int64), dp)
       every = real(max(deck%analysis%output_every, 1), dp)
@@ -105,6 +113,22 @@ contains
       est%ground = 8.0_dp*(est%n_steps + 1.0_dp) + 8.0_dp*est%n_out
       est%histories = real(est%n_analyses, dp)*8.0_dp*est%n_out*(7.0_dp + real(est%history_columns, dp) + &
                                                                   est%node_columns)
+      if (present(streamed)) est%streamed = streamed
+      if (est%streamed .and. allocated(deck%buildings)) then
+         ! One block per building and stored quantity for the uncoupled and coupled runs; a
+         ! sweep's gap runs hold their whole histories.
+         blocks = 0.0_dp
+         do ib = 1, size(deck%buildings)
+            associate (n => deck%buildings(ib)%n_storeys)
+               blocks = blocks + real(n, dp)*real(n_stored, dp)* &
+                        real(history_block(n, int(min(est%n_out, real(huge(1), dp))), 0), dp)
+            end associate
+         end do
+         n_held = est%n_analyses - min(est%n_analyses, 2)
+         est%histories = real(est%n_analyses, dp)*8.0_dp*est%n_out*7.0_dp + &
+                         real(min(est%n_analyses, 2), dp)*8.0_dp*blocks + &
+                         real(n_held, dp)*8.0_dp*est%n_out*real(est%history_columns, dp)
+      end if
       est%contact = real(est%n_analyses - 1, dp)*36.0_dp*joints*est%n_out
       est%models = model_bytes_per_floor*floors + 8.0_dp*(4.0_dp*joints*floors + 16.0_dp*joints**2) + frame_bytes
       est%total = base_bytes + est%ground + est%histories + est%contact + est%models
@@ -185,7 +209,7 @@ contains
       character(len=*), intent(in) :: source
       !> Error state: set when the run does not fit.
       type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: stored, nodes
+      character(len=:), allocatable :: stored, parts, nodes
       integer :: q
 
       if (est%total <= usable_fraction*available) return
@@ -198,10 +222,16 @@ contains
       if (len(stored) == 0) stored = 'none'
       nodes = ''
       if (est%node_columns > 0.0_dp) nodes = ' + '//str_count(est%node_columns)//' DOF histories (node_histories)'
+      if (est%streamed) then
+         parts = ' for '//str_count(est%n_out)//' output times x '//str(est%n_analyses)// &
+                 ' analyses, floor histories streamed to the file in blocks'
+      else
+         parts = ' = '//str_count(est%n_out)//' output times x '//str(est%history_columns)// &
+                 ' floor histories'//nodes//' x '//str(est%n_analyses)//' analyses'
+      end if
       call fatal_error(error, deck_label(deck)//'&analysis: the run needs about '// &
                        format_bytes(est%total)//' of memory (histories '//format_bytes(est%histories)// &
-                       ' = '//str_count(est%n_out)//' output times x '//str(est%history_columns)// &
-                       ' floor histories'//nodes//' x '//str(est%n_analyses)//' analyses; contact histories '// &
+                       parts//'; contact histories '// &
                        format_bytes(est%contact)//'; ground motion '//format_bytes(est%ground)// &
                        ' for '//str_count(est%n_steps)//' steps), more than the '// &
                        format_bytes(usable_fraction*available)//' a run may use ('// &

@@ -21,10 +21,43 @@ module pound_response
    private
 
    public :: response_record, response_init, response_sample, response_finish
+   public :: history_sink, response_flush, default_block_bytes, history_block
    public :: q_u, q_v, q_a_abs, q_drift, q_shear
 
    !> Quantity indices.
    integer, parameter :: q_u = 1, q_v = 2, q_a_abs = 3, q_drift = 4, q_shear = 5
+
+   !> Bytes of one block of a streamed history (per building and quantity) when the sink
+   !> does not set `block`.
+   integer, parameter :: default_block_bytes = 4*2**20
+
+   !> Where streamed histories go (the program's HDF5 file; a test's arrays): analyses hand
+   !> it full blocks of output samples, so that they do not depend on HDF5.
+   type, abstract :: history_sink
+      !> Output samples per block; 0: about `default_block_bytes` per building and quantity.
+      integer :: block = 0
+   contains
+      procedure(sink_put), deferred :: put
+   end type history_sink
+
+   abstract interface
+      !> Take output samples first .. first+k-1 of one history.
+      subroutine sink_put(sink, coupled, building, quantity, first, values, error)
+         import :: history_sink, dp, error_type
+         !> The sink.
+         class(history_sink), intent(inout) :: sink
+         !> The coupled analysis (else the uncoupled one).
+         logical, intent(in) :: coupled
+         !> Building index (deck order) and quantity index (q_u .. q_shear).
+         integer, intent(in) :: building, quantity
+         !> Index of the first sample (1-based, over the whole run).
+         integer, intent(in) :: first
+         !> The samples (n, k).
+         real(dp), intent(in), contiguous :: values(:, :)
+         !> Error state.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine sink_put
+   end interface
 
    !> Peaks and histories of one building.
    type :: response_record
@@ -32,8 +65,12 @@ module pound_response
       integer :: n = 0
       !> Which histories are stored.
       logical :: store(n_history_quantities) = .false.
-      !> Output samples written so far, and capacity.
+      !> Output samples held (in the block), and capacity.
       integer :: n_out = 0, capacity = 0
+      !> Index over the run of the first sample held (> 1 only when streamed).
+      integer :: first = 1
+      !> The histories are streamed to a sink block by block (only the last block is held).
+      logical :: streamed = .false.
       !> Histories (n, capacity), allocated only for stored quantities.
       real(dp), allocatable :: u(:, :), v(:, :), a_abs(:, :), drift(:, :), shear(:, :)
       !> Whether every DOF's displacement is stored, and that history (n_dofs, capacity).
@@ -93,6 +130,7 @@ contains
       if (present(nodes)) rec%nodes = nodes
       n_node = 0
       if (rec%nodes) n_node = b%n
+      rec%first = 1
       stat = 0
       ! Histories are zeroed here, so that their memory is touched before the time loop.
       if (store(q_u)) allocate (rec%u(n, capacity), source=0.0_dp, stat=stat(1))
@@ -240,6 +278,56 @@ contains
          end if
       end do
    end subroutine track_one
+
+   !> Output samples per block of a streamed history of n floors: `block` when positive,
+   !> else about `default_block_bytes` per quantity; never more than the n_out of the run.
+   pure integer function history_block(n, n_out, block)
+      !> Floors (rows of the history).
+      integer, intent(in) :: n
+      !> Output samples of the run.
+      integer, intent(in) :: n_out
+      !> Samples per block asked for (0: automatic).
+      integer, intent(in) :: block
+
+      if (block > 0) then
+         history_block = min(n_out, block)
+      else
+         history_block = min(n_out, max(1, default_block_bytes/(8*max(1, n))))
+      end if
+   end function history_block
+
+   !> Streamed histories: hand the samples held to `sink` and empty the block (when `full`,
+   !> only if the block is full).
+   subroutine response_flush(rec, sink, coupled, building, full, error)
+      !> The record.
+      type(response_record), intent(inout) :: rec
+      !> Where the histories go.
+      class(history_sink), intent(inout) :: sink
+      !> The coupled analysis (else the uncoupled one).
+      logical, intent(in) :: coupled
+      !> Building index.
+      integer, intent(in) :: building
+      !> Flush only a full block.
+      logical, intent(in) :: full
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k
+
+      k = rec%n_out
+      if (k == 0 .or. (full .and. k < rec%capacity)) return
+      if (rec%store(q_u)) call sink%put(coupled, building, q_u, rec%first, rec%u(:, 1:k), error)
+      if (allocated(error)) return
+      if (rec%store(q_v)) call sink%put(coupled, building, q_v, rec%first, rec%v(:, 1:k), error)
+      if (allocated(error)) return
+      if (rec%store(q_a_abs)) call sink%put(coupled, building, q_a_abs, rec%first, rec%a_abs(:, 1:k), error)
+      if (allocated(error)) return
+      if (rec%store(q_drift)) call sink%put(coupled, building, q_drift, rec%first, rec%drift(:, 1:k), error)
+      if (allocated(error)) return
+      if (rec%store(q_shear)) call sink%put(coupled, building, q_shear, rec%first, rec%shear(:, 1:k), error)
+      if (allocated(error)) return
+      rec%first = rec%first + k
+      rec%n_out = 0
+   end subroutine response_flush
 
    !> Derive the storey-shear peaks: each shear row is its drift row times the row's scale
    !> (a shear building: Q_j = k_j drift_j), so they occur with the drift peaks.

@@ -20,7 +20,7 @@ module pound_run_case
                                   describe_ground
    use pound_building, only: building_model, build_building
    use pound_structure, only: structure_model
-   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning
+   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning, history_sink
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
    use pound_sweep, only: sweep_result, run_sweep
@@ -43,6 +43,10 @@ module pound_run_case
       !> Put before the messages of the errors that concern the configuration (models, joints,
       !> coupled run), followed by ': ' (the program gives the deck's path); none when empty.
       character(len=:), allocatable :: label
+      !> Where the uncoupled and coupled runs stream their histories (the program's HDF5
+      !> file); not associated: the histories are held whole in the results (the sweep's
+      !> runs never stream).
+      class(history_sink), pointer :: sink => null()
    end type case_options
 
    !> Everything a case computes, as the writers need it.
@@ -122,10 +126,13 @@ contains
       real(dp), allocatable :: ag(:)
       logical :: coupled_only
       integer :: n_steps, n_out, ib, stat
+      class(history_sink), pointer :: sink
 
       prefix = ''
       coupled_only = .false.
+      nullify (sink)
       if (present(options)) then
+         sink => options%sink
          if (allocated(options%label)) then
             if (len(options%label) > 0) prefix = options%label//': '
          end if
@@ -166,7 +173,7 @@ contains
 
       ! Analyses.
       if (.not. coupled_only) then
-         call run_uncoupled(deck%analysis, res%models, ag, res%unc, error)
+         call run_uncoupled(deck%analysis, res%models, ag, res%unc, error, sink)
          if (allocated(error)) return
          res%has_uncoupled = .true.
       end if
@@ -180,9 +187,9 @@ contains
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
          if (has_ground()) then
-            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, options%ground)
+            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, options%ground, sink)
          else
-            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, deck_gm)
+            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, deck_gm, sink)
          end if
          if (allocated(error)) then
             error%message = prefix//error%message

@@ -11,7 +11,9 @@
 !> case of the library's run driver (`pound_run_case`): the buildings uncoupled and, when the
 !> deck declares contact, coupled, with influence coefficients and the gap sweep.
 !> Before computing, the memory the run needs is checked against what the machine can give
-!> (pound_memory) and the output folder is created and reserved (pound_files). Outputs are
+!> (pound_memory) and the output folder is created and reserved (pound_files). A single-motion
+!> deck streams its building histories into the temporary HDF5 file during the analyses
+!> (`h5_history_sink`), so that their memory is one block, not the whole run. Outputs are
 !> written under temporary names unique to the run and published together at the end; on any
 !> error, SIGINT or SIGTERM this run's temporaries are removed and the exit status is non-zero.
 program pound
@@ -28,7 +30,8 @@ program pound
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
                             write_contact_summary, write_influence_tables, write_sweep_table, &
                             open_listing, close_listing
-   use pound_results_h5, only: write_results_h5
+   use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
+   use pound_h5, only: h5_file
    use pound_files, only: output_set, plan_outputs, publish_outputs, discard_outputs, &
                           install_signal_cleanup
    use pound_memory, only: estimate_memory, memory_available, memory_refusal
@@ -45,11 +48,12 @@ program pound
    type(case_options) :: options
    type(case_result) :: res
    type(output_set) :: outputs
+   type(h5_history_sink), target :: sink
    logical :: stdout_closed
    type(error_type), allocatable :: error
    character(len=512) :: ground_text(1)
    type(suite_result) :: suite
-   logical :: is_suite
+   logical :: is_suite, streamed
    integer :: progress_mode = progress_auto
 
    call install_signal_cleanup()
@@ -61,6 +65,8 @@ program pound
    ! Ground motion (a record is read whole: its memory is proportional to the file). A suite
    ! (several &ground, a synthetic motion or scale_to) builds its motions one at a time.
    is_suite = size(deck%motions) > 1 .or. deck%ground%kind == 'synthetic' .or. len(deck%ground%scale_to) > 0
+   ! One deck, one motion, no node histories: the histories go to the file during the run.
+   streamed = .not. (is_suite .or. deck%analysis%node_histories)
    if (.not. is_suite) then
       allocate (options%ground)
       call deck_ground_motion(deck, options%ground, error)
@@ -71,6 +77,14 @@ program pound
    call check_memory()
    call plan_run_outputs()
    call check(error)
+
+   ! One deck, one motion: the histories are streamed into this run's temporary .h5 during
+   ! the analyses (a suite, or a run with node histories, holds them and writes them at the end).
+   if (streamed) then
+      call history_sink_init(sink, outputs%h5_tmp, outputs%h5, deck, error)
+      call check(error)
+      options%sink => sink
+   end if
 
    ! The analyses.
    options%label = deck_path
@@ -89,14 +103,10 @@ program pound
    call write_listing(outputs%listing_tmp, error)
    call check(error)
    call test_pause()
-   if (res%has_sweep) then
-      call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, res%unc, error, &
-                            res%cpl, res%cs, res%influence, res%sweep)
-   else if (res%has_coupled) then
-      call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, res%unc, error, &
-                            res%cpl, res%cs, res%influence)
+   if (streamed) then
+      call write_h5(sink%h5)
    else
-      call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, res%unc, error)
+      call write_h5()
    end if
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
       call write_suite_h5(outputs%h5_tmp, res%models, suite, error)
@@ -107,6 +117,23 @@ program pound
    call write_summary()
 
 contains
+
+   !> The results file: this run's temporary, created here or (`file`) open since the
+   !> analyses streamed their histories into it.
+   subroutine write_h5(file)
+      type(h5_file), intent(inout), optional :: file
+
+      if (res%has_sweep) then
+         call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
+                               res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file)
+      else if (res%has_coupled) then
+         call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
+                               res%unc, error, res%cpl, res%cs, res%influence, file=file)
+      else
+         call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
+                               res%unc, error, file=file)
+      end if
+   end subroutine write_h5
 
    !> Stop with the message and status 1 if `err` is set; remove this run's temporaries.
    subroutine check(err)
@@ -174,7 +201,7 @@ contains
       character(len=:), allocatable :: source
 
       call memory_available(available, source)
-      call memory_refusal(deck, estimate_memory(deck), available, source, error)
+      call memory_refusal(deck, estimate_memory(deck, streamed=streamed), available, source, error)
       call check(error)
    end subroutine check_memory
 

@@ -39,10 +39,10 @@ module pound_results_h5
    use pound_config, only: deck_type, history_names, n_history_quantities
    use pound_building, only: building_model
    use pound_structure, only: structure_model
-   use pound_analysis, only: analysis_result
+   use pound_analysis, only: analysis_result, history_sink, output_steps
    use pound_contact, only: contact_system
    use pound_contact_law, only: law_name
-   use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
+   use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
@@ -50,7 +50,26 @@ module pound_results_h5
    implicit none
    private
 
-   public :: write_results_h5, write_analysis_h5
+   public :: write_results_h5, write_analysis_h5, h5_history_sink, history_sink_init
+
+   !> Streams the uncoupled and coupled histories into an open results file: each dataset
+   !> is created at its full shape (n_out, n) with its first block (chunked; compressed with
+   !> `&analysis compress`) and its blocks written as they come; `write_results_h5` then
+   !> skips them.
+   type, extends(history_sink) :: h5_history_sink
+      !> The open file (this run's temporary).
+      type(h5_file) :: h5
+      !> Building names (deck order).
+      character(len=64), allocatable :: names(:)
+      !> Output samples of a whole history.
+      integer :: n_out = 0
+      !> Compress the histories.
+      logical :: compress = .false.
+      !> The file's name in messages.
+      character(len=:), allocatable :: label
+   contains
+      procedure :: put => h5_sink_put
+   end type h5_history_sink
 
    !> Units, as written in the root attribute.
    character(len=*), parameter :: units = 'kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
@@ -61,8 +80,63 @@ module pound_results_h5
 
 contains
 
+   !> A sink streaming the histories of the deck's analyses into the results file `path`,
+   !> created here (truncated) and kept open (`sink%h5`) for `write_results_h5`.
+   subroutine history_sink_init(sink, path, label, deck, error)
+      !> The sink.
+      type(h5_history_sink), intent(out) :: sink
+      !> The results file to create.
+      character(len=*), intent(in) :: path
+      !> Its name in messages ('cannot write <label>: ...'; the published name).
+      character(len=*), intent(in) :: label
+      !> The deck.
+      type(deck_type), intent(in) :: deck
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: ib
+
+      sink%label = label
+      call h5_create(sink%h5, path, error)
+      if (allocated(error)) then
+         error%message = 'cannot write '//label//': '//error%message
+         return
+      end if
+      sink%n_out = output_steps(nint(deck%analysis%t_end/deck%analysis%dt), deck%analysis%output_every)
+      sink%compress = deck%analysis%compress
+      allocate (sink%names(size(deck%buildings)))
+      do ib = 1, size(deck%buildings)
+         sink%names(ib) = deck%buildings(ib)%name
+      end do
+   end subroutine history_sink_init
+
+   !> Write one block of a history (creating the dataset with the first block).
+   subroutine h5_sink_put(sink, coupled, building, quantity, first, values, error)
+      !> The sink.
+      class(h5_history_sink), intent(inout) :: sink
+      !> The coupled analysis (else the uncoupled one).
+      logical, intent(in) :: coupled
+      !> Building index and quantity index.
+      integer, intent(in) :: building, quantity
+      !> Index of the first sample.
+      integer, intent(in) :: first
+      !> The samples (n, k).
+      real(dp), intent(in), contiguous :: values(:, :)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: path
+
+      path = merge('/coupled  ', '/uncoupled', coupled)
+      path = trim(path)//'/'//trim(sink%names(building))//'/'//trim(history_names(quantity))
+      if (first == 1) then
+         call h5_create_history(sink%h5, path, size(values, 1), sink%n_out, sink%compress, error)
+      end if
+      if (.not. allocated(error)) call h5_write_columns(sink%h5, path, first, values, error)
+      if (allocated(error)) error%message = 'cannot write '//sink%label//': '//error%message
+   end subroutine h5_sink_put
+
    !> Write the whole results file at `path`.
-   subroutine write_results_h5(path, deck, models, buildings, ground_text, ag_out, unc, error, cpl, cs, influence, sweep)
+   subroutine write_results_h5(path, deck, models, buildings, ground_text, ag_out, unc, error, cpl, cs, influence, sweep, &
+                               file)
       !> File to create (truncated).
       character(len=*), intent(in) :: path
       !> The deck.
@@ -87,14 +161,22 @@ contains
       type(building_influence), intent(in), optional :: influence(:)
       !> Gap study, when the deck asks for one.
       type(sweep_result), intent(in), optional :: sweep
+      !> The file already open (created at `path` before the analyses, holding the streamed
+      !> histories): written into and closed.
+      type(h5_file), intent(inout), optional :: file
       type(h5_file) :: h5
       type(error_type), allocatable :: close_error
       integer :: ib, q
 
-      call h5_create(h5, path, error)
-      if (allocated(error)) return
+      if (present(file)) then
+         h5 = file
+      else
+         call h5_create(h5, path, error)
+         if (allocated(error)) return
+      end if
       call write_all()
       call h5_close(h5, close_error)
+      if (present(file)) file = h5
       if (.not. allocated(error) .and. allocated(close_error)) call move_alloc(close_error, error)
 
    contains
@@ -405,15 +487,7 @@ contains
       do i = 1, size(models)
          gb = g//'/'//models(i)%name//'/'
          associate (r => res%building(i))
-            if (r%store(q_u)) call write_history(h5, gb//'u', r%u(:, 1:n), packed, error)
-            if (allocated(error)) return
-            if (r%store(q_v)) call write_history(h5, gb//'v', r%v(:, 1:n), packed, error)
-            if (allocated(error)) return
-            if (r%store(q_a_abs)) call write_history(h5, gb//'a_abs', r%a_abs(:, 1:n), packed, error)
-            if (allocated(error)) return
-            if (r%store(q_drift)) call write_history(h5, gb//'drift', r%drift(:, 1:n), packed, error)
-            if (allocated(error)) return
-            if (r%store(q_shear)) call write_history(h5, gb//'storey_shear', r%shear(:, 1:n), packed, error)
+            if (.not. r%streamed) call write_histories(r)
             if (allocated(error)) return
             if (r%nodes) then
                call write_history(h5, gb//'u_nodes', r%u_nodes(:, 1:n), packed, error)
@@ -430,6 +504,24 @@ contains
             end do
          end associate
       end do
+
+   contains
+
+      !> The histories held in memory (the whole run).
+      subroutine write_histories(r)
+         type(response_record), intent(in) :: r
+
+         if (r%store(q_u)) call write_history(h5, gb//'u', r%u(:, 1:n), packed, error)
+         if (allocated(error)) return
+         if (r%store(q_v)) call write_history(h5, gb//'v', r%v(:, 1:n), packed, error)
+         if (allocated(error)) return
+         if (r%store(q_a_abs)) call write_history(h5, gb//'a_abs', r%a_abs(:, 1:n), packed, error)
+         if (allocated(error)) return
+         if (r%store(q_drift)) call write_history(h5, gb//'drift', r%drift(:, 1:n), packed, error)
+         if (allocated(error)) return
+         if (r%store(q_shear)) call write_history(h5, gb//'storey_shear', r%shear(:, 1:n), packed, error)
+         if (allocated(error)) return
+      end subroutine write_histories
    end subroutine write_analysis_h5
 
    !> One building history (n, n_out): contiguous, or chunked and compressed.
