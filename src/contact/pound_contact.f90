@@ -121,7 +121,7 @@ module pound_contact
       !> Row bookkeeping: constraint of each contact row, row of each joint's yield variable,
       !> modelled segment ends per joint.
       integer, allocatable :: act(:), yrow(:), nh(:)
-      logical, allocatable :: in_lcp(:), guess(:), left_out(:)
+      logical, allocatable :: in_lcp(:), guess(:)
       type(lemke_workspace) :: ws
       !> Work of the contact forces on the structure, sum r_avg dv (kJ).
       real(dp) :: work = 0.0_dp
@@ -275,7 +275,7 @@ contains
       if (m == 0) return
       cs%c2 = 2.0_dp/dt
       allocate (cs%phat(m), cs%beta(m), cs%rate_a(m), cs%rate_b(m), cs%q(m), cs%vp(m), cs%r_new(m), &
-                cs%x_new(m), cs%in_lcp(m), cs%left_out(m), cs%yrow(m), cs%nh(m), stat=k)
+                cs%x_new(m), cs%in_lcp(m), cs%yrow(m), cs%nh(m), stat=k)
       if (k /= 0) then
          call fatal_error(error, 'contact: cannot allocate the joint data for '//str(m)//' pairs')
          return
@@ -584,8 +584,8 @@ contains
 
       ! Verify the accepted solution on the full LCP: the assembled rows and the left-out
       ! constraints.
-      cs%left_out = .not. (cs%in_lcp .or. cs%joint(:)%fractured)
-      call lcp_residual(n, cs%mat, cs%qa, cs%za, cs%wa, cs%f, cs%q, cs%act, na, cs%left_out, qnorm, resid)
+      call lcp_residual(n, cs%mat, cs%qa, cs%za, cs%wa, cs%f, cs%q, cs%act, na, cs%in_lcp, cs%joint, qnorm, &
+                        resid)
       cs%stats%residual_max = max(cs%stats%residual_max, resid)
       if (timed) then
          call system_clock(clock_end)

@@ -130,8 +130,9 @@ contains
    end function released_opening
 
    !> Natural residual ||min(z, w)||_inf / ||q||_inf of a solution on the full problem: the
-   !> assembled rows and the constraints left out (`left_out`), which must stay open.
-   pure subroutine lcp_residual(n, mat, qa, za, wa, f, q, act, na, left_out, qnorm, resid)
+   !> assembled rows and the constraints left out of it (not in `in_lcp`, not fractured),
+   !> which must stay open.
+   pure subroutine lcp_residual(n, mat, qa, za, wa, f, q, act, na, in_lcp, joints, qnorm, resid)
       !> Rows of the assembled LCP, its matrix, vector, solution and w (work).
       integer, intent(in) :: n
       real(dp), intent(in) :: mat(:, :), qa(:), za(:)
@@ -140,8 +141,9 @@ contains
       real(dp), intent(in) :: f(:, :), q(:)
       !> Contact rows.
       integer, intent(in) :: act(:), na
-      !> Constraints left out of the LCP (and not fractured).
-      logical, intent(in) :: left_out(:)
+      !> The constraints in the LCP, and the joints (fractured ones carry nothing).
+      logical, intent(in) :: in_lcp(:)
+      type(joint_state), intent(in) :: joints(:)
       !> ||q||_inf of the constraints, raised to that of the LCP's vector.
       real(dp), intent(inout) :: qnorm
       !> The relative residual.
@@ -154,7 +156,7 @@ contains
          resid = resid*max(maxval(abs(qa(1:n))), tiny(1.0_dp))
       end if
       do k = 1, size(q)
-         if (.not. left_out(k)) cycle
+         if (in_lcp(k) .or. joints(k)%fractured) cycle
          resid = max(resid, abs(min(0.0_dp, released_opening(f, q, act, na, za, k))))
       end do
       if (n > 0) qnorm = max(qnorm, maxval(abs(qa(1:n))))
