@@ -460,7 +460,8 @@ contains
                call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
                                     ag_new, t_sub, output)
             end do
-            if (output .and. present(sink)) then
+            ! The last block is handed over after the loop (writing it is not integration).
+            if (output .and. present(sink) .and. step < res%n_steps) then
                do ib = 1, nb
                   call response_flush(res%building(ib), sink, coupled, ib, .true., error)
                   if (allocated(error)) return
