@@ -49,6 +49,7 @@ module pound_suite
                                separation_ddc, cqc_correlation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion
    use pound_analysis, only: analysis_result
+   use pound_cases, only: case_work, case_table, run_cases, first_failure
    implicit none
    private
 
@@ -140,7 +141,196 @@ module pound_suite
       type(motion_histories), allocatable :: histories(:)
    end type suite_result
 
+   !> What the threshold refinements share: the configuration (sweep off), the buildings, the
+   !> targeted quantities, the sweep's grid and the label of the messages.
+   type :: refine_context
+      !> The deck as given, and the same without its sweep (the runs at a trial gap).
+      type(deck_type), pointer :: deck => null()
+      type(deck_type) :: plain
+      !> The buildings (periods for `scale_to = 'sa'`).
+      type(structure_model), pointer :: models(:) => null()
+      !> Quantities the target applies to.
+      logical :: targeted(n_history_quantities) = .true.
+      !> The sweep's gaps (m).
+      real(dp), allocatable :: gap(:)
+      !> Put before the messages (may be empty).
+      character(len=:), allocatable :: label
+   end type refine_context
+
+   !> The motions at one trial gap as cases: column = the largest |lambda| of motion m per
+   !> targeted quantity and building (n_history_quantities x n_buildings; 0 where not targeted).
+   type, extends(case_work) :: motion_cases
+      !> The refinement's data.
+      type(refine_context), pointer :: ctx => null()
+      !> Trial gap (m).
+      real(dp) :: gap = 0.0_dp
+   contains
+      procedure :: compute => motion_case
+   end type motion_cases
+
+   !> The motions' own threshold refinements as cases: column = motion k's refined gap.
+   type, extends(case_work) :: refine_cases
+      !> The refinement's data.
+      type(refine_context), pointer :: ctx => null()
+      !> Each motion's safe grid gap (m; -1: none).
+      real(dp), allocatable :: safe(:)
+   contains
+      procedure :: compute => refine_case
+   end type refine_cases
+
 contains
+
+   !> Motion m at the trial gap (a case of `motion_cases`).
+   subroutine motion_case(work, i, values, error)
+      !> The cases.
+      class(motion_cases), intent(inout) :: work
+      !> Motion index.
+      integer, intent(in) :: i
+      !> Its largest |lambda| per quantity and building.
+      real(dp), intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: lam(n_history_quantities, size(work%ctx%models))
+
+      call motion_lambda(work%ctx, i, work%gap, lam, error)
+      if (allocated(error)) return
+      values = reshape(lam, [size(lam)])
+   end subroutine motion_case
+
+   !> Motion k's threshold refinement (a case of `refine_cases`).
+   subroutine refine_case(work, i, values, error)
+      !> The cases.
+      class(refine_cases), intent(inout) :: work
+      !> Motion index.
+      integer, intent(in) :: i
+      !> Its refined gap (m; -1: none).
+      real(dp), intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      call refine(work%ctx, work%safe(i), i, values(1), error)
+   end subroutine refine_case
+
+   !> Motion m run at `gap` (no sweep): its largest |lambda| over the floors per quantity and
+   !> building, zero for the quantities not targeted.
+   subroutine motion_lambda(ctx, m, gap, lam, error)
+      !> The refinement's data.
+      type(refine_context), intent(in) :: ctx
+      !> Motion index.
+      integer, intent(in) :: m
+      !> Gap of every joint (m).
+      real(dp), intent(in) :: gap
+      !> Largest |lambda| (%), (n_history_quantities, n_buildings).
+      real(dp), intent(out) :: lam(:, :)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(case_options) :: opt
+      type(case_result) :: r
+      real(dp) :: factor
+      integer :: iq
+
+      opt%gap = gap
+      if (allocated(ctx%label)) opt%label = ctx%label
+      allocate (opt%ground)
+      call suite_motion(ctx%deck, m, ctx%models, opt%ground, factor, error)
+      if (allocated(error)) return
+      call run_case(ctx%plain, r, error, opt)
+      if (allocated(error)) return
+      lam = max_abs_influence(r%influence)
+      do iq = 1, n_history_quantities
+         if (.not. ctx%targeted(iq)) lam(iq, :) = 0.0_dp
+      end do
+   end subroutine motion_lambda
+
+   !> Bisection between the grid gap below `safe` (failing) and `safe` (passing), down to
+   !> the tolerance: the motions run at the trial gap (no sweep), the criterion on the suite
+   !> mean (`which` = 0), on every motion (-1) or on motion `which` alone (> 0).
+   subroutine refine(ctx, safe, which, refined, error)
+      !> The refinement's data.
+      type(refine_context), intent(in), target :: ctx
+      !> Safe grid gap (m; <= 0: none).
+      real(dp), intent(in) :: safe
+      !> Criterion: 0 the suite mean, -1 every motion, k > 0 motion k.
+      integer, intent(in) :: which
+      !> Refined gap (m; -1: not refined).
+      real(dp), intent(out) :: refined
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(bisection) :: b
+      real(dp) :: mid, worst
+      integer :: ig
+      logical :: more
+
+      refined = -1.0_dp
+      ig = findloc(ctx%gap, safe, 1)
+      if (.not. (safe > 0.0_dp) .or. ig <= 1) return
+      b = bisection(ctx%gap(ig - 1), safe, ctx%deck%sweep%refine_tolerance)
+      mid = safe
+      do
+         call bisection_step(b, mid, more)
+         if (.not. more) exit
+         call worst_at(ctx, mid, which, worst, error)
+         if (allocated(error)) return
+         call bisection_update(b, mid, worst <= ctx%deck%sweep%target)
+      end do
+      refined = b%hi
+   end subroutine refine
+
+   !> The motions at one gap: the largest |lambda| over the targeted quantities and the
+   !> buildings, as the suite mean (`which` = 0: the mean per quantity and building, then the
+   !> largest), the largest over the motions (-1), or of motion `which` alone (> 0). The
+   !> motions of a suite criterion are cases (`motion_cases`), summed in motion order.
+   subroutine worst_at(ctx, gap, which, worst, error)
+      !> The refinement's data.
+      type(refine_context), intent(in), target :: ctx
+      !> Trial gap (m).
+      real(dp), intent(in) :: gap
+      !> Criterion: 0 the suite mean, -1 every motion, k > 0 motion k.
+      integer, intent(in) :: which
+      !> The criterion's value (%).
+      real(dp), intent(out) :: worst
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(motion_cases) :: cases
+      type(case_table) :: table
+      real(dp) :: lam(n_history_quantities, size(ctx%models)), total(n_history_quantities, size(ctx%models))
+      integer :: m, nm
+
+      nm = size(ctx%deck%motions)
+      if (which > 0) then
+         call motion_lambda(ctx, which, gap, lam, error)
+         if (allocated(error)) return
+         worst = max(0.0_dp, maxval(lam))
+         return
+      end if
+      cases%ctx => ctx
+      cases%gap = gap
+      call run_cases(cases, nm, size(lam), table)
+      call first_failure(table, motion_names(ctx%deck, ', gap = '//str(gap)//' m'), error)
+      if (allocated(error)) return
+      total = 0.0_dp
+      worst = 0.0_dp
+      do m = 1, nm
+         lam = reshape(table%values(:, m), shape(lam))
+         total = total + lam/nm
+         worst = max(worst, maxval(lam))
+      end do
+      if (which == 0) worst = maxval(total)
+   end subroutine worst_at
+
+   !> "&ground 'name'" and `suffix` for every motion of the deck (the names of its cases).
+   pure function motion_names(deck, suffix) result(names)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Put after each name.
+      character(len=*), intent(in) :: suffix
+      character(len=word_len + 12 + len(suffix)) :: names(size(deck%motions))
+      integer :: m
+
+      do m = 1, size(deck%motions)
+         names(m) = "&ground '"//deck%motions(m)%name//"'"//suffix
+      end do
+   end function motion_names
 
    !> Next trial gap `mid` of the bisection `b`, or `more` false when hi - lo <= tol.
    pure subroutine bisection_step(b, mid, more)
@@ -301,7 +491,7 @@ contains
    !> Run every motion of the deck's suite and gather the suite statistics.
    subroutine run_suite(deck, suite, first, error, label)
       !> A validated configuration.
-      type(deck_type), intent(in) :: deck
+      type(deck_type), intent(in), target :: deck
       !> Everything the suite computes.
       type(suite_result), intent(out) :: suite
       !> The case of the first motion (what a single-motion run writes).
@@ -310,9 +500,12 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Put before the messages of the configuration's errors (e.g. the deck path).
       character(len=*), intent(in), optional :: label
-      type(structure_model), allocatable :: models(:)
+      type(structure_model), allocatable, target :: models(:)
       type(building_model), allocatable :: kinds(:)
       type(case_options) :: options
+      type(refine_context), target :: ctx
+      type(refine_cases) :: chains
+      type(case_table) :: table
       type(case_result) :: res
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
       real(dp), allocatable :: ag(:), u1(:), u2(:), mean_unc(:, :, :), mean_cpl(:, :, :)
@@ -435,16 +628,30 @@ contains
          suite%safe_gap_every = safe_gap(suite%sweep_max)
          suite%non_monotone_mean = non_monotone(suite%sweep_mean, suite%safe_gap_mean)
          suite%non_monotone_every = non_monotone(suite%sweep_max, suite%safe_gap_every)
-         call refine(suite%safe_gap_mean, 0, suite%refined_gap_mean, error)
+         ctx%deck => deck
+         ctx%plain = deck
+         ctx%plain%sweep%active = .false.
+         ctx%models => models
+         ctx%targeted = targeted
+         ctx%gap = suite%sweep_gap
+         if (present(label)) ctx%label = label
+         call refine(ctx, suite%safe_gap_mean, 0, suite%refined_gap_mean, error)
          if (allocated(error)) return
-         call refine(suite%safe_gap_every, -1, suite%refined_gap_every, error)
+         call refine(ctx, suite%safe_gap_every, -1, suite%refined_gap_every, error)
          if (allocated(error)) return
          allocate (suite%safe_gap_motion(nm), suite%refined_gap_motion(nm), suite%non_monotone_motion(nm))
          do k = 1, nm
             suite%safe_gap_motion(k) = safe_gap(suite%sweep_lambda(k, :))
             suite%non_monotone_motion(k) = non_monotone(suite%sweep_lambda(k, :), suite%safe_gap_motion(k))
-            call refine(suite%safe_gap_motion(k), k, suite%refined_gap_motion(k), error)
-            if (allocated(error)) return
+         end do
+         ! The motions' own refinements are independent of each other: one case each.
+         chains%ctx => ctx
+         chains%safe = suite%safe_gap_motion
+         call run_cases(chains, nm, 1, table)
+         call first_failure(table, motion_names(deck, ''), error)
+         if (allocated(error)) return
+         do k = 1, nm
+            suite%refined_gap_motion(k) = table%values(1, k)
             suite%separation(k, :)%time_history = time_history_gap(suite%safe_gap_motion(k), &
                                                                    suite%refined_gap_motion(k))
          end do
@@ -535,83 +742,6 @@ contains
             if (suite%sweep_gap(ig) < safe .and. worst(ig) <= deck%sweep%target) non_monotone = non_monotone + 1
          end do
       end function non_monotone
-
-      !> Bisection between the grid gap below `safe` (failing) and `safe` (passing), down to
-      !> the tolerance: the motions run at the trial gap (no sweep), the criterion on the suite
-      !> mean (`which` = 0), on every motion (-1) or on motion `which` alone (> 0).
-      subroutine refine(safe, which, refined, error)
-         real(dp), intent(in) :: safe
-         integer, intent(in) :: which
-         real(dp), intent(out) :: refined
-         type(error_type), allocatable, intent(out) :: error
-         type(deck_type) :: plain
-         type(bisection) :: b
-         real(dp) :: mid, worst
-         integer :: ig
-         logical :: more
-
-         refined = -1.0_dp
-         ig = findloc(suite%sweep_gap, safe, 1)
-         if (.not. (safe > 0.0_dp) .or. ig <= 1) return
-         plain = deck
-         plain%sweep%active = .false.
-         b = bisection(suite%sweep_gap(ig - 1), safe, deck%sweep%refine_tolerance)
-         mid = safe
-         do
-            call bisection_step(b, mid, more)
-            if (.not. more) exit
-            call worst_at(plain, mid, which, worst, error)
-            if (allocated(error)) return
-            call bisection_update(b, mid, worst <= deck%sweep%target)
-         end do
-         refined = b%hi
-      end subroutine refine
-
-      !> The motions at one gap: the largest |lambda| over the targeted quantities and the
-      !> buildings, as the suite mean (`which` = 0: the mean per quantity and building, then the
-      !> largest), the largest over the motions (-1), or of motion `which` alone (> 0).
-      subroutine worst_at(plain, gap, which, worst, error)
-         type(deck_type), intent(in) :: plain
-         real(dp), intent(in) :: gap
-         integer, intent(in) :: which
-         real(dp), intent(out) :: worst
-         type(error_type), allocatable, intent(out) :: error
-         type(case_options) :: opt
-         type(case_result) :: r
-         real(dp) :: lam(n_history_quantities, nb), total(n_history_quantities, nb)
-         real(dp) :: factor, worst_max
-         integer :: m, iq, m_first, m_last
-
-         total = 0.0_dp
-         worst_max = 0.0_dp
-         opt%gap = gap
-         if (present(label)) opt%label = label
-         m_first = 1
-         m_last = nm
-         if (which > 0) then
-            m_first = which
-            m_last = which
-         end if
-         do m = m_first, m_last
-            allocate (opt%ground)
-            call suite_motion(deck, m, models, opt%ground, factor, error)
-            if (allocated(error)) return
-            call run_case(plain, r, error, opt)
-            deallocate (opt%ground)
-            if (allocated(error)) return
-            lam = max_abs_influence(r%influence)
-            do iq = 1, n_history_quantities
-               if (.not. targeted(iq)) lam(iq, :) = 0.0_dp
-            end do
-            total = total + lam/nm
-            worst_max = max(worst_max, maxval(lam))
-         end do
-         if (which == 0) then
-            worst = maxval(total)
-         else
-            worst = worst_max
-         end if
-      end subroutine worst_at
 
       !> Smallest gap from which on every larger gap of the sweep `worst` <= the target.
       real(dp) function safe_gap(worst)
