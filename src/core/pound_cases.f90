@@ -180,26 +180,25 @@ contains
       end do
    end function column_to_text
 
-   !> An error for the failed cases of `table`, if any: the first one's message, and how many
-   !> others failed; `what` names a case from its index (e.g. 'gap = 0.01 m').
+   !> An error for the failed cases of `table`, if any: the first one's message (after its
+   !> name and ': ', unless the name is blank), and how many others failed.
    subroutine first_failure(table, names, error)
       !> The cases' table.
       type(case_table), intent(in) :: table
-      !> One name per case, put before its message.
+      !> One name per case (e.g. 'gap sweep, gap = 0.01 m'), put before its message.
       character(len=*), intent(in) :: names(:)
       !> Error state: set when a case failed.
       type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: text
       integer :: i, n_failed
 
       n_failed = count(table%failed)
       if (n_failed == 0) return
       i = findloc(table%failed, .true., 1)
-      if (n_failed == 1) then
-         call fatal_error(error, trim(names(i))//': '//trim(table%message(i)))
-      else
-         call fatal_error(error, trim(names(i))//': '//trim(table%message(i))//' (and '// &
-                          str(n_failed - 1)//' more of '//str(size(table%failed))//' failed)')
-      end if
+      text = trim(table%message(i))
+      if (len_trim(names(i)) > 0) text = trim(names(i))//': '//text
+      if (n_failed > 1) text = text//' (and '//str(n_failed - 1)//' more of '//str(size(table%failed))//' failed)'
+      call fatal_error(error, text)
    end subroutine first_failure
 
 end module pound_cases
