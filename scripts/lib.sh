@@ -4,21 +4,25 @@
 POUND_ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 # Debian packages the project needs (build, tests, plots).
 POUND_PACKAGES="gfortran cmake make liblapack-dev libhdf5-dev python3 python3-numpy python3-h5py python3-matplotlib"
+# Debian packages of the MPI build only (-DPOUND_MPI=ON: scripts/test's build/mpi); the
+# default build needs none of them.
+POUND_MPI_PACKAGES="libopenmpi-dev openmpi-bin"
 # Scripts that need numpy/h5py/matplotlib run on Debian's interpreter.
 POUND_PYTHON=/usr/bin/python3
 
 pound_missing_packages() {
   local p missing=""
-  for p in $POUND_PACKAGES; do
+  for p in ${1:-$POUND_PACKAGES}; do
     dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing="$missing $p"
   done
   echo "$missing"
 }
 
 # Install missing Debian packages (once); nothing happens when all are present.
+# pound_setup [PACKAGES]: default $POUND_PACKAGES (pound_setup "$POUND_MPI_PACKAGES": MPI).
 pound_setup() {
   local missing
-  missing="$(pound_missing_packages)"
+  missing="$(pound_missing_packages "${1:-$POUND_PACKAGES}")"
   [ -z "$missing" ] && return 0
   echo "pound: installing Debian packages:$missing" >&2
   local sudo=""

@@ -8,6 +8,8 @@ set(POUND_SOURCES
   core/pound_random.f90
   # core: exchanging values and allocatable arrays without copies
   core/pound_swap.f90
+  # core: the case scheduler (independent cases into a table; its implementation below)
+  core/pound_cases.f90
   # core: the rules of a joint envelope (shared by the deck reader and the contact law)
   core/pound_envelope_rules.f90
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
@@ -45,6 +47,10 @@ set(POUND_SOURCES
   # outputs: the suite's listing sections and /suite
   output/pound_suite_output.f90
 )
+# The case scheduler's implementation (a submodule of pound_cases): the cases in order by
+# default, shared over MPI ranks with -DPOUND_MPI=ON (the top CMakeLists.txt picks one).
+set(POUND_SOURCES_SERIAL core/pound_cases_serial.f90)
+set(POUND_SOURCES_MPI core/pound_cases_mpi.f90)
 # The structural model's recovery rows and storey-by-storey strain energy are summed without
 # fused multiply-adds, so that they give the same numbers with and without -march=native.
 if(CMAKE_Fortran_COMPILER_ID STREQUAL "GNU")

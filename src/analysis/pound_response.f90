@@ -21,7 +21,7 @@ module pound_response
    private
 
    public :: response_record, response_init, response_sample, response_finish
-   public :: history_sink, response_flush, default_block_bytes, history_block
+   public :: history_sink, response_flush, default_block_bytes, history_block, discard_sink
    public :: q_u, q_v, q_a_abs, q_drift, q_shear
 
    !> Quantity indices.
@@ -58,6 +58,13 @@ module pound_response
          type(error_type), allocatable, intent(out) :: error
       end subroutine sink_put
    end interface
+
+   !> A sink that keeps nothing: an MPI rank that does not write the results runs the same
+   !> analyses in the memory of one block.
+   type, extends(history_sink) :: discard_sink
+   contains
+      procedure :: put => discard_put
+   end type discard_sink
 
    !> Peaks and histories of one building.
    type :: response_record
@@ -295,6 +302,21 @@ contains
          history_block = min(n_out, max(1, default_block_bytes/(8*max(1, n))))
       end if
    end function history_block
+
+   !> Drop the samples (`discard_sink`).
+   subroutine discard_put(sink, coupled, building, quantity, first, values, error)
+      !> The sink; whether the coupled analysis; building, quantity and first sample index.
+      class(discard_sink), intent(inout) :: sink
+      logical, intent(in) :: coupled
+      integer, intent(in) :: building, quantity, first
+      !> The samples, dropped.
+      real(dp), intent(in), contiguous :: values(:, :)
+      !> Error state (never set).
+      type(error_type), allocatable, intent(out) :: error
+
+      associate (unused => [sink%block, merge(1, 0, coupled), building, quantity, first, size(values)])
+      end associate
+   end subroutine discard_put
 
    !> Streamed histories: hand the samples held to `sink` and empty the block (when `full`,
    !> only if the block is full).

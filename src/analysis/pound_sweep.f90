@@ -6,6 +6,13 @@
 !> Each gap is applied to every constraint. For every gap the largest |lambda| over the
 !> floors (storeys) is kept per building and quantity, and the smallest gap from which on every
 !> targeted |lambda| stays within the target is reported.
+!>
+!> The gaps are independent cases (`pound_cases`): one after the other in the serial build,
+!> shared over the ranks with MPI; each gap's coupled run gives a column (the largest
+!> |lambda| per quantity and building, impacts, energy residual, first warning), and the
+!> result is assembled from the columns in gap order, so it is the same for any number of
+!> ranks. A gap whose run fails does not stop the others; the sweep then ends with an error
+!> naming it.
 module pound_sweep
    use iso_fortran_env, only: int64
    use pound_kinds, only: dp
@@ -18,10 +25,14 @@ module pound_sweep
                              add_warning, audit_warning_limit
    use pound_contact, only: contact_pair, contact_system
    use pound_influence, only: influence_of, max_abs_influence
+   use pound_cases, only: case_work, case_table, run_cases, first_failure, text_to_column, column_to_text
    implicit none
    private
 
    public :: sweep_result, run_sweep, sweep_gaps
+
+   !> Characters kept of a gap's first warning.
+   integer, parameter :: warning_len = 512
 
    !> Result of a gap sweep.
    type :: sweep_result
@@ -44,7 +55,57 @@ module pound_sweep
       character(len=:), allocatable :: warnings(:)
    end type sweep_result
 
+   !> The gaps of a sweep as cases: gap i's coupled run, against the uncoupled result.
+   !> Column: max |lambda| (n_history_quantities x n_buildings), impacts, energy residual,
+   !> number of warnings, the first warning (`text_to_column`).
+   type, extends(case_work) :: gap_cases
+      !> Settings of the sweep's runs (no histories).
+      type(analysis_config) :: cfg
+      !> The buildings, the ground samples, the prepared coupled model, the uncoupled result,
+      !> the ground motion (may be unassociated).
+      type(structure_model), pointer :: models(:) => null()
+      real(dp), pointer :: ag(:) => null()
+      type(coupled_model), pointer :: prep => null()
+      type(analysis_result), pointer :: unc => null()
+      type(ground_motion_t), pointer :: ground => null()
+      !> The gaps (m) and the number of constraints.
+      real(dp), allocatable :: gap(:)
+      integer :: n_pairs = 0
+   contains
+      procedure :: compute => gap_case
+   end type gap_cases
+
 contains
+
+   !> Gap i of the sweep: its coupled run into a column.
+   subroutine gap_case(work, i, values, error)
+      !> The sweep's cases.
+      class(gap_cases), intent(inout) :: work
+      !> Gap index.
+      integer, intent(in) :: i
+      !> The column.
+      real(dp), intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(analysis_result) :: cpl
+      type(contact_system) :: cs
+      real(dp) :: gaps(work%n_pairs)
+      integer :: nl
+
+      gaps = work%gap(i)
+      call coupled_integrate(work%cfg, work%models, work%ag, work%prep, cpl, cs, error, gaps, work%ground)
+      if (allocated(error)) return
+      nl = n_history_quantities*size(work%models)
+      values(1:nl) = reshape(max_abs_influence(influence_of(work%unc, cpl)), [nl])
+      values(nl + 1) = real(sum(cs%joint(:)%impacts), dp)
+      values(nl + 2) = cpl%energy_error
+      values(nl + 3) = real(size(cpl%warnings), dp)
+      if (size(cpl%warnings) > 0) then
+         call text_to_column(trim(cpl%warnings(1)), values(nl + 4:))
+      else
+         call text_to_column('', values(nl + 4:))
+      end if
+   end subroutine gap_case
 
    !> The gaps of a sweep: n_gaps values evenly spaced from gap_from to gap_to.
    pure function sweep_gaps(cfg) result(gaps)
@@ -65,25 +126,26 @@ contains
       !> `&sweep`.
       type(sweep_config), intent(in) :: sweep
       !> The buildings.
-      type(structure_model), intent(in) :: models(:)
+      type(structure_model), intent(in), target :: models(:)
       !> Ground acceleration at t_n = n dt (m/s^2).
-      real(dp), intent(in) :: ag(0:)
+      real(dp), intent(in), target :: ag(0:)
       !> The constraints of the deck.
       type(contact_pair), intent(in) :: pairs(:)
       !> Uncoupled result.
-      type(analysis_result), intent(in) :: unc
+      type(analysis_result), intent(in), target :: unc
       !> The sweep result.
       type(sweep_result), intent(out) :: res
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
-      type(ground_motion_t), intent(in), optional :: ground
+      type(ground_motion_t), intent(in), optional, target :: ground
       type(analysis_config) :: quiet
-      type(coupled_model) :: prep
-      type(analysis_result) :: cpl
-      type(contact_system) :: cs
-      real(dp) :: gaps(size(pairs)), worst
-      integer :: i, q, n_bad
+      type(coupled_model), target :: prep
+      type(gap_cases) :: cases
+      type(case_table) :: table
+      character(len=64) :: names(sweep%n_gaps)
+      real(dp) :: worst
+      integer :: i, q, n_bad, nl, nb
       character(len=:), allocatable :: worst_text
       integer(int64) :: c0, c1, rate
 
@@ -99,22 +161,34 @@ contains
       worst = 0.0_dp
       call coupled_prepare(quiet, models, ag(0), pairs, prep, error)
       if (allocated(error)) return
+      nb = size(models)
+      nl = n_history_quantities*nb
+      cases%cfg = quiet
+      cases%models => models
+      cases%ag => ag
+      cases%prep => prep
+      cases%unc => unc
+      if (present(ground)) cases%ground => ground
+      cases%gap = res%gap
+      cases%n_pairs = size(pairs)
+      call run_cases(cases, sweep%n_gaps, nl + 4 + warning_len, table)
       do i = 1, sweep%n_gaps
-         gaps = res%gap(i)
-         call coupled_integrate(quiet, models, ag, prep, cpl, cs, error, gaps, ground)
-         if (allocated(error)) then
-            error%message = 'gap sweep, gap = '//str(res%gap(i))//' m: '//error%message
-            return
-         end if
-         if (size(cpl%warnings) > 0) then
-            n_bad = n_bad + 1
-            if (cpl%energy_error > worst) then
-               worst = cpl%energy_error
-               worst_text = 'gap = '//str(res%gap(i))//' m: '//trim(cpl%warnings(1))
+         names(i) = 'gap sweep, gap = '//str(res%gap(i))//' m'
+      end do
+      call first_failure(table, names, error)
+      if (allocated(error)) return
+      do i = 1, sweep%n_gaps
+         associate (col => table%values(:, i))
+            if (col(nl + 3) > 0.0_dp) then
+               n_bad = n_bad + 1
+               if (col(nl + 2) > worst) then
+                  worst = col(nl + 2)
+                  worst_text = 'gap = '//str(res%gap(i))//' m: '//column_to_text(col(nl + 4:))
+               end if
             end if
-         end if
-         res%impacts(i) = sum(cs%joint(:)%impacts)
-         res%max_abs_lambda(:, :, i) = max_abs_influence(influence_of(unc, cpl))
+            res%impacts(i) = nint(col(nl + 1))
+            res%max_abs_lambda(:, :, i) = reshape(col(1:nl), [n_history_quantities, nb])
+         end associate
          res%meets(i) = .true.
          do q = 1, n_history_quantities
             if (sweep%target_quantities(q)) then

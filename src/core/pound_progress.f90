@@ -26,6 +26,7 @@ module pound_progress
 
    public :: progress_setup, progress_start, progress_steps, progress_run_done, progress_finish
    public :: progress_line, progress_stride, progress_auto, progress_on, progress_off
+   public :: progress_ended, progress_runs_elsewhere
 
    !> Modes of `progress_setup`: on a terminal only, always (`--progress`), never (`--quiet`).
    integer, parameter :: progress_auto = 0, progress_on = 1, progress_off = 2
@@ -36,6 +37,8 @@ module pound_progress
 
    logical, save :: active = .false., tty = .false., forced = .false., shown = .false.
    integer, save :: total = 1, done = 0
+   !> Runs ended in this process, counted whether the line is shown or not.
+   integer, save :: ended = 0
    real(dp), save :: fraction = 0.0_dp, last = 0.0_dp
    integer(int64), save :: c0 = 0, rate = 1
 
@@ -79,12 +82,30 @@ contains
 
    !> One integration run has ended.
    subroutine progress_run_done()
+      ended = ended + 1
       if (.not. active) return
       done = done + 1
       total = max(total, done)
       fraction = 0.0_dp
       call maybe_show()
    end subroutine progress_run_done
+
+   !> Runs ended in this process so far (the case scheduler counts each case's runs with it).
+   integer function progress_ended()
+      progress_ended = ended
+   end function progress_ended
+
+   !> `n` runs ended in other processes (the MPI ranks' cases, counted by the scheduler).
+   subroutine progress_runs_elsewhere(n)
+      !> Number of runs.
+      integer, intent(in) :: n
+
+      if (.not. active .or. n <= 0) return
+      done = done + n
+      total = max(total, done)
+      fraction = 0.0_dp
+      call maybe_show()
+   end subroutine progress_runs_elsewhere
 
    !> The analyses have ended (`ok`: all of them; else they stopped on an error): the last
    !> line (when a line was shown, or forced) and, on a terminal, its newline; after an error

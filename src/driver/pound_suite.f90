@@ -49,6 +49,7 @@ module pound_suite
                                separation_ddc, cqc_correlation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion
    use pound_analysis, only: analysis_result
+   use pound_cases, only: case_work, case_table, run_cases, first_failure
    implicit none
    private
 
@@ -140,7 +141,336 @@ module pound_suite
       type(motion_histories), allocatable :: histories(:)
    end type suite_result
 
+   !> What the suite's cases share: the configuration (and the same without its sweep), the
+   !> buildings, the spectra's periods, the contact pairs, the targeted quantities, the sweep's
+   !> grid and the label of the messages.
+   type :: suite_context
+      !> The deck as given, and the same without its sweep (the runs at a trial gap).
+      type(deck_type), pointer :: deck => null()
+      type(deck_type) :: plain
+      !> The buildings (periods for `scale_to = 'sa'`).
+      type(structure_model), pointer :: models(:) => null()
+      !> Quantities the target applies to.
+      logical :: targeted(n_history_quantities) = .true.
+      !> The sweep's gaps (m).
+      real(dp), allocatable :: gap(:)
+      !> Put before the messages (may be empty).
+      character(len=:), allocatable :: label
+      !> Periods of the spectra and the buildings' fundamental periods (s).
+      real(dp), allocatable :: period(:), building_period(:)
+      !> Contact pairs in deck order: buildings on the left and right, facing floors.
+      integer, allocatable :: left(:), right(:), fl(:), fr(:)
+   end type suite_context
+
+   !> The motions of a suite without `&sweep` as cases: motion `motion(i)` scaled, its spectra
+   !> and its run, into a column (`motion_run`).
+   type, extends(case_work) :: suite_cases
+      !> The suite's data.
+      type(suite_context), pointer :: ctx => null()
+      !> Motion index of each case.
+      integer, allocatable :: motion(:)
+   contains
+      procedure :: compute => suite_case
+   end type suite_cases
+
+   !> The motions at one trial gap as cases: column = the largest |lambda| of motion m per
+   !> targeted quantity and building (n_history_quantities x n_buildings; 0 where not targeted).
+   type, extends(case_work) :: motion_cases
+      !> The refinement's data.
+      type(suite_context), pointer :: ctx => null()
+      !> Trial gap (m).
+      real(dp) :: gap = 0.0_dp
+   contains
+      procedure :: compute => motion_case
+   end type motion_cases
+
+   !> The motions' own threshold refinements as cases: column = motion k's refined gap.
+   type, extends(case_work) :: refine_cases
+      !> The refinement's data.
+      type(suite_context), pointer :: ctx => null()
+      !> Each motion's safe grid gap (m; -1: none).
+      real(dp), allocatable :: safe(:)
+   contains
+      procedure :: compute => refine_case
+   end type refine_cases
+
 contains
+
+   !> Motion `motion(i)` of the suite (a case of `suite_cases`).
+   subroutine suite_case(work, i, values, error)
+      !> The cases.
+      class(suite_cases), intent(inout) :: work
+      !> Case index.
+      integer, intent(in) :: i
+      !> The motion's column (`motion_run`).
+      real(dp), intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(case_result) :: res
+
+      call motion_run(work%ctx, work%motion(i), res, values, error)
+   end subroutine suite_case
+
+   !> Reals in the column of one motion (`motion_run`).
+   pure integer function motion_width(ctx) result(width)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+
+      width = 3 + size(ctx%period) + size(ctx%building_period) + &
+              3*n_history_quantities*sum(ctx%deck%buildings%n_storeys) + size(ctx%left)
+   end function motion_width
+
+   !> Offset in a motion's column of block `which` (1 lambda, 2 uncoupled peaks, 3 coupled
+   !> peaks) of building ib, each (n_storeys, n_history_quantities).
+   pure integer function motion_offset(ctx, which, ib) result(offset)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+      !> Block and building.
+      integer, intent(in) :: which, ib
+      integer :: total
+
+      total = n_history_quantities*sum(ctx%deck%buildings%n_storeys)
+      offset = 3 + size(ctx%period) + size(ctx%building_period) + (which - 1)*total + &
+               n_history_quantities*sum(ctx%deck%buildings(1:ib - 1)%n_storeys)
+   end function motion_offset
+
+   !> Motion k of the suite: scaled, its spectra, run (`run_case`) into `res`, and what the
+   !> suite's statistics need of it in `col`: scale factor, PGA, whether the influence exists,
+   !> Sa at the spectra's periods and at the buildings' periods, per building lambda, the
+   !> uncoupled and the coupled peaks, and per pair the no-contact gap (-1 without 'u').
+   subroutine motion_run(ctx, k, res, col, error)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+      !> Motion index.
+      integer, intent(in) :: k
+      !> The motion's case.
+      type(case_result), intent(out) :: res
+      !> Its column (`motion_width` reals).
+      real(dp), intent(out) :: col(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(case_options) :: options
+      real(dp), allocatable :: ag(:), sa(:), u1(:), u2(:)
+      real(dp) :: dt
+      integer :: n_steps, o, ib, ip, n, w
+
+      col = 0.0_dp
+      dt = ctx%deck%analysis%dt
+      n_steps = nint(ctx%deck%analysis%t_end/dt)
+      if (allocated(ctx%label)) options%label = ctx%label
+      allocate (options%ground, ag(0:n_steps))
+      call suite_motion(ctx%deck, k, ctx%models, options%ground, col(1), error)
+      if (allocated(error)) return
+      call sample_ground(options%ground, dt, n_steps, ag)
+      col(2) = peak_ground_acceleration(ag)
+      o = 3
+      call response_spectrum(ag, dt, ctx%period, spectrum_damping, sa, error)
+      if (allocated(error)) return
+      col(o + 1:o + size(sa)) = sa
+      o = o + size(sa)
+      call response_spectrum(ag, dt, ctx%building_period, spectrum_damping, sa, error)
+      if (allocated(error)) return
+      col(o + 1:o + size(sa)) = sa
+      call run_case(ctx%deck, res, error, options)
+      if (allocated(error)) then
+         error%message = "&ground '"//ctx%deck%motions(k)%name//"': "//error%message
+         return
+      end if
+      if (.not. (res%has_coupled .and. res%has_uncoupled)) return
+      col(3) = 1.0_dp
+      do ib = 1, size(ctx%models)
+         n = ctx%deck%buildings(ib)%n_storeys
+         w = n*n_history_quantities
+         o = motion_offset(ctx, 1, ib)
+         col(o + 1:o + w) = reshape(res%influence(ib)%lambda, [w])
+         o = motion_offset(ctx, 2, ib)
+         col(o + 1:o + w) = reshape(res%unc%building(ib)%peak, [w])
+         o = motion_offset(ctx, 3, ib)
+         col(o + 1:o + w) = reshape(res%cpl%building(ib)%peak, [w])
+      end do
+      o = motion_offset(ctx, 4, 1)
+      do ip = 1, size(ctx%left)
+         col(o + ip) = -1.0_dp
+         if (ctx%deck%analysis%store(1)) then
+            associate (b1 => res%unc%building(ctx%left(ip)), b2 => res%unc%building(ctx%right(ip)))
+               u1 = b1%u(ctx%fl(ip), 1:b1%n_out)
+               u2 = b2%u(ctx%fr(ip), 1:b2%n_out)
+               col(o + ip) = no_contact_gap(u1, u2)
+            end associate
+         end if
+      end do
+   end subroutine motion_run
+
+   !> Motion m at the trial gap (a case of `motion_cases`).
+   subroutine motion_case(work, i, values, error)
+      !> The cases.
+      class(motion_cases), intent(inout) :: work
+      !> Motion index.
+      integer, intent(in) :: i
+      !> Its largest |lambda| per quantity and building.
+      real(dp), intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: lam(n_history_quantities, size(work%ctx%models))
+
+      call motion_lambda(work%ctx, i, work%gap, lam, error)
+      if (allocated(error)) return
+      values = reshape(lam, [size(lam)])
+   end subroutine motion_case
+
+   !> Motion k's threshold refinement (a case of `refine_cases`).
+   subroutine refine_case(work, i, values, error)
+      !> The cases.
+      class(refine_cases), intent(inout) :: work
+      !> Motion index.
+      integer, intent(in) :: i
+      !> Its refined gap (m; -1: none).
+      real(dp), intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      call refine(work%ctx, work%safe(i), i, values(1), error)
+   end subroutine refine_case
+
+   !> Motion m run at `gap` (no sweep): its largest |lambda| over the floors per quantity and
+   !> building, zero for the quantities not targeted.
+   subroutine motion_lambda(ctx, m, gap, lam, error)
+      !> The refinement's data.
+      type(suite_context), intent(in) :: ctx
+      !> Motion index.
+      integer, intent(in) :: m
+      !> Gap of every joint (m).
+      real(dp), intent(in) :: gap
+      !> Largest |lambda| (%), (n_history_quantities, n_buildings).
+      real(dp), intent(out) :: lam(:, :)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(case_options) :: opt
+      type(case_result) :: r
+      real(dp) :: factor
+      integer :: iq
+
+      opt%gap = gap
+      if (allocated(ctx%label)) opt%label = ctx%label
+      allocate (opt%ground)
+      call suite_motion(ctx%deck, m, ctx%models, opt%ground, factor, error)
+      if (allocated(error)) return
+      call run_case(ctx%plain, r, error, opt)
+      if (allocated(error)) return
+      lam = max_abs_influence(r%influence)
+      do iq = 1, n_history_quantities
+         if (.not. ctx%targeted(iq)) lam(iq, :) = 0.0_dp
+      end do
+   end subroutine motion_lambda
+
+   !> Bisection between the grid gap below `safe` (failing) and `safe` (passing), down to
+   !> the tolerance: the motions run at the trial gap (no sweep), the criterion on the suite
+   !> mean (`which` = 0), on every motion (-1) or on motion `which` alone (> 0).
+   subroutine refine(ctx, safe, which, refined, error)
+      !> The refinement's data.
+      type(suite_context), intent(in), target :: ctx
+      !> Safe grid gap (m; <= 0: none).
+      real(dp), intent(in) :: safe
+      !> Criterion: 0 the suite mean, -1 every motion, k > 0 motion k.
+      integer, intent(in) :: which
+      !> Refined gap (m; -1: not refined).
+      real(dp), intent(out) :: refined
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(bisection) :: b
+      real(dp) :: mid, worst
+      integer :: ig
+      logical :: more
+
+      refined = -1.0_dp
+      ig = findloc(ctx%gap, safe, 1)
+      if (.not. (safe > 0.0_dp) .or. ig <= 1) return
+      b = bisection(ctx%gap(ig - 1), safe, ctx%deck%sweep%refine_tolerance)
+      mid = safe
+      do
+         call bisection_step(b, mid, more)
+         if (.not. more) exit
+         call worst_at(ctx, mid, which, worst, error)
+         if (allocated(error)) return
+         call bisection_update(b, mid, worst <= ctx%deck%sweep%target)
+      end do
+      refined = b%hi
+   end subroutine refine
+
+   !> The motions at one gap: the largest |lambda| over the targeted quantities and the
+   !> buildings, as the suite mean (`which` = 0: the mean per quantity and building, then the
+   !> largest), the largest over the motions (-1), or of motion `which` alone (> 0). The
+   !> motions of a suite criterion are cases (`motion_cases`), summed in motion order.
+   subroutine worst_at(ctx, gap, which, worst, error)
+      !> The refinement's data.
+      type(suite_context), intent(in), target :: ctx
+      !> Trial gap (m).
+      real(dp), intent(in) :: gap
+      !> Criterion: 0 the suite mean, -1 every motion, k > 0 motion k.
+      integer, intent(in) :: which
+      !> The criterion's value (%).
+      real(dp), intent(out) :: worst
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(motion_cases) :: cases
+      type(case_table) :: table
+      real(dp) :: lam(n_history_quantities, size(ctx%models)), total(n_history_quantities, size(ctx%models))
+      integer :: m, nm
+
+      nm = size(ctx%deck%motions)
+      if (which > 0) then
+         call motion_lambda(ctx, which, gap, lam, error)
+         if (allocated(error)) return
+         worst = max(0.0_dp, maxval(lam))
+         return
+      end if
+      cases%ctx => ctx
+      cases%gap = gap
+      call run_cases(cases, nm, size(lam), table)
+      call first_failure(table, motion_names(ctx%deck, ', gap = '//str(gap)//' m'), error)
+      if (allocated(error)) return
+      total = 0.0_dp
+      worst = 0.0_dp
+      do m = 1, nm
+         lam = reshape(table%values(:, m), shape(lam))
+         total = total + lam/nm
+         worst = max(worst, maxval(lam))
+      end do
+      if (which == 0) worst = maxval(total)
+   end subroutine worst_at
+
+   !> "&ground 'name'" and `suffix` for every motion of the deck (the names of its cases).
+   !> With `which`, those motions only; with `bare`, blank names (the cases' messages name their
+   !> motion themselves).
+   pure function motion_names(deck, suffix, which, bare) result(names)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Put after each name.
+      character(len=*), intent(in) :: suffix
+      !> Motion indices (default: every motion).
+      integer, intent(in), optional :: which(:)
+      !> Blank names.
+      logical, intent(in), optional :: bare
+      character(len=word_len + 12 + len(suffix)), allocatable :: names(:)
+      integer, allocatable :: m(:)
+      integer :: i
+
+      if (present(which)) then
+         allocate (m(size(which)))
+         m = which
+      else
+         allocate (m(size(deck%motions)))
+         m = [(i, i=1, size(deck%motions))]
+      end if
+      allocate (names(size(m)))
+      names = ''
+      if (present(bare)) then
+         if (bare) return
+      end if
+      do i = 1, size(m)
+         names(i) = "&ground '"//deck%motions(m(i))%name//"'"//suffix
+      end do
+   end function motion_names
 
    !> Next trial gap `mid` of the bisection `b`, or `more` false when hi - lo <= tol.
    pure subroutine bisection_step(b, mid, more)
@@ -301,7 +631,7 @@ contains
    !> Run every motion of the deck's suite and gather the suite statistics.
    subroutine run_suite(deck, suite, first, error, label)
       !> A validated configuration.
-      type(deck_type), intent(in) :: deck
+      type(deck_type), intent(in), target :: deck
       !> Everything the suite computes.
       type(suite_result), intent(out) :: suite
       !> The case of the first motion (what a single-motion run writes).
@@ -310,20 +640,23 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Put before the messages of the configuration's errors (e.g. the deck path).
       character(len=*), intent(in), optional :: label
-      type(structure_model), allocatable :: models(:)
+      type(structure_model), allocatable, target :: models(:)
       type(building_model), allocatable :: kinds(:)
-      type(case_options) :: options
+      type(suite_context), target :: ctx
+      type(refine_cases) :: chains
+      type(suite_cases) :: motions
+      type(case_table) :: table
+      real(dp), allocatable :: columns(:, :)
+      logical, allocatable :: whole(:)
       type(case_result) :: res
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
-      real(dp), allocatable :: ag(:), u1(:), u2(:), mean_unc(:, :, :), mean_cpl(:, :, :)
-      real(dp), allocatable :: z(:), sa(:), sweep_sum(:, :, :)
+      real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :)
+      real(dp), allocatable :: z(:), sweep_sum(:, :, :)
       logical :: targeted(n_history_quantities)
-      integer :: nm, nb, k, ib, n_steps, np, ip, nmax
-      logical :: has_u
+      integer :: nm, nb, k, ib, np, ip, nmax
 
       nm = size(deck%motions)
       nb = size(deck%buildings)
-      n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
       allocate (models(nb), kinds(nb), suite%building_period(nb), z(nb))
       do ib = 1, nb
          call build_building(deck%buildings(ib), models(ib), kinds(ib), error)
@@ -339,7 +672,7 @@ contains
       nmax = maxval(deck%buildings%n_storeys)
       allocate (suite%names(nm), suite%source(nm), suite%target(nm), suite%target_period(nm))
       allocate (suite%scale_factor(nm), suite%pga(nm), suite%sa(nm, size(suite%period)), &
-                suite%sa_building(nm, nb), ag(0:n_steps), mean_unc(nmax, n_history_quantities, nb), &
+                suite%sa_building(nm, nb), mean_unc(nmax, n_history_quantities, nb), &
                 mean_cpl(nmax, n_history_quantities, nb))
       mean_unc = 0.0_dp
       mean_cpl = 0.0_dp
@@ -354,11 +687,9 @@ contains
             s%lambda_of_means = 0.0_dp
          end associate
       end do
-      has_u = deck%analysis%store(1)
       suite%refine_tolerance = deck%sweep%refine_tolerance
       targeted = deck%sweep%target_quantities
       if (.not. (deck%sweep%target > 0.0_dp)) targeted = .true.
-      if (present(label)) options%label = label
 
       do k = 1, nm
          suite%names(k) = deck%motions(k)%name
@@ -381,34 +712,48 @@ contains
             suite%target_period(k) = deck%motions(k)%period
             if (.not. (suite%target_period(k) > 0.0_dp)) suite%target_period(k) = maxval(suite%building_period)
          end select
-         allocate (options%ground)
-         call suite_motion(deck, k, models, options%ground, suite%scale_factor(k), error)
-         if (allocated(error)) return
-         call sample_ground(options%ground, deck%analysis%dt, n_steps, ag)
-         suite%pga(k) = peak_ground_acceleration(ag)
-         call response_spectrum(ag, deck%analysis%dt, suite%period, spectrum_damping, sa, error)
-         if (allocated(error)) return
-         suite%sa(k, :) = sa
-         call response_spectrum(ag, deck%analysis%dt, suite%building_period, spectrum_damping, sa, error)
-         if (allocated(error)) return
-         suite%sa_building(k, :) = sa
+      end do
+
+      ! The motions: with `&sweep` each runs on every rank in turn (its sweep's gaps are the
+      ! cases); without, they are the cases, and those the writers need whole (the first, and
+      ! those whose histories are kept) run on every rank beside them. Either way the
+      ! statistics take the motions' columns in motion order.
+      ctx%deck => deck
+      ctx%plain = deck
+      ctx%plain%sweep%active = .false.
+      ctx%models => models
+      ctx%targeted = targeted
+      if (present(label)) ctx%label = label
+      ctx%period = suite%period
+      ctx%building_period = suite%building_period
+      ctx%left = left
+      ctx%right = right
+      ctx%fl = fl
+      ctx%fr = fr
+      allocate (columns(motion_width(ctx), nm), whole(nm))
+      do k = 1, nm
+         whole(k) = deck%sweep%active .or. k == 1 .or. deck%motions(k)%histories
+         if (.not. whole(k)) cycle
          if (k == 1) then
-            call run_case(deck, first, error, options)
-         else
-            call run_case(deck, res, error, options)
-         end if
-         deallocate (options%ground)
-         if (allocated(error)) then
-            error%message = "&ground '"//deck%motions(k)%name//"': "//error%message
-            return
-         end if
-         if (k == 1) then
-            call gather(first)
+            call motion_run(ctx, k, first, columns(:, k), error)
+            if (allocated(error)) return
+            call gather_sweep(first)
             call keep(first)
          else
-            call gather(res)
+            call motion_run(ctx, k, res, columns(:, k), error)
+            if (allocated(error)) return
+            call gather_sweep(res)
             call keep(res)
          end if
+      end do
+      motions%ctx => ctx
+      motions%motion = pack([(k, k=1, nm)], .not. whole)
+      call run_cases(motions, size(motions%motion), size(columns, 1), table)
+      call first_failure(table, motion_names(deck, '', motions%motion, bare=.true.), error)
+      if (allocated(error)) return
+      columns(:, motions%motion) = table%values
+      do k = 1, nm
+         call gather(columns(:, k))
       end do
       suite%mean_sa = sum(suite%sa, dim=1)/nm
 
@@ -435,16 +780,24 @@ contains
          suite%safe_gap_every = safe_gap(suite%sweep_max)
          suite%non_monotone_mean = non_monotone(suite%sweep_mean, suite%safe_gap_mean)
          suite%non_monotone_every = non_monotone(suite%sweep_max, suite%safe_gap_every)
-         call refine(suite%safe_gap_mean, 0, suite%refined_gap_mean, error)
+         ctx%gap = suite%sweep_gap
+         call refine(ctx, suite%safe_gap_mean, 0, suite%refined_gap_mean, error)
          if (allocated(error)) return
-         call refine(suite%safe_gap_every, -1, suite%refined_gap_every, error)
+         call refine(ctx, suite%safe_gap_every, -1, suite%refined_gap_every, error)
          if (allocated(error)) return
          allocate (suite%safe_gap_motion(nm), suite%refined_gap_motion(nm), suite%non_monotone_motion(nm))
          do k = 1, nm
             suite%safe_gap_motion(k) = safe_gap(suite%sweep_lambda(k, :))
             suite%non_monotone_motion(k) = non_monotone(suite%sweep_lambda(k, :), suite%safe_gap_motion(k))
-            call refine(suite%safe_gap_motion(k), k, suite%refined_gap_motion(k), error)
-            if (allocated(error)) return
+         end do
+         ! The motions' own refinements are independent of each other: one case each.
+         chains%ctx => ctx
+         chains%safe = suite%safe_gap_motion
+         call run_cases(chains, nm, 1, table)
+         call first_failure(table, motion_names(deck, ''), error)
+         if (allocated(error)) return
+         do k = 1, nm
+            suite%refined_gap_motion(k) = table%values(1, k)
             suite%separation(k, :)%time_history = time_history_gap(suite%safe_gap_motion(k), &
                                                                    suite%refined_gap_motion(k))
          end do
@@ -483,42 +836,60 @@ contains
          dst%contact_seconds = src%contact_seconds
       end subroutine copy_histories
 
-      !> Peaks, lambdas and rules of motion k.
-      subroutine gather(res)
+      !> The sweep of motion k (a case run on every rank).
+      subroutine gather_sweep(res)
          type(case_result), intent(in) :: res
-
          integer :: iq, ig
 
-         if (.not. (res%has_coupled .and. res%has_uncoupled)) return
-         if (res%has_sweep) then
-            if (k == 1) then
-               suite%has_sweep = .true.
-               suite%sweep_gap = res%sweep%gap
-               allocate (suite%sweep_lambda(nm, size(res%sweep%gap)))
-               allocate (sweep_sum(n_history_quantities, nb, size(res%sweep%gap)))
-               sweep_sum = 0.0_dp
-            end if
-            sweep_sum = sweep_sum + res%sweep%max_abs_lambda/nm
-            do ig = 1, size(res%sweep%gap)
-               suite%sweep_lambda(k, ig) = 0.0_dp
-               do iq = 1, n_history_quantities
-                  if (targeted(iq)) suite%sweep_lambda(k, ig) = max(suite%sweep_lambda(k, ig), &
-                                                                    maxval(res%sweep%max_abs_lambda(iq, :, ig)))
-               end do
-            end do
-            do iq = 1, n_history_quantities
-               if (.not. targeted(iq)) sweep_sum(iq, :, :) = 0.0_dp
-            end do
+         if (.not. (res%has_coupled .and. res%has_uncoupled .and. res%has_sweep)) return
+         if (k == 1) then
+            suite%has_sweep = .true.
+            suite%sweep_gap = res%sweep%gap
+            allocate (suite%sweep_lambda(nm, size(res%sweep%gap)))
+            allocate (sweep_sum(n_history_quantities, nb, size(res%sweep%gap)))
+            sweep_sum = 0.0_dp
          end if
-         do ib = 1, nb
-            associate (n => deck%buildings(ib)%n_storeys)
-               suite%building(ib)%lambda(k, :, :) = res%influence(ib)%lambda
-               mean_unc(1:n, :, ib) = mean_unc(1:n, :, ib) + res%unc%building(ib)%peak/nm
-               mean_cpl(1:n, :, ib) = mean_cpl(1:n, :, ib) + res%cpl%building(ib)%peak/nm
-            end associate
+         sweep_sum = sweep_sum + res%sweep%max_abs_lambda/nm
+         do ig = 1, size(res%sweep%gap)
+            suite%sweep_lambda(k, ig) = 0.0_dp
+            do iq = 1, n_history_quantities
+               if (targeted(iq)) suite%sweep_lambda(k, ig) = max(suite%sweep_lambda(k, ig), &
+                                                                 maxval(res%sweep%max_abs_lambda(iq, :, ig)))
+            end do
          end do
+         do iq = 1, n_history_quantities
+            if (.not. targeted(iq)) sweep_sum(iq, :, :) = 0.0_dp
+         end do
+      end subroutine gather_sweep
+
+      !> Scaling, spectra, peaks, lambdas and rules of motion k from its column (`motion_run`).
+      subroutine gather(col)
+         real(dp), intent(in) :: col(:)
+         integer :: o, n, w, o2
+
+         suite%scale_factor(k) = col(1)
+         suite%pga(k) = col(2)
+         o = 3
+         suite%sa(k, :) = col(o + 1:o + size(suite%period))
+         o = o + size(suite%period)
+         suite%sa_building(k, :) = col(o + 1:o + nb)
+         if (col(3) == 0.0_dp) return
+         do ib = 1, nb
+            n = deck%buildings(ib)%n_storeys
+            w = n*n_history_quantities
+            o = motion_offset(ctx, 1, ib)
+            suite%building(ib)%lambda(k, :, :) = reshape(col(o + 1:o + w), [n, n_history_quantities])
+            o = motion_offset(ctx, 2, ib)
+            mean_unc(1:n, :, ib) = mean_unc(1:n, :, ib) + reshape(col(o + 1:o + w), [n, n_history_quantities])/nm
+            o = motion_offset(ctx, 3, ib)
+            mean_cpl(1:n, :, ib) = mean_cpl(1:n, :, ib) + reshape(col(o + 1:o + w), [n, n_history_quantities])/nm
+         end do
+         o = motion_offset(ctx, 4, 1)
          do ip = 1, np
-            call separation_of(res, ip, suite%separation(k, ip))
+            o2 = motion_offset(ctx, 2, left(ip))
+            w = motion_offset(ctx, 2, right(ip))
+            call rules(col(o2 + fl(ip)), col(w + fr(ip)), ip, suite%separation(k, ip))
+            suite%separation(k, ip)%no_contact = col(o + ip)
             suite%separation(nm + 1, ip)%no_contact = suite%separation(nm + 1, ip)%no_contact + &
                                                       suite%separation(k, ip)%no_contact/nm
          end do
@@ -536,83 +907,6 @@ contains
          end do
       end function non_monotone
 
-      !> Bisection between the grid gap below `safe` (failing) and `safe` (passing), down to
-      !> the tolerance: the motions run at the trial gap (no sweep), the criterion on the suite
-      !> mean (`which` = 0), on every motion (-1) or on motion `which` alone (> 0).
-      subroutine refine(safe, which, refined, error)
-         real(dp), intent(in) :: safe
-         integer, intent(in) :: which
-         real(dp), intent(out) :: refined
-         type(error_type), allocatable, intent(out) :: error
-         type(deck_type) :: plain
-         type(bisection) :: b
-         real(dp) :: mid, worst
-         integer :: ig
-         logical :: more
-
-         refined = -1.0_dp
-         ig = findloc(suite%sweep_gap, safe, 1)
-         if (.not. (safe > 0.0_dp) .or. ig <= 1) return
-         plain = deck
-         plain%sweep%active = .false.
-         b = bisection(suite%sweep_gap(ig - 1), safe, deck%sweep%refine_tolerance)
-         mid = safe
-         do
-            call bisection_step(b, mid, more)
-            if (.not. more) exit
-            call worst_at(plain, mid, which, worst, error)
-            if (allocated(error)) return
-            call bisection_update(b, mid, worst <= deck%sweep%target)
-         end do
-         refined = b%hi
-      end subroutine refine
-
-      !> The motions at one gap: the largest |lambda| over the targeted quantities and the
-      !> buildings, as the suite mean (`which` = 0: the mean per quantity and building, then the
-      !> largest), the largest over the motions (-1), or of motion `which` alone (> 0).
-      subroutine worst_at(plain, gap, which, worst, error)
-         type(deck_type), intent(in) :: plain
-         real(dp), intent(in) :: gap
-         integer, intent(in) :: which
-         real(dp), intent(out) :: worst
-         type(error_type), allocatable, intent(out) :: error
-         type(case_options) :: opt
-         type(case_result) :: r
-         real(dp) :: lam(n_history_quantities, nb), total(n_history_quantities, nb)
-         real(dp) :: factor, worst_max
-         integer :: m, iq, m_first, m_last
-
-         total = 0.0_dp
-         worst_max = 0.0_dp
-         opt%gap = gap
-         if (present(label)) opt%label = label
-         m_first = 1
-         m_last = nm
-         if (which > 0) then
-            m_first = which
-            m_last = which
-         end if
-         do m = m_first, m_last
-            allocate (opt%ground)
-            call suite_motion(deck, m, models, opt%ground, factor, error)
-            if (allocated(error)) return
-            call run_case(plain, r, error, opt)
-            deallocate (opt%ground)
-            if (allocated(error)) return
-            lam = max_abs_influence(r%influence)
-            do iq = 1, n_history_quantities
-               if (.not. targeted(iq)) lam(iq, :) = 0.0_dp
-            end do
-            total = total + lam/nm
-            worst_max = max(worst_max, maxval(lam))
-         end do
-         if (which == 0) then
-            worst = maxval(total)
-         else
-            worst = worst_max
-         end if
-      end subroutine worst_at
-
       !> Smallest gap from which on every larger gap of the sweep `worst` <= the target.
       real(dp) function safe_gap(worst)
          real(dp), intent(in) :: worst(:)
@@ -625,24 +919,6 @@ contains
             safe_gap = suite%sweep_gap(ig)
          end do
       end function safe_gap
-
-      !> The rules of pair ip for one motion.
-      subroutine separation_of(res, ip, sep)
-         type(case_result), intent(in) :: res
-         integer, intent(in) :: ip
-         type(separation_t), intent(out) :: sep
-
-         associate (b1 => res%unc%building(left(ip)), b2 => res%unc%building(right(ip)))
-            call rules(b1%peak(fl(ip), 1), b2%peak(fr(ip), 1), ip, sep)
-            if (has_u) then
-               u1 = b1%u(fl(ip), 1:b1%n_out)
-               u2 = b2%u(fr(ip), 1:b2%n_out)
-               sep%no_contact = no_contact_gap(u1, u2)
-            else
-               sep%no_contact = -1.0_dp
-            end if
-         end associate
-      end subroutine separation_of
 
       !> ABS, SRSS, EC8 and DDC of pair ip from the peaks p1, p2 (m).
       subroutine rules(p1, p2, ip, sep)

@@ -19,7 +19,7 @@
 program pound
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use pound_kinds, only: dp
-   use pound_error, only: error_type
+   use pound_error, only: error_type, fatal_error
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_deck, only: read_deck
@@ -39,8 +39,10 @@ program pound
                           posix_sleep
    use pound_strings, only: fixed_cell
    use pound_analysis, only: substep_text
+   use pound_response, only: discard_sink
    use pound_progress, only: progress_setup, progress_start, progress_finish, progress_auto, progress_on, &
                              progress_off
+   use pound_cases, only: cases_start, cases_stop, cases_rank, cases_all
    implicit none
 
    character(len=:), allocatable :: deck_path, out_dir
@@ -49,15 +51,21 @@ program pound
    type(case_result) :: res
    type(output_set) :: outputs
    type(h5_history_sink), target :: sink
+   type(discard_sink), target :: dropped
    logical :: stdout_closed
    type(error_type), allocatable :: error
    character(len=512) :: ground_text(1)
    type(suite_result) :: suite
    logical :: is_suite, streamed
    integer :: progress_mode = progress_auto
+   logical :: writer
 
    call install_signal_cleanup()
    call guard_standard_descriptors()
+   ! With MPI every rank reads and checks the deck and runs the same driver; the cases are
+   ! shared (pound_cases) and rank 0, the writer, alone plans, writes and reports.
+   call cases_start()
+   writer = cases_rank() == 0
    call parse_arguments()
    call read_deck(deck_path, deck, error)
    call check(error)
@@ -75,19 +83,26 @@ program pound
 
    ! Resources and the output folder, before anything large is allocated or computed.
    call check_memory()
-   call plan_run_outputs()
-   call check(error)
+   if (writer) call plan_run_outputs()
+   if (.not. cases_all(.not. allocated(error))) then
+      if (.not. allocated(error)) call fatal_error(error, 'rank 0 could not reserve the outputs')
+      call check(error)
+   end if
 
    ! One deck, one motion: the histories are streamed into this run's temporary .h5 during
    ! the analyses (a suite, or a run with node histories, holds them and writes them at the end).
-   if (streamed) then
+   ! The other MPI ranks drop them (rank 0 alone writes).
+   if (streamed .and. writer) then
       call history_sink_init(sink, outputs%h5_tmp, outputs%h5, deck, error)
       call check(error)
       options%sink => sink
+   else if (streamed) then
+      options%sink => dropped
    end if
 
    ! The analyses.
    options%label = deck_path
+   if (.not. writer) progress_mode = progress_off
    call progress_setup(progress_mode)
    call progress_start(planned_runs())
    if (is_suite) then
@@ -98,6 +113,10 @@ program pound
    call check(error)
    call progress_finish(.true.)
    ground_text(1) = res%ground_text
+   if (.not. writer) then
+      call cases_stop()
+      call posix_exit_now(0)
+   end if
 
    ! Outputs: this run's temporaries first, published together when both are complete.
    call write_listing(outputs%listing_tmp, error)
@@ -115,6 +134,7 @@ program pound
    call publish_outputs(outputs, error)
    call check(error)
    call write_summary()
+   call cases_stop()
 
 contains
 
@@ -153,9 +173,10 @@ contains
       integer :: ios
 
       call progress_finish(.false.)
-      write (error_unit, '(a)', iostat=ios) program_name//': error: '//message
+      if (writer) write (error_unit, '(a)', iostat=ios) program_name//': error: '//message
       flush (error_unit, iostat=ios)
       flush (output_unit, iostat=ios)
+      call cases_stop()
       call posix_exit_now(status)
    end subroutine stop_with
 
@@ -338,10 +359,12 @@ contains
          call get_command_argument(i, arg)
          select case (arg)
          case ('-h', '--help')
-            call usage(output_unit)
+            if (writer) call usage(output_unit)
+            call cases_stop()
             stop
          case ('-V', '--version')
-            write (output_unit, '(a)') program_name//' '//program_version
+            if (writer) write (output_unit, '(a)') program_name//' '//program_version
+            call cases_stop()
             stop
          case ('--progress')
             progress_mode = progress_on
@@ -370,9 +393,12 @@ contains
 
       integer :: ios
 
-      write (error_unit, '(a)', iostat=ios) program_name//': error: '//message
-      call usage(error_unit)
+      if (writer) then
+         write (error_unit, '(a)', iostat=ios) program_name//': error: '//message
+         call usage(error_unit)
+      end if
       flush (error_unit, iostat=ios)
+      call cases_stop()
       call posix_exit_now(2)
    end subroutine bad_usage
 
