@@ -99,8 +99,10 @@ contains
                dofs = 3.0_dp*lines*(real(b%n_storeys, dp)*real(b%column_elements, dp) + 1.0_dp)
                frame_bytes = frame_bytes + 8.0_dp*8.0_dp*dofs*(3.0_dp*lines + 3.0_dp)
                ! Per analysis: the deformed shapes at the storey-shear peaks (within
-               ! deformed_limit) and the column segments' member rows (peak, time, work; 4 each).
-               frame_bytes = frame_bytes + 2.0_dp*8.0_dp*(min(dofs*real(b%n_storeys, dp), real(deformed_limit, dp)) + &
+               ! deformed_limit: the pool of n_storeys + 1 vectors and, at the end, the shapes in
+               ! storey order) and the column segments' member rows (peak, time, work; 4 each).
+               frame_bytes = frame_bytes + 2.0_dp*8.0_dp*(min(dofs*real(2*b%n_storeys + 1, dp), &
+                                                              2.0_dp*real(deformed_limit, dp)) + &
                              12.0_dp*lines*real(b%n_storeys, dp)*real(b%column_elements, dp))
                if (deck%analysis%node_histories) est%node_columns = est%node_columns + dofs
             end associate

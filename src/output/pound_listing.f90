@@ -562,7 +562,7 @@ contains
                line = line//'  '//heads(q)//repeat(' ', 19)
                head = trim(head)//'           u         c   lambda'
             else
-               line = line//'  '//heads(q)
+               line = line//'  '//adjustr(heads(q))
             end if
          end do
          if (both) then
@@ -570,7 +570,7 @@ contains
             call note_io()
             line = trim(head)
          else
-            line = head(1:36)//line(37:)
+            line = head(1:36)//trim(line(37:))
          end if
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
