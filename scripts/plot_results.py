@@ -9,7 +9,10 @@ Table 1), ground (ground motion), sweep (largest |lambda| against the joint gap,
 holds a gap study), suite (a file with /suite, from a deck with several &ground: the plots of
 scripts/plot_suite.py, <stem>_suite_spectra, _suite_lambda, _suite_separation, _suite_sweep),
 frame (the buildings' geometry side by side, frames with their nodes and elements, with the
-contact points: only when the file holds a frame model). Files are named <stem>_<plot>.png / .pdf.
+contact points: only when the file holds a frame model), deformed (each frame's deformed shape,
+scaled, at the peak storey shear of its most affected storey (largest |lambda| of the storey
+shear), uncoupled and coupled side by side: only for frames with /<analysis>/<b>/deformed and a
+coupled analysis). Files are named <stem>_<plot>.png / .pdf.
 
 Any problem with the file (missing, not HDF5, not a pound results file) gives one line
 "plot: error: ..." on stderr and exit status 1; usage errors exit 2. POUND_DEBUG=1 shows
@@ -21,7 +24,8 @@ import re
 import sys
 import tempfile
 
-PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite", "frame")
+PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite", "frame",
+         "deformed")
 CONTACT_PLOTS = ("displacement", "force", "loops")
 QUANTITY_LABEL = {
     "storey_shear": ("storey shear Q", "storey"),
@@ -169,6 +173,9 @@ def read_results(path):
             if f"/model/{b}/nodes" in f and f"/model/{b}/elements" in f:
                 r.model[b]["nodes"] = arr(f"/model/{b}/nodes", 2)
                 r.model[b]["elements"] = arr(f"/model/{b}/elements", 2)
+                if f"/model/{b}/node_dofs" in f and f"/model/{b}/node_coefficients" in f:
+                    r.model[b]["node_dofs"] = arr(f"/model/{b}/node_dofs", 2).astype(int)
+                    r.model[b]["node_coefficients"] = arr(f"/model/{b}/node_coefficients", 2)
         r.ground["time"] = arr("/ground/time", 1)
         r.ground["acceleration"] = arr("/ground/acceleration", 1)
         if r.ground["time"].shape != r.ground["acceleration"].shape:
@@ -193,6 +200,12 @@ def read_results(path):
                     pname = f"/{an}/{b}/peak/{q}"
                     if pname in f:
                         d["peak"][q] = arr(pname, 1)
+                if f"/{an}/{b}/deformed" in f and f"/{an}/{b}/deformed_time" in f:
+                    d["deformed"] = arr(f"/{an}/{b}/deformed", 2)
+                    d["deformed_time"] = arr(f"/{an}/{b}/deformed_time", 1)
+                    if d["deformed"].shape[0] != n or len(d["deformed_time"]) != n:
+                        raise PlotError(f"{path}: /{an}/{b}/deformed has shape {d['deformed'].shape}, "
+                                        f"expected ({n}, n_dofs)")
                 data[b] = d
             r.analyses[an] = data
         if "/coupled/contact/force" in f:
@@ -717,6 +730,115 @@ def plot_frame(plt, r, args, written, notes):
 PLOTTERS["frame"] = plot_frame
 
 
+def node_displacements(m, q):
+    """Physical node displacements (3, n_nodes): horizontal, vertical, rotation, from the DOF
+    vector q through the constraints' map (/model/<b>/node_dofs, node_coefficients)."""
+    import numpy as np
+
+    nd, nc = m["node_dofs"], m["node_coefficients"]
+    qq = np.concatenate([[0.0], q])              # DOF 0: no term
+    terms = nc * qq[nd]                          # (6, n_nodes)
+    return terms[0::2] + terms[1::2]
+
+
+def deformed_element(x, z, d, n1, n2, scale, points=11):
+    """Points of an element from node n1 to n2 deformed by the node displacements d (3, n_nodes)
+    times scale: axial displacement linear, transverse cubic Hermite with the end rotations
+    (Euler-Bernoulli, no load between nodes: exact)."""
+    import numpy as np
+
+    dx, dz = x[n2] - x[n1], z[n2] - z[n1]
+    length = np.hypot(dx, dz)
+    c, s = dx / length, dz / length
+    xi = np.linspace(0.0, 1.0, points)
+    a1, a2 = c * d[0, n1] + s * d[1, n1], c * d[0, n2] + s * d[1, n2]
+    v1, v2 = -s * d[0, n1] + c * d[1, n1], -s * d[0, n2] + c * d[1, n2]
+    t1, t2 = d[2, n1], d[2, n2]
+    a = (1 - xi) * a1 + xi * a2
+    v = ((1 - 3 * xi**2 + 2 * xi**3) * v1 + length * (xi - 2 * xi**2 + xi**3) * t1
+         + (3 * xi**2 - 2 * xi**3) * v2 + length * (-xi**2 + xi**3) * t2)
+    px = x[n1] + xi * dx + scale * (c * a - s * v)
+    pz = z[n1] + xi * dz + scale * (s * a + c * v)
+    return px, pz
+
+
+def most_affected_storey(r, b):
+    """The storey of b with the largest finite |lambda| of the storey shear (1-based), or None."""
+    import numpy as np
+
+    lam = r.influence.get(b, {}).get("storey_shear")
+    if lam is None or len(lam) == 0:
+        return None
+    a = np.where(np.isfinite(lam) & (np.abs(lam) < 1e300), np.abs(lam), -1.0)
+    return int(np.argmax(a)) + 1
+
+
+def deformed_buildings(r):
+    """Frames whose deformed shapes are in both analyses."""
+    return [b for b in r.buildings if "node_dofs" in r.model[b] and "coupled" in r.analyses
+            and all("deformed" in r.analyses[an].get(b, {}) for an in ("uncoupled", "coupled"))]
+
+
+def plot_deformed(plt, r, args, written, notes):
+    """Each frame's deformed shape (scaled) at the instant of the peak storey shear of its most
+    affected storey, uncoupled and coupled side by side; the undeformed frame in grey, contact
+    points marked on the coupled side."""
+    import numpy as np
+
+    frames = [b for b in deformed_buildings(r) if most_affected_storey(r, b) is not None]
+    if not frames:
+        notes.append("deformed: skipped (no frame with deformed shapes and influence coefficients)")
+        return
+    fig, axes = plt.subplots(len(frames), 2, figsize=(8.0, 4.5 * len(frames)), squeeze=False)
+    for row, b in enumerate(frames):
+        m = r.model[b]
+        x, z = m["nodes"][0], m["nodes"][1]
+        j = most_affected_storey(r, b)
+        shapes = {an: node_displacements(m, r.analyses[an][b]["deformed"][j - 1]) for an in ("uncoupled", "coupled")}
+        umax = max(float(np.max(np.abs(d[:2]))) for d in shapes.values())
+        size = max(float(np.ptp(z)), float(np.ptp(x)), 1.0)
+        scale = 0.15 * size / umax if umax > 0 else 1.0
+        lam = r.influence[b]["storey_shear"][j - 1]
+        for col, an in enumerate(("uncoupled", "coupled")):
+            ax = axes[row][col]
+            d = shapes[an]
+            t = r.analyses[an][b]["deformed_time"][j - 1]
+            q = r.analyses[an][b]["peak"].get("storey_shear")
+            for e in m["elements"].T.astype(int):
+                n1, n2, kind = e[0] - 1, e[1] - 1, e[2]
+                ax.plot([x[n1], x[n2]], [z[n1], z[n2]], color="0.75", lw=1.0, ls="-" if kind == 1 else "--")
+                px, pz = deformed_element(x, z, d, n1, n2, scale)
+                ax.plot(px, pz, color="black" if kind == 1 else COLOURS[1], lw=2.0 if kind == 1 else 1.5,
+                        ls="-" if kind == 1 else "--")
+            ax.plot(x + scale * d[0], z + scale * d[1], "o", color="black", ms=3)
+            if an == "coupled" and r.contact is not None:
+                for pe in r.contact.get("elevations", []):
+                    if pe is None:
+                        continue
+                    bl, zl, br, zr = pe
+                    for bb, ze, xe in ((bl, zl, np.max(x)), (br, zr, np.min(x))):
+                        if bb != b:
+                            continue
+                        k = int(np.argmin(np.hypot(x - xe, z - ze)))
+                        ax.plot(x[k] + scale * d[0, k], z[k] + scale * d[1, k], "x", color=COLOURS[2],
+                                ms=8, mew=2)
+            qtxt = f"|Q| = {q[j - 1]:.1f} kN, " if q is not None else ""
+            lamtxt = f" (lambda {lam:+.1f} %)" if an == "coupled" else ""
+            ax.set_title(f"{b} {an}: storey {j}, t = {t:.3f} s\n{qtxt}displacements x {scale:.3g}{lamtxt}",
+                         fontsize=9)
+            ax.set_aspect("equal")
+            ax.set_xlabel("x [m]")
+            if col == 0:
+                ax.set_ylabel("elevation z [m]")
+    fig.tight_layout(rect=(0, 0, 1, 0.93))
+    suptitle(fig, r, "deformed shape at the peak storey shear of the most affected storey")
+    save(fig, r, "deformed", args, written)
+    plt.close(fig)
+
+
+PLOTTERS["deformed"] = plot_deformed
+
+
 def parse_args(argv):
     ap = argparse.ArgumentParser(prog="plot", description="Plots of a pound results file (PNG and PDF).")
     ap.add_argument("h5file", help="results file written by pound (DECK.h5)")
@@ -766,6 +888,10 @@ def run(argv):
         if name == "frame" and not any("nodes" in r.model[b] for b in r.buildings):
             if "frame" in args.explicit:
                 notes.append("frame: skipped (no frame model in this file)")
+            continue
+        if name == "deformed" and not deformed_buildings(r):
+            if "deformed" in args.explicit:
+                notes.append("deformed: skipped (no frame with deformed shapes in both analyses)")
             continue
         if name == "sweep" and r.sweep is None:
             if "sweep" in args.explicit:

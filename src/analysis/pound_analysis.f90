@@ -32,7 +32,7 @@ module pound_analysis
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
                             newmark_energies, newmark_add_balance, newmark_n, en_input, en_kinetic, en_strain, en_damping
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
-                             response_flush, history_block
+                             response_flush, history_block, deformed_limit
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record, contact_swap_step, &
                             contact_may_act
@@ -390,9 +390,13 @@ contains
          capacity = res%n_out
          if (present(sink)) capacity = history_block(size(models(ib)%floor_dof), res%n_out, sink%block)
          ! Node histories are held whole: the program streams only without them.
+         ! Deformed shapes at the storey-shear peaks for models with a DOF layout (frames),
+         ! within `deformed_limit`.
          call response_init(res%building(ib), models(ib), cfg%store, capacity, error, &
                             nodes=cfg%node_histories .and. allocated(models(ib)%dof_node) .and. &
-                                  .not. present(sink))
+                                  .not. present(sink), &
+                            snapshots=allocated(models(ib)%dof_node) .and. &
+                                      real(models(ib)%n, dp)*real(models(ib)%shear%n, dp) <= deformed_limit)
          if (allocated(error)) return
          res%building(ib)%streamed = present(sink)
          view(ib)%u => newmark_u(st(ib))

@@ -22,6 +22,9 @@ module pound_influence
       !> in the order of `history_names` (pound_response's q_u ... q_shear); +huge where
       !> only the coupled peak is non-zero, 0 where both are.
       real(dp), allocatable :: lambda(:, :)
+      !> lambda (%) of each member row (`structure_model%member`, e.g. a frame's column end
+      !> forces), the same rule; unallocated without member rows.
+      real(dp), allocatable :: member_lambda(:)
    end type building_influence
 
 contains
@@ -56,6 +59,9 @@ contains
 
       do ib = 1, size(infl)
          infl(ib)%lambda = influence_coefficient(cpl%building(ib)%peak, unc%building(ib)%peak)
+         if (allocated(cpl%building(ib)%member_peak) .and. allocated(unc%building(ib)%member_peak)) &
+            infl(ib)%member_lambda = influence_coefficient(cpl%building(ib)%member_peak, &
+                                                           unc%building(ib)%member_peak)
       end do
    end function influence_of
 

@@ -17,7 +17,9 @@
 !> - models and contact systems: a few hundred bytes per floor and per joint (banded
 !>   matrices), plus a fixed 64 MiB for the program, its libraries and HDF5; a frame
 !>   (`model = 'frame'`) counts its DOFs, 3 per node (3 n_lines (n_storeys column_elements + 1)),
-!>   each with 8 band matrices of half-bandwidth 3 n_lines + 2 (K+G, M, C, factors, work).
+!>   each with 8 band matrices of half-bandwidth 3 n_lines + 2 (K+G, M, C, factors, work),
+!>   and per analysis its deformed shapes (DOFs x n_storeys, at most `deformed_limit`) and
+!>   column-segment peaks.
 !>
 !> The memory available is the smallest of: MemAvailable of /proc/meminfo, the memory
 !> limit less the current use of the process's cgroup and of each of its ancestors
@@ -27,6 +29,7 @@
 module pound_memory
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
+   use pound_response, only: deformed_limit
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: deck_type, n_history_quantities, history_names, is_frame
@@ -95,6 +98,12 @@ contains
                lines = real(size(b%bay_width) + 1, dp)
                dofs = 3.0_dp*lines*(real(b%n_storeys, dp)*real(b%column_elements, dp) + 1.0_dp)
                frame_bytes = frame_bytes + 8.0_dp*8.0_dp*dofs*(3.0_dp*lines + 3.0_dp)
+               ! Per analysis: the deformed shapes at the storey-shear peaks (within
+               ! deformed_limit: the pool of n_storeys + 1 vectors and, at the end, the shapes in
+               ! storey order) and the column segments' member rows (peak, time, work; 4 each).
+               frame_bytes = frame_bytes + 2.0_dp*8.0_dp*(min(dofs*real(2*b%n_storeys + 1, dp), &
+                                                              2.0_dp*real(deformed_limit, dp)) + &
+                             12.0_dp*lines*real(b%n_storeys, dp)*real(b%column_elements, dp))
                if (deck%analysis%node_histories) est%node_columns = est%node_columns + dofs
             end associate
          end do

@@ -11,6 +11,16 @@
 !> as (n, n_out) so that h5py reads them as (n_out, n). On request (`nodes`) the record also holds
 !> every DOF's displacement at the output steps, `u_nodes` (n_dofs, n_out): a copy of the
 !> integrator's u, so its floor DOFs' rows equal the floor history `u` bit for bit.
+!>
+!> **Member rows.** A model with member recovery rows (`structure_model%member`, a frame's
+!> column end forces) gets their absolute maxima and times at every step (`member_peak`,
+!> `member_time`), whatever the rows mean. **Deformed shapes** (`snapshots`): the DOF vector
+!> at the step of each storey's peak storey shear (`deformed` (n_dofs, n_storeys), after
+!> `response_finish`); asked for only where n_dofs x n_storeys <= `deformed_limit`. During the
+!> run a pool of n_storeys + 1 DOF vectors, preallocated (no allocation in the loop), holds
+!> them: a step on which any storey's shear exceeds its peak copies u once into a free slot
+!> and points those storeys at it; a slot no storey points at is free again. So a step costs
+!> at most one copy of u, however many storeys peak together.
 module pound_response
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
@@ -22,7 +32,7 @@ module pound_response
 
    public :: response_record, response_init, response_sample, response_finish
    public :: history_sink, response_flush, default_block_bytes, history_block, discard_sink
-   public :: q_u, q_v, q_a_abs, q_drift, q_shear
+   public :: q_u, q_v, q_a_abs, q_drift, q_shear, deformed_limit
 
    !> Quantity indices.
    integer, parameter :: q_u = 1, q_v = 2, q_a_abs = 3, q_drift = 4, q_shear = 5
@@ -30,6 +40,10 @@ module pound_response
    !> Bytes of one block of a streamed history (per building and quantity) when the sink
    !> does not set `block`.
    integer, parameter :: default_block_bytes = 4*2**20
+
+   !> Largest n_dofs x n_storeys for which the deformed shapes at the storey-shear peaks are
+   !> kept (32 MiB per building and analysis).
+   integer, parameter :: deformed_limit = 4*2**20
 
    !> Where streamed histories go (the program's HDF5 file; a test's arrays): analyses hand
    !> it full blocks of output samples, so that they do not depend on HDF5.
@@ -95,6 +109,20 @@ module pound_response
       logical :: stick = .false.
       !> General path: the response points' u, v, a_abs and the storey rows of the step.
       real(dp), allocatable :: pu(:), pv(:), pa(:), pd(:), ps(:)
+      !> Member rows (`structure_model%member`): peak absolute value and its time per row, and
+      !> the rows' values of the step (work); unallocated without member rows.
+      real(dp), allocatable :: member_peak(:), member_time(:), pm(:)
+      !> Whether the deformed shapes are kept, and (after `response_finish`) the DOF vector at
+      !> the peak storey shear of each storey (n_dofs, n_storeys); its time is
+      !> `peak_time(:, q_shear)`.
+      logical :: snapshots = .false.
+      real(dp), allocatable :: deformed(:, :)
+      !> During the run: the pool of DOF vectors (n_dofs, n_storeys + 1), the slot of each
+      !> storey's vector (0: none yet), the storeys pointing at each slot, and the free slots
+      !> (a stack of `n_free`).
+      real(dp), allocatable :: pool(:, :)
+      integer, allocatable :: slot_of(:), refs(:), free(:)
+      integer :: n_free = 0
    end type response_record
 
 contains
@@ -103,7 +131,7 @@ contains
    !>
    !> Fails (nothing allocated is kept) when the memory cannot be had, with the size asked
    !> for and the deck variables that set it.
-   pure subroutine response_init(rec, b, store, capacity, error, nodes)
+   pure subroutine response_init(rec, b, store, capacity, error, nodes, snapshots)
       !> The record (reset).
       type(response_record), intent(out) :: rec
       !> The structural model: its response points (floors) and storey rows.
@@ -116,12 +144,16 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Store every DOF's displacement as well (`u_nodes`); default no.
       logical, intent(in), optional :: nodes
-      integer :: stat(7)
+      !> Keep the DOF vector at each storey's peak storey shear (`deformed`); default no.
+      logical, intent(in), optional :: snapshots
+      integer :: stat(8)
       real(dp) :: mib
-      integer :: n, n_node
+      integer :: n, n_node, k
 
       n = size(b%floor_dof)
-      rec%stick = b%stick
+      rec%snapshots = .false.
+      if (present(snapshots)) rec%snapshots = snapshots
+      rec%stick = b%stick .and. b%member%n == 0 .and. .not. rec%snapshots
       if (.not. rec%stick) then
          allocate (rec%pu(n), rec%pv(n), rec%pa(n), rec%pd(n), rec%ps(n), stat=stat(1))
          if (stat(1) /= 0) then
@@ -146,6 +178,14 @@ contains
       if (store(q_drift)) allocate (rec%drift(n, capacity), source=0.0_dp, stat=stat(4))
       if (store(q_shear)) allocate (rec%shear(n, capacity), source=0.0_dp, stat=stat(5))
       if (rec%nodes) allocate (rec%u_nodes(n_node, capacity), source=0.0_dp, stat=stat(7))
+      if (b%member%n > 0) allocate (rec%member_peak(b%member%n), rec%member_time(b%member%n), &
+                                    rec%pm(b%member%n), source=0.0_dp, stat=stat(8))
+      if (rec%snapshots .and. stat(8) == 0) then
+         allocate (rec%pool(b%n, n + 1), source=0.0_dp, stat=stat(8))
+         if (stat(8) == 0) allocate (rec%slot_of(n), rec%refs(n + 1), rec%free(n + 1), source=0, stat=stat(8))
+         rec%n_free = n + 1
+         if (stat(8) == 0) rec%free = [(n + 2 - k, k=1, n + 1)]
+      end if
       allocate (rec%peak(n, n_history_quantities), rec%peak_time(n, n_history_quantities), rec%work(n), &
                 stat=stat(6))
       if (any(stat /= 0)) then
@@ -198,6 +238,12 @@ contains
       rec%pa = a(b%floor_dof) + ag
       call recover_all(b%drift, u, rec%pd)
       call recover_all(b%shear, u, rec%ps)
+      if (rec%snapshots) call take_snapshots(size(u), rec%n, u, rec%ps, rec%peak(:, q_shear), rec%pool, &
+                                             rec%slot_of, rec%refs, rec%free, rec%n_free)
+      if (b%member%n > 0) then
+         call recover_all(b%member, u, rec%pm)
+         call track_one(b%member%n, rec%pm, t, rec%member_peak, rec%member_time)
+      end if
       call track_general(rec%n, rec%pu, rec%pv, rec%pa, rec%pd, rec%ps, t, rec%peak, rec%peak_time)
       if (.not. output) return
       rec%n_out = rec%n_out + 1
@@ -270,6 +316,38 @@ contains
       call track_one(n, pd, t, peak(:, q_drift), peak_time(:, q_drift))
       call track_one(n, ps, t, peak(:, q_shear), peak_time(:, q_shear))
    end subroutine track_general
+
+   !> Point every storey j whose shear exceeds its peak so far (called before the peaks are
+   !> updated, with the same test) at a copy of u: one free slot of the pool, taken once per
+   !> step; the slots left without storeys are freed. At most n storeys point at n + 1 slots,
+   !> so a slot is free at the start of every step.
+   pure subroutine take_snapshots(nu, n, u, ps, peak, pool, slot_of, refs, free, n_free)
+      integer, intent(in) :: nu, n
+      real(dp), intent(in) :: u(nu), ps(n), peak(n)
+      real(dp), intent(inout) :: pool(nu, n + 1)
+      integer, intent(inout) :: slot_of(n), refs(n + 1), free(n + 1), n_free
+      integer :: j, new, old
+
+      new = 0
+      do j = 1, n
+         if (.not. abs(ps(j)) > peak(j)) cycle
+         if (new == 0) then
+            new = free(n_free)
+            n_free = n_free - 1
+            pool(:, new) = u
+         end if
+         old = slot_of(j)
+         if (old > 0) then
+            refs(old) = refs(old) - 1
+            if (refs(old) == 0) then
+               n_free = n_free + 1
+               free(n_free) = old
+            end if
+         end if
+         slot_of(j) = new
+         refs(new) = refs(new) + 1
+      end do
+   end subroutine take_snapshots
 
    !> Running absolute maximum of one quantity.
    pure subroutine track_one(n, x, t, peak, peak_time)
@@ -352,7 +430,8 @@ contains
    end subroutine response_flush
 
    !> Derive the storey-shear peaks: each shear row is its drift row times the row's scale
-   !> (a shear building: Q_j = k_j drift_j), so they occur with the drift peaks.
+   !> (a shear building: Q_j = k_j drift_j), so they occur with the drift peaks; put the
+   !> deformed shapes (`snapshots`) in storey order.
    pure subroutine response_finish(rec, b)
       !> The record.
       type(response_record), intent(inout) :: rec
@@ -361,6 +440,14 @@ contains
 
       integer :: j
 
+      if (allocated(rec%pool)) then
+         ! The deformed shapes in storey order (zero for a storey whose shear never moved).
+         allocate (rec%deformed(size(rec%pool, 1), rec%n), source=0.0_dp)
+         do j = 1, rec%n
+            if (rec%slot_of(j) > 0) rec%deformed(:, j) = rec%pool(:, rec%slot_of(j))
+         end do
+         deallocate (rec%pool, rec%slot_of, rec%refs, rec%free)
+      end if
       if (.not. rec%stick) return
       do j = 1, b%shear%n
          rec%peak(j, q_shear) = b%shear%scale(j)*rec%peak(j, q_drift)

@@ -28,7 +28,7 @@ program pound
    use pound_suite, only: suite_result, run_suite
    use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
-                            write_contact_summary, write_influence_tables, write_sweep_table, &
+                            write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
                             open_listing, close_listing
    use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
    use pound_h5, only: h5_file
@@ -237,10 +237,12 @@ contains
       call write_listing_header(u, deck, ground_text)
       call write_model_summary(u, res%models, res%buildings)
       call write_peak_tables(u, 'Uncoupled', res%models, res%unc)
+      if (.not. res%has_coupled) call write_column_tables(u, res%models, res%buildings, res%unc)
       if (res%has_coupled) then
          call write_peak_tables(u, 'Coupled', res%models, res%cpl)
          call write_contact_summary(u, res%cs)
          call write_influence_tables(u, res%models, res%influence)
+         call write_column_tables(u, res%models, res%buildings, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
       end if
       if (size(deck%motions) > 1) then

@@ -27,6 +27,9 @@
 !>   line. Storey shear: sum of the storey's column shears at their bottom section (the
 !>   first-order end force f(2) of each column's lowest element, pound_frame_element),
 !>   a linear row over the DOFs. Strain energy from the band (no `strain_weight`).
+!> - Member rows (`structure_model%member`, group 'columns'): per column segment (element,
+!>   `column_elements`; a split column has one per segment) its shear, bottom and top end
+!>   moments and axial force (first-order end forces, `column_rows`).
 module pound_frame_building
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
@@ -45,7 +48,7 @@ module pound_frame_building
    implicit none
    private
 
-   public :: frame_data, build_frame_building, frame_spec_of
+   public :: frame_data, build_frame_building, frame_spec_of, column_rows, column_elements, shear_rows
 
    real(dp), parameter :: pi = acos(-1.0_dp)
 
@@ -66,6 +69,8 @@ module pound_frame_building
       !> Per computed mode: participation factor Gamma_n = phi_n^T M r (mass-normalized
       !> phi_n, sign as computed) and effective mass fraction Gamma_n^2 / (r^T M r).
       real(dp), allocatable :: participation(:), effective_mass(:)
+      !> The column segments of the member rows (`column_rows`): element of each segment.
+      integer, allocatable :: column_element(:)
    end type frame_data
 
 contains
@@ -199,6 +204,10 @@ contains
          m%point_z_left = pack(f%node_z, f%node_line == 1 .and. f%node_floor == 0)
          call chain_rows(m%floor_dof, [(1.0_dp, j=1, ns)], m%drift, m%shear)
          call shear_rows(f, m%n, m%shear)
+         call column_rows(f, m%n, m%member)
+         m%member_group = 'columns'
+         m%member_names = [character(len=16) :: 'shear', 'moment_bottom', 'moment_top', 'axial']
+         fd%column_element = column_elements(f)
 
          m%damping_ratio = deck_entry%damping_ratio
          m%damping_modes = deck_entry%damping_modes
@@ -231,28 +240,93 @@ contains
       integer, intent(in) :: n
       !> The rows (replaced).
       type(recovery_rows), intent(inout) :: shear
-      real(dp), allocatable :: work(:), coef(:)
-      integer, allocatable :: touched(:), dof(:), start(:)
-      logical, allocatable :: seen(:)
-      real(dp) :: row(6), kl(6, 6), t(6, 6)
-      integer :: j, e, k, c, tt, nt, n1, n2, node, q, ne
+      integer, allocatable :: start(:), elems(:)
+      integer :: j, e
 
-      allocate (work(n), seen(n), touched(n), start(f%n_storeys + 1))
-      allocate (dof(0), coef(0))
-      work = 0.0_dp
-      seen = .false.
+      allocate (start(f%n_storeys + 1), elems(0))
       start(1) = 1
       do j = 1, f%n_storeys
-         nt = 0
          do e = 1, f%n_elements
             if (f%element_kind(e) /= element_column .or. f%element_group(e) /= j) cycle
+            if (abs(f%node_z(f%element_nodes(1, e)) - f%floor_z(j - 1)) > 1.0e-6_dp) cycle
+            elems = [elems, e]
+         end do
+         start(j + 1) = size(elems) + 1
+      end do
+      call end_force_rows(f, n, start, elems, [(2, j=1, size(elems))], shear)
+   end subroutine shear_rows
+
+   !> The column elements (segments between nodes) in element order: storey by storey from
+   !> the base, a storey's segments level by level, left to right.
+   pure function column_elements(f) result(elems)
+      !> The frame.
+      type(frame_model), intent(in) :: f
+      integer, allocatable :: elems(:)
+      integer :: e
+
+      elems = pack([(e, e=1, f%n_elements)], f%element_kind == element_column)
+   end function column_elements
+
+   !> Member rows of every column segment (`column_elements`), four per segment: the shear
+   !> V = f(2) (constant along the segment, first order), the end moments M1 = f(3) at the
+   !> bottom and M2 = f(6) at the top (acting on the element, counterclockwise) and the axial
+   !> force N = f(4) (tension positive) of the end forces f = k_local T d (pound_frame_element).
+   !> The DOFs are the dynamic response about the gravity state, so N is N - N_gravity.
+   pure subroutine column_rows(f, n, rows)
+      !> The frame.
+      type(frame_model), intent(in) :: f
+      !> Number of reduced DOFs.
+      integer, intent(in) :: n
+      !> The rows (4 per segment).
+      type(recovery_rows), intent(out) :: rows
+      integer, allocatable :: elems(:)
+      integer :: s, ns
+
+      elems = column_elements(f)
+      ns = size(elems)
+      call end_force_rows(f, n, [(s, s=1, 4*ns + 1)], [(elems((s + 3)/4), s=1, 4*ns)], &
+                          [([2, 3, 6, 4], s=1, ns)], rows)
+   end subroutine column_rows
+
+   !> Rows of element end forces: row j = sum over its terms t = start(j) .. start(j+1)-1 of
+   !> component comp(t) (1..6, pound_frame_element's [N1 V1 M1 N2 V2 M2]) of element elem(t)'s
+   !> first-order end forces k_local T d, mapped to the reduced DOFs (duplicates merged, the
+   !> terms' contributions summed in the order given), scale 1.
+   pure subroutine end_force_rows(f, n, start, elem, comp, rows)
+      !> The frame.
+      type(frame_model), intent(in) :: f
+      !> Number of reduced DOFs.
+      integer, intent(in) :: n
+      !> First term of each row (rows + 1).
+      integer, intent(in) :: start(:)
+      !> Element and end-force component of each term.
+      integer, intent(in) :: elem(:), comp(:)
+      !> The rows.
+      type(recovery_rows), intent(inout) :: rows
+      real(dp), allocatable :: work(:), coef(:)
+      integer, allocatable :: touched(:), dof(:), rstart(:)
+      logical, allocatable :: seen(:)
+      real(dp) :: row(6), kl(6, 6), t(6, 6)
+      integer :: j, e, k, c, tt, nt, n1, n2, node, q, ne, it, nr, nnz
+
+      nr = size(start) - 1
+      allocate (work(n), seen(n), touched(n), rstart(nr + 1))
+      ! At most 12 entries per term (two nodes, three directions, two map terms).
+      allocate (dof(12*size(elem)), coef(12*size(elem)))
+      work = 0.0_dp
+      seen = .false.
+      rstart(1) = 1
+      nnz = 0
+      do j = 1, nr
+         nt = 0
+         do it = start(j), start(j + 1) - 1
+            e = elem(it)
             n1 = f%element_nodes(1, e)
             n2 = f%element_nodes(2, e)
-            if (abs(f%node_z(n1) - f%floor_z(j - 1)) > 1.0e-6_dp) cycle
             t = beam_transformation(f%node_x(n1), f%node_z(n1), f%node_x(n2), f%node_z(n2))
             kl = beam_local_stiffness(f%element_e(e), f%element_a(e), f%element_i(e), &
                                       hypot(f%node_x(n2) - f%node_x(n1), f%node_z(n2) - f%node_z(n1)))
-            row = matmul(kl(2, :), t)
+            row = matmul(kl(comp(it), :), t)
             do k = 1, 2
                node = f%element_nodes(k, e)
                do c = 1, 3
@@ -273,20 +347,21 @@ contains
          do k = 1, nt
             q = touched(k)
             if (work(q) /= 0.0_dp) then
-               dof = [dof, q]
-               coef = [coef, work(q)]
+               nnz = nnz + 1
+               dof(nnz) = q
+               coef(nnz) = work(q)
                ne = ne + 1
             end if
             work(q) = 0.0_dp
             seen(q) = .false.
          end do
-         start(j + 1) = start(j) + ne
+         rstart(j + 1) = rstart(j) + ne
       end do
-      shear%n = f%n_storeys
-      shear%start = start
-      shear%dof = dof
-      shear%coef = coef
-      shear%scale = [(1.0_dp, j=1, f%n_storeys)]
-   end subroutine shear_rows
+      rows%n = nr
+      rows%start = rstart
+      rows%dof = dof(1:nnz)
+      rows%coef = coef(1:nnz)
+      rows%scale = [(1.0_dp, j=1, nr)]
+   end subroutine end_force_rows
 
 end module pound_frame_building

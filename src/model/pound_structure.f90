@@ -103,6 +103,14 @@ module pound_structure
       !> node list) and the direction (1 horizontal, 2 vertical, 3 rotation) each DOF was
       !> created at (n each); unallocated: the DOFs are the floors' lateral displacements.
       integer, allocatable :: dof_node(:), dof_direction(:)
+      !> Member recovery rows (a frame's column end forces; none: `member%n` = 0, a shear
+      !> building): rows in groups of size(member_names), row (s-1)*size(member_names) + q is
+      !> quantity q of member s. The response samples their absolute maxima at every step (and
+      !> the influence coefficients follow); the writers name them `member_group`/`member_names`.
+      type(recovery_rows) :: member
+      !> Name of the member rows' group (e.g. 'columns') and of the quantities of one member.
+      character(len=:), allocatable :: member_group
+      character(len=16), allocatable :: member_names(:)
    end type structure_model
 
 contains
@@ -353,6 +361,15 @@ contains
           any(m%drift%dof < 1) .or. any(m%drift%dof > m%n) .or. any(m%shear%dof < 1) .or. &
           any(m%shear%dof > m%n)) then
          call fatal_error(error, structure_label(m)//': response points or storey rows out of range')
+         return
+      end if
+      if (m%member%n > 0) then
+         if (.not. allocated(m%member_names) .or. .not. allocated(m%member_group)) then
+            call fatal_error(error, structure_label(m)//': member rows without names')
+         else if (mod(m%member%n, max(1, size(m%member_names))) /= 0 .or. any(m%member%dof < 1) .or. &
+                  any(m%member%dof > m%n)) then
+            call fatal_error(error, structure_label(m)//': member rows out of range')
+         end if
       end if
    end subroutine structure_check
 

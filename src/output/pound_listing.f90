@@ -25,7 +25,7 @@ module pound_listing
    private
 
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
-   public :: write_contact_summary, write_influence_tables, write_sweep_table
+   public :: write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables
    public :: listing_io_error, open_listing, close_listing
 
    !> Modes listed in the model summary (the HDF5 file has every mode the builder computed).
@@ -518,6 +518,100 @@ contains
       end subroutine law_parameters
 
    end subroutine write_contact_summary
+
+   !> Per column segment of every frame (one line each, top storey first): storey, column
+   !> line, bottom and top elevation, and the peaks of the member rows (shear |V|, bottom and
+   !> top end moments |M1|, |M2|, axial force variation |N - N_gravity|), uncoupled and, with
+   !> `cpl`, coupled with the influence coefficient lambda (%).
+   subroutine write_column_tables(u, models, buildings, unc, cpl, infl)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> Their per-kind data (the frames' column segments).
+      type(building_model), intent(in) :: buildings(:)
+      !> Uncoupled result.
+      type(analysis_result), intent(in) :: unc
+      !> Coupled result and the influence coefficients.
+      type(analysis_result), intent(in), optional :: cpl
+      type(building_influence), intent(in), optional :: infl(:)
+      character(len=*), parameter :: heads(4) = ['|V| [kN]  ', '|M1| [kNm]', '|M2| [kNm]', '|dN| [kN] ']
+      character(len=:), allocatable :: line
+      character(len=160) :: head
+      integer :: ib, s, q, e, nq
+      logical :: both, first
+
+      both = present(cpl) .and. present(infl)
+      first = .true.
+      do ib = 1, size(models)
+         if (.not. allocated(buildings(ib)%frame) .or. .not. allocated(unc%building(ib)%member_peak)) cycle
+         if (first) then
+            line = 'Column segments: peak first-order end forces (V shear, M1 bottom and M2 top end moment, '// &
+                   'dN = N - N_gravity axial)'
+            if (both) line = line//', uncoupled (u), coupled (c), lambda [%]'
+            call write_section(u, line)
+         end if
+         first = .false.
+         nq = size(models(ib)%member_names)
+         write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//models(ib)%name
+         call note_io()
+         line = repeat(' ', 36)
+         head = '     seg storey line  z1 [m]  z2 [m]'
+         do q = 1, nq
+            if (both) then
+               line = line//'  '//heads(q)//repeat(' ', 19)
+               head = trim(head)//'           u         c   lambda'
+            else
+               line = line//'  '//adjustr(heads(q))
+            end if
+         end do
+         if (both) then
+            write (u, '(a)', iostat=ios, iomsg=msg) trim(line)
+            call note_io()
+            line = trim(head)
+         else
+            line = head(1:36)//trim(line(37:))
+         end if
+         write (u, '(a)', iostat=ios, iomsg=msg) line
+         call note_io()
+         associate (f => buildings(ib)%frame%frame, ce => buildings(ib)%frame%column_element)
+            do s = size(ce), 1, -1
+               e = ce(s)
+               write (head, '(2x,i6,i7,i5,2f8.3)') s, f%element_group(e), f%node_line(f%element_nodes(1, e)), &
+                  f%node_z(f%element_nodes(1, e)), f%node_z(f%element_nodes(2, e))
+               line = head(1:36)
+               do q = 1, nq
+                  associate (k => (s - 1)*nq + q)
+                     if (both) then
+                        line = line//'  '//fixed_cell(unc%building(ib)%member_peak(k), 10, 3, .true.)// &
+                               fixed_cell(cpl%building(ib)%member_peak(k), 10, 3, .true.)// &
+                               lambda_cell(infl(ib)%member_lambda(k))
+                     else
+                        line = line//'  '//fixed_cell(unc%building(ib)%member_peak(k), 10, 3, .true.)
+                     end if
+                  end associate
+               end do
+               write (u, '(a)', iostat=ios, iomsg=msg) line
+               call note_io()
+            end do
+         end associate
+      end do
+
+   contains
+
+      !> lambda in 9 columns ('inf' for a response created by pounding).
+      pure function lambda_cell(x) result(cell)
+         real(dp), intent(in) :: x
+         character(len=9) :: cell
+
+         if (x >= huge(1.0_dp)) then
+            cell = '      inf'
+         else
+            cell = fixed_cell(x, 9, 1)
+         end if
+      end function lambda_cell
+
+   end subroutine write_column_tables
 
    !> Influence coefficients lambda = (Qc - Qu)/Qu * 100 (%), storey (floor) rows and one
    !> column per building, for storey shear, storey drift, floor displacement and

@@ -18,6 +18,11 @@
 !>                                               vertical and rotation = sum of coefficient x DOF
 !>                                               over two terms each (DOF 0: no term)
 !>     /<analysis>/<b>/peak/<q>, peak_time/<q>   (n) for every quantity q
+!>     /<analysis>/<b>/columns/<c>, <c>_time     (n_segments) frame: peak |column end force| per
+!>                                               segment, c = shear moment_bottom moment_top axial
+!>     /<analysis>/<b>/deformed, deformed_time   (n_storeys, n_dofs), (n_storeys) frame: every DOF
+!>                                               at the peak storey shear of each storey
+!>     /model/<b>/columns                        (n_segments, 3) integer: element, storey, line
 !>     /<analysis>/energy                        (n_out, 6): input, kinetic, strain, damping,
 !>                                               contact, plastic; attributes components, relative_error
 !>     /coupled/contact/force, closing, penetration, plastic   (n_out, n_pairs); attribute pairs
@@ -29,6 +34,7 @@
 !>     /coupled/contact/events/time, step, status, rows, solutions, pairs   (n_events)
 !>                                               steps Lemke could not solve (enumeration fallback)
 !>     /influence/<b>/<q>                        (n) lambda in percent
+!>     /influence/<b>/columns/<c>                (n_segments) frame: lambda of the column peaks
 !>     /sweep/gap, impacts, meets                (n_gaps)
 !>     /sweep/max_abs_lambda/<b>/<q>             (n_gaps) largest |lambda| over the storeys, percent;
 !>                                               attributes target_lambda, safe_gap (-1: none)
@@ -220,10 +226,27 @@ contains
                                 influence(ib)%lambda(:, q), error)
                   if (allocated(error)) return
                end do
+               if (allocated(influence(ib)%member_lambda)) call write_member_influence(models(ib), influence(ib))
+               if (allocated(error)) return
             end do
          end if
          if (present(sweep)) call write_sweep()
       end subroutine write_all
+
+      !> lambda of the member rows by quantity: /influence/<b>/<group>/<name> (n_members).
+      subroutine write_member_influence(b, infl)
+         type(structure_model), intent(in) :: b
+         type(building_influence), intent(in) :: infl
+         real(dp), allocatable :: rv(:)
+         integer :: nq, k
+
+         nq = size(b%member_names)
+         do k = 1, nq
+            rv = infl%member_lambda(k::nq)
+            call h5_write(h5, '/influence/'//b%name//'/'//b%member_group//'/'//trim(b%member_names(k)), rv, error)
+            if (allocated(error)) return
+         end do
+      end subroutine write_member_influence
 
       subroutine write_sweep()
          ! A contiguous copy of each (quantity, building) row (no array temporary at the call).
@@ -260,7 +283,7 @@ contains
          if (allocated(error)) return
          if (allocated(s%frame)) then
             call write_frame(g, s)
-            if (.not. allocated(error) .and. deck%analysis%node_histories) call write_dof_layout(g, b, s)
+            if (.not. allocated(error)) call write_dof_layout(g, b, s)
          else
             call h5_write(h5, g//'storey_stiffness', s%storey_stiffness, error)
             if (allocated(error)) return
@@ -302,6 +325,15 @@ contains
             call h5_write_attr(h5, g//'sections', 'columns', 'E (kN/m2) A (m2) I (m4)', error)
             if (allocated(error)) return
             if (s%p_delta) call h5_write(h5, g//'gravity_axial_force', s%frame%gravity%axial, error)
+            if (allocated(error)) return
+            associate (ce => s%frame%column_element)
+               call h5_write(h5, g//'columns', reshape([ce, f%element_group(ce), f%node_line(f%element_nodes(1, ce))], &
+                             [size(ce), 3]), error)
+            end associate
+            if (allocated(error)) return
+            call h5_write_attr(h5, g//'columns', 'columns', 'element storey line of each column '// &
+                               'segment of /<analysis>/<b>/columns and /influence/<b>/columns '// &
+                               '(element: row of elements, 1-based)', error)
          end associate
       end subroutine write_frame
 
@@ -502,10 +534,41 @@ contains
                call h5_write(h5, gb//'peak_time/'//trim(history_names(q)), r%peak_time(:, q), error)
                if (allocated(error)) return
             end do
+            if (allocated(r%member_peak)) call write_members(models(i), r)
+            if (allocated(error)) return
+            if (r%snapshots) then
+               call h5_write(h5, gb//'deformed', r%deformed, error)
+               if (allocated(error)) return
+               call h5_write_attr(h5, gb//'deformed', 'description', 'row j: every DOF (as u_nodes, layout '// &
+                                  'in /model/'//models(i)%name//'/dofs) at the step of the peak storey shear '// &
+                                  'of storey j (time: deformed_time)', error)
+               if (allocated(error)) return
+               call h5_write(h5, gb//'deformed_time', r%peak_time(:, q_shear), error)
+               if (allocated(error)) return
+            end if
          end associate
       end do
 
    contains
+
+      !> Peaks of the member rows by quantity: <group>/<name> and <group>/<name>_time (n_members).
+      subroutine write_members(b, r)
+         type(structure_model), intent(in) :: b
+         type(response_record), intent(in) :: r
+         ! Contiguous copies of the strided rows (no array temporaries at the calls).
+         real(dp), allocatable :: rv(:)
+         integer :: nq, k
+
+         nq = size(b%member_names)
+         do k = 1, nq
+            rv = r%member_peak(k::nq)
+            call h5_write(h5, gb//b%member_group//'/'//trim(b%member_names(k)), rv, error)
+            if (allocated(error)) return
+            rv = r%member_time(k::nq)
+            call h5_write(h5, gb//b%member_group//'/'//trim(b%member_names(k))//'_time', rv, error)
+            if (allocated(error)) return
+         end do
+      end subroutine write_members
 
       !> The histories held in memory (the whole run).
       subroutine write_histories(r)
