@@ -13,7 +13,7 @@
 !> energy u . Kt u / 2 cost O(n). Every `refresh`-th step takes the two exact band products
 !> instead (the formulation before, same numbers): the recursions carry the solve's
 !> round-off (the one for Kt v with eigenvalue -1, a random walk), and the refresh bounds
-!> it (README, "Frame speed").
+!> it (README, "The banded step without band products").
 submodule(pound_newmark) pound_newmark_band
    implicit none
 
