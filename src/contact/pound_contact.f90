@@ -451,7 +451,7 @@ contains
          do e = 1, 2
             b = cs%pair(k)%building(e)
             if (b == 0) cycle
-            call newmark_add_response(states(b), -(end_sign(e)*dr), cs%y(e, k)%x)
+            call newmark_add_response(states(b), -(end_sign(e)*dr), cs%pair(k)%dof(e), cs%y(e, k)%x)
          end do
       end do
    end subroutine contact_step

@@ -8,8 +8,10 @@
 !> **Two paths, one interface.** Half-bandwidth 1 with every DOF moved by the ground (the
 !> shear building) uses fused tridiagonal kernels: dpttrf's L D L^T factors, the
 !> right-hand side formed inside the forward sweep, the Newmark update, C v and the energy
-!> sums in one pass. Any other model uses the banded Cholesky factor (dpbtrf/dpbtrs) and a
-!> band product for C v. `newmark_init(..., general=.true.)` forces the general path (tests).
+!> sums in one pass. Any other model uses the banded Cholesky factor (dpbtrf/dpbtrs) and
+!> obtains (K+G) u and (K+G) v (for C v and the strain energy) without a band product from
+!> the step's own equation (see pound_newmark_band), with an exact band product every
+!> `refresh` steps. `newmark_init(..., general=.true.)` forces the general path (tests).
 !>
 !> **State is private.** A step is `newmark_predict` (the increment du for the ground motion
 !> alone), then any number of `newmark_add_response` (contact adds Khat^{-1} times its load
@@ -38,6 +40,8 @@ module pound_newmark
 
    !> Indices of `newmark_energies`.
    integer, parameter :: en_input = 1, en_kinetic = 2, en_strain = 3, en_damping = 4
+   !> Default steps between exact band products of the general path (see pound_newmark_band).
+   integer, parameter, public :: band_refresh_steps = 100
 
    !> Integrator state of one structural model (components private: see the module doc).
    type :: newmark_state
@@ -52,6 +56,16 @@ module pound_newmark
       real(dp), allocatable :: d(:), e(:), dinv(:)
       !> General path: Cholesky factor of Khat in upper band storage (kd+1, n); work vector (n).
       real(dp), allocatable :: chol(:, :), work(:)
+      !> General path: the load increments of `newmark_add_response` in the step in progress
+      !> (zero elsewhere), and (K+G) u, (K+G) v at the current time (n each).
+      real(dp), allocatable :: fc(:), ktu(:), ktv(:)
+      !> General path: ground acceleration increment of the step in progress (m/s^2).
+      real(dp) :: dag = 0.0_dp
+      !> General path: whether `fc` holds a load increment.
+      logical :: loaded = .false.
+      !> General path: steps between exact band products for (K+G) u and (K+G) v (1: every
+      !> step, the band-product formulation), and steps since the last one.
+      integer :: refresh = 1, since_refresh = 0
       !> Relative displacement, velocity and acceleration at the current time.
       real(dp), allocatable :: u(:), v(:), a(:)
       !> Displacement increment of the step in progress.
@@ -116,7 +130,7 @@ contains
 
    !> Factor Khat and start at rest relative to the ground, in equilibrium with the
    !> ground acceleration at t = 0: u = v = 0, M a = -M r a_g(0), so a = -r a_g(0).
-   subroutine newmark_init(st, b, dt, ag0, error, general)
+   subroutine newmark_init(st, b, dt, ag0, error, general, refresh)
       !> Integrator state.
       type(newmark_state), intent(out) :: st
       !> The structural model.
@@ -129,6 +143,9 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Take the general banded path even for a tridiagonal model (default: .false.).
       logical, intent(in), optional :: general
+      !> General path: steps between exact band products for (K+G) u and (K+G) v
+      !> (default `band_refresh_steps`; 1: a band product every step; >= 1).
+      integer, intent(in), optional :: refresh
       real(dp) :: fk, fm
       integer :: n, info, i, stat, kd
       character(len=:), allocatable :: sources
@@ -159,12 +176,12 @@ contains
          if (st%tridiagonal) then
             allocate (st%d(n), st%e(max(n - 1, 1)), stat=stat)
          else
-            allocate (st%chol(kd + 1, n), st%work(n), stat=stat)
+            allocate (st%chol(kd + 1, n), st%work(n), st%fc(n), st%ktu(n), st%ktv(n), stat=stat)
          end if
       end if
       if (stat /= 0) then
          call fatal_error(error, structure_label(b)//': cannot allocate the integrator state ('// &
-                          str((7 + kd)*n)//' reals; n_storeys = '//str(n)//')')
+                          str((10 + kd)*n)//' reals; n_storeys = '//str(n)//')')
          return
       end if
       if (st%tridiagonal) then
@@ -225,6 +242,15 @@ contains
       st%damping_energy = 0.0_dp
       st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
       st%strain = 0.0_dp
+      if (.not. st%tridiagonal) then
+         st%fc = 0.0_dp
+         st%loaded = .false.
+         st%ktu = 0.0_dp
+         st%ktv = 0.0_dp
+         st%refresh = band_refresh_steps
+         if (present(refresh)) st%refresh = max(1, refresh)
+         st%since_refresh = 0
+      end if
 
    contains
 
@@ -273,6 +299,11 @@ contains
       if (present(v)) st%v = v
       if (present(a)) st%a = a
       call band_symv(b%kt, st%v, st%cv)
+      if (.not. st%tridiagonal) then
+         st%ktv = st%cv
+         call band_symv(b%kt, st%u, st%ktu)
+         st%since_refresh = 0
+      end if
       st%cv = b%a0*b%mass*st%v + b%a1*st%cv
       st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
       st%strain = structure_strain_energy(b, st%u)
@@ -293,17 +324,24 @@ contains
       end if
    end subroutine newmark_solve
 
-   !> du = du + s x: the response to a load increment s f of the step, x = Khat^{-1} f
-   !> (from `newmark_solve`, computed once when f does not change).
-   pure subroutine newmark_add_response(st, s, x)
+   !> du = du + s x: the response to a load increment s at DOF `dof` of the step,
+   !> x = Khat^{-1} e_dof (from `newmark_solve`, computed once). The general path also keeps
+   !> the load increment (it derives (K+G) du from the step's right-hand side).
+   pure subroutine newmark_add_response(st, s, dof, x)
       !> Integrator state with the predicted `du`.
       type(newmark_state), intent(inout) :: st
-      !> Factor of the load increment.
+      !> The load increment (kN).
       real(dp), intent(in) :: s
-      !> Khat^{-1} f (n).
+      !> The DOF it acts on.
+      integer, intent(in) :: dof
+      !> Khat^{-1} e_dof (n).
       real(dp), intent(in) :: x(:)
 
       st%du = st%du + s*x
+      if (.not. st%tridiagonal) then
+         st%fc(dof) = st%fc(dof) + s
+         st%loaded = .true.
+      end if
    end subroutine newmark_add_response
 
    !> Number of DOFs.
