@@ -73,7 +73,7 @@ contains
       call MPI_Allreduce(flag, cases_all, 1, MPI_LOGICAL, MPI_LAND, MPI_COMM_WORLD)
    end function cases_all
 
-   module subroutine run_cases(work, n, width, table)
+   recursive module subroutine run_cases(work, n, width, table)
       class(case_work), intent(inout) :: work
       integer, intent(in) :: n, width
       type(case_table), intent(out) :: table

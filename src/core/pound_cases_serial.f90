@@ -25,7 +25,7 @@ contains
       cases_all = flag
    end function cases_all
 
-   module subroutine run_cases(work, n, width, table)
+   recursive module subroutine run_cases(work, n, width, table)
       class(case_work), intent(inout) :: work
       integer, intent(in) :: n, width
       type(case_table), intent(out) :: table
