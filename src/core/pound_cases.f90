@@ -25,7 +25,7 @@ module pound_cases
    private
 
    public :: case_work, case_table, run_cases, first_failure, case_message_len
-   public :: cases_start, cases_stop, cases_rank, cases_ranks, cases_all
+   public :: cases_start, cases_stop, cases_abort, cases_rank, cases_ranks, cases_all
    public :: text_to_column, column_to_text
    ! For the implementations (submodules):
    public :: run_in_order, table_init, compute_into
@@ -73,6 +73,14 @@ module pound_cases
       !> End it (MPI_Finalize); nothing in the serial build. Call once, before exiting.
       module subroutine cases_stop()
       end subroutine cases_stop
+
+      !> End every rank of the job with `status` (MPI_Abort), for an error that may be this
+      !> rank's alone (a file rank 0 cannot write): the others must not wait for it. Nothing
+      !> in the serial build, nor with one rank.
+      module subroutine cases_abort(status)
+         !> Exit status.
+         integer, intent(in) :: status
+      end subroutine cases_abort
 
       !> This process' rank, 0-based (0 in the serial build): rank 0 writes the outputs.
       module integer function cases_rank()

@@ -57,6 +57,12 @@ contains
       started = .false.
    end subroutine cases_stop
 
+   module subroutine cases_abort(status)
+      integer, intent(in) :: status
+
+      if (started .and. n_ranks > 1) call MPI_Abort(MPI_COMM_WORLD, status)
+   end subroutine cases_abort
+
    module integer function cases_rank()
       cases_rank = my_rank
    end function cases_rank
