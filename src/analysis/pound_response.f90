@@ -394,6 +394,7 @@ contains
 
       associate (unused => [sink%block, merge(1, 0, coupled), building, quantity, first, size(values)])
       end associate
+      if (allocated(error)) deallocate (error)
    end subroutine discard_put
 
    !> Streamed histories: hand the samples held to `sink` and empty the block (when `full`,

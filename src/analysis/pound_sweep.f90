@@ -78,7 +78,7 @@ module pound_sweep
 contains
 
    !> Gap i of the sweep: its coupled run into a column.
-   subroutine gap_case(work, i, values, error)
+   recursive subroutine gap_case(work, i, values, error)
       !> The sweep's cases.
       class(gap_cases), intent(inout) :: work
       !> Gap index.

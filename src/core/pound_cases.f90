@@ -15,7 +15,8 @@
 !> Each case is computed exactly as in the serial loop and placed by its index, so the table
 !> does not depend on the number of ranks or on the order the cases finish in. A case that
 !> fails is marked (`failed`, `message`) and the others go on. A `run_cases` called from
-!> inside a case runs its cases in order on the calling rank (no nesting of the scheduler).
+!> inside a case (a suite motion's sweep) runs its cases in order on the calling rank (no
+!> nesting of the scheduler; the procedures are recursive for it).
 module pound_cases
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
@@ -24,7 +25,7 @@ module pound_cases
    private
 
    public :: case_work, case_table, run_cases, first_failure, case_message_len
-   public :: cases_start, cases_stop, cases_rank, cases_ranks, cases_all
+   public :: cases_start, cases_stop, cases_abort, cases_rank, cases_ranks, cases_all
    public :: text_to_column, column_to_text
    ! For the implementations (submodules):
    public :: run_in_order, table_init, compute_into
@@ -41,7 +42,7 @@ module pound_cases
 
    abstract interface
       !> Case `i` of the work: its `values` (the column of the table), or an error.
-      subroutine case_compute(work, i, values, error)
+      recursive subroutine case_compute(work, i, values, error)
          import :: case_work, dp, error_type
          !> The cases (may keep caches between cases of one rank).
          class(case_work), intent(inout) :: work
@@ -73,6 +74,14 @@ module pound_cases
       module subroutine cases_stop()
       end subroutine cases_stop
 
+      !> End every rank of the job with `status` (MPI_Abort), for an error that may be this
+      !> rank's alone (a file rank 0 cannot write): the others must not wait for it. Nothing
+      !> in the serial build, nor with one rank.
+      module subroutine cases_abort(status)
+         !> Exit status.
+         integer, intent(in) :: status
+      end subroutine cases_abort
+
       !> This process' rank, 0-based (0 in the serial build): rank 0 writes the outputs.
       module integer function cases_rank()
       end function cases_rank
@@ -89,7 +98,7 @@ module pound_cases
 
       !> Compute cases 1..n of `work` into `table` (collective: every rank calls it with the
       !> same n and width, and every rank gets the whole table).
-      module subroutine run_cases(work, n, width, table)
+      recursive module subroutine run_cases(work, n, width, table)
          !> The cases.
          class(case_work), intent(inout) :: work
          !> Number of cases (>= 0) and reals per case (>= 1).
@@ -102,7 +111,7 @@ module pound_cases
 contains
 
    !> Cases 1..n of `work` in order on this process, into a new table.
-   subroutine run_in_order(work, n, width, table)
+   recursive subroutine run_in_order(work, n, width, table)
       !> The cases.
       class(case_work), intent(inout) :: work
       !> Number of cases and reals per case.
@@ -131,7 +140,7 @@ contains
    end subroutine table_init
 
    !> Case i of `work` into column j of `table` (a failed case: zeros, its message).
-   subroutine compute_into(work, i, table, j)
+   recursive subroutine compute_into(work, i, table, j)
       !> The cases.
       class(case_work), intent(inout) :: work
       !> Case index.

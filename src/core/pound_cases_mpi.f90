@@ -57,6 +57,12 @@ contains
       started = .false.
    end subroutine cases_stop
 
+   module subroutine cases_abort(status)
+      integer, intent(in) :: status
+
+      if (started .and. n_ranks > 1) call MPI_Abort(MPI_COMM_WORLD, status)
+   end subroutine cases_abort
+
    module integer function cases_rank()
       cases_rank = my_rank
    end function cases_rank
@@ -73,7 +79,7 @@ contains
       call MPI_Allreduce(flag, cases_all, 1, MPI_LOGICAL, MPI_LAND, MPI_COMM_WORLD)
    end function cases_all
 
-   module subroutine run_cases(work, n, width, table)
+   recursive module subroutine run_cases(work, n, width, table)
       class(case_work), intent(inout) :: work
       integer, intent(in) :: n, width
       type(case_table), intent(out) :: table

@@ -11,6 +11,13 @@ contains
    module subroutine cases_stop()
    end subroutine cases_stop
 
+   module subroutine cases_abort(status)
+      integer, intent(in) :: status
+
+      associate (unused => status)
+      end associate
+   end subroutine cases_abort
+
    module integer function cases_rank()
       cases_rank = 0
    end function cases_rank
@@ -25,7 +32,7 @@ contains
       cases_all = flag
    end function cases_all
 
-   module subroutine run_cases(work, n, width, table)
+   recursive module subroutine run_cases(work, n, width, table)
       class(case_work), intent(inout) :: work
       integer, intent(in) :: n, width
       type(case_table), intent(out) :: table

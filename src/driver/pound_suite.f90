@@ -197,7 +197,7 @@ module pound_suite
 contains
 
    !> Motion `motion(i)` of the suite (a case of `suite_cases`).
-   subroutine suite_case(work, i, values, error)
+   recursive subroutine suite_case(work, i, values, error)
       !> The cases.
       class(suite_cases), intent(inout) :: work
       !> Case index.
@@ -302,7 +302,7 @@ contains
    end subroutine motion_run
 
    !> Motion m at the trial gap (a case of `motion_cases`).
-   subroutine motion_case(work, i, values, error)
+   recursive subroutine motion_case(work, i, values, error)
       !> The cases.
       class(motion_cases), intent(inout) :: work
       !> Motion index.
@@ -319,7 +319,7 @@ contains
    end subroutine motion_case
 
    !> Motion k's threshold refinement (a case of `refine_cases`).
-   subroutine refine_case(work, i, values, error)
+   recursive subroutine refine_case(work, i, values, error)
       !> The cases.
       class(refine_cases), intent(inout) :: work
       !> Motion index.

@@ -42,7 +42,7 @@ program pound
    use pound_response, only: discard_sink
    use pound_progress, only: progress_setup, progress_start, progress_finish, progress_auto, progress_on, &
                              progress_off
-   use pound_cases, only: cases_start, cases_stop, cases_rank, cases_all
+   use pound_cases, only: cases_start, cases_stop, cases_abort, cases_rank, cases_ranks, cases_all
    implicit none
 
    character(len=:), allocatable :: deck_path, out_dir
@@ -59,6 +59,9 @@ program pound
    logical :: is_suite, streamed
    integer :: progress_mode = progress_auto
    logical :: writer
+   !> Whether an error now may be rank 0's alone (its streamed HDF5 file), while the other
+   !> ranks compute: then MPI_Abort ends the job instead of leaving them waiting.
+   logical :: alone = .false.
 
    call install_signal_cleanup()
    call guard_standard_descriptors()
@@ -93,6 +96,7 @@ program pound
    ! the analyses (a suite, or a run with node histories, holds them and writes them at the end).
    ! The other MPI ranks drop them (rank 0 alone writes).
    if (streamed .and. writer) then
+      alone = cases_ranks() > 1
       call history_sink_init(sink, outputs%h5_tmp, outputs%h5, deck, error)
       call check(error)
       options%sink => sink
@@ -111,6 +115,7 @@ program pound
       call run_case(deck, res, error, options)
    end if
    call check(error)
+   alone = .false.
    call progress_finish(.true.)
    ground_text(1) = res%ground_text
    if (.not. writer) then
@@ -176,6 +181,7 @@ contains
       if (writer) write (error_unit, '(a)', iostat=ios) program_name//': error: '//message
       flush (error_unit, iostat=ios)
       flush (output_unit, iostat=ios)
+      if (alone) call cases_abort(status)
       call cases_stop()
       call posix_exit_now(status)
    end subroutine stop_with

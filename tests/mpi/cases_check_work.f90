@@ -21,7 +21,7 @@ module cases_check_work
 contains
 
    !> Case i: (i, i^2, sqrt(i)); an error for `fail`; the sums of 4 nested cases for `nest`.
-   subroutine square_case(work, i, values, error)
+   recursive subroutine square_case(work, i, values, error)
       !> The cases, the case index, its column and the error state.
       class(square_cases), intent(inout) :: work
       integer, intent(in) :: i
