@@ -124,6 +124,9 @@ module pound_contact
       real(dp), allocatable :: q(:), r_new(:), x_new(:), mat(:, :), qa(:), za(:), wa(:), zref(:)
       !> Closing displacements if all forces were released (m).
       real(dp), allocatable :: vp(:)
+      !> Each constraint's ends packed for the per-step loops: building and DOF of the left
+      !> end (rows 1, 2) and of the right end (rows 3, 4); building 0: rigid (4, m).
+      integer, allocatable :: ends(:, :)
       !> Row bookkeeping: constraint of each contact row, row of each joint's yield variable,
       !> modelled segment ends per joint.
       integer, allocatable :: act(:), yrow(:), nh(:)
@@ -327,6 +330,10 @@ contains
       cs%yrow = 0
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
+      allocate (cs%ends(4, m))
+      do k = 1, m
+         cs%ends(:, k) = [cs%pair(k)%building(1), cs%pair(k)%dof(1), cs%pair(k)%building(2), cs%pair(k)%dof(2)]
+      end do
       allocate (cs%as)
       call active_set_init(cs%as, m)
       call lcp_workspace(cs, cs%n_max, error)
@@ -446,21 +453,12 @@ contains
       integer, intent(in) :: step
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: k, e, b, i
-      real(dp) :: vp, dr
+      integer :: k, e, b
+      real(dp) :: dr
 
       if (cs%m == 0) return
       ! Closing displacement if every force were released in this step.
-      do k = 1, cs%m
-         vp = 0.0_dp
-         do e = 1, 2
-            b = cs%pair(k)%building(e)
-            if (b == 0) cycle
-            i = cs%pair(k)%dof(e)
-            vp = vp + end_sign(e)*newmark_predicted(states(b), i)
-         end do
-         cs%vp(k) = vp
-      end do
+      call closing_displacements(cs, states, .true.)
       do k = 1, cs%m
          if (cs%joint(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%joint(k)%r
       end do
@@ -757,19 +755,43 @@ contains
       real(dp), intent(in) :: t
       !> Time step (s).
       real(dp), intent(in) :: dt
-      integer :: k, e, b
 
       ! The closing displacements at the end of the step.
-      do k = 1, cs%m
-         cs%vp(k) = 0.0_dp
-         do e = 1, 2
-            b = cs%pair(k)%building(e)
-            if (b == 0) cycle
-            cs%vp(k) = cs%vp(k) + end_sign(e)*newmark_u_at(states(b), cs%pair(k)%dof(e))
-         end do
-      end do
+      call closing_displacements(cs, states, .false.)
       call contact_update(cs, cs%vp, t, dt)
    end subroutine contact_commit
+
+   !> Closing displacements v = B^T u of every constraint into `cs%vp` (left end + u, right
+   !> end - u): of the displacements predicted for the end of the step, or of the committed.
+   subroutine closing_displacements(cs, states, predicted)
+      type(contact_system), intent(inout) :: cs
+      type(newmark_state), intent(in) :: states(:)
+      logical, intent(in) :: predicted
+      integer :: k, b
+      real(dp) :: v
+
+      do k = 1, cs%m
+         v = 0.0_dp
+         b = cs%ends(1, k)
+         if (b > 0) v = v + end_u(states(b), cs%ends(2, k))
+         b = cs%ends(3, k)
+         if (b > 0) v = v - end_u(states(b), cs%ends(4, k))
+         cs%vp(k) = v
+      end do
+
+   contains
+
+      real(dp) function end_u(st, i)
+         type(newmark_state), intent(in) :: st
+         integer, intent(in) :: i
+
+         if (predicted) then
+            end_u = newmark_predicted(st, i)
+         else
+            end_u = newmark_u_at(st, i)
+         end if
+      end function end_u
+   end subroutine closing_displacements
 
    !> Update the joints for the accepted step: plastic penetration, compression, rate,
    !> state, statistics and energy. `v` (closing displacements at the end of the step) may

@@ -8,7 +8,7 @@
 !> ((a, b) = (2/dt, 1) trapezoidal, (1/dt, 0) backward Euler) and phat = k0 + a c.
 module pound_joint_state
    use pound_kinds, only: dp
-   use pound_contact_law, only: contact_law, is_plastic, yield_segment
+   use pound_contact_law, only: contact_law, is_plastic, yield_segment, law_elastic
    implicit none
    private
 
@@ -80,6 +80,22 @@ contains
       k0 = law%stiffness
       c = law%dashpot
       r0 = j%r
+      ! An elastic joint without dashpot, open with no compression, that stays open (most
+      ! joints in most steps): d = 0, no force, no work; the same numbers as the general
+      ! update below (which would add only signed zeros to the work sums).
+      if (r == 0.0_dp .and. r0 == 0.0_dp .and. c == 0.0_dp .and. j%d == 0.0_dp .and. &
+          law%kind == law_elastic .and. .not. (j%fractured .or. law%fractures)) then
+         pl = j%plastic + x
+         j%ddot = rate_a*(0.0_dp - j%d) - rate_b*j%ddot
+         j%peak_penetration = max(j%peak_penetration, 0.0_dp)
+         j%state = state_open
+         j%r = r
+         j%d = 0.0_dp
+         j%v = v
+         j%x = x
+         j%plastic = pl
+         return
+      end if
       if (j%fractured) then
          work = work + 0.5_dp*r0*(v - j%v)
          j%r = 0.0_dp
