@@ -113,7 +113,7 @@ def seed_and_sweep(exe, seed, sweep_deck, repeats, tmp):
         out = subprocess.run([exe, sweep_deck, "-o", tmp], check=True, capture_output=True, text=True).stdout
         after = resource.getrusage(resource.RUSAGE_CHILDREN)
         cpu.append((after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime))
-    m = re.search(r"gap sweep: (\d+) gaps in\s+([0-9.]+) s", out)
+    m = re.search(r"gap sweep: (\d+) gaps in\s+([0-9.Ee+-]+) s", out)
     print(f"Gap study ({os.path.basename(sweep_deck)}): {m.group(1)} gaps, total process time median "
           f"{1e3 * statistics.median(cpu):.1f} ms (sweep loop {1e3 * float(m.group(2)):.1f} ms in the last run)")
     print()
