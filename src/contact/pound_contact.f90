@@ -60,7 +60,7 @@ module pound_contact
    use pound_structure, only: structure_model, structure_end_dof
    use pound_contact_law, only: is_plastic, yield_segment, rate_trapezoidal, dashpot_of_restitution
    use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
-   use pound_joint_state, only: joint_state, joint_advance, state_open, state_elastic, state_fractured, &
+   use pound_joint_state, only: joint_state, joints_advance, state_open, state_elastic, state_fractured, &
                                 joint_history, joint_history_init, joint_history_record
    use pound_lcp_statistics, only: lcp_statistics, contact_event, statistics_count_solve, &
                                    statistics_add_event, statistics_count_active_set
@@ -805,12 +805,9 @@ contains
       real(dp), intent(in) :: t
       !> Time step (s).
       real(dp), intent(in) :: dt
-      integer :: k
 
-      do k = 1, cs%m
-         call joint_advance(cs%joint(k), cs%pair(k)%law, cs%r_new(k), cs%x_new(k), v(k), t, dt, cs%rate_a(k), &
-                            cs%rate_b(k), cs%phat(k), cs%work, cs%element_work, cs%plastic_work)
-      end do
+      call joints_advance(cs%joint, cs%pair, cs%r_new, cs%x_new, v, t, dt, cs%rate_a, cs%rate_b, cs%phat, &
+                          cs%work, cs%element_work, cs%plastic_work)
    end subroutine contact_update
 
 
