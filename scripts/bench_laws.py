@@ -20,6 +20,11 @@ def run(exe, deck, out):
 def listing_stats(path):
     text = open(path).read()
     solves = int(re.search(r"solves (\d+)", text).group(1))
+    # LCPs solved by the active-set method (elastic steps) count as solves too.
+    active = re.search(r"active-set method .*: solves (\d+),", text)
+    if active:
+        failed = int(re.search(r"(\d+) failed and were solved by Lemke", text).group(1))
+        solves += int(active.group(1)) - failed
     pivots = int(re.search(r"pivots total (\d+)", text).group(1))
     largest = int(re.search(r"largest LCP \(contact \+ yield \+ segment-end rows\): (\d+)", text).group(1))
     steps = int(re.search(r"steps = (\d+)", text).group(1))

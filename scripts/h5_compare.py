@@ -1,12 +1,16 @@
 #!/usr/bin/env python3
 """Compare two pound HDF5 files dataset by dataset, bit for bit.
 
-    scripts/h5_compare A.h5 B.h5 [--ignore-attr NAME ...]
+    scripts/h5_compare A.h5 B.h5 [--ignore-attr NAME ...] [--rtol R]
 
 Every group, dataset and attribute of either file must exist in the other with the same
 shape, type and bytes (NaN compares equal to NaN at the same place). Attributes that carry
 the run's date or wall-clock timings (names ending in "seconds") are ignored. Exit 0 when identical, 1 with one line per
 difference otherwise, 2 on a usage error or an unreadable file.
+
+With --rtol R, floating-point datasets whose bytes differ are compared numerically instead:
+they pass when max |a - b| <= R max |a| over the dataset (the largest relative difference of
+every such dataset is printed, to document round-off differences); attributes stay exact.
 """
 import sys
 
@@ -38,9 +42,30 @@ def same(a, b):
     return bool(np.array_equal(a, b))
 
 
+def relative_difference(a, b):
+    """max |a - b| / max |a| of two floating-point arrays of one shape (None otherwise)."""
+    a, b = np.asarray(a), np.asarray(b)
+    if a.shape != b.shape or a.dtype.kind != "f" or b.dtype.kind != "f":
+        return None
+    if not np.array_equal(np.isnan(a), np.isnan(b)):
+        return None
+    ok = ~np.isnan(a)
+    scale = np.max(np.abs(a[ok]), initial=0.0)
+    diff = np.max(np.abs(a[ok] - b[ok]), initial=0.0)
+    return float(diff / scale) if scale > 0 else (0.0 if diff == 0 else float("inf"))
+
+
 def main(argv):
     args = [a for a in argv if not a.startswith("--")]
     ignored = set(DEFAULT_IGNORED)
+    rtol = None
+    if "--rtol" in argv:
+        i = argv.index("--rtol")
+        if i + 1 >= len(argv):
+            print(__doc__.strip().splitlines()[2].strip(), file=sys.stderr)
+            return 2
+        rtol = float(argv[i + 1])
+        args.remove(argv[i + 1])
     for i, a in enumerate(argv):
         if a == "--ignore-attr" and i + 1 < len(argv):
             ignored.add(argv[i + 1])
@@ -64,7 +89,11 @@ def main(argv):
             diffs.append(f"{name}: group in one file, dataset in the other")
             continue
         if isinstance(oa, h5py.Dataset) and not same(oa[()], ob[()]):
-            diffs.append(f"{name}: data differ")
+            rel = relative_difference(oa[()], ob[()]) if rtol is not None else None
+            if rel is None or rel > rtol:
+                diffs.append(f"{name}: data differ" + ("" if rel is None else f" (relative {rel:.3e})"))
+            else:
+                print(f"{name}: relative difference {rel:.3e} <= {rtol:g}")
         for k in sorted(set(oa.attrs) | set(ob.attrs)):
             if k in ignored or k.endswith(TIMING_SUFFIX):
                 continue

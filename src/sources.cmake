@@ -33,6 +33,7 @@ set(POUND_SOURCES
   contact/pound_joint_state.f90 contact/pound_lcp_statistics.f90 contact/pound_contact_lcp.f90
   contact/pound_contact.f90
   contact/pound_lcp_enumerate.f90
+  contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_influence.f90
   analysis/pound_sweep.f90 analysis/pound_memory.f90

@@ -35,7 +35,7 @@ module pound_analysis
                              response_flush, history_block, deformed_limit
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record, contact_swap_step, &
-                            contact_may_act
+                            contact_may_act, lcp_solver_lemke
    use pound_deck_variables, only: max_substeps
    implicit none
    private
@@ -221,7 +221,9 @@ contains
          if (allocated(error)) return
       end do
       call contact_init(prep%cs, pairs, prep%st, models, error)
-      if (allocated(error) .or. cfg%stepping /= 'impact' .or. size(pairs) == 0) return
+      if (allocated(error)) return
+      if (cfg%lcp_solver == 'lemke') prep%cs%solver = lcp_solver_lemke
+      if (cfg%stepping /= 'impact' .or. size(pairs) == 0) return
       ! Impact-aware substeps: Khat and F factored once more, for dt/m.
       prep%substeps = impact_substeps_of(cfg, models, prep%cs)
       allocate (prep%st_sub(size(models)))
@@ -230,6 +232,7 @@ contains
          if (allocated(error)) return
       end do
       call contact_init(prep%cs_sub, pairs, prep%st_sub, models, error)
+      prep%cs_sub%solver = prep%cs%solver
    end subroutine coupled_prepare
 
    !> Substeps per impact step: `impact_substeps` when given, else the least m for which

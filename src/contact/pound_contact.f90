@@ -60,14 +60,16 @@ module pound_contact
    use pound_structure, only: structure_model, structure_end_dof
    use pound_contact_law, only: is_plastic, yield_segment, rate_trapezoidal, dashpot_of_restitution
    use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
-   use pound_joint_state, only: joint_state, joint_advance, state_open, state_elastic, state_fractured, &
+   use pound_joint_state, only: joint_state, joints_advance, state_open, state_elastic, state_fractured, &
                                 joint_history, joint_history_init, joint_history_record
    use pound_lcp_statistics, only: lcp_statistics, contact_event, statistics_count_solve, &
-                                   statistics_add_event
+                                   statistics_add_event, statistics_count_active_set
    use pound_contact_lcp, only: lcp_layout, lcp_assemble, released_opening, lcp_residual
    use pound_lemke, only: lemke_workspace, lemke_init, lemke_solve, lemke_report, &
                           lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
    use pound_lcp_enumerate, only: lcp_enumerate
+   use pound_lcp_active_set, only: active_set_workspace, active_set_report, active_set_init, &
+                                   active_set_solve, active_set_solved
    use pound_swap, only: swap
    implicit none
    private
@@ -76,6 +78,7 @@ module pound_contact
    public :: contact_step, contact_solve, contact_commit, contact_update
    public :: contact_swap_step, contact_may_act
    public :: residual_limit, fallback_max_rows, initial_hinges
+   public :: lcp_solver_auto, lcp_solver_lemke
    ! Re-exported: the constraint definitions, the joints' state and the LCP statistics.
    public :: contact_pair, pairs_from_config
    public :: joint_state, state_open, state_elastic, state_fractured
@@ -89,6 +92,9 @@ module pound_contact
    !> Segment ends per joint modelled up front (rows held by the initial workspace); a step
    !> that passes more models them on demand and grows the workspace (no fixed limit).
    integer, parameter :: initial_hinges = 32
+   !> LCP method: the active-set method for steps with elastic joints only, Lemke otherwise
+   !> and when it fails (the default); Lemke for every step.
+   integer, parameter :: lcp_solver_auto = 0, lcp_solver_lemke = 1
 
    !> A vector of its own length (Khat^{-1} e of one constraint end).
    type :: column
@@ -118,6 +124,9 @@ module pound_contact
       real(dp), allocatable :: q(:), r_new(:), x_new(:), mat(:, :), qa(:), za(:), wa(:), zref(:)
       !> Closing displacements if all forces were released (m).
       real(dp), allocatable :: vp(:)
+      !> Each constraint's ends packed for the per-step loops: building and DOF of the left
+      !> end (rows 1, 2) and of the right end (rows 3, 4); building 0: rigid (4, m).
+      integer, allocatable :: ends(:, :)
       !> Row bookkeeping: constraint of each contact row, row of each joint's yield variable,
       !> modelled segment ends per joint.
       integer, allocatable :: act(:), yrow(:), nh(:)
@@ -132,6 +141,13 @@ module pound_contact
       type(lcp_statistics) :: stats
       !> Pivot cap of each Lemke run (0: Lemke's default, 50 (n + 1)).
       integer :: pivot_cap = 0
+      !> LCP method (`lcp_solver_auto`, `lcp_solver_lemke`).
+      integer :: solver = lcp_solver_auto
+      !> Active-set method: its set and factor kept between steps, 1/phat per joint, the
+      !> role of each joint in the step (0 fractured, 1 elastic, 2 plastic), w of every joint.
+      type(active_set_workspace), allocatable :: as
+      real(dp), allocatable :: phat_inv(:), wm(:)
+      integer, allocatable :: role(:)
    end type contact_system
 
 contains
@@ -275,7 +291,7 @@ contains
       if (m == 0) return
       cs%c2 = 2.0_dp/dt
       allocate (cs%phat(m), cs%beta(m), cs%rate_a(m), cs%rate_b(m), cs%q(m), cs%vp(m), cs%r_new(m), &
-                cs%x_new(m), cs%in_lcp(m), cs%yrow(m), cs%nh(m), stat=k)
+                cs%x_new(m), cs%in_lcp(m), cs%yrow(m), cs%nh(m), cs%phat_inv(m), cs%wm(m), cs%role(m), stat=k)
       if (k /= 0) then
          call fatal_error(error, 'contact: cannot allocate the joint data for '//str(m)//' pairs')
          return
@@ -296,6 +312,7 @@ contains
             end if
             cs%phat(k) = law%stiffness + cs%rate_a(k)*law%dashpot
             cs%beta(k) = law%stiffness/cs%phat(k)
+            cs%phat_inv(k) = 1.0_dp/cs%phat(k)
             if (.not. (ieee_is_finite(cs%phat(k)) .and. ieee_is_finite(1.0_dp/cs%phat(k)))) then
                call fatal_error(error, 'contact '//p%label//': joint stiffness with its dashpot, stiffness + '// &
                                 str(cs%rate_a(k))//' dashpot = '//str(cs%phat(k))//' kN/m from stiffness = '// &
@@ -313,6 +330,12 @@ contains
       cs%yrow = 0
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
+      allocate (cs%ends(4, m))
+      do k = 1, m
+         cs%ends(:, k) = [cs%pair(k)%building(1), cs%pair(k)%dof(1), cs%pair(k)%building(2), cs%pair(k)%dof(2)]
+      end do
+      allocate (cs%as)
+      call active_set_init(cs%as, m)
       call lcp_workspace(cs, cs%n_max, error)
    end subroutine contact_init_flexibility
 
@@ -349,6 +372,7 @@ contains
       !> The same constraints at the other step (only its step data are used).
       type(contact_system), intent(inout) :: other
       type(column), allocatable :: ty(:, :)
+      type(active_set_workspace), allocatable :: ta
 
       call swap(cs%c2, other%c2)
       call move_alloc(cs%y, ty)
@@ -359,6 +383,12 @@ contains
       call swap(cs%beta, other%beta)
       call swap(cs%rate_a, other%rate_a)
       call swap(cs%rate_b, other%rate_b)
+      call swap(cs%phat_inv, other%phat_inv)
+      ! Each F keeps its active set and factor (the set is brought to the step's guess by
+      ! factor updates at the next solve).
+      call move_alloc(cs%as, ta)
+      call move_alloc(other%as, cs%as)
+      call move_alloc(ta, other%as)
    end subroutine contact_swap_step
 
    !> Whether a joint can act in the step predicted in `states` (after `newmark_predict`,
@@ -423,21 +453,12 @@ contains
       integer, intent(in) :: step
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: k, e, b, i
-      real(dp) :: vp, dr
+      integer :: k, e, b
+      real(dp) :: dr
 
       if (cs%m == 0) return
       ! Closing displacement if every force were released in this step.
-      do k = 1, cs%m
-         vp = 0.0_dp
-         do e = 1, 2
-            b = cs%pair(k)%building(e)
-            if (b == 0) cycle
-            i = cs%pair(k)%dof(e)
-            vp = vp + end_sign(e)*newmark_predicted(states(b), i)
-         end do
-         cs%vp(k) = vp
-      end do
+      call closing_displacements(cs, states, .true.)
       do k = 1, cs%m
          if (cs%joint(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%joint(k)%r
       end do
@@ -495,6 +516,22 @@ contains
          return
       end do
       qnorm = max(qnorm, tiny(1.0_dp))
+      ! The clock is read only when there is an LCP to solve.
+      ! No joint can act (every one open with q >= 0, or fractured): no force, and the
+      ! solution z = 0, w = q is exact; the clock is read only when there is an LCP to solve.
+      cs%r_new = 0.0_dp
+      cs%x_new = 0.0_dp
+      timed = any(cs%in_lcp)
+      if (.not. timed) return
+      call system_clock(clock_start, clock_rate)
+      ! Elastic joints only: the active-set method from the previous step's set.
+      if (cs%solver == lcp_solver_auto) then
+         if (active_set_step(cs)) then
+            call system_clock(clock_end)
+            cs%stats%lcp_seconds = cs%stats%lcp_seconds + real(clock_end - clock_start, dp)/real(clock_rate, dp)
+            return
+         end if
+      end if
       ! Segment ends within reach: those the plastic increment would pass if the joint alone
       ! took up all of its predicted penetration -q plastically (more are added on demand).
       do k = 1, cs%m
@@ -512,11 +549,6 @@ contains
       end do
       nonconvex = .false.
 
-      cs%r_new = 0.0_dp
-      cs%x_new = 0.0_dp
-      ! The clock is read only when there is an LCP to solve.
-      timed = any(cs%in_lcp)
-      if (timed) call system_clock(clock_start, clock_rate)
       do
          call assemble(cs, na, n, nonconvex, error)
          if (allocated(error)) return
@@ -587,10 +619,8 @@ contains
       call lcp_residual(n, cs%mat, cs%qa, cs%za, cs%wa, cs%f, cs%q, cs%act, na, cs%in_lcp, cs%joint, qnorm, &
                         resid)
       cs%stats%residual_max = max(cs%stats%residual_max, resid)
-      if (timed) then
-         call system_clock(clock_end)
-         cs%stats%lcp_seconds = cs%stats%lcp_seconds + real(clock_end - clock_start, dp)/real(clock_rate, dp)
-      end if
+      call system_clock(clock_end)
+      cs%stats%lcp_seconds = cs%stats%lcp_seconds + real(clock_end - clock_start, dp)/real(clock_rate, dp)
       if (.not. (resid <= residual_limit)) then
          call fatal_error(error, 'contact LCP solution rejected at t = '//str(t)//' s (step '// &
                           str(step)//'): natural residual '//str(resid)//' > '//str(residual_limit)// &
@@ -598,6 +628,39 @@ contains
          return
       end if
    end subroutine contact_solve
+
+   !> The step's LCP by the active-set method (`pound_lcp_active_set`) when every joint that
+   !> can act in it is elastic (a plastic joint carrying force or predicted to close: not
+   !> tried). True when solved and verified by its natural residual on every joint that is
+   !> not fractured (sets `r_new`, `x_new`); false, counted as a fallback when it was tried,
+   !> leaves the step to Lemke.
+   logical function active_set_step(cs) result(solved)
+      type(contact_system), intent(inout) :: cs
+      type(active_set_report) :: rep
+      integer :: k
+
+      solved = .false.
+      do k = 1, cs%m
+         if (cs%joint(k)%fractured) then
+            cs%role(k) = 0
+         else if (is_plastic(cs%pair(k)%law)) then
+            if (cs%in_lcp(k)) return
+            cs%role(k) = 2
+         else
+            cs%role(k) = 1
+         end if
+      end do
+      call active_set_solve(cs%as, cs%m, cs%f, cs%phat_inv, cs%q, cs%role, cs%in_lcp, cs%r_new, cs%wm, rep)
+      solved = rep%status == active_set_solved .and. rep%residual <= residual_limit
+      call statistics_count_active_set(cs%stats, rep%iterations, rep%updates, .not. solved)
+      if (.not. solved) then
+         cs%r_new = 0.0_dp
+         return
+      end if
+      cs%x_new = 0.0_dp
+      cs%stats%residual_max = max(cs%stats%residual_max, rep%residual)
+      cs%stats%largest_lcp = max(cs%stats%largest_lcp, cs%as%na)
+   end function active_set_step
 
    !> Lay out and assemble the LCP of the constraints in `cs%in_lcp` (`lcp_layout`,
    !> `lcp_assemble`), growing the workspace first when more segment ends are modelled than
@@ -692,19 +755,43 @@ contains
       real(dp), intent(in) :: t
       !> Time step (s).
       real(dp), intent(in) :: dt
-      integer :: k, e, b
 
       ! The closing displacements at the end of the step.
-      do k = 1, cs%m
-         cs%vp(k) = 0.0_dp
-         do e = 1, 2
-            b = cs%pair(k)%building(e)
-            if (b == 0) cycle
-            cs%vp(k) = cs%vp(k) + end_sign(e)*newmark_u_at(states(b), cs%pair(k)%dof(e))
-         end do
-      end do
+      call closing_displacements(cs, states, .false.)
       call contact_update(cs, cs%vp, t, dt)
    end subroutine contact_commit
+
+   !> Closing displacements v = B^T u of every constraint into `cs%vp` (left end + u, right
+   !> end - u): of the displacements predicted for the end of the step, or of the committed.
+   subroutine closing_displacements(cs, states, predicted)
+      type(contact_system), intent(inout) :: cs
+      type(newmark_state), intent(in) :: states(:)
+      logical, intent(in) :: predicted
+      integer :: k, b
+      real(dp) :: v
+
+      do k = 1, cs%m
+         v = 0.0_dp
+         b = cs%ends(1, k)
+         if (b > 0) v = v + end_u(states(b), cs%ends(2, k))
+         b = cs%ends(3, k)
+         if (b > 0) v = v - end_u(states(b), cs%ends(4, k))
+         cs%vp(k) = v
+      end do
+
+   contains
+
+      real(dp) function end_u(st, i)
+         type(newmark_state), intent(in) :: st
+         integer, intent(in) :: i
+
+         if (predicted) then
+            end_u = newmark_predicted(st, i)
+         else
+            end_u = newmark_u_at(st, i)
+         end if
+      end function end_u
+   end subroutine closing_displacements
 
    !> Update the joints for the accepted step: plastic penetration, compression, rate,
    !> state, statistics and energy. `v` (closing displacements at the end of the step) may
@@ -718,12 +805,9 @@ contains
       real(dp), intent(in) :: t
       !> Time step (s).
       real(dp), intent(in) :: dt
-      integer :: k
 
-      do k = 1, cs%m
-         call joint_advance(cs%joint(k), cs%pair(k)%law, cs%r_new(k), cs%x_new(k), v(k), t, dt, cs%rate_a(k), &
-                            cs%rate_b(k), cs%phat(k), cs%work, cs%element_work, cs%plastic_work)
-      end do
+      call joints_advance(cs%joint, cs%pair, cs%r_new, cs%x_new, v, t, dt, cs%rate_a, cs%rate_b, cs%phat, &
+                          cs%work, cs%element_work, cs%plastic_work)
    end subroutine contact_update
 
 

@@ -8,11 +8,12 @@
 !> ((a, b) = (2/dt, 1) trapezoidal, (1/dt, 0) backward Euler) and phat = k0 + a c.
 module pound_joint_state
    use pound_kinds, only: dp
-   use pound_contact_law, only: contact_law, is_plastic, yield_segment
+   use pound_contact_law, only: contact_law, is_plastic, yield_segment, law_elastic
+   use pound_contact_pair, only: contact_pair
    implicit none
    private
 
-   public :: joint_state, joint_advance
+   public :: joint_state, joint_advance, joints_advance
    public :: state_open, state_elastic, state_fractured
    public :: joint_history, joint_history_init, joint_history_record
 
@@ -80,6 +81,10 @@ contains
       k0 = law%stiffness
       c = law%dashpot
       r0 = j%r
+      if (stays_open(j, law, r)) then
+         call open_step(j, r, x, v, rate_a, rate_b)
+         return
+      end if
       if (j%fractured) then
          work = work + 0.5_dp*r0*(v - j%v)
          j%r = 0.0_dp
@@ -136,6 +141,65 @@ contains
          end if
       end if
    end subroutine joint_advance
+
+   !> Advance every joint over an accepted step, in order (`joint_advance` for each: one
+   !> call for all, so that the per-joint update can be inlined into the loop).
+   pure subroutine joints_advance(j, pairs, r, x, v, t, dt, rate_a, rate_b, phat, work, element_work, &
+                                  plastic_work)
+      !> The joints.
+      type(joint_state), intent(inout) :: j(:)
+      !> Their constraints (the laws).
+      type(contact_pair), intent(in) :: pairs(:)
+      !> Forces (kN), plastic increments (m) and closing displacements at the end of the
+      !> step (m), one per joint.
+      real(dp), intent(in) :: r(:), x(:), v(:)
+      !> Time at the end of the step and time step (s).
+      real(dp), intent(in) :: t, dt
+      !> Per joint: dashpot rate coefficients a, b and phat = k0 + a c.
+      real(dp), intent(in) :: rate_a(:), rate_b(:), phat(:)
+      !> Work sums (kJ), accumulated as by `joint_advance`.
+      real(dp), intent(inout) :: work, element_work, plastic_work
+      integer :: k
+
+      do k = 1, size(j)
+         if (stays_open(j(k), pairs(k)%law, r(k))) then
+            call open_step(j(k), r(k), x(k), v(k), rate_a(k), rate_b(k))
+         else
+            call joint_advance(j(k), pairs(k)%law, r(k), x(k), v(k), t, dt, rate_a(k), rate_b(k), phat(k), work, &
+                               element_work, plastic_work)
+         end if
+      end do
+   end subroutine joints_advance
+
+   !> An elastic joint without dashpot, open with no compression, that stays open (most
+   !> joints in most steps): `open_step` is its whole update.
+   pure logical function stays_open(j, law, r)
+      type(joint_state), intent(in) :: j
+      type(contact_law), intent(in) :: law
+      real(dp), intent(in) :: r
+
+      stays_open = r == 0.0_dp .and. j%r == 0.0_dp .and. law%dashpot == 0.0_dp .and. j%d == 0.0_dp .and. &
+                   law%kind == law_elastic .and. .not. (j%fractured .or. law%fractures)
+   end function stays_open
+
+   !> The step of a joint that `stays_open`: d = 0, no force, no work; the same numbers as
+   !> the general update of `joint_advance` (which would add only signed zeros to the work
+   !> sums).
+   pure subroutine open_step(j, r, x, v, rate_a, rate_b)
+      type(joint_state), intent(inout) :: j
+      real(dp), intent(in) :: r, x, v, rate_a, rate_b
+      real(dp) :: pl
+
+      pl = j%plastic + x
+      j%ddot = rate_a*(0.0_dp - j%d) - rate_b*j%ddot
+      j%peak_penetration = max(j%peak_penetration, 0.0_dp)
+      j%state = state_open
+      j%r = r
+      j%d = 0.0_dp
+      j%v = v
+      j%x = x
+      j%plastic = pl
+   end subroutine open_step
 
    !> Histories for `m` joints and `n` output samples, the first sample (t = 0) at rest and
    !> open. `stat` /= 0 when the memory cannot be had (nothing is kept then).

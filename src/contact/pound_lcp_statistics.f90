@@ -1,12 +1,14 @@
-!> What the per-step LCPs of an analysis cost and how they went: solves, pivots, warm
+!> What the per-step LCPs of an analysis cost and how they went: Lemke's solves, pivots, warm
 !> starts, re-solves, non-convex steps, fallbacks to enumeration (each one recorded as an
-!> event), the largest LCP and residual, and the time spent solving.
+!> event); the active-set method's solves, iterations, factor updates and fallbacks to
+!> Lemke; the largest LCP and residual, and the time spent solving.
 module pound_lcp_statistics
    use pound_kinds, only: dp
    implicit none
    private
 
    public :: lcp_statistics, contact_event, statistics_count_solve, statistics_add_event
+   public :: statistics_count_active_set
 
    !> A step whose LCP Lemke could not solve, and what was done.
    type :: contact_event
@@ -29,6 +31,12 @@ module pound_lcp_statistics
       !> LCP (rows).
       integer :: solves = 0, pivots_total = 0, pivots_max = 0, trivial = 0, warm = 0, resolves = 0
       integer :: nonconvex = 0, fallbacks = 0, largest_lcp = 0
+      !> Active-set method (steps with elastic joints only): solves tried, their iterations
+      !> (reduced solves; total and largest), factor updates, and the solves that failed
+      !> (cycled, not positive definite, residual too large, a plastic joint closing) and
+      !> were solved by Lemke instead (those Lemke runs count in `solves`).
+      integer :: active_solves = 0, active_iterations = 0, active_iterations_max = 0
+      integer :: active_updates = 0, active_fallbacks = 0
       !> Largest accepted natural residual.
       real(dp) :: residual_max = 0.0_dp
       !> Wall-clock time (s) spent solving LCPs: assembly, Lemke, checks, re-solves and
@@ -57,6 +65,22 @@ contains
       if (trivial) st%trivial = st%trivial + 1
       if (warm) st%warm = st%warm + 1
    end subroutine statistics_count_solve
+
+   !> Count one active-set solve.
+   pure subroutine statistics_count_active_set(st, iterations, updates, failed)
+      !> The statistics.
+      type(lcp_statistics), intent(inout) :: st
+      !> Its iterations (reduced solves) and factor updates.
+      integer, intent(in) :: iterations, updates
+      !> It failed: Lemke solves the step.
+      logical, intent(in) :: failed
+
+      st%active_solves = st%active_solves + 1
+      st%active_iterations = st%active_iterations + iterations
+      st%active_iterations_max = max(st%active_iterations_max, iterations)
+      st%active_updates = st%active_updates + updates
+      if (failed) st%active_fallbacks = st%active_fallbacks + 1
+   end subroutine statistics_count_active_set
 
    !> Record a step solved by enumeration after Lemke failed.
    pure subroutine statistics_add_event(st, event)

@@ -44,6 +44,9 @@ module pound_config
       !> Every DOF's displacement history of each frame building (`u_nodes` in the HDF5 file,
       !> the DOF layout in `/model/<b>/dofs`); default off.
       logical :: node_histories = .false.
+      !> LCP method of the coupled steps: 'auto' (the active-set method for steps whose acting
+      !> joints are all elastic, Lemke otherwise and when it fails) or 'lemke' (every step).
+      character(len=8) :: lcp_solver = 'auto'
    end type analysis_config
 
    !> `&ground`: one ground motion (a deck with several `&ground` groups is a suite).

@@ -1,5 +1,5 @@
 !> Reader of `&analysis`: title, dt, t_end, output_every, history, stepping, impact_substeps,
-!> compress, node_histories.
+!> compress, node_histories, lcp_solver.
 module pound_deck_analysis
    use pound_config, only: analysis_config
    use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
@@ -30,7 +30,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=title_len) :: title
       character(len=path_len) :: history
-      character(len=word_len) :: stepping
+      character(len=word_len) :: stepping, lcp_solver
       real(dp) :: dt, t_end
       integer :: output_every, ios, impact_substeps
       logical :: compress, node_histories
@@ -38,7 +38,7 @@ contains
       character(len=512) :: msg
       type(site) :: at
       namelist /analysis/ title, dt, t_end, output_every, history, stepping, impact_substeps, compress, &
-                          node_histories
+                          node_histories, lcp_solver
 
       title = ' '
       history = ' '
@@ -49,6 +49,7 @@ contains
       impact_substeps = 0
       compress = .false.
       node_histories = .false.
+      lcp_solver = 'auto'
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -86,12 +87,8 @@ contains
       cfg%dt = dt
       cfg%t_end = t_end
       cfg%output_every = output_every
-      if (lower(trim(adjustl(stepping))) /= 'uniform' .and. lower(trim(adjustl(stepping))) /= 'impact') then
-         call fail(at, 'stepping', "stepping = '"//trim(adjustl(stepping))//"', must be 'uniform' or 'impact'", &
-                   error)
-         return
-      end if
-      cfg%stepping = lower(trim(adjustl(stepping)))
+      call one_of('stepping', stepping, 'uniform', 'impact', cfg%stepping)
+      if (allocated(error)) return
       if (impact_substeps < 0 .or. impact_substeps > max_substeps) then
          call fail(at, 'impact_substeps', 'impact_substeps = '//str(impact_substeps)//', must be 1..'// &
                    str(max_substeps)//' (or 0 or not given: chosen from the joints'' contact half-periods)', error)
@@ -105,7 +102,28 @@ contains
       cfg%impact_substeps = impact_substeps
       cfg%compress = compress
       cfg%node_histories = node_histories
+      call one_of('lcp_solver', lcp_solver, 'auto', 'lemke', cfg%lcp_solver)
+      if (allocated(error)) return
       call parse_history(at, history, cfg%store, error)
+
+   contains
+
+      !> A text variable that must be `a` or `b` (any case, blanks around): `word` set, or
+      !> `error`.
+      subroutine one_of(name, value, a, b, word)
+         !> Variable name, value as read, the two choices (lower case).
+         character(len=*), intent(in) :: name, value, a, b
+         !> The choice (lower case).
+         character(len=*), intent(inout) :: word
+         character(len=:), allocatable :: v
+
+         v = lower(trim(adjustl(value)))
+         if (v /= a .and. v /= b) then
+            call fail(at, name, name//" = '"//trim(adjustl(value))//"', must be '"//a//"' or '"//b//"'", error)
+            return
+         end if
+         word = v
+      end subroutine one_of
    end subroutine read_analysis
 
 end module pound_deck_analysis

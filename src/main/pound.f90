@@ -288,8 +288,15 @@ contains
                cs%stats%pivots_total, ' LCP pivots'
             text = text//trim(line)//new_line('a')
             write (line, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
-               ' s, LCP solves ', cs%stats%solves, ', pivots max ', cs%stats%pivots_max, ', steps ', cpl%n_steps
+               ' s, LCP solves ', cs%stats%solves + cs%stats%active_solves - cs%stats%active_fallbacks, &
+               ', pivots max ', cs%stats%pivots_max, ', steps ', cpl%n_steps
             text = text//trim(line)//new_line('a')
+            if (cs%stats%active_solves > 0) then
+               write (line, '(a,i0,a,i0,a,i0,a,i0)') '  LCP active set:        active-set solves ', &
+                  cs%stats%active_solves, ', iterations ', cs%stats%active_iterations, ' (max ', &
+                  cs%stats%active_iterations_max, '), fallbacks to Lemke ', cs%stats%active_fallbacks
+               text = text//trim(line)//new_line('a')
+            end if
             if (cpl%substep_factor > 0) then
                text = text//'  impact stepping:       '//substep_text(cpl)//new_line('a')
             end if

@@ -459,6 +459,17 @@ contains
          '    re-solves (a left-out constraint would close, a segment end was passed): ', &
          cs%stats%resolves
       call note_io()
+      if (cs%stats%active_solves > 0) then
+         write (u, '(a,i0,a,i0,a,f8.3,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
+            '    active-set method (elastic steps, from the previous step''s set): solves ', &
+            cs%stats%active_solves, ', iterations ', cs%stats%active_iterations, ' (mean ', &
+            real(cs%stats%active_iterations, dp)/real(cs%stats%active_solves, dp), ', max ', &
+            cs%stats%active_iterations_max, '), factor updates ', cs%stats%active_updates, ','
+         call note_io()
+         write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '      ', cs%stats%active_fallbacks, &
+            ' failed and were solved by Lemke (counted above)'
+         call note_io()
+      end if
       write (u, '(a,i0)', iostat=ios, iomsg=msg) &
          '    largest LCP (contact + yield + segment-end rows): ', cs%stats%largest_lcp
       call note_io()

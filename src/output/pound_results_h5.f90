@@ -471,6 +471,12 @@ contains
          call h5_write_attr(h5, c, 'lcp_fallbacks', cs%stats%fallbacks, error)
          if (allocated(error)) return
          call h5_write_attr(h5, c, 'lcp_largest', cs%stats%largest_lcp, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, c, 'lcp_active_set_solves', cs%stats%active_solves, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, c, 'lcp_active_set_iterations', cs%stats%active_iterations, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, c, 'lcp_active_set_fallbacks', cs%stats%active_fallbacks, error)
       end subroutine write_contact
 
       !> Pairs of event k, padded to a common length for the string dataset.
