@@ -48,7 +48,8 @@ module pound_suite
    use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
                                separation_ddc, cqc_correlation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion
-   use pound_analysis, only: analysis_result
+   use pound_analysis, only: analysis_result, n_energy, analysis_copy
+   use pound_analysis_batch, only: batch_eligible, run_uncoupled_batch, batch_lanes
    implicit none
    private
 
@@ -59,6 +60,10 @@ module pound_suite
    integer, parameter :: n_spectrum = 60
    !> Damping ratio of the spectra and of `scale_to = 'sa'`.
    real(dp), parameter :: spectrum_damping = 0.05_dp
+   !> Batched uncoupled runs (`pound_analysis_batch`): at least this many motions a batch (fewer
+   !> run one by one), and at most this many bytes of their results held at once.
+   integer, parameter :: batch_min = 3
+   real(dp), parameter :: batch_bytes = 256.0_dp*2.0_dp**20
 
    !> Bisection for a threshold gap: `lo` fails the target, `hi` meets it; halved until
    !> hi - lo <= tol (reverse communication: `bisection_step` gives the trial gap,
@@ -298,6 +303,35 @@ contains
       end do
    end subroutine suite_pairs
 
+   !> Motions whose uncoupled runs a suite makes together (`pound_analysis_batch`): up to
+   !> `batch_lanes`, as many as `batch_bytes` of results allow, the groups as even as possible;
+   !> 0 (one by one) for fewer than `batch_min` motions or buildings the batch cannot run.
+   integer function batch_group(deck, models) result(size_of)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      real(dp) :: bytes
+      integer :: nm, ib, groups, n_out
+
+      size_of = 0
+      nm = size(deck%motions)
+      if (nm < batch_min .or. .not. batch_eligible(models)) return
+      n_out = nint(deck%analysis%t_end/deck%analysis%dt)/deck%analysis%output_every + 1
+      bytes = real(1 + n_energy, dp)
+      do ib = 1, size(models)
+         bytes = bytes + real(size(models(ib)%floor_dof), dp)*real(count(deck%analysis%store), dp)
+      end do
+      bytes = 8.0_dp*real(n_out, dp)*bytes
+      size_of = int(min(real(batch_lanes, dp), batch_bytes/bytes))
+      if (size_of < batch_min) then
+         size_of = 0
+         return
+      end if
+      groups = (nm + size_of - 1)/size_of
+      size_of = (nm + groups - 1)/groups
+   end function batch_group
+
    !> Run every motion of the deck's suite and gather the suite statistics.
    subroutine run_suite(deck, suite, first, error, label)
       !> A validated configuration.
@@ -320,6 +354,9 @@ contains
       logical :: targeted(n_history_quantities)
       integer :: nm, nb, k, ib, n_steps, np, ip, nmax
       logical :: has_u
+      type(analysis_result), allocatable, target :: batched(:)
+      logical, allocatable :: batched_ok(:)
+      integer :: batch_first, batch_size, batch_count
 
       nm = size(deck%motions)
       nb = size(deck%buildings)
@@ -359,6 +396,9 @@ contains
       targeted = deck%sweep%target_quantities
       if (.not. (deck%sweep%target > 0.0_dp)) targeted = .true.
       if (present(label)) options%label = label
+      batch_size = batch_group(deck, models)
+      batch_first = 0
+      batch_count = 0
 
       do k = 1, nm
          suite%names(k) = deck%motions(k)%name
@@ -392,12 +432,17 @@ contains
          call response_spectrum(ag, deck%analysis%dt, suite%building_period, spectrum_damping, sa, error)
          if (allocated(error)) return
          suite%sa_building(k, :) = sa
+         if (batch_size > 0) then
+            call take_uncoupled(error)
+            if (allocated(error)) return
+         end if
          if (k == 1) then
             call run_case(deck, first, error, options)
          else
             call run_case(deck, res, error, options)
          end if
          deallocate (options%ground)
+         nullify (options%unc)
          if (allocated(error)) then
             error%message = "&ground '"//deck%motions(k)%name//"': "//error%message
             return
@@ -453,6 +498,39 @@ contains
 
    contains
 
+      !> Motion k's uncoupled result in `options%unc` when a batch ran it: at the first motion of
+      !> a group (`batch_size` motions; the last `batch_min` - 1 or fewer run one by one) the
+      !> group's uncoupled runs are made together.
+      subroutine take_uncoupled(error)
+         type(error_type), allocatable, intent(out) :: error
+         type(ground_motion_t) :: gm
+         real(dp), allocatable :: agb(:, :)
+         real(dp) :: factor
+         integer :: j
+
+         if (batch_first == 0 .or. k >= batch_first + batch_count) then
+            batch_first = k
+            batch_count = min(batch_size, nm - k + 1)
+            if (allocated(batched)) deallocate (batched, batched_ok)
+            if (batch_count < batch_min) then
+               batch_count = nm - k + 1
+               return
+            end if
+            allocate (agb(0:n_steps, batch_count), batched(batch_count), batched_ok(batch_count))
+            do j = 1, batch_count
+               call suite_motion(deck, k + j - 1, models, gm, factor, error)
+               if (allocated(error)) then
+                  error%message = "&ground '"//deck%motions(k + j - 1)%name//"': "//error%message
+                  return
+               end if
+               call sample_ground(gm, deck%analysis%dt, n_steps, agb(:, j))
+            end do
+            call run_uncoupled_batch(deck%analysis, models, agb, batched, batched_ok)
+         end if
+         if (.not. allocated(batched)) return
+         if (batched_ok(k - batch_first + 1)) options%unc => batched(k - batch_first + 1)
+      end subroutine take_uncoupled
+
       !> The histories of motion k, when its `&ground` asks for them.
       subroutine keep(res)
          type(case_result), intent(in) :: res
@@ -460,28 +538,10 @@ contains
          if (.not. deck%motions(k)%histories) return
          suite%histories(k)%stored = .true.
          suite%histories(k)%ag_out = res%ag_out
-         call copy_histories(res%unc, suite%histories(k)%unc)
+         call analysis_copy(res%unc, suite%histories(k)%unc)
          suite%histories(k)%has_coupled = res%has_coupled
-         if (res%has_coupled) call copy_histories(res%cpl, suite%histories(k)%cpl)
+         if (res%has_coupled) call analysis_copy(res%cpl, suite%histories(k)%cpl)
       end subroutine keep
-
-      !> What the writer needs of an analysis, component by component (the warnings, an array
-      !> of deferred-length strings, are left out: gfortran 12 does not copy such a component
-      !> of a derived type reliably).
-      subroutine copy_histories(src, dst)
-         type(analysis_result), intent(in) :: src
-         type(analysis_result), intent(inout) :: dst
-
-         dst%n_steps = src%n_steps
-         dst%n_out = src%n_out
-         dst%time = src%time
-         dst%building = src%building
-         dst%energy = src%energy
-         dst%energy_error = src%energy_error
-         dst%joints = src%joints
-         dst%seconds = src%seconds
-         dst%contact_seconds = src%contact_seconds
-      end subroutine copy_histories
 
       !> Peaks, lambdas and rules of motion k.
       subroutine gather(res)
