@@ -148,6 +148,8 @@ contains
             call batch_step(bt(ib), models(ib), ag_old, ag_new, t, pk(ib)%peak, pk(ib)%time)
          end do
          out = mod(step, cfg%output_every) == 0
+         win = 0.0_dp
+         eout = 0.0_dp
          if (out) then
             k = k + 1
             do l = 1, batch_lanes
@@ -168,15 +170,14 @@ contains
                eout(l) = sum(sample(e_kinetic:n_energy))
             end do
          else
-            win = 0.0_dp
-            eout = 0.0_dp
             do ib = 1, nb
                win = win + bt(ib)%input_work
                eout = eout + ((bt(ib)%kinetic + bt(ib)%strain) + bt(ib)%damping_energy)
             end do
          end if
          do l = 1, batch_lanes
-            if (live(l) .and. .not. abs(win(l) + eout(l)) <= huge(1.0_dp)) call drop(l)
+            if (.not. live(l)) cycle
+            if (.not. abs(win(l) + eout(l)) <= huge(1.0_dp)) call drop(l)
          end do
          resid = max(resid, abs(win - eout))
          scale = max(scale, abs(win), eout)
