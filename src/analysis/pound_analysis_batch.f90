@@ -81,11 +81,17 @@ contains
 
    !> Motions m1..m2 (at most `batch_lanes`) in one batch.
    subroutine run_lanes(cfg, models, ag, m1, m2, res, ok)
+      !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
+      !> The buildings.
       type(structure_model), intent(in) :: models(:)
+      !> Ground acceleration of every motion (0:n_steps, n_motions).
       real(dp), intent(in) :: ag(0:, :)
+      !> First and last motion of the batch.
       integer, intent(in) :: m1, m2
+      !> Results of every motion (those of m1..m2 completed), set up by `start_result`.
       type(analysis_result), intent(inout) :: res(:)
+      !> Whether each motion can run / ran (m1..m2 updated).
       logical, intent(inout) :: ok(:)
       type(newmark_state) :: st
       type(newmark_batch), allocatable :: bt(:)
