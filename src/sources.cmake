@@ -26,6 +26,8 @@ set(POUND_SOURCES
   model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_building.f90 model/pound_building.f90
   # solver: Newmark average acceleration
   solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
+  # solver: several ground motions of one shear building at once (motion-fastest lanes)
+  solver/pound_newmark_batch.f90
   # solver: exact step of a linear oscillator under piecewise-linear forcing
   solver/pound_sdof.f90
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
@@ -37,6 +39,8 @@ set(POUND_SOURCES
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_influence.f90
   analysis/pound_sweep.f90 analysis/pound_memory.f90
+  # analyses: the uncoupled runs of several motions at once
+  analysis/pound_analysis_batch.f90
   # analyses: response spectra and scaling, code separation rules
   analysis/pound_spectrum.f90 analysis/pound_separation.f90
   # driver: one case from a validated configuration to all results (program, tests, suites)

@@ -45,6 +45,7 @@ module pound_analysis
    public :: e_input, e_kinetic, e_strain, e_damping, e_contact, e_plastic, n_energy, energy_names
    public :: add_warning, write_warnings, audit_warning_limit, resolved_steps
    public :: substeps_per_half_period, impact_substeps_of, contact_half_period, substep_text
+   public :: start_result, audit_error, uncoupled_audit_warning, analysis_copy
 
    !> Relative energy residual above which the result carries a warning.
    real(dp), parameter :: audit_warning_limit = 1.0e-2_dp
@@ -537,9 +538,7 @@ contains
       if (coupled) then
          call warn_unresolved_joints(res, models, cs, h)
       else
-         call add_warning(res%warnings, 'energy audit (uncoupled): relative residual '//str(res%energy_error)// &
-                          ' > '//str(audit_warning_limit)//' without contact: the integration is not '// &
-                          'trustworthy; reduce dt')
+         call add_warning(res%warnings, uncoupled_audit_warning(res%energy_error))
       end if
 
    contains
@@ -554,6 +553,43 @@ contains
          call contact_swap_step(cs, sub%cs)
       end subroutine swap_steps
    end subroutine integrate
+
+   !> dst = src, component by component, but the substep counts of `stepping = 'impact'`
+   !> (the warnings, an array of deferred-length strings, line by line: gfortran 12 does not
+   !> copy such a component of a derived type reliably).
+   subroutine analysis_copy(src, dst)
+      !> The result copied.
+      type(analysis_result), intent(in) :: src
+      !> The copy.
+      type(analysis_result), intent(out) :: dst
+      integer :: i
+
+      dst%n_steps = src%n_steps
+      dst%n_out = src%n_out
+      dst%time = src%time
+      dst%building = src%building
+      dst%energy = src%energy
+      dst%energy_error = src%energy_error
+      dst%joints = src%joints
+      dst%seconds = src%seconds
+      dst%contact_seconds = src%contact_seconds
+      allocate (character(len=1) :: dst%warnings(0))
+      if (.not. allocated(src%warnings)) return
+      do i = 1, size(src%warnings)
+         call add_warning(dst%warnings, trim(src%warnings(i)))
+      end do
+   end subroutine analysis_copy
+
+   !> The warning of an uncoupled run whose relative audit residual `err` exceeds
+   !> `audit_warning_limit`.
+   pure function uncoupled_audit_warning(err) result(text)
+      !> Relative residual of the energy audit.
+      real(dp), intent(in) :: err
+      character(len=:), allocatable :: text
+
+      text = 'energy audit (uncoupled): relative residual '//str(err)//' > '//str(audit_warning_limit)// &
+             ' without contact: the integration is not trustworthy; reduce dt'
+   end function uncoupled_audit_warning
 
    !> The substeps an analysis with `stepping = 'impact'` took, as one line of text.
    function substep_text(res) result(text)

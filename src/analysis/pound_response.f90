@@ -30,7 +30,7 @@ module pound_response
    implicit none
    private
 
-   public :: response_record, response_init, response_sample, response_finish
+   public :: response_record, response_init, response_sample, response_finish, response_store
    public :: history_sink, response_flush, default_block_bytes, history_block, discard_sink
    public :: q_u, q_v, q_a_abs, q_drift, q_shear, deformed_limit
 
@@ -219,18 +219,7 @@ contains
 
       if (rec%stick) then
          call track_peaks(rec%n, u, v, a, ag, t, rec%peak, rec%peak_time)
-         if (.not. output) return
-         rec%n_out = rec%n_out + 1
-         k = rec%n_out
-         if (rec%nodes) rec%u_nodes(:, k) = u
-         if (rec%store(q_u)) rec%u(:, k) = u
-         if (rec%store(q_v)) rec%v(:, k) = v
-         if (rec%store(q_a_abs)) rec%a_abs(:, k) = a + ag
-         if (rec%store(q_drift) .or. rec%store(q_shear)) then
-            call chain_drift(rec%n, u, rec%work)
-            if (rec%store(q_drift)) rec%drift(:, k) = rec%work
-            if (rec%store(q_shear)) rec%shear(:, k) = b%shear%scale*rec%work
-         end if
+         if (output) call response_store(rec, b, u, v, a, ag)
          return
       end if
       rec%pu = u(b%floor_dof)
@@ -255,6 +244,33 @@ contains
       if (rec%store(q_drift)) rec%drift(:, k) = rec%pd
       if (rec%store(q_shear)) rec%shear(:, k) = rec%ps
    end subroutine response_sample
+
+   !> Append a history sample of a stick (`rec%stick`) from its DOF vectors, peaks untouched:
+   !> the output part of `response_sample` (also used by the batched uncoupled runs, which
+   !> track the peaks in their own pass).
+   pure subroutine response_store(rec, b, u, v, a, ag)
+      !> The record of a stick.
+      type(response_record), intent(inout) :: rec
+      !> The building.
+      type(structure_model), intent(in) :: b
+      !> Relative displacement, velocity and acceleration.
+      real(dp), intent(in) :: u(:), v(:), a(:)
+      !> Ground acceleration (m/s^2).
+      real(dp), intent(in) :: ag
+      integer :: k
+
+      rec%n_out = rec%n_out + 1
+      k = rec%n_out
+      if (rec%nodes) rec%u_nodes(:, k) = u
+      if (rec%store(q_u)) rec%u(:, k) = u
+      if (rec%store(q_v)) rec%v(:, k) = v
+      if (rec%store(q_a_abs)) rec%a_abs(:, k) = a + ag
+      if (rec%store(q_drift) .or. rec%store(q_shear)) then
+         call chain_drift(rec%n, u, rec%work)
+         if (rec%store(q_drift)) rec%drift(:, k) = rec%work
+         if (rec%store(q_shear)) rec%shear(:, k) = b%shear%scale*rec%work
+      end if
+   end subroutine response_store
 
    !> Running absolute maxima of u, v, a_abs and drift in one pass over the floors
    !> (explicit-shape arrays, so the compiler sees plain contiguous memory).

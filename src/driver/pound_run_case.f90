@@ -20,7 +20,8 @@ module pound_run_case
                                   describe_ground
    use pound_building, only: building_model, build_building
    use pound_structure, only: structure_model
-   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning, history_sink
+   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning, history_sink, &
+                             analysis_copy
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
    use pound_sweep, only: sweep_result, run_sweep
@@ -47,6 +48,9 @@ module pound_run_case
       !> file); not associated: the histories are held whole in the results (the sweep's
       !> runs never stream).
       class(history_sink), pointer :: sink => null()
+      !> The uncoupled result of this case, already computed (a suite's uncoupled runs of
+      !> several motions at once, `pound_analysis_batch`): taken instead of running it.
+      type(analysis_result), pointer :: unc => null()
    end type case_options
 
    !> Everything a case computes, as the writers need it.
@@ -173,8 +177,12 @@ contains
 
       ! Analyses.
       if (.not. coupled_only) then
-         call run_uncoupled(deck%analysis, res%models, ag, res%unc, error, sink)
-         if (allocated(error)) return
+         if (has_uncoupled()) then
+            call analysis_copy(options%unc, res%unc)
+         else
+            call run_uncoupled(deck%analysis, res%models, ag, res%unc, error, sink)
+            if (allocated(error)) return
+         end if
          res%has_uncoupled = .true.
       end if
       if (size(deck%contacts) > 0) then
@@ -225,6 +233,11 @@ contains
          has_ground = .false.
          if (present(options)) has_ground = allocated(options%ground)
       end function has_ground
+
+      logical function has_uncoupled()
+         has_uncoupled = .false.
+         if (present(options)) has_uncoupled = associated(options%unc)
+      end function has_uncoupled
 
       subroutine collect(warnings)
          character(len=:), allocatable, intent(in) :: warnings(:)

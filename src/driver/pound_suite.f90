@@ -48,8 +48,9 @@ module pound_suite
    use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
                                separation_ddc, cqc_correlation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion
-   use pound_analysis, only: analysis_result
-   use pound_cases, only: case_work, case_table, run_cases, first_failure
+   use pound_analysis, only: analysis_result, n_energy, analysis_copy
+   use pound_analysis_batch, only: batch_eligible, run_uncoupled_batch, batch_lanes
+   use pound_cases, only: case_work, case_table, run_cases, first_failure, cases_ranks
    implicit none
    private
 
@@ -60,6 +61,10 @@ module pound_suite
    integer, parameter :: n_spectrum = 60
    !> Damping ratio of the spectra and of `scale_to = 'sa'`.
    real(dp), parameter :: spectrum_damping = 0.05_dp
+   !> Batched uncoupled runs (`pound_analysis_batch`): at least this many motions a batch (fewer
+   !> run one by one), and at most this many bytes of their results held at once.
+   integer, parameter :: batch_min = 3
+   real(dp), parameter :: batch_bytes = 256.0_dp*2.0_dp**20
 
    !> Bisection for a threshold gap: `lo` fails the target, `hi` meets it; halved until
    !> hi - lo <= tol (reverse communication: `bisection_step` gives the trial gap,
@@ -162,13 +167,17 @@ module pound_suite
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
    end type suite_context
 
-   !> The motions of a suite without `&sweep` as cases: motion `motion(i)` scaled, its spectra
-   !> and its run, into a column (`motion_run`).
+   !> The motions of a suite without `&sweep` as cases: case i is the group of motions
+   !> `motion(start(i):start(i+1)-1)`, their uncoupled runs batched (`batch_uncoupled`), each
+   !> motion then scaled, its spectra and its run into its part of the column (`motion_run`;
+   !> `motion_width` reals a motion, motion j of the group at (j-1)*motion_width).
    type, extends(case_work) :: suite_cases
       !> The suite's data.
       type(suite_context), pointer :: ctx => null()
-      !> Motion index of each case.
+      !> Motion indices of the cases, group after group.
       integer, allocatable :: motion(:)
+      !> First entry of `motion` of each group, and one past the last (n_cases + 1).
+      integer, allocatable :: start(:)
    contains
       procedure :: compute => suite_case
    end type suite_cases
@@ -196,20 +205,72 @@ module pound_suite
 
 contains
 
-   !> Motion `motion(i)` of the suite (a case of `suite_cases`).
+   !> The group of motions of case i (a case of `suite_cases`): their uncoupled runs batched,
+   !> then each motion's run.
    recursive subroutine suite_case(work, i, values, error)
       !> The cases.
       class(suite_cases), intent(inout) :: work
       !> Case index.
       integer, intent(in) :: i
-      !> The motion's column (`motion_run`).
+      !> The motions' columns one after the other (`motion_run`).
       real(dp), intent(out) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       type(case_result) :: res
+      type(analysis_result), allocatable, target :: batched(:)
+      logical, allocatable :: ok(:)
+      integer :: j, w
 
-      call motion_run(work%ctx, work%motion(i), res, values, error)
+      values = 0.0_dp
+      w = motion_width(work%ctx)
+      associate (ms => work%motion(work%start(i):work%start(i + 1) - 1))
+         call batch_uncoupled(work%ctx, ms, batched, ok, error)
+         if (allocated(error)) return
+         do j = 1, size(ms)
+            if (ok(j)) then
+               call motion_run(work%ctx, ms(j), res, values((j - 1)*w + 1:j*w), error, batched(j))
+            else
+               call motion_run(work%ctx, ms(j), res, values((j - 1)*w + 1:j*w), error)
+            end if
+            if (allocated(error)) return
+         end do
+      end associate
    end subroutine suite_case
+
+   !> The uncoupled runs of the motions `ms` made together (`run_uncoupled_batch`) when they are
+   !> `batch_min` or more and the buildings qualify: `ok(j)` tells whether `batched(j)` holds
+   !> motion ms(j)'s result (bit for bit its run alone); the others run one by one.
+   subroutine batch_uncoupled(ctx, ms, batched, ok, error)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+      !> Motion indices.
+      integer, intent(in) :: ms(:)
+      !> The motions' uncoupled results, where `ok`.
+      type(analysis_result), allocatable, intent(out) :: batched(:)
+      !> Whether the batch ran the motion.
+      logical, allocatable, intent(out) :: ok(:)
+      !> Error state (a motion that cannot be built or scaled).
+      type(error_type), allocatable, intent(out) :: error
+      type(ground_motion_t) :: gm
+      real(dp), allocatable :: agb(:, :)
+      real(dp) :: factor
+      integer :: j, n_steps
+
+      allocate (batched(size(ms)), ok(size(ms)))
+      ok = .false.
+      if (size(ms) < batch_min .or. .not. batch_eligible(ctx%models)) return
+      n_steps = nint(ctx%deck%analysis%t_end/ctx%deck%analysis%dt)
+      allocate (agb(0:n_steps, size(ms)))
+      do j = 1, size(ms)
+         call suite_motion(ctx%deck, ms(j), ctx%models, gm, factor, error)
+         if (allocated(error)) then
+            error%message = "&ground '"//ctx%deck%motions(ms(j))%name//"': "//error%message
+            return
+         end if
+         call sample_ground(gm, ctx%deck%analysis%dt, n_steps, agb(:, j))
+      end do
+      call run_uncoupled_batch(ctx%deck%analysis, ctx%models, agb, batched, ok)
+   end subroutine batch_uncoupled
 
    !> Reals in the column of one motion (`motion_run`).
    pure integer function motion_width(ctx) result(width)
@@ -238,7 +299,8 @@ contains
    !> suite's statistics need of it in `col`: scale factor, PGA, whether the influence exists,
    !> Sa at the spectra's periods and at the buildings' periods, per building lambda, the
    !> uncoupled and the coupled peaks, and per pair the no-contact gap (-1 without 'u').
-   subroutine motion_run(ctx, k, res, col, error)
+   !> With `unc`, the motion's uncoupled result is taken from there (a batch ran it).
+   subroutine motion_run(ctx, k, res, col, error, unc)
       !> The suite's data.
       type(suite_context), intent(in) :: ctx
       !> Motion index.
@@ -249,6 +311,8 @@ contains
       real(dp), intent(out) :: col(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> The motion's uncoupled result, already computed (`batch_uncoupled`).
+      type(analysis_result), intent(inout), target, optional :: unc
       type(case_options) :: options
       real(dp), allocatable :: ag(:), sa(:), u1(:), u2(:)
       real(dp) :: dt
@@ -271,6 +335,7 @@ contains
       call response_spectrum(ag, dt, ctx%building_period, spectrum_damping, sa, error)
       if (allocated(error)) return
       col(o + 1:o + size(sa)) = sa
+      if (present(unc)) options%unc => unc
       call run_case(ctx%deck, res, error, options)
       if (allocated(error)) then
          error%message = "&ground '"//ctx%deck%motions(k)%name//"': "//error%message
@@ -628,6 +693,36 @@ contains
       end do
    end subroutine suite_pairs
 
+   !> Groups of n motions whose uncoupled runs a suite makes together (`batch_uncoupled`):
+   !> group g is entries start(g):start(g+1)-1, of up to `batch_lanes` motions (and `most`), as
+   !> many as `batch_bytes` of results allow, the groups as even as possible; one motion a group
+   !> (one by one) for fewer than `batch_min` motions or buildings the batch cannot run.
+   pure function batch_groups(deck, models, n, most) result(start)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> Number of motions, and the most a group may take.
+      integer, intent(in) :: n, most
+      integer, allocatable :: start(:)
+      real(dp) :: bytes
+      integer :: ib, groups, n_out, size_of, g
+
+      start = [(g, g=1, n + 1)]
+      if (n < batch_min .or. .not. batch_eligible(models)) return
+      n_out = nint(deck%analysis%t_end/deck%analysis%dt)/deck%analysis%output_every + 1
+      bytes = real(1 + n_energy, dp)
+      do ib = 1, size(models)
+         bytes = bytes + real(size(models(ib)%floor_dof), dp)*real(count(deck%analysis%store), dp)
+      end do
+      bytes = 8.0_dp*real(n_out, dp)*bytes
+      size_of = int(min(real(min(batch_lanes, most), dp), batch_bytes/bytes))
+      if (size_of < batch_min) return
+      groups = (n + size_of - 1)/size_of
+      size_of = (n + groups - 1)/groups
+      start = [(min(1 + (g - 1)*size_of, n + 1), g=1, groups + 1)]
+   end function batch_groups
+
    !> Run every motion of the deck's suite and gather the suite statistics.
    subroutine run_suite(deck, suite, first, error, label)
       !> A validated configuration.
@@ -653,7 +748,10 @@ contains
       real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :)
       real(dp), allocatable :: z(:), sweep_sum(:, :, :)
       logical :: targeted(n_history_quantities)
-      integer :: nm, nb, k, ib, np, ip, nmax
+      integer :: nm, nb, k, ib, np, ip, nmax, ig
+      integer, allocatable :: start(:), ms(:)
+      type(analysis_result), allocatable, target :: batched(:)
+      logical, allocatable :: batched_ok(:)
 
       nm = size(deck%motions)
       nb = size(deck%buildings)
@@ -717,7 +815,11 @@ contains
       ! The motions: with `&sweep` each runs on every rank in turn (its sweep's gaps are the
       ! cases); without, they are the cases, and those the writers need whole (the first, and
       ! those whose histories are kept) run on every rank beside them. Either way the
-      ! statistics take the motions' columns in motion order.
+      ! statistics take the motions' columns in motion order. The uncoupled runs are batched
+      ! in groups of consecutive motions (`batch_groups`): the whole motions' groups on every
+      ! rank, the other motions' groups as the cases (at most as many motions a group as give
+      ! every rank a case); a batched run is bit for bit its run alone, so the grouping and the
+      ! ranks do not change the numbers.
       ctx%deck => deck
       ctx%plain = deck
       ctx%plain%sweep%active = .false.
@@ -731,27 +833,36 @@ contains
       ctx%fl = fl
       ctx%fr = fr
       allocate (columns(motion_width(ctx), nm), whole(nm))
-      do k = 1, nm
-         whole(k) = deck%sweep%active .or. k == 1 .or. deck%motions(k)%histories
-         if (.not. whole(k)) cycle
-         if (k == 1) then
-            call motion_run(ctx, k, first, columns(:, k), error)
+      whole = [(deck%sweep%active .or. k == 1 .or. deck%motions(k)%histories, k=1, nm)]
+      ms = pack([(k, k=1, nm)], whole)
+      start = batch_groups(deck, models, size(ms), nm)
+      do ig = 1, size(start) - 1
+         call batch_uncoupled(ctx, ms(start(ig):start(ig + 1) - 1), batched, batched_ok, error)
+         if (allocated(error)) return
+         do ip = 1, size(batched)
+            k = ms(start(ig) + ip - 1)
+            if (k == 1) then
+               call whole_run(first, ip)
+            else
+               call whole_run(res, ip)
+            end if
             if (allocated(error)) return
-            call gather_sweep(first)
-            call keep(first)
-         else
-            call motion_run(ctx, k, res, columns(:, k), error)
-            if (allocated(error)) return
-            call gather_sweep(res)
-            call keep(res)
-         end if
+         end do
+         deallocate (batched, batched_ok)
       end do
       motions%ctx => ctx
       motions%motion = pack([(k, k=1, nm)], .not. whole)
-      call run_cases(motions, size(motions%motion), size(columns, 1), table)
-      call first_failure(table, motion_names(deck, '', motions%motion, bare=.true.), error)
+      motions%start = batch_groups(deck, models, size(motions%motion), &
+                                   (size(motions%motion) + cases_ranks() - 1)/cases_ranks())
+      k = size(motions%start) - 1
+      call run_cases(motions, k, size(columns, 1)*max(1, maxval(motions%start(2:) - motions%start(:k))), table)
+      call first_failure(table, motion_names(deck, '', motions%motion(motions%start(1:k)), bare=.true.), error)
       if (allocated(error)) return
-      columns(:, motions%motion) = table%values
+      do ig = 1, k
+         associate (m => motions%motion(motions%start(ig):motions%start(ig + 1) - 1))
+            columns(:, m) = reshape(table%values(1:size(columns, 1)*size(m), ig), [size(columns, 1), size(m)])
+         end associate
+      end do
       do k = 1, nm
          call gather(columns(:, k))
       end do
@@ -806,6 +917,22 @@ contains
 
    contains
 
+      !> Motion k run on every rank (its uncoupled run from the batch when it took it): its
+      !> column, its sweep and its histories.
+      subroutine whole_run(r, j)
+         type(case_result), intent(out) :: r
+         integer, intent(in) :: j
+
+         if (batched_ok(j)) then
+            call motion_run(ctx, k, r, columns(:, k), error, batched(j))
+         else
+            call motion_run(ctx, k, r, columns(:, k), error)
+         end if
+         if (allocated(error)) return
+         call gather_sweep(r)
+         call keep(r)
+      end subroutine whole_run
+
       !> The histories of motion k, when its `&ground` asks for them.
       subroutine keep(res)
          type(case_result), intent(in) :: res
@@ -813,28 +940,10 @@ contains
          if (.not. deck%motions(k)%histories) return
          suite%histories(k)%stored = .true.
          suite%histories(k)%ag_out = res%ag_out
-         call copy_histories(res%unc, suite%histories(k)%unc)
+         call analysis_copy(res%unc, suite%histories(k)%unc)
          suite%histories(k)%has_coupled = res%has_coupled
-         if (res%has_coupled) call copy_histories(res%cpl, suite%histories(k)%cpl)
+         if (res%has_coupled) call analysis_copy(res%cpl, suite%histories(k)%cpl)
       end subroutine keep
-
-      !> What the writer needs of an analysis, component by component (the warnings, an array
-      !> of deferred-length strings, are left out: gfortran 12 does not copy such a component
-      !> of a derived type reliably).
-      subroutine copy_histories(src, dst)
-         type(analysis_result), intent(in) :: src
-         type(analysis_result), intent(inout) :: dst
-
-         dst%n_steps = src%n_steps
-         dst%n_out = src%n_out
-         dst%time = src%time
-         dst%building = src%building
-         dst%energy = src%energy
-         dst%energy_error = src%energy_error
-         dst%joints = src%joints
-         dst%seconds = src%seconds
-         dst%contact_seconds = src%contact_seconds
-      end subroutine copy_histories
 
       !> The sweep of motion k (a case run on every rank).
       subroutine gather_sweep(res)

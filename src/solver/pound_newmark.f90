@@ -34,7 +34,7 @@ module pound_newmark
    public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_solve
    public :: newmark_add_response, newmark_set_state, newmark_dt, newmark_n, newmark_swap_step
    public :: newmark_u, newmark_v, newmark_a, newmark_du, newmark_u_at, newmark_v_at, newmark_predicted, newmark_energies
-   public :: newmark_path
+   public :: newmark_path, newmark_tridiagonal_factors
    public :: kinetic_energy, strain_energy, newmark_add_balance
    public :: en_input, en_kinetic, en_strain, en_damping
 
@@ -343,6 +343,27 @@ contains
          st%loaded = .true.
       end if
    end subroutine newmark_add_response
+
+   !> The fused tridiagonal path's data, for kernels that advance several motions of the same
+   !> model at once (`pound_newmark_batch`): whether the path is taken, the sub-diagonal e of
+   !> L and 1/d of Khat = L D L^T, and c1 = 4/dt^2, c2 = 2/dt (e and dinv unset otherwise).
+   pure subroutine newmark_tridiagonal_factors(st, tridiagonal, e, dinv, c1, c2)
+      !> Integrator state (factored by `newmark_init`).
+      type(newmark_state), intent(in) :: st
+      !> Whether the fused tridiagonal path is taken.
+      logical, intent(out) :: tridiagonal
+      !> Sub-diagonal of L (max(n-1, 1)) and reciprocal pivots 1/d (n).
+      real(dp), allocatable, intent(out) :: e(:), dinv(:)
+      !> Newmark constants.
+      real(dp), intent(out) :: c1, c2
+
+      tridiagonal = st%tridiagonal
+      c1 = st%c1
+      c2 = st%c2
+      if (.not. tridiagonal) return
+      e = st%e
+      dinv = st%dinv
+   end subroutine newmark_tridiagonal_factors
 
    !> Number of DOFs.
    pure integer function newmark_n(st)
