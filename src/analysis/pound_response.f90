@@ -32,6 +32,7 @@ module pound_response
 
    public :: response_record, response_init, response_sample, response_finish, response_store
    public :: history_sink, response_flush, default_block_bytes, history_block, discard_sink
+   public :: response_block_full
    public :: q_u, q_v, q_a_abs, q_drift, q_shear, deformed_limit
 
    !> Quantity indices.
@@ -412,6 +413,14 @@ contains
       end associate
       if (allocated(error)) deallocate (error)
    end subroutine discard_put
+
+   !> Whether the record's block of output samples is full (a streamed record hands it over).
+   elemental logical function response_block_full(rec) result(full)
+      !> The record.
+      type(response_record), intent(in) :: rec
+
+      full = rec%n_out > 0 .and. rec%n_out >= rec%capacity
+   end function response_block_full
 
    !> Streamed histories: hand the samples held to `sink` and empty the block (when `full`,
    !> only if the block is full).

@@ -258,6 +258,9 @@ contains
       write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', res%unc%seconds, ' s'
       if (res%has_coupled .and. ios == 0) write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) &
          '  coupled integration:   ', res%cpl%seconds, ' s, of which LCP solves ', res%cpl%contact_seconds, ' s'
+      if (res%unc%write_seconds + res%cpl%write_seconds > 0.0_dp .and. ios == 0) &
+         write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) '  histories written during the integration: ', &
+         res%unc%write_seconds, ' s (uncoupled), ', res%cpl%write_seconds, ' s (coupled), not in the times above'
       if (res%has_coupled .and. ios == 0) then
          if (res%cpl%substep_factor > 0) write (u, '(a)', iostat=ios) &
             '  impact stepping:       '//substep_text(res%cpl)
