@@ -718,6 +718,11 @@ contains
       do i = 1, size(res%gap)
          write (cell, '(f10.4)') 1000.0_dp*res%gap(i)
          line = '  '//cell
+         if (res%failed(i)) then
+            write (u, '(a)', iostat=ios, iomsg=msg) line//'   FAILED (see the failed gaps below)'
+            call note_io()
+            cycle
+         end if
          write (cell, '(i9)') res%impacts(i)
          line = line//cell(1:9)
          do ib = 1, size(models)
@@ -746,6 +751,18 @@ contains
                cfg%target, ' % from there to the end of the range.'
             call note_io()
          end if
+      end if
+      if (any(res%failed)) then
+         write (u, '(/,a,i0,a,i0,a)', iostat=ios, iomsg=msg) '  Failed gaps (', count(res%failed), ' of ', &
+            size(res%gap), '; left out, counted as not meeting the target):'
+         call note_io()
+         write (u, '(a)', iostat=ios, iomsg=msg) '    case    gap [mm]  message (time, step, pairs)'
+         call note_io()
+         do i = 1, size(res%gap)
+            if (.not. res%failed(i)) cycle
+            write (u, '(i8,f12.4,2x,a)', iostat=ios, iomsg=msg) i, 1000.0_dp*res%gap(i), trim(res%messages(i))
+            call note_io()
+         end do
       end if
       call write_warning_lines(u, res%warnings)
    end subroutine write_sweep_table
