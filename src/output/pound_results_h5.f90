@@ -40,7 +40,7 @@
 !>                                               attributes target_lambda, safe_gap (-1: none),
 !>                                               and, when some gaps failed, failed_gaps (count)
 !>                                               and safe_gap_note
-!>     /sweep/failed/case, gap, message          (n_failed) the gaps whose run failed
+!>     /sweep/failed/case, gap, time, step, message   (n_failed) the gaps whose run failed
 module pound_results_h5
    use pound_kinds, only: dp
    use pound_error, only: error_type
@@ -55,6 +55,7 @@ module pound_results_h5
    use pound_influence, only: building_influence
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
+   use pound_cases, only: failure_time_step
    use pound_config, only: sweep_config
    implicit none
    private
@@ -624,8 +625,8 @@ contains
    end subroutine write_history
 
    !> The failed cases of a set of cases (a sweep's gaps, a suite's motions) in group `path`:
-   !> `case` (1-based index), `gap` (m) and `message` (time, step, pairs), one entry per
-   !> failed case; attribute `n_cases` (all cases).
+   !> `case` (1-based index), `gap` (m), `time` (s) and `step` of the failure (-1: not named
+   !> in the message) and `message`, one entry per failed case; attribute `n_cases` (all cases).
    subroutine write_failed_cases(h5, path, gap, failed, messages, error)
       !> Open file.
       type(h5_file), intent(inout) :: h5
@@ -639,17 +640,25 @@ contains
       character(len=*), intent(in) :: messages(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer, allocatable :: idx(:)
-      real(dp), allocatable :: g(:)
+      integer, allocatable :: idx(:), step(:)
+      real(dp), allocatable :: g(:), t(:)
       character(len=len(messages)), allocatable :: m(:)
       integer :: i
 
       idx = pack([(i, i=1, size(failed))], failed)
       g = gap(idx)
       m = messages(idx)
+      allocate (t(size(idx)), step(size(idx)))
+      do i = 1, size(idx)
+         call failure_time_step(m(i), t(i), step(i))
+      end do
       call h5_write(h5, path//'/case', idx, error)
       if (allocated(error)) return
       call h5_write(h5, path//'/gap', g, error)
+      if (allocated(error)) return
+      call h5_write(h5, path//'/time', t, error)
+      if (allocated(error)) return
+      call h5_write(h5, path//'/step', step, error)
       if (allocated(error)) return
       call h5_write(h5, path//'/message', m, error)
       if (allocated(error)) return
