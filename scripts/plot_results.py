@@ -248,6 +248,9 @@ def read_results(path):
                                    if f"/sweep/max_abs_lambda/{b}/{q}" in f}
             sw["target"] = float(f["/sweep"].attrs.get("target_lambda", -1.0))
             sw["safe_gap"] = float(f["/sweep"].attrs.get("safe_gap", -1.0))
+            # Failed gaps (results left out, zeros in the file): not drawn as values.
+            sw["failed"] = (np.asarray(arr("/sweep/failed/case", 1), dtype=int) - 1
+                            if "/sweep/failed/case" in f else np.zeros(0, dtype=int))
             r.sweep = sw
         if "/influence" in f:
             for b in r.buildings:
@@ -614,6 +617,8 @@ def plot_ground(plt, r, args, written, notes):
 
 def plot_sweep(plt, r, args, written, notes):
     """Largest |lambda| over the storeys against the joint gap, one panel per building."""
+    import numpy as np
+
     sw = r.sweep
     names = [b for b in r.buildings if sw["lambda"].get(b)]
     fig, axes = plt.subplots(1, len(names), figsize=(3.6 * len(names) + 0.6, 4.2), squeeze=False, sharey=True)
@@ -626,13 +631,17 @@ def plot_sweep(plt, r, args, written, notes):
         for j, q in enumerate(order):
             if q not in sw["lambda"][b]:
                 continue
-            y = sw["lambda"][b][q]
+            y = np.array(sw["lambda"][b][q], dtype=float)
+            y[sw["failed"]] = np.nan
             ax.plot(1e3 * sw["gap"], y, color=COLOURS[j], linestyle=LINESTYLES[j], marker=MARKERS[j],
                     markersize=3, markevery=max(1, len(y) // 12), linewidth=1.0,
                     label=labels.get(q, QUANTITY_LABEL[q][0]))
         if sw["target"] > 0:
             ax.axhline(sw["target"], color="black", linestyle=":", linewidth=0.9,
                        label=f"target {sw['target']:.4g} %")
+        for k, g in enumerate(sw["gap"][sw["failed"]]):
+            ax.axvline(1e3 * g, color="red", linestyle=":", linewidth=0.9,
+                       label="failed gap (left out)" if k == 0 else None)
         if sw["safe_gap"] >= 0:
             ax.axvline(1e3 * sw["safe_gap"], color="black", linestyle="-.", linewidth=0.9,
                        label=f"smallest gap meeting it: {1e3 * sw['safe_gap']:.3g} mm")

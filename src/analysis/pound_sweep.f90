@@ -11,8 +11,10 @@
 !> shared over the ranks with MPI; each gap's coupled run gives a column (the largest
 !> |lambda| per quantity and building, impacts, energy residual, first warning), and the
 !> result is assembled from the columns in gap order, so it is the same for any number of
-!> ranks. A gap whose run fails does not stop the others; the sweep then ends with an error
-!> naming it.
+!> ranks. A gap whose run fails (e.g. an LCP with no solution) does not stop the others: it
+!> is marked (`failed`, `messages`), left out of the results (zeros, never meeting the target,
+!> so that the smallest safe gap lies above it) and named in a warning. Only a sweep whose
+!> every gap fails ends with an error naming the first.
 module pound_sweep
    use iso_fortran_env, only: int64
    use pound_kinds, only: dp
@@ -25,11 +27,12 @@ module pound_sweep
                              add_warning, audit_warning_limit
    use pound_contact, only: contact_pair, contact_system
    use pound_influence, only: influence_of, max_abs_influence
-   use pound_cases, only: case_work, case_table, run_cases, first_failure, text_to_column, column_to_text
+   use pound_cases, only: case_work, case_table, run_cases, first_failure, text_to_column, column_to_text, &
+                          case_message_len
    implicit none
    private
 
-   public :: sweep_result, run_sweep, sweep_gaps
+   public :: sweep_result, run_sweep, sweep_gaps, sweep_from_table
 
    !> Characters kept of a gap's first warning.
    integer, parameter :: warning_len = 512
@@ -42,8 +45,13 @@ module pound_sweep
       real(dp), allocatable :: max_abs_lambda(:, :, :)
       !> Total number of impacts at each gap.
       integer, allocatable :: impacts(:)
-      !> Whether each gap meets the target on every targeted quantity and building.
+      !> Whether each gap meets the target on every targeted quantity and building (false for
+      !> a failed gap).
       logical, allocatable :: meets(:)
+      !> Whether each gap's coupled run failed (its results are zeros, left out).
+      logical, allocatable :: failed(:)
+      !> The message of each failed gap (blank otherwise).
+      character(len=case_message_len), allocatable :: messages(:)
       !> Smallest gap from which on every larger gap of the sweep meets the target (m).
       real(dp) :: safe_gap = -1.0_dp
       !> Whether such a gap exists in the range (only with a target).
@@ -143,40 +151,67 @@ contains
       type(coupled_model), target :: prep
       type(gap_cases) :: cases
       type(case_table) :: table
-      character(len=64) :: names(sweep%n_gaps)
-      real(dp) :: worst
-      integer :: i, q, n_bad, nl, nb
-      character(len=:), allocatable :: worst_text
+      integer :: nl
       integer(int64) :: c0, c1, rate
 
       call system_clock(c0, rate)
       quiet = cfg
       quiet%store = .false.
       quiet%output_every = max(1, nint(cfg%t_end/cfg%dt))
-      res%gap = sweep_gaps(sweep)
-      allocate (res%max_abs_lambda(n_history_quantities, size(models), sweep%n_gaps), &
-                res%impacts(sweep%n_gaps), res%meets(sweep%n_gaps))
-      allocate (character(len=1) :: res%warnings(0))
-      n_bad = 0
-      worst = 0.0_dp
       call coupled_prepare(quiet, models, ag(0), pairs, prep, error)
       if (allocated(error)) return
-      nb = size(models)
-      nl = n_history_quantities*nb
+      nl = n_history_quantities*size(models)
       cases%cfg = quiet
       cases%models => models
       cases%ag => ag
       cases%prep => prep
       cases%unc => unc
       if (present(ground)) cases%ground => ground
-      cases%gap = res%gap
+      cases%gap = sweep_gaps(sweep)
       cases%n_pairs = size(pairs)
       call run_cases(cases, sweep%n_gaps, nl + 4 + warning_len, table)
+      call sweep_from_table(sweep, size(models), table, res, error)
+      if (allocated(error)) return
+      call system_clock(c1)
+      res%seconds = real(c1 - c0, dp)/real(rate, dp)
+   end subroutine run_sweep
+
+   !> The sweep result from its cases' table (column i: gap i, see `gap_cases`). A failed gap
+   !> is marked, its results zeros, counted as not meeting the target (so that the smallest
+   !> gap meeting it lies above every failed gap) and named in a warning; an error when every
+   !> gap failed.
+   subroutine sweep_from_table(sweep, nb, table, res, error)
+      !> `&sweep`.
+      type(sweep_config), intent(in) :: sweep
+      !> Number of buildings.
+      integer, intent(in) :: nb
+      !> The gaps' table (sweep%n_gaps columns).
+      type(case_table), intent(in) :: table
+      !> The sweep result (`seconds` not set).
+      type(sweep_result), intent(out) :: res
+      !> Error state: every gap failed.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=64) :: names(sweep%n_gaps)
+      character(len=:), allocatable :: worst_text
+      real(dp) :: worst
+      integer :: i, q, n_bad, nl
+
+      nl = n_history_quantities*nb
+      res%gap = sweep_gaps(sweep)
+      allocate (res%max_abs_lambda(n_history_quantities, nb, sweep%n_gaps), &
+                res%impacts(sweep%n_gaps), res%meets(sweep%n_gaps))
+      allocate (character(len=1) :: res%warnings(0))
+      n_bad = 0
+      worst = 0.0_dp
       do i = 1, sweep%n_gaps
          names(i) = 'gap sweep, gap = '//str(res%gap(i))//' m'
       end do
-      call first_failure(table, names, error)
-      if (allocated(error)) return
+      if (all(table%failed)) then
+         call first_failure(table, names, error)
+         return
+      end if
+      res%failed = table%failed
+      res%messages = table%message
       do i = 1, sweep%n_gaps
          associate (col => table%values(:, i))
             if (col(nl + 3) > 0.0_dp) then
@@ -189,7 +224,7 @@ contains
             res%impacts(i) = nint(col(nl + 1))
             res%max_abs_lambda(:, :, i) = reshape(col(1:nl), [n_history_quantities, nb])
          end associate
-         res%meets(i) = .true.
+         res%meets(i) = .not. res%failed(i)
          do q = 1, n_history_quantities
             if (sweep%target_quantities(q)) then
                if (any(res%max_abs_lambda(q, :, i) > sweep%target)) res%meets(i) = .false.
@@ -207,8 +242,13 @@ contains
          call add_warning(res%warnings, 'gap sweep: the energy audit exceeds '//str(audit_warning_limit)// &
                           ' at '//str(n_bad)//' of '//str(sweep%n_gaps)//' gaps; the worst, '//worst_text)
       end if
-      call system_clock(c1)
-      res%seconds = real(c1 - c0, dp)/real(rate, dp)
-   end subroutine run_sweep
+      if (any(res%failed)) then
+         i = findloc(res%failed, .true., 1)
+         call add_warning(res%warnings, 'gap sweep: '//str(count(res%failed))//' of '//str(sweep%n_gaps)// &
+                          ' gaps failed and are left out (counted as not meeting the target, so the '// &
+                          'smallest gap meeting it lies above them); the first, '//trim(names(i))//': '// &
+                          trim(res%messages(i)))
+      end if
+   end subroutine sweep_from_table
 
 end module pound_sweep

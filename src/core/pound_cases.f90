@@ -26,7 +26,7 @@ module pound_cases
 
    public :: case_work, case_table, run_cases, first_failure, case_message_len
    public :: cases_start, cases_stop, cases_abort, cases_rank, cases_ranks, cases_all
-   public :: text_to_column, column_to_text
+   public :: text_to_column, column_to_text, failure_time_step
    ! For the implementations (submodules):
    public :: run_in_order, table_init, compute_into
 
@@ -188,6 +188,35 @@ contains
          text(i:i) = achar(nint(values(1 + i)))
       end do
    end function column_to_text
+
+   !> The time and step a failed case's message names ('... at t = <t> s (step <n>) ...', as
+   !> the integrations' errors put them); t = -1, step = -1 when it names none.
+   pure subroutine failure_time_step(message, t, step)
+      !> The message.
+      character(len=*), intent(in) :: message
+      !> Time (s), or -1.
+      real(dp), intent(out) :: t
+      !> Step, or -1.
+      integer, intent(out) :: step
+      integer :: i, j, k, ios
+
+      t = -1.0_dp
+      step = -1
+      i = index(message, 'at t = ')
+      if (i == 0) return
+      j = index(message(i:), ' s (step ')
+      if (j == 0) return
+      j = i + j - 1
+      k = index(message(j + 9:), ')')
+      if (k == 0) return
+      read (message(i + 7:j - 1), *, iostat=ios) t
+      if (ios /= 0) t = -1.0_dp
+      read (message(j + 9:j + 7 + k), *, iostat=ios) step
+      if (ios /= 0 .or. t < 0.0_dp) then
+         t = -1.0_dp
+         step = -1
+      end if
+   end subroutine failure_time_step
 
    !> An error for the failed cases of `table`, if any: the first one's message (after its
    !> name and ': ', unless the name is blank), and how many others failed.

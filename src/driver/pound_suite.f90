@@ -930,6 +930,7 @@ contains
          end if
          if (allocated(error)) return
          call gather_sweep(r)
+         if (allocated(error)) return
          call keep(r)
       end subroutine whole_run
 
@@ -951,6 +952,13 @@ contains
          integer :: iq, ig
 
          if (.not. (res%has_coupled .and. res%has_uncoupled .and. res%has_sweep)) return
+         if (any(res%sweep%failed)) then
+            ig = findloc(res%sweep%failed, .true., 1)
+            call fatal_error(error, "&ground '"//deck%motions(k)%name//"': gap sweep, gap = "// &
+                             str(res%sweep%gap(ig))//' m: '//trim(res%sweep%messages(ig))// &
+                             ' (a suite stops on a failed gap: its means would be wrong)')
+            return
+         end if
          if (k == 1) then
             suite%has_sweep = .true.
             suite%sweep_gap = res%sweep%gap

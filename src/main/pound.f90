@@ -37,7 +37,7 @@ program pound
    use pound_memory, only: estimate_memory, memory_available, memory_refusal
    use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror, &
                           posix_sleep
-   use pound_strings, only: fixed_cell
+   use pound_strings, only: fixed_cell, str
    use pound_analysis, only: substep_text
    use pound_response, only: discard_sink
    use pound_progress, only: progress_setup, progress_start, progress_finish, progress_auto, progress_on, &
@@ -58,6 +58,9 @@ program pound
    type(suite_result) :: suite
    logical :: is_suite, streamed
    integer :: progress_mode = progress_auto
+   !> Exit status of a run whose results were written but some of whose cases (gaps of a
+   !> sweep) failed.
+   integer, parameter :: failed_cases_status = 3
    logical :: writer
    !> Whether an error now may be rank 0's alone (its streamed HDF5 file), while the other
    !> ranks compute: then MPI_Abort ends the job instead of leaving them waiting.
@@ -139,6 +142,14 @@ program pound
    call publish_outputs(outputs, error)
    call check(error)
    call write_summary()
+   ! Results written, but some cases failed (named in the listing, the file and the summary).
+   if (.not. is_suite .and. res%has_sweep) then
+      if (any(res%sweep%failed)) then
+         call stop_with(str(count(res%sweep%failed))//' of '//str(size(res%sweep%failed))// &
+                        ' gaps of the sweep failed (named in '//outputs%listing//' and '//outputs%h5// &
+                        ' /sweep/failed); the other results were written', failed_cases_status)
+      end if
+   end if
    call cases_stop()
 
 contains

@@ -21,6 +21,7 @@ module pound_listing
    use pound_influence, only: building_influence
    use pound_config, only: sweep_config
    use pound_sweep, only: sweep_result
+   use pound_cases, only: failure_time_step
    implicit none
    private
 
@@ -698,7 +699,8 @@ contains
       character(len=*), parameter :: heads(4) = [character(len=9) :: 'Q', 'drift', 'u', 'a_abs']
       character(len=:), allocatable :: line
       character(len=10) :: cell
-      integer :: i, ib, k
+      integer :: i, ib, k, step
+      real(dp) :: t
 
       call write_section(u, 'Gap study: largest |lambda| [%] over the storeys (floors) against the gap')
       write (u, '(a,i0,a,f10.4,a)', iostat=ios, iomsg=msg) &
@@ -718,6 +720,11 @@ contains
       do i = 1, size(res%gap)
          write (cell, '(f10.4)') 1000.0_dp*res%gap(i)
          line = '  '//cell
+         if (res%failed(i)) then
+            write (u, '(a)', iostat=ios, iomsg=msg) line//'   FAILED (see the failed gaps below)'
+            call note_io()
+            cycle
+         end if
          write (cell, '(i9)') res%impacts(i)
          line = line//cell(1:9)
          do ib = 1, size(models)
@@ -746,6 +753,20 @@ contains
                cfg%target, ' % from there to the end of the range.'
             call note_io()
          end if
+      end if
+      if (any(res%failed)) then
+         write (u, '(/,a,i0,a,i0,a)', iostat=ios, iomsg=msg) '  Failed gaps (', count(res%failed), ' of ', &
+            size(res%gap), '; left out, counted as not meeting the target):'
+         call note_io()
+         write (u, '(a)', iostat=ios, iomsg=msg) '    case    gap [mm]       t [s]      step  message'
+         call note_io()
+         do i = 1, size(res%gap)
+            if (.not. res%failed(i)) cycle
+            call failure_time_step(res%messages(i), t, step)
+            write (u, '(i8,f12.4,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) i, 1000.0_dp*res%gap(i), t, step, &
+               trim(res%messages(i))
+            call note_io()
+         end do
       end if
       call write_warning_lines(u, res%warnings)
    end subroutine write_sweep_table

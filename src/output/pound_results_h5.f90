@@ -37,7 +37,10 @@
 !>     /influence/<b>/columns/<c>                (n_segments) frame: lambda of the column peaks
 !>     /sweep/gap, impacts, meets                (n_gaps)
 !>     /sweep/max_abs_lambda/<b>/<q>             (n_gaps) largest |lambda| over the storeys, percent;
-!>                                               attributes target_lambda, safe_gap (-1: none)
+!>                                               attributes target_lambda, safe_gap (-1: none),
+!>                                               and, when some gaps failed, failed_gaps (count)
+!>                                               and safe_gap_note
+!>     /sweep/failed/case, gap, time, step, message   (n_failed) the gaps whose run failed
 module pound_results_h5
    use pound_kinds, only: dp
    use pound_error, only: error_type
@@ -52,11 +55,12 @@ module pound_results_h5
    use pound_influence, only: building_influence
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
+   use pound_cases, only: failure_time_step
    use pound_config, only: sweep_config
    implicit none
    private
 
-   public :: write_results_h5, write_analysis_h5, h5_history_sink, history_sink_init
+   public :: write_results_h5, write_analysis_h5, h5_history_sink, history_sink_init, write_failed_cases
 
    !> Streams the uncoupled and coupled histories into an open results file: each dataset
    !> is created at its full shape (n_out, n) with its first block (chunked; compressed with
@@ -269,6 +273,12 @@ contains
          call h5_write_attr(h5, '/sweep', 'target_lambda', deck%sweep%target, error)
          if (allocated(error)) return
          call h5_write_attr(h5, '/sweep', 'safe_gap', sweep%safe_gap, error)
+         if (allocated(error) .or. .not. any(sweep%failed)) return
+         call h5_write_attr(h5, '/sweep', 'failed_gaps', count(sweep%failed), error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/sweep', 'safe_gap_note', 'failed gaps counted as not meeting the target', error)
+         if (allocated(error)) return
+         call write_failed_cases(h5, '/sweep/failed', sweep%gap, sweep%failed, sweep%messages, error)
       end subroutine write_sweep
 
       subroutine write_model(b, s)
@@ -613,5 +623,46 @@ contains
          call h5_write(h5, path, values, error)
       end if
    end subroutine write_history
+
+   !> The failed cases of a set of cases (a sweep's gaps, a suite's motions) in group `path`:
+   !> `case` (1-based index), `gap` (m), `time` (s) and `step` of the failure (-1: not named
+   !> in the message) and `message`, one entry per failed case; attribute `n_cases` (all cases).
+   subroutine write_failed_cases(h5, path, gap, failed, messages, error)
+      !> Open file.
+      type(h5_file), intent(inout) :: h5
+      !> Group path (e.g. '/sweep/failed').
+      character(len=*), intent(in) :: path
+      !> Gap of each case (m).
+      real(dp), intent(in) :: gap(:)
+      !> Whether each case failed.
+      logical, intent(in) :: failed(:)
+      !> Message of each case.
+      character(len=*), intent(in) :: messages(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer, allocatable :: idx(:), step(:)
+      real(dp), allocatable :: g(:), t(:)
+      character(len=len(messages)), allocatable :: m(:)
+      integer :: i
+
+      idx = pack([(i, i=1, size(failed))], failed)
+      g = gap(idx)
+      m = messages(idx)
+      allocate (t(size(idx)), step(size(idx)))
+      do i = 1, size(idx)
+         call failure_time_step(m(i), t(i), step(i))
+      end do
+      call h5_write(h5, path//'/case', idx, error)
+      if (allocated(error)) return
+      call h5_write(h5, path//'/gap', g, error)
+      if (allocated(error)) return
+      call h5_write(h5, path//'/time', t, error)
+      if (allocated(error)) return
+      call h5_write(h5, path//'/step', step, error)
+      if (allocated(error)) return
+      call h5_write(h5, path//'/message', m, error)
+      if (allocated(error)) return
+      call h5_write_attr(h5, path, 'n_cases', size(failed), error)
+   end subroutine write_failed_cases
 
 end module pound_results_h5
