@@ -440,7 +440,8 @@ contains
       integer :: k
 
       k = rec%n_out
-      if (k == 0 .or. (full .and. k < rec%capacity)) return
+      if (k == 0) return
+      if (full .and. .not. response_block_full(rec)) return
       if (rec%store(q_u)) call sink%put(coupled, building, q_u, rec%first, rec%u(:, 1:k), error)
       if (allocated(error)) return
       if (rec%store(q_v)) call sink%put(coupled, building, q_v, rec%first, rec%v(:, 1:k), error)
