@@ -30,7 +30,7 @@ module pound_analysis
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
-                            newmark_energies, newmark_add_balance, newmark_n, en_input, en_kinetic, en_strain, en_damping
+                            newmark_energies, newmark_n, en_input, en_kinetic, en_strain, en_damping
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
@@ -374,7 +374,7 @@ contains
       !> Where the histories are streamed: each building holds one block of output samples,
       !> handed over when full and after the loop (none: the whole history is held).
       class(history_sink), intent(inout), optional :: sink
-      integer :: ib, step, k, every, nb, j, n_sub, capacity
+      integer :: ib, step, k, every, nb, j, n_sub, capacity, until_out
       integer(int64) :: c0, c1, rate, w0, w1, write_ticks
       real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
@@ -419,6 +419,7 @@ contains
       scale = 0.0_dp
       lcp_start = cs%stats%lcp_seconds
       write_ticks = 0
+      until_out = every
       call system_clock(c0, rate)
       do step = 1, res%n_steps
          if (mod(step, progress_stride) == 0) call progress_steps(step, res%n_steps)
@@ -426,7 +427,10 @@ contains
          do ib = 1, nb
             call newmark_predict(st(ib), models(ib), ag(step) - ag(step - 1))
          end do
-         out = mod(step, every) == 0
+         ! out = mod(step, every) == 0, counted down (no division per step)
+         until_out = until_out - 1
+         out = until_out == 0
+         if (out) until_out = every
          ! A step is one pass of the body below, or, with impact stepping when a joint can act,
          ! m passes of h = dt/m with the ground motion at the substeps' ends.
          n_sub = 1
@@ -465,8 +469,12 @@ contains
                   return
                end if
             end if
+            ! win, eout: the integrators' energy balance, added up by the commits (uncoupled;
+            ! replaced by the sample below when coupled)
+            win = 0.0_dp
+            eout = 0.0_dp
             do ib = 1, nb
-               call newmark_commit(st(ib), models(ib), ag_old, ag_new)
+               call newmark_commit(st(ib), models(ib), ag_old, ag_new, win, eout)
                call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
                                     ag_new, t_sub, output)
             end do
@@ -491,12 +499,6 @@ contains
                call contact_commit(cs, st, t_sub, dt_now)
                sample(e_contact) = cs%element_work - cs%plastic_work
                sample(e_plastic) = cs%plastic_work
-            else
-               win = 0.0_dp
-               eout = 0.0_dp
-               do ib = 1, nb
-                  call newmark_add_balance(st(ib), win, eout)
-               end do
             end if
             if (output) then
                k = k + 1

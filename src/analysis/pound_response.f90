@@ -208,8 +208,9 @@ contains
       type(response_record), intent(inout) :: rec
       !> The building.
       type(structure_model), intent(in) :: b
-      !> Relative displacement, velocity and acceleration.
-      real(dp), intent(in) :: u(:), v(:), a(:)
+      !> Relative displacement, velocity and acceleration (`b%n` each; explicit shape, so that
+      !> the time loop passes their addresses and builds no descriptors).
+      real(dp), intent(in) :: u(b%n), v(b%n), a(b%n)
       !> Ground acceleration (m/s^2).
       real(dp), intent(in) :: ag
       !> Time (s).
@@ -228,7 +229,7 @@ contains
       rec%pa = a(b%floor_dof) + ag
       call recover_all(b%drift, u, rec%pd)
       call recover_all(b%shear, u, rec%ps)
-      if (rec%snapshots) call take_snapshots(size(u), rec%n, u, rec%ps, rec%peak(:, q_shear), rec%pool, &
+      if (rec%snapshots) call take_snapshots(b%n, rec%n, u, rec%ps, rec%peak(:, q_shear), rec%pool, &
                                              rec%slot_of, rec%refs, rec%free, rec%n_free)
       if (b%member%n > 0) then
          call recover_all(b%member, u, rec%pm)
@@ -254,8 +255,8 @@ contains
       type(response_record), intent(inout) :: rec
       !> The building.
       type(structure_model), intent(in) :: b
-      !> Relative displacement, velocity and acceleration.
-      real(dp), intent(in) :: u(:), v(:), a(:)
+      !> Relative displacement, velocity and acceleration (`b%n` each).
+      real(dp), intent(in) :: u(b%n), v(b%n), a(b%n)
       !> Ground acceleration (m/s^2).
       real(dp), intent(in) :: ag
       integer :: k

@@ -295,7 +295,7 @@ contains
       class(structure_model), intent(in) :: m
       !> Displacements (n).
       real(dp), intent(in) :: u(:)
-      real(dp) :: e, y(size(u))
+      real(dp) :: e
 
       e = 0.0_dp
       if (allocated(m%strain_weight) .and. m%stick) then
@@ -304,9 +304,19 @@ contains
          call weighted_rows_kernel(m%drift%n, size(m%drift%dof), size(u), m%drift%start, m%drift%dof, &
                                    m%drift%coef, m%drift%scale, m%strain_weight, u, e)
       else
-         call band_symv(m%kt, u, y)
-         e = 0.5_dp*dot_product(u, y)
+         e = band_energy()
       end if
+
+   contains
+
+      !> u^T (K+G) u / 2 from the band (its work vector lives here, so that the storey-by-storey
+      !> paths, taken at every output step of the time loop, allocate nothing).
+      pure real(dp) function band_energy()
+         real(dp) :: y(size(u))
+
+         call band_symv(m%kt, u, y)
+         band_energy = 0.5_dp*dot_product(u, y)
+      end function band_energy
    end function structure_strain_energy
 
    !> Drift rows of a chain of floors on DOFs `dofs` (storey j joins floor j-1 and floor j,

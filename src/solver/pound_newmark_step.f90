@@ -1,7 +1,8 @@
 !> The step of the Newmark integrator: `newmark_predict` and `newmark_commit`, with the fused
-!> tridiagonal kernels of half-bandwidth 1 in the same compilation unit (so that they are
-!> inlined into the step); the banded path (`predict_general`, `commit_general`) stays in the
-!> parent module.
+!> tridiagonal kernels of half-bandwidth 1; the banded path (`predict_general`,
+!> `commit_general`) is in pound_newmark_band. The predict kernel is an internal procedure
+!> of `newmark_predict` (gfortran gives a submodule's own procedures external linkage, so
+!> only internal ones are inlined into their caller).
 submodule(pound_newmark) pound_newmark_step
    implicit none
 
@@ -26,6 +27,27 @@ contains
          call predict_general(st, b, dag)
       end if
 
+   contains
+
+      !> du = Khat^{-1} (M (4/dt v + 2 a - 1 dag) + 2 C v) with Khat = L D L^T.
+      pure subroutine predict_kernel(n, c4, dag, mass, v, a, cv, e, dinv, du)
+         integer, intent(in) :: n
+         real(dp), intent(in) :: c4, dag, mass(n), v(n), a(n), cv(n), e(max(n - 1, 1)), dinv(n)
+         real(dp), intent(out) :: du(n)
+         real(dp) :: y
+         integer :: i
+
+         y = mass(1)*(c4*v(1) + 2.0_dp*a(1) - dag) + 2.0_dp*cv(1)
+         du(1) = y
+         do i = 2, n
+            y = mass(i)*(c4*v(i) + 2.0_dp*a(i) - dag) + 2.0_dp*cv(i) - e(i - 1)*y
+            du(i) = y
+         end do
+         du(n) = du(n)*dinv(n)
+         do i = n - 1, 1, -1
+            du(i) = du(i)*dinv(i) - e(i)*du(i + 1)
+         end do
+      end subroutine predict_kernel
    end subroutine newmark_predict
 
    !> Complete the step with the increment `du` and account the energy.
@@ -34,13 +56,21 @@ contains
    !> the input work increment is du . (p_old + p_new)/2 with p = -M r a_g, the damping
    !> increment du . (C v_old + C v_new)/2: the trapezoidal sums under which the average
    !> acceleration method balances energy exactly for a linear system.
-   module subroutine newmark_commit(st, b, ag_old, ag_new)
+   !>
+   !> With `w_in` and `e_out` the step's energy balance is added to them as
+   !> `newmark_add_balance` adds it (the per-step audit of the time loop without a call of
+   !> its own).
+   module subroutine newmark_commit(st, b, ag_old, ag_new, w_in, e_out)
       !> Integrator state.
       type(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       !> Ground acceleration at the start and end of the step (m/s^2).
       real(dp), intent(in) :: ag_old, ag_new
+      !> Input work so far (added to; optional, with `e_out`).
+      real(dp), intent(inout), optional :: w_in
+      !> Kinetic + strain + damping energy so far (added to; optional, with `w_in`).
+      real(dp), intent(inout), optional :: e_out
       real(dp) :: mdu, ddamp
 
       if (st%tridiagonal) then
@@ -51,30 +81,16 @@ contains
       end if
       st%damping_energy = st%damping_energy + 0.5_dp*ddamp
       st%input_work = st%input_work - 0.5_dp*(ag_old + ag_new)*mdu
+      if (present(w_in) .and. present(e_out)) then
+         w_in = w_in + st%input_work
+         e_out = e_out + ((st%kinetic + st%strain) + st%damping_energy)
+      end if
 
    end subroutine newmark_commit
 
-   ! Tridiagonal kernels (kd = 1).
-   !> du = Khat^{-1} (M (4/dt v + 2 a - 1 dag) + 2 C v) with Khat = L D L^T.
-   pure subroutine predict_kernel(n, c4, dag, mass, v, a, cv, e, dinv, du)
-      integer, intent(in) :: n
-      real(dp), intent(in) :: c4, dag, mass(n), v(n), a(n), cv(n), e(max(n - 1, 1)), dinv(n)
-      real(dp), intent(out) :: du(n)
-      real(dp) :: y
-      integer :: i
-
-      y = mass(1)*(c4*v(1) + 2.0_dp*a(1) - dag) + 2.0_dp*cv(1)
-      du(1) = y
-      do i = 2, n
-         y = mass(i)*(c4*v(i) + 2.0_dp*a(i) - dag) + 2.0_dp*cv(i) - e(i - 1)*y
-         du(i) = y
-      end do
-      du(n) = du(n)*dinv(n)
-      do i = n - 1, 1, -1
-         du(i) = du(i)*dinv(i) - e(i)*du(i + 1)
-      end do
-   end subroutine predict_kernel
-
+   ! Tridiagonal kernel of the commit (kd = 1). It stays a procedure of its own, called with
+   ! explicit-shape arrays: inlined into `newmark_commit`, whose arrays are components of
+   ! `st`, the compiler no longer vectorises its blocks of four floors.
    !> Newmark update of u, v, a from du; C v at the new time; sum(m du) and du.(Cv_old + Cv_new);
    !> the kinetic and strain energy at the new time.
    !>
