@@ -438,7 +438,7 @@ contains
             if (contact_may_act(cs, st)) then
                n_sub = sub%m
                res%substepped = res%substepped + 1
-               call swap_steps()
+               call swap_steps(st, cs, sub)
             end if
          end if
          ag_old = ag(step - 1)
@@ -531,7 +531,7 @@ contains
             scale = max(scale, abs(win), eout)
             ag_old = ag_new
          end do
-         if (n_sub > 1) call swap_steps()
+         if (n_sub > 1) call swap_steps(st, cs, sub)
       end do
       call system_clock(c1)
       if (present(sink)) then
@@ -554,19 +554,25 @@ contains
       else
          call add_warning(res%warnings, uncoupled_audit_warning(res%energy_error))
       end if
-
-   contains
-
-      !> Exchange the step data of the integrators and the contact system with `sub`'s.
-      subroutine swap_steps()
-         integer :: i
-
-         do i = 1, nb
-            call newmark_swap_step(st(i), sub%st(i))
-         end do
-         call contact_swap_step(cs, sub%cs)
-      end subroutine swap_steps
    end subroutine integrate
+
+   !> Exchange the step data of the integrators and the contact system with `sub`'s (a
+   !> procedure of the module, not of `integrate`: an internal one would keep the time loop's
+   !> variables that it reaches in memory).
+   subroutine swap_steps(st, cs, sub)
+      !> Integrators.
+      type(newmark_state), intent(inout) :: st(:)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+      !> The substep data of `stepping = 'impact'`.
+      type(impact_stepping), intent(inout) :: sub
+      integer :: i
+
+      do i = 1, size(st)
+         call newmark_swap_step(st(i), sub%st(i))
+      end do
+      call contact_swap_step(cs, sub%cs)
+   end subroutine swap_steps
 
    !> dst = src, component by component, but the substep counts of `stepping = 'impact'`
    !> (the warnings, an array of deferred-length strings, line by line: gfortran 12 does not

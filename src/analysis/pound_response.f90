@@ -211,12 +211,12 @@ contains
       !> Relative displacement, velocity and acceleration (`b%n` each; explicit shape, so that
       !> the time loop passes their addresses and builds no descriptors).
       real(dp), intent(in) :: u(b%n), v(b%n), a(b%n)
-      !> Ground acceleration (m/s^2).
-      real(dp), intent(in) :: ag
+      !> Ground acceleration (m/s^2; the scalars by value).
+      real(dp), intent(in), value :: ag
       !> Time (s).
-      real(dp), intent(in) :: t
+      real(dp), intent(in), value :: t
       !> Whether this is an output step.
-      logical, intent(in) :: output
+      logical, intent(in), value :: output
       integer :: k
 
       if (rec%stick) then

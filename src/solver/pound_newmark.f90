@@ -88,7 +88,7 @@ module pound_newmark
       module subroutine newmark_predict(st, b, dag)
          type(newmark_state), intent(inout) :: st
          type(structure_model), intent(in) :: b
-         real(dp), intent(in) :: dag
+         real(dp), intent(in), value :: dag
       end subroutine newmark_predict
       !> Complete the step with the increment `du` and account the energy; with `w_in` and
       !> `e_out`, add the energy balance as `newmark_add_balance` does (in submodule
@@ -96,7 +96,7 @@ module pound_newmark
       module subroutine newmark_commit(st, b, ag_old, ag_new, w_in, e_out)
          type(newmark_state), intent(inout) :: st
          type(structure_model), intent(in) :: b
-         real(dp), intent(in) :: ag_old, ag_new
+         real(dp), intent(in), value :: ag_old, ag_new
          real(dp), intent(inout), optional :: w_in, e_out
       end subroutine newmark_commit
       !> The banded path of the step (submodule pound_newmark_band).

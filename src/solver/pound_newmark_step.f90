@@ -18,8 +18,9 @@ contains
       type(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
-      !> Ground acceleration increment a_g(t+dt) - a_g(t) (m/s^2).
-      real(dp), intent(in) :: dag
+      !> Ground acceleration increment a_g(t+dt) - a_g(t) (m/s^2; by value, as the time loop's
+      !> other scalars: nothing is stored to be passed).
+      real(dp), intent(in), value :: dag
 
       if (st%tridiagonal) then
          call predict_kernel(st%n, 2.0_dp*st%c2, dag, b%mass, st%v, st%a, st%cv, st%e, st%dinv, st%du)
@@ -65,8 +66,8 @@ contains
       type(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
-      !> Ground acceleration at the start and end of the step (m/s^2).
-      real(dp), intent(in) :: ag_old, ag_new
+      !> Ground acceleration at the start and end of the step (m/s^2; by value).
+      real(dp), intent(in), value :: ag_old, ag_new
       !> Input work so far (added to; optional, with `e_out`).
       real(dp), intent(inout), optional :: w_in
       !> Kinetic + strain + damping energy so far (added to; optional, with `w_in`).
