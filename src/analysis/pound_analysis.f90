@@ -424,8 +424,10 @@ contains
       do step = 1, res%n_steps
          if (mod(step, progress_stride) == 0) call progress_steps(step, res%n_steps)
          t = real(step, dp)*cfg%dt
+         ag_old = ag(step - 1)
+         ag_new = ag(step)
          do ib = 1, nb
-            call newmark_predict(st(ib), models(ib), ag(step) - ag(step - 1))
+            call newmark_predict(st(ib), models(ib), ag_new - ag_old)
          end do
          ! out = mod(step, every) == 0, counted down (no division per step)
          until_out = until_out - 1
@@ -441,8 +443,6 @@ contains
                call swap_steps(st, cs, sub)
             end if
          end if
-         ag_old = ag(step - 1)
-         ag_new = ag(step)
          t_sub = t
          dt_now = cfg%dt
          do j = 1, n_sub

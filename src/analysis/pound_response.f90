@@ -432,8 +432,8 @@ contains
       class(history_sink), intent(inout) :: sink
       !> The coupled analysis (else the uncoupled one).
       logical, intent(in) :: coupled
-      !> Building index.
-      integer, intent(in) :: building
+      !> Building index (by value: the time loop's index is not kept in memory for it).
+      integer, intent(in), value :: building
       !> Flush only a full block.
       logical, intent(in) :: full
       !> Error state.

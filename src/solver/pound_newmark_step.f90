@@ -72,11 +72,19 @@ contains
       real(dp), intent(inout), optional :: w_in
       !> Kinetic + strain + damping energy so far (added to; optional, with `w_in`).
       real(dp), intent(inout), optional :: e_out
-      real(dp) :: mdu, ddamp
+      real(dp) :: mdu, ddamp, coef(4), sums(4)
 
       if (st%tridiagonal) then
-         call commit_kernel(st%n, st%c1, st%c2, b%a0, b%a1, b%mass, b%kt, st%du, st%u, st%v, st%a, &
-                            st%cv, mdu, ddamp, st%kinetic, st%strain)
+         ! The scalars in and out of the kernel in two arrays (fewer arguments to pass).
+         coef(1) = st%c1
+         coef(2) = st%c2
+         coef(3) = b%a0
+         coef(4) = b%a1
+         call commit_kernel(st%n, coef, b%mass, b%kt, st%du, st%u, st%v, st%a, st%cv, sums)
+         mdu = sums(1)
+         ddamp = sums(2)
+         st%kinetic = sums(3)
+         st%strain = sums(4)
       else
          call commit_general(st, b, mdu, ddamp)
       end if
@@ -99,13 +107,21 @@ contains
    !> the loops are not bound by the latency of one chain of additions. The loops run over
    !> blocks of four consecutive elements with one accumulator per lane (lane l of a block
    !> starting at i0 holds partial sum mod(i0 + l, 4)), which the compiler can vectorise.
-   pure subroutine commit_kernel(n, c1, c2, a0, a1, mass, kt, du, u, v, a, cv, mdu, ddamp, ek, es)
+   !>
+   !> coef = [c1, c2, a0, a1]; sums = [sum(m du), du.(Cv_old + Cv_new), E_kinetic, E_strain].
+   pure subroutine commit_kernel(n, coef, mass, kt, du, u, v, a, cv, sums)
       integer, intent(in) :: n
-      real(dp), intent(in) :: c1, c2, a0, a1, mass(n), kt(2, n), du(n)
+      real(dp), intent(in) :: coef(4), mass(n), kt(2, n), du(n)
       real(dp), intent(inout) :: u(n), v(n), a(n), cv(n)
-      real(dp), intent(out) :: mdu, ddamp, ek, es
+      real(dp), intent(out) :: sums(4)
+      real(dp) :: c1, c2, a0, a1, mdu, ddamp, ek, es
       real(dp) :: cvi, sm(0:3), sd(0:3), sk(0:3), ss(0:3)
       integer :: i, i0, l, last
+
+      c1 = coef(1)
+      c2 = coef(2)
+      a0 = coef(3)
+      a1 = coef(4)
 
       ! Lanes of blocks starting at i0 = 1, 5, 9, ...: lane l holds partial sum mod(l + 1, 4).
       sm = 0.0_dp
@@ -129,6 +145,7 @@ contains
          ddamp = du(1)*(cv(1) + cvi)
          cv(1) = cvi
          es = 0.5_dp*kt(2, 1)*u(1)*u(1)
+         sums = [mdu, ddamp, ek, es]
          return
       end if
       ! Strain energy sum_j s_j drift_j^2 / 2 with the net storey stiffness s_j = -kt(1, j)
@@ -162,6 +179,7 @@ contains
       ! Partial sums 0, 1, 2, 3 are lanes 2, 3, 0, 1.
       ddamp = (sd(2) + sd(3)) + (sd(0) + sd(1))
       es = -0.5_dp*((ss(2) + ss(3)) + (ss(0) + ss(1)))
+      sums = [mdu, ddamp, ek, es]
    end subroutine commit_kernel
 
    !> Newmark update of one floor; its terms of sum(m du) and of 2 E_kinetic.
