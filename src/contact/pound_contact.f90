@@ -148,6 +148,12 @@ module pound_contact
       type(active_set_workspace), allocatable :: as
       real(dp), allocatable :: phat_inv(:), wm(:)
       integer, allocatable :: role(:)
+      !> Steps in which no joint can act take the short path of `contact_step` (false: every
+      !> step takes the full path; the tests compare both).
+      logical :: shortcut = .true.
+      !> The last `contact_step` found that no joint can act: the forces stay zero and `vp`
+      !> holds the closing displacements it predicted, which `contact_commit` takes.
+      logical :: idle = .false.
    end type contact_system
 
 contains
@@ -459,6 +465,15 @@ contains
       if (cs%m == 0) return
       ! Closing displacement if every force were released in this step.
       call closing_displacements(cs, states, .true.)
+      ! No joint can act: what `contact_solve` would find (no force, no plastic flow, du
+      ! unchanged), without its set-up.
+      cs%idle = cs%shortcut
+      if (cs%idle) cs%idle = no_joint_acts(cs)
+      if (cs%idle) then
+         cs%r_new = 0.0_dp
+         cs%x_new = 0.0_dp
+         return
+      end if
       do k = 1, cs%m
          if (cs%joint(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%joint(k)%r
       end do
@@ -476,6 +491,39 @@ contains
          end do
       end do
    end subroutine contact_step
+
+   !> The LCP's q of joint k, the opening it would have at the end of the step with every
+   !> force released: g - v_pred + (c (a d_n + b d'_n) + k0 d_p,n)/phat (the one formula of
+   !> `contact_solve` and of the short path of `contact_step`).
+   pure real(dp) function released_q(cs, k, v_pred) result(q)
+      type(contact_system), intent(in) :: cs
+      integer, intent(in) :: k
+      real(dp), intent(in) :: v_pred
+
+      associate (p => cs%joint(k), c => cs%pair(k)%law%dashpot)
+         q = cs%pair(k)%gap - v_pred + (c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + &
+                                        cs%pair(k)%law%stiffness*p%plastic)/cs%phat(k)
+      end associate
+   end function released_q
+
+   !> No joint can act in the step whose released closing displacements are in `cs%vp`:
+   !> every joint carries no force at the start, and every one that is not fractured has a
+   !> finite q >= 0. Then `contact_solve` models no row (its guard passes) and gives r = 0,
+   !> x = 0, and `contact_step` changes no du: the short path is the full one, bit for bit.
+   pure logical function no_joint_acts(cs) result(idle)
+      type(contact_system), intent(in) :: cs
+      real(dp) :: q
+      integer :: k
+
+      idle = .false.
+      do k = 1, cs%m
+         if (cs%joint(k)%r /= 0.0_dp) return
+         if (cs%joint(k)%fractured) cycle
+         q = released_q(cs, k, cs%vp(k))
+         if (.not. (q >= 0.0_dp .and. q <= huge(1.0_dp))) return
+      end do
+      idle = .true.
+   end function no_joint_acts
 
    !> Solve the step's LCP for the closing displacements `v_pred` (forces released): sets
    !> `cs%r_new` and `cs%x_new`. `v_pred` may be `cs%vp` (not `cs%q`).
@@ -499,9 +547,8 @@ contains
       if (cs%m == 0) return
       qnorm = 0.0_dp
       do k = 1, cs%m
-         associate (p => cs%joint(k), c => cs%pair(k)%law%dashpot)
-            cs%q(k) = cs%pair(k)%gap - v_pred(k) + (c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + &
-                                                    cs%pair(k)%law%stiffness*p%plastic)/cs%phat(k)
+         associate (p => cs%joint(k))
+            cs%q(k) = released_q(cs, k, v_pred(k))
             cs%in_lcp(k) = .not. p%fractured .and. (p%r > 0.0_dp .or. cs%q(k) < 0.0_dp)
             if (.not. p%fractured) qnorm = max(qnorm, abs(cs%q(k)))
          end associate
@@ -756,8 +803,11 @@ contains
       !> Time step (s).
       real(dp), intent(in) :: dt
 
-      ! The closing displacements at the end of the step.
-      call closing_displacements(cs, states, .false.)
+      ! The closing displacements at the end of the step. After a step in which no joint
+      ! could act, those `contact_step` predicted: du was not changed, and the commit's
+      ! u_{n+1} = u_n + du is the prediction's sum, bit for bit.
+      if (.not. cs%idle) call closing_displacements(cs, states, .false.)
+      cs%idle = .false.
       call contact_update(cs, cs%vp, t, dt)
    end subroutine contact_commit
 
