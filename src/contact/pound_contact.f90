@@ -492,35 +492,39 @@ contains
       end do
    end subroutine contact_step
 
-   !> The LCP's q of joint k, the opening it would have at the end of the step with every
-   !> force released: g - v_pred + (c (a d_n + b d'_n) + k0 d_p,n)/phat (the one formula of
-   !> `contact_solve` and of the short path of `contact_step`).
-   pure real(dp) function released_q(cs, k, v_pred) result(q)
-      type(contact_system), intent(in) :: cs
-      integer, intent(in) :: k
-      real(dp), intent(in) :: v_pred
+   !> The LCP's q of every joint into `cs%q`, the opening it would have at the end of the step
+   !> with every force released: g - v_pred + (c (a d_n + b d'_n) + k0 d_p,n)/phat (the one
+   !> formula of `contact_solve` and of the short path of `contact_step`).
+   pure subroutine released_q(cs, v_pred)
+      type(contact_system), intent(inout) :: cs
+      real(dp), intent(in) :: v_pred(:)
+      integer :: k
 
-      associate (p => cs%joint(k), c => cs%pair(k)%law%dashpot)
-         q = cs%pair(k)%gap - v_pred + (c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + &
-                                        cs%pair(k)%law%stiffness*p%plastic)/cs%phat(k)
-      end associate
-   end function released_q
+      do k = 1, cs%m
+         associate (p => cs%joint(k), c => cs%pair(k)%law%dashpot)
+            cs%q(k) = cs%pair(k)%gap - v_pred(k) + (c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + &
+                                                    cs%pair(k)%law%stiffness*p%plastic)/cs%phat(k)
+         end associate
+      end do
+   end subroutine released_q
 
    !> No joint can act in the step whose released closing displacements are in `cs%vp`:
    !> every joint carries no force at the start, and every one that is not fractured has a
-   !> finite q >= 0. Then `contact_solve` models no row (its guard passes) and gives r = 0,
-   !> x = 0, and `contact_step` changes no du: the short path is the full one, bit for bit.
-   pure logical function no_joint_acts(cs) result(idle)
-      type(contact_system), intent(in) :: cs
-      real(dp) :: q
+   !> finite q >= 0 (`released_q`, into `cs%q`). Then `contact_solve` models no row (its guard
+   !> passes) and gives r = 0, x = 0, and `contact_step` changes no du: the short path is the
+   !> full one, bit for bit.
+   logical function no_joint_acts(cs) result(idle)
+      type(contact_system), intent(inout) :: cs
       integer :: k
 
       idle = .false.
       do k = 1, cs%m
          if (cs%joint(k)%r /= 0.0_dp) return
+      end do
+      call released_q(cs, cs%vp)
+      do k = 1, cs%m
          if (cs%joint(k)%fractured) cycle
-         q = released_q(cs, k, cs%vp(k))
-         if (.not. (q >= 0.0_dp .and. q <= huge(1.0_dp))) return
+         if (.not. (cs%q(k) >= 0.0_dp .and. cs%q(k) <= huge(1.0_dp))) return
       end do
       idle = .true.
    end function no_joint_acts
@@ -546,9 +550,9 @@ contains
 
       if (cs%m == 0) return
       qnorm = 0.0_dp
+      call released_q(cs, v_pred)
       do k = 1, cs%m
          associate (p => cs%joint(k))
-            cs%q(k) = released_q(cs, k, v_pred(k))
             cs%in_lcp(k) = .not. p%fractured .and. (p%r > 0.0_dp .or. cs%q(k) < 0.0_dp)
             if (.not. p%fractured) qnorm = max(qnorm, abs(cs%q(k)))
          end associate
