@@ -60,8 +60,8 @@ module pound_contact
    use pound_structure, only: structure_model, structure_end_dof
    use pound_contact_law, only: is_plastic, yield_segment, rate_trapezoidal, dashpot_of_restitution
    use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
-   use pound_joint_state, only: joint_state, joints_advance, state_open, state_elastic, state_fractured, &
-                                joint_history, joint_history_init, joint_history_record
+   use pound_joint_state, only: joint_state, joints_advance, joints_advance_idle, plain_law, state_open, &
+                                state_elastic, state_fractured, joint_history, joint_history_init, joint_history_record
    use pound_lcp_statistics, only: lcp_statistics, contact_event, statistics_count_solve, &
                                    statistics_add_event, statistics_count_active_set
    use pound_contact_lcp, only: lcp_layout, lcp_assemble, released_opening, lcp_residual
@@ -154,6 +154,8 @@ module pound_contact
       !> The last `contact_step` found that no joint can act: the forces stay zero and `vp`
       !> holds the closing displacements it predicted, which `contact_commit` takes.
       logical :: idle = .false.
+      !> Whether each joint's law is a `plain_law` (elastic, no dashpot, not fracturing).
+      logical, allocatable :: plain(:)
    end type contact_system
 
 contains
@@ -336,7 +338,10 @@ contains
       cs%yrow = 0
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
-      allocate (cs%ends(4, m))
+      allocate (cs%ends(4, m), cs%plain(m))
+      do k = 1, m
+         cs%plain(k) = plain_law(cs%pair(k)%law)
+      end do
       do k = 1, m
          cs%ends(:, k) = [cs%pair(k)%building(1), cs%pair(k)%dof(1), cs%pair(k)%building(2), cs%pair(k)%dof(2)]
       end do
@@ -810,8 +815,13 @@ contains
       ! The closing displacements at the end of the step. After a step in which no joint
       ! could act, those `contact_step` predicted: du was not changed, and the commit's
       ! u_{n+1} = u_n + du is the prediction's sum, bit for bit.
-      if (.not. cs%idle) call closing_displacements(cs, states, .false.)
-      cs%idle = .false.
+      if (cs%idle) then
+         cs%idle = .false.
+         call joints_advance_idle(cs%m, cs%joint, cs%pair, cs%plain, cs%vp, t, dt, cs%rate_a, cs%rate_b, cs%phat, &
+                                  cs%work, cs%element_work, cs%plastic_work)
+         return
+      end if
+      call closing_displacements(cs, states, .false.)
       call contact_update(cs, cs%vp, t, dt)
    end subroutine contact_commit
 
