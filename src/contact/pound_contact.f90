@@ -515,22 +515,39 @@ contains
 
    !> No joint can act in the step whose released closing displacements are in `cs%vp`:
    !> every joint carries no force at the start, and every one that is not fractured has a
-   !> finite q >= 0 (`released_q`, into `cs%q`). Then `contact_solve` models no row (its guard
-   !> passes) and gives r = 0, x = 0, and `contact_step` changes no du: the short path is the
-   !> full one, bit for bit.
+   !> finite q >= 0. Then `contact_solve` models no row (its guard passes) and gives r = 0,
+   !> x = 0, and `contact_step` changes no du: the short path is the full one, bit for bit.
+   !> A joint of a `plain_law` at rest (d = 0, d_p = 0, d' finite) has q = g - v_pred exactly
+   !> up to the sign of a zero (the term (c (a d + b d') + k0 d_p)/phat is a zero: c = 0 and
+   !> a d + b d' is finite, b <= 1), so the test needs no division; for any other joint q is
+   !> `released_q`'s.
    logical function no_joint_acts(cs) result(idle)
       type(contact_system), intent(inout) :: cs
+      real(dp) :: q
       integer :: k
+      logical :: general
 
       idle = .false.
+      general = .false.
       do k = 1, cs%m
-         if (cs%joint(k)%r /= 0.0_dp) return
+         associate (j => cs%joint(k))
+            if (j%r /= 0.0_dp) return
+            if (j%fractured) cycle
+            if (cs%plain(k) .and. j%d == 0.0_dp .and. j%plastic == 0.0_dp .and. abs(j%ddot) <= huge(1.0_dp)) then
+               q = cs%pair(k)%gap - cs%vp(k)
+               if (.not. (q >= 0.0_dp .and. q <= huge(1.0_dp))) return
+            else
+               general = .true.
+            end if
+         end associate
       end do
-      call released_q(cs, cs%vp)
-      do k = 1, cs%m
-         if (cs%joint(k)%fractured) cycle
-         if (.not. (cs%q(k) >= 0.0_dp .and. cs%q(k) <= huge(1.0_dp))) return
-      end do
+      if (general) then
+         call released_q(cs, cs%vp)
+         do k = 1, cs%m
+            if (cs%joint(k)%fractured) cycle
+            if (.not. (cs%q(k) >= 0.0_dp .and. cs%q(k) <= huge(1.0_dp))) return
+         end do
+      end if
       idle = .true.
    end function no_joint_acts
 
