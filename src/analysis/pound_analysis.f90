@@ -31,6 +31,7 @@ module pound_analysis
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
                             newmark_energies, newmark_n, en_input, en_kinetic, en_strain, en_damping
+   use pound_newmark, only: newmark_add_energies
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
@@ -495,7 +496,8 @@ contains
                end if
             end if
             if (coupled) then
-               call step_energy(st, sample)
+               ! An output step's sample is the stored one (below).
+               if (.not. output) call step_energy(st, sample)
                call contact_commit(cs, st, t_sub, dt_now)
                sample(e_contact) = cs%element_work - cs%plastic_work
                sample(e_plastic) = cs%plastic_work
@@ -686,15 +688,10 @@ contains
       real(dp), intent(out) :: sample(:)
       integer :: ib
 
-      real(dp) :: e(4)
-
       sample = 0.0_dp
       do ib = 1, size(st)
-         e = newmark_energies(st(ib))
-         sample(e_input) = sample(e_input) + e(en_input)
-         sample(e_kinetic) = sample(e_kinetic) + e(en_kinetic)
-         sample(e_strain) = sample(e_strain) + e(en_strain)
-         sample(e_damping) = sample(e_damping) + e(en_damping)
+         call newmark_add_energies(st(ib), sample(e_input), sample(e_kinetic), sample(e_strain), &
+                                   sample(e_damping))
       end do
    end subroutine step_energy
 

@@ -60,8 +60,8 @@ module pound_contact
    use pound_structure, only: structure_model, structure_end_dof
    use pound_contact_law, only: is_plastic, yield_segment, rate_trapezoidal, dashpot_of_restitution
    use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
-   use pound_joint_state, only: joint_state, joints_advance, state_open, state_elastic, state_fractured, &
-                                joint_history, joint_history_init, joint_history_record
+   use pound_joint_state, only: joint_state, joints_advance, joints_advance_idle, plain_law, state_open, &
+                                state_elastic, state_fractured, joint_history, joint_history_init, joint_history_record
    use pound_lcp_statistics, only: lcp_statistics, contact_event, statistics_count_solve, &
                                    statistics_add_event, statistics_count_active_set
    use pound_contact_lcp, only: lcp_layout, lcp_assemble, released_opening, lcp_residual
@@ -148,6 +148,14 @@ module pound_contact
       type(active_set_workspace), allocatable :: as
       real(dp), allocatable :: phat_inv(:), wm(:)
       integer, allocatable :: role(:)
+      !> Steps in which no joint can act take the short path of `contact_step` (false: every
+      !> step takes the full path; the tests compare both).
+      logical :: shortcut = .true.
+      !> The last `contact_step` found that no joint can act: the forces stay zero and `vp`
+      !> holds the closing displacements it predicted, which `contact_commit` takes.
+      logical :: idle = .false.
+      !> Whether each joint's law is a `plain_law` (elastic, no dashpot, not fracturing).
+      logical, allocatable :: plain(:)
    end type contact_system
 
 contains
@@ -330,7 +338,10 @@ contains
       cs%yrow = 0
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
-      allocate (cs%ends(4, m))
+      allocate (cs%ends(4, m), cs%plain(m))
+      do k = 1, m
+         cs%plain(k) = plain_law(cs%pair(k)%law)
+      end do
       do k = 1, m
          cs%ends(:, k) = [cs%pair(k)%building(1), cs%pair(k)%dof(1), cs%pair(k)%building(2), cs%pair(k)%dof(2)]
       end do
@@ -459,6 +470,15 @@ contains
       if (cs%m == 0) return
       ! Closing displacement if every force were released in this step.
       call closing_displacements(cs, states, .true.)
+      ! No joint can act: what `contact_solve` would find (no force, no plastic flow, du
+      ! unchanged), without its set-up.
+      cs%idle = cs%shortcut
+      if (cs%idle) cs%idle = no_joint_acts(cs)
+      if (cs%idle) then
+         cs%r_new = 0.0_dp
+         cs%x_new = 0.0_dp
+         return
+      end if
       do k = 1, cs%m
          if (cs%joint(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%joint(k)%r
       end do
@@ -476,6 +496,60 @@ contains
          end do
       end do
    end subroutine contact_step
+
+   !> The LCP's q of every joint into `cs%q`, the opening it would have at the end of the step
+   !> with every force released: g - v_pred + (c (a d_n + b d'_n) + k0 d_p,n)/phat (the one
+   !> formula of `contact_solve` and of the short path of `contact_step`).
+   pure subroutine released_q(cs, v_pred)
+      type(contact_system), intent(inout) :: cs
+      real(dp), intent(in) :: v_pred(:)
+      integer :: k
+
+      do k = 1, cs%m
+         associate (p => cs%joint(k), c => cs%pair(k)%law%dashpot)
+            cs%q(k) = cs%pair(k)%gap - v_pred(k) + (c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + &
+                                                    cs%pair(k)%law%stiffness*p%plastic)/cs%phat(k)
+         end associate
+      end do
+   end subroutine released_q
+
+   !> No joint can act in the step whose released closing displacements are in `cs%vp`:
+   !> every joint carries no force at the start, and every one that is not fractured has a
+   !> finite q >= 0. Then `contact_solve` models no row (its guard passes) and gives r = 0,
+   !> x = 0, and `contact_step` changes no du: the short path is the full one, bit for bit.
+   !> A joint of a `plain_law` at rest (d = 0, d_p = 0, d' finite) has q = g - v_pred exactly
+   !> up to the sign of a zero (the term (c (a d + b d') + k0 d_p)/phat is a zero: c = 0 and
+   !> a d + b d' is finite, b <= 1), so the test needs no division; for any other joint q is
+   !> `released_q`'s.
+   logical function no_joint_acts(cs) result(idle)
+      type(contact_system), intent(inout) :: cs
+      real(dp) :: q
+      integer :: k
+      logical :: general
+
+      idle = .false.
+      general = .false.
+      do k = 1, cs%m
+         associate (j => cs%joint(k))
+            if (j%r /= 0.0_dp) return
+            if (j%fractured) cycle
+            if (cs%plain(k) .and. j%d == 0.0_dp .and. j%plastic == 0.0_dp .and. abs(j%ddot) <= huge(1.0_dp)) then
+               q = cs%pair(k)%gap - cs%vp(k)
+               if (.not. (q >= 0.0_dp .and. q <= huge(1.0_dp))) return
+            else
+               general = .true.
+            end if
+         end associate
+      end do
+      if (general) then
+         call released_q(cs, cs%vp)
+         do k = 1, cs%m
+            if (cs%joint(k)%fractured) cycle
+            if (.not. (cs%q(k) >= 0.0_dp .and. cs%q(k) <= huge(1.0_dp))) return
+         end do
+      end if
+      idle = .true.
+   end function no_joint_acts
 
    !> Solve the step's LCP for the closing displacements `v_pred` (forces released): sets
    !> `cs%r_new` and `cs%x_new`. `v_pred` may be `cs%vp` (not `cs%q`).
@@ -498,10 +572,9 @@ contains
 
       if (cs%m == 0) return
       qnorm = 0.0_dp
+      call released_q(cs, v_pred)
       do k = 1, cs%m
-         associate (p => cs%joint(k), c => cs%pair(k)%law%dashpot)
-            cs%q(k) = cs%pair(k)%gap - v_pred(k) + (c*(cs%rate_a(k)*p%d + cs%rate_b(k)*p%ddot) + &
-                                                    cs%pair(k)%law%stiffness*p%plastic)/cs%phat(k)
+         associate (p => cs%joint(k))
             cs%in_lcp(k) = .not. p%fractured .and. (p%r > 0.0_dp .or. cs%q(k) < 0.0_dp)
             if (.not. p%fractured) qnorm = max(qnorm, abs(cs%q(k)))
          end associate
@@ -756,7 +829,15 @@ contains
       !> Time step (s).
       real(dp), intent(in) :: dt
 
-      ! The closing displacements at the end of the step.
+      ! The closing displacements at the end of the step. After a step in which no joint
+      ! could act, those `contact_step` predicted: du was not changed, and the commit's
+      ! u_{n+1} = u_n + du is the prediction's sum, bit for bit.
+      if (cs%idle) then
+         cs%idle = .false.
+         call joints_advance_idle(cs%m, cs%joint, cs%pair, cs%plain, cs%vp, t, dt, cs%rate_a, cs%rate_b, cs%phat, &
+                                  cs%work, cs%element_work, cs%plastic_work)
+         return
+      end if
       call closing_displacements(cs, states, .false.)
       call contact_update(cs, cs%vp, t, dt)
    end subroutine contact_commit

@@ -13,7 +13,7 @@ module pound_joint_state
    implicit none
    private
 
-   public :: joint_state, joint_advance, joints_advance
+   public :: joint_state, joint_advance, joints_advance, joints_advance_idle, plain_law
    public :: state_open, state_elastic, state_fractured
    public :: joint_history, joint_history_init, joint_history_record
 
@@ -170,6 +170,53 @@ contains
          end if
       end do
    end subroutine joints_advance
+
+   !> Advance every joint over a step in which none can act (the short path of
+   !> `contact_step`: no force at its start, none at its end, no plastic flow): `joints_advance`
+   !> with r = x = 0, a joint of a `plain_law` at d = 0 taken by `open_step` without testing
+   !> its law again.
+   !> (Explicit-shape arrays: the step of a few joints is not spent on array descriptors.)
+   pure subroutine joints_advance_idle(m, j, pairs, plain, v, t, dt, rate_a, rate_b, phat, work, element_work, &
+                                       plastic_work)
+      !> Number of joints.
+      integer, intent(in) :: m
+      !> The joints (none carries force).
+      type(joint_state), intent(inout) :: j(m)
+      !> Their constraints (the laws).
+      type(contact_pair), intent(in) :: pairs(m)
+      !> Whether each joint's law is a `plain_law`.
+      logical, intent(in) :: plain(m)
+      !> Closing displacements at the end of the step (m), one per joint.
+      real(dp), intent(in) :: v(m)
+      !> Time at the end of the step and time step (s).
+      real(dp), intent(in) :: t, dt
+      !> Per joint: dashpot rate coefficients a, b and phat = k0 + a c.
+      real(dp), intent(in) :: rate_a(m), rate_b(m), phat(m)
+      !> Work sums (kJ), accumulated as by `joint_advance`.
+      real(dp), intent(inout) :: work, element_work, plastic_work
+      integer :: k
+
+      do k = 1, m
+         if (plain(k)) then
+            ! `stays_open` with r = 0 and j%r = 0 (a plain law never fractures).
+            if (j(k)%d == 0.0_dp) then
+               call open_step(j(k), 0.0_dp, 0.0_dp, v(k), rate_a(k), rate_b(k))
+               cycle
+            end if
+         end if
+         call joint_advance(j(k), pairs(k)%law, 0.0_dp, 0.0_dp, v(k), t, dt, rate_a(k), rate_b(k), phat(k), work, &
+                            element_work, plastic_work)
+      end do
+   end subroutine joints_advance_idle
+
+   !> An elastic law without dashpot that does not fracture: a joint of it that carries no
+   !> force and has no compression stays so while it is open (`stays_open`).
+   pure logical function plain_law(law)
+      !> The law.
+      type(contact_law), intent(in) :: law
+
+      plain_law = law%dashpot == 0.0_dp .and. law%kind == law_elastic .and. .not. law%fractures
+   end function plain_law
 
    !> An elastic joint without dashpot, open with no compression, that stays open (most
    !> joints in most steps): `open_step` is its whole update.

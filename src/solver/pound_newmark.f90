@@ -37,6 +37,7 @@ module pound_newmark
    public :: newmark_path, newmark_tridiagonal_factors
    public :: kinetic_energy, strain_energy, newmark_add_balance
    public :: en_input, en_kinetic, en_strain, en_damping
+   public :: newmark_add_energies
 
    !> Indices of `newmark_energies`.
    integer, parameter :: en_input = 1, en_kinetic = 2, en_strain = 3, en_damping = 4
@@ -488,6 +489,21 @@ contains
 
       e = [st%input_work, st%kinetic, st%strain, st%damping_energy]
    end function newmark_energies
+
+   !> Add the running energies of the integrator (kJ) to four sums: `newmark_energies`
+   !> without an array result (the per-step audit of the coupled analysis, where loading
+   !> the result just stored stalls).
+   pure subroutine newmark_add_energies(st, w_in, e_kinetic, e_strain, e_damping)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+      !> Input work, kinetic, strain and damping energy so far (added to).
+      real(dp), intent(inout) :: w_in, e_kinetic, e_strain, e_damping
+
+      w_in = w_in + st%input_work
+      e_kinetic = e_kinetic + st%kinetic
+      e_strain = e_strain + st%strain
+      e_damping = e_damping + st%damping_energy
+   end subroutine newmark_add_energies
 
    !> Kinetic energy of the relative motion, v^T M v / 2 (kJ).
    pure function kinetic_energy(st, b) result(e)
