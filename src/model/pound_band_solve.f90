@@ -11,7 +11,7 @@
 !> sweep's chain of dependent operations (one multiply-add and one multiply per DOF), while
 !> the older terms are summed from memory ahead of it in four partial sums. Reference dtbsv,
 !> which dpbtrs calls, stores and reloads every element it updates and so runs the whole
-!> column on that chain; here the solve takes about 0.6 to 0.75 of its time at kd = 8 to 20
+!> column on that chain; here the solve takes about 0.5 to 0.67 of its time at kd = 8 to 20
 !> (README, "The banded solve"). The sums are taken in another order than dtbsv's: the
 !> results agree with dpbtrs to round-off (tests/test_band_solve.pf).
 module pound_band_solve
