@@ -22,7 +22,7 @@ set(POUND_SOURCES
   # models: synthetic ground motions (filtered white noise)
   model/pound_synthetic_motion.f90
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)
-  model/pound_band_lapack.f90 model/pound_band_eigen.f90 model/pound_frame_element.f90
+  model/pound_band_lapack.f90 model/pound_band_solve.f90 model/pound_band_eigen.f90 model/pound_frame_element.f90
   model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_building.f90 model/pound_building.f90
   # solver: Newmark average acceleration
   solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90

@@ -53,9 +53,10 @@ module pound_newmark
       logical :: tridiagonal = .true.
       !> Time step and Newmark constants c1 = 4/dt^2, c2 = 2/dt.
       real(dp) :: dt = 0.0_dp, c1 = 0.0_dp, c2 = 0.0_dp
-      !> Tridiagonal path: L D L^T factors of Khat: diagonal d (n) and sub-diagonal e (n-1), and 1/d.
+      !> Tridiagonal path: L D L^T factors of Khat: diagonal d (n) and sub-diagonal e (n-1), and 1/d
+      !> (general path: 1/U(j, j) of the Cholesky factor).
       real(dp), allocatable :: d(:), e(:), dinv(:)
-      !> General path: Cholesky factor of Khat in upper band storage (kd+1, n); work vector (n).
+      !> General path: Cholesky factor U of Khat in upper band storage (kd+1, n); work vector (n).
       real(dp), allocatable :: chol(:, :), work(:)
       !> General path: the load increments of `newmark_add_response` in the step in progress
       !> (zero elsewhere), and (K+G) u, (K+G) v at the current time (n each).
@@ -227,8 +228,10 @@ contains
                              '(dpbtrf info = '//str(info)//')'//sources)
             return
          end if
+         st%dinv = 1.0_dp/st%chol(kd + 1, :)
          do i = 1, n
-            if (.not. (all(ieee_is_finite(st%chol(:, i))) .and. st%chol(kd + 1, i) > 0.0_dp)) then
+            if (.not. (all(ieee_is_finite(st%chol(:, i))) .and. st%chol(kd + 1, i) > 0.0_dp .and. &
+                       ieee_is_finite(st%dinv(i)))) then
                call fatal_error(error, structure_label(b)//': DOF '//str(i)//': factorization of the '// &
                                 'effective stiffness Khat out of range (pivot '//str(st%chol(kd + 1, i))//')'// &
                                 sources)
@@ -282,10 +285,10 @@ contains
       if (st%tridiagonal) then
          call swap(st%d, other%d)
          call swap(st%e, other%e)
-         call swap(st%dinv, other%dinv)
       else
          call swap(st%chol, other%chol)
       end if
+      call swap(st%dinv, other%dinv)
    end subroutine newmark_swap_step
 
    !> Overwrite the state (tests: initial conditions other than rest). `a` defaults to

@@ -1,5 +1,5 @@
 !> The banded path of the Newmark step (half-bandwidth > 1, or a ground-influence vector
-!> that is not all ones): right-hand side and dpbtrs, the update, C v and the energies.
+!> that is not all ones): right-hand side and the banded solve, the update, C v and the energies.
 !> A unit of its own, so that it does not change how the tridiagonal step
 !> (pound_newmark_step) is compiled.
 !>
@@ -15,20 +15,21 @@
 !> round-off (the one for Kt v with eigenvalue -1, a random walk), and the refresh bounds
 !> it (README, "The banded step without band products").
 submodule(pound_newmark) pound_newmark_band
+   use pound_band_solve, only: band_solve
    implicit none
 
 contains
 
-   !> The general (banded) path of `newmark_predict`: the right-hand side, then dpbtrs.
+   !> The general (banded) path of `newmark_predict`: the right-hand side, then the solve
+   !> with the Cholesky factor (`band_solve`, the step's own sweeps in place of dpbtrs).
    module subroutine predict_general(st, b, dag)
       type(newmark_state), intent(inout) :: st
       type(structure_model), intent(in) :: b
       real(dp), intent(in) :: dag
-      integer :: info
 
       st%dag = dag
       st%du = b%mass*(2.0_dp*st%c2*st%v + 2.0_dp*st%a - b%ground*dag) + 2.0_dp*st%cv
-      call dpbtrs('U', st%n, st%kd, 1, st%chol, st%kd + 1, st%du, st%n, info)
+      call band_solve(st%n, st%kd, st%chol, st%dinv, st%du)
    end subroutine predict_general
 
    !> The general (banded) path of `newmark_commit`: the Newmark update, Kt u, Kt v and
