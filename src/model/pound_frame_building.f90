@@ -37,7 +37,8 @@ module pound_frame_building
    use pound_strings, only: str
    use pound_config, only: building_config
    use pound_storey_properties, only: storey_properties
-   use pound_structure, only: structure_model, recovery_rows, chain_rows, structure_finish, structure_label, modes_listed
+   use pound_structure, only: structure_model, recovery_rows, group_rows, chain_rows, structure_finish, structure_label, &
+                              modes_listed
    use pound_frame, only: frame_spec, frame_model, build_frame, frame_stiffness, frame_mass, &
                           frame_geometric, element_column
    use pound_frame_element, only: beam_local_stiffness, beam_transformation, geometric_chord, &
@@ -207,6 +208,7 @@ contains
          call column_rows(f, m%n, m%member)
          m%member_group = 'columns'
          m%member_names = [character(len=16) :: 'shear', 'moment_bottom', 'moment_top', 'axial']
+         call group_rows(m%member, size(m%member_names))
          fd%column_element = column_elements(f)
 
          m%damping_ratio = deck_entry%damping_ratio

@@ -29,7 +29,7 @@ module pound_structure
    implicit none
    private
 
-   public :: structure_model, recovery_rows, recover, recover_all, structure_label, structure_strain_energy
+   public :: structure_model, recovery_rows, recover, recover_all, group_rows, structure_label, structure_strain_energy
    public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof
 
    !> Natural modes a builder computes besides the two Rayleigh modes: the periods the listing
@@ -51,6 +51,14 @@ module pound_structure
       real(dp), allocatable :: coef(:)
       !> Factor applied to each row's sum (n).
       real(dp), allocatable :: scale(:)
+      !> Grouped layout (`group_rows`, set up once; 0: none): rows in groups of `group_width`
+      !> consecutive rows (a frame's column segment: its four member rows) whose entries lie on
+      !> one list of DOFs, group g's DOFs `group_dof(group_start(g) : group_start(g+1)-1)`
+      !> with the coefficients of the group's rows in the columns of `group_coef(:, i)` (zero
+      !> where a row has no entry). `recover_all` then reads each DOF once per group.
+      integer :: group_width = 0
+      integer, allocatable :: group_start(:), group_dof(:)
+      real(dp), allocatable :: group_coef(:, :)
    end type recovery_rows
 
    !> A structural model ready for time integration (a plain data type: see the module doc).
@@ -141,8 +149,110 @@ contains
       !> Row values (rows%n).
       real(dp), intent(out) :: y(:)
 
-      call rows_kernel(rows%n, size(rows%dof), size(u), rows%start, rows%dof, rows%coef, rows%scale, u, y)
+      if (rows%group_width == 4) then
+         call grouped4_kernel(rows%n/4, size(rows%group_dof), size(u), rows%group_start, rows%group_dof, &
+                              rows%group_coef, rows%scale, u, y)
+      else if (rows%group_width > 0) then
+         call grouped_kernel(rows%n/rows%group_width, rows%group_width, size(rows%group_dof), size(u), &
+                             rows%group_start, rows%group_dof, rows%group_coef, rows%scale, u, y)
+      else
+         call rows_kernel(rows%n, size(rows%dof), size(u), rows%start, rows%dof, rows%coef, rows%scale, u, y)
+      end if
    end subroutine recover_all
+
+   !> `recover_all` on the grouped layout: each group's DOFs read once, its rows summed side by
+   !> side. Every row's sum takes its products in the order of its entries (a row's entries
+   !> are in the order of the group's DOF list, `group_rows` checks), plus exact zeros where it
+   !> has no entry: the same values as `rows_kernel` (at most the sign of a zero differs).
+   pure subroutine grouped_kernel(ng, w, nnz, nu, start, dof, coef, scale, u, y)
+      integer, intent(in) :: ng, w, nnz, nu, start(ng + 1), dof(nnz)
+      real(dp), intent(in) :: coef(w, nnz), scale(w, ng), u(nu)
+      real(dp), intent(out) :: y(w, ng)
+      real(dp) :: x(w), ui
+      integer :: g, i
+
+      do g = 1, ng
+         x = 0.0_dp
+         do i = start(g), start(g + 1) - 1
+            ui = u(dof(i))
+            x = x + coef(:, i)*ui
+         end do
+         y(:, g) = scale(:, g)*x
+      end do
+   end subroutine grouped_kernel
+
+   !> `grouped_kernel` for groups of four rows (a frame's member rows), the four sums in
+   !> registers.
+   pure subroutine grouped4_kernel(ng, nnz, nu, start, dof, coef, scale, u, y)
+      integer, intent(in) :: ng, nnz, nu, start(ng + 1), dof(nnz)
+      real(dp), intent(in) :: coef(4, nnz), scale(4, ng), u(nu)
+      real(dp), intent(out) :: y(4, ng)
+      real(dp) :: x1, x2, x3, x4, ui
+      integer :: g, i
+
+      do g = 1, ng
+         x1 = 0.0_dp
+         x2 = 0.0_dp
+         x3 = 0.0_dp
+         x4 = 0.0_dp
+         do i = start(g), start(g + 1) - 1
+            ui = u(dof(i))
+            x1 = x1 + coef(1, i)*ui
+            x2 = x2 + coef(2, i)*ui
+            x3 = x3 + coef(3, i)*ui
+            x4 = x4 + coef(4, i)*ui
+         end do
+         y(1, g) = scale(1, g)*x1
+         y(2, g) = scale(2, g)*x2
+         y(3, g) = scale(3, g)*x3
+         y(4, g) = scale(4, g)*x4
+      end do
+   end subroutine grouped4_kernel
+
+   !> Set up the grouped layout of `rows` (`recovery_rows%group_width`) for groups of w
+   !> consecutive rows: each group's DOF list is the union of its rows' DOFs in the order of
+   !> first appearance. Left without one (rows unchanged) when rows%n is not a multiple of w
+   !> or some row's entries are not in the order of its group's list (the sums would change
+   !> order).
+   pure subroutine group_rows(rows, w)
+      !> The rows.
+      type(recovery_rows), intent(inout) :: rows
+      !> Rows per group.
+      integer, intent(in) :: w
+      integer, allocatable :: gstart(:), gdof(:)
+      real(dp), allocatable :: gcoef(:, :)
+      integer :: ng, g, r, j, i, k, last, nnz
+
+      rows%group_width = 0
+      if (w < 1 .or. rows%n == 0 .or. mod(rows%n, w) /= 0) return
+      ng = rows%n/w
+      allocate (gstart(ng + 1), gdof(size(rows%dof)), gcoef(w, size(rows%dof)))
+      gcoef = 0.0_dp
+      gstart(1) = 1
+      nnz = 0
+      do g = 1, ng
+         do r = 1, w
+            j = (g - 1)*w + r
+            last = gstart(g) - 1
+            do i = rows%start(j), rows%start(j + 1) - 1
+               k = findloc(gdof(gstart(g):nnz), rows%dof(i), dim=1) + gstart(g) - 1
+               if (k < gstart(g)) then
+                  nnz = nnz + 1
+                  gdof(nnz) = rows%dof(i)
+                  k = nnz
+               end if
+               if (k <= last) return
+               last = k
+               gcoef(r, k) = rows%coef(i)
+            end do
+         end do
+         gstart(g + 1) = nnz + 1
+      end do
+      rows%group_start = gstart
+      rows%group_dof = gdof(1:nnz)
+      rows%group_coef = gcoef(:, 1:nnz)
+      rows%group_width = w
+   end subroutine group_rows
 
    !> `recover_all` on explicit-shape arrays (one pass, no calls per row).
    pure subroutine rows_kernel(n, nnz, nu, start, dof, coef, scale, u, y)
