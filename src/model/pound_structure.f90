@@ -181,31 +181,21 @@ contains
       end do
    end subroutine grouped_kernel
 
-   !> `grouped_kernel` for groups of four rows (a frame's member rows), the four sums in
-   !> registers.
+   !> `grouped_kernel` for groups of four rows (a frame's member rows): the width a
+   !> constant, the four sums in registers.
    pure subroutine grouped4_kernel(ng, nnz, nu, start, dof, coef, scale, u, y)
       integer, intent(in) :: ng, nnz, nu, start(ng + 1), dof(nnz)
       real(dp), intent(in) :: coef(4, nnz), scale(4, ng), u(nu)
       real(dp), intent(out) :: y(4, ng)
-      real(dp) :: x1, x2, x3, x4, ui
+      real(dp) :: x(4)
       integer :: g, i
 
       do g = 1, ng
-         x1 = 0.0_dp
-         x2 = 0.0_dp
-         x3 = 0.0_dp
-         x4 = 0.0_dp
+         x = 0.0_dp
          do i = start(g), start(g + 1) - 1
-            ui = u(dof(i))
-            x1 = x1 + coef(1, i)*ui
-            x2 = x2 + coef(2, i)*ui
-            x3 = x3 + coef(3, i)*ui
-            x4 = x4 + coef(4, i)*ui
+            x = x + coef(:, i)*u(dof(i))
          end do
-         y(1, g) = scale(1, g)*x1
-         y(2, g) = scale(2, g)*x2
-         y(3, g) = scale(3, g)*x3
-         y(4, g) = scale(4, g)*x4
+         y(:, g) = scale(:, g)*x
       end do
    end subroutine grouped4_kernel
 
