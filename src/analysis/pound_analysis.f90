@@ -47,6 +47,7 @@ module pound_analysis
    public :: add_warning, write_warnings, audit_warning_limit, resolved_steps
    public :: substeps_per_half_period, impact_substeps_of, contact_half_period, substep_text
    public :: start_result, audit_error, uncoupled_audit_warning, analysis_copy
+   public :: flush_full_blocks, store_energy
 
    !> Relative energy residual above which the result carries a warning.
    real(dp), parameter :: audit_warning_limit = 1.0e-2_dp
@@ -376,10 +377,10 @@ contains
       !> handed over when full and after the loop (none: the whole history is held).
       class(history_sink), intent(inout), optional :: sink
       integer :: ib, step, k, every, nb, j, n_sub, capacity, until_out
-      integer(int64) :: c0, c1, rate, w0, w1, write_ticks
+      integer(int64) :: c0, c1, rate, write_ticks
       real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, full
+      logical :: out, coupled, finite, impact, output
 
       nb = size(models)
       allocate (view(nb))
@@ -481,19 +482,8 @@ contains
             end do
             ! The last block is handed over after the loop (writing it is not integration).
             if (output .and. present(sink) .and. step < res%n_steps) then
-               full = .false.
-               do ib = 1, nb
-                  full = full .or. response_block_full(res%building(ib))
-               end do
-               if (full) then
-                  call system_clock(w0)
-                  do ib = 1, nb
-                     call response_flush(res%building(ib), sink, coupled, ib, .true., error)
-                     if (allocated(error)) return
-                  end do
-                  call system_clock(w1)
-                  write_ticks = write_ticks + (w1 - w0)
-               end if
+               call flush_full_blocks(res, sink, coupled, write_ticks, error)
+               if (allocated(error)) return
             end if
             if (coupled) then
                ! An output step's sample is the stored one (below).
@@ -504,15 +494,7 @@ contains
             end if
             if (output) then
                k = k + 1
-               do ib = 1, nb
-                  call add_structure_energy(res%energy(:, k), st(ib), models(ib))
-               end do
-               if (coupled) then
-                  res%energy(e_contact, k) = cs%element_work - cs%plastic_work
-                  res%energy(e_plastic, k) = cs%plastic_work
-                  call joint_history_record(res%joints, k, cs%joint)
-               end if
-               sample = res%energy(:, k)
+               call store_energy(res, k, st, models, cs, sample)
             end if
             if (coupled .or. output) then
                win = sample(e_input)
@@ -557,6 +539,68 @@ contains
          call add_warning(res%warnings, uncoupled_audit_warning(res%energy_error))
       end if
    end subroutine integrate
+
+   ! The rarely taken parts of `integrate`'s step, kept out of its loop so that the loop's
+   ! own state stays in registers (public only so that the compiler does not inline them).
+
+   !> Hand the histories' blocks over to the sink when one of them is full; the time spent
+   !> is added to `write_ticks`.
+   subroutine flush_full_blocks(res, sink, coupled, write_ticks, error)
+      !> The result being integrated.
+      type(analysis_result), intent(inout) :: res
+      !> Where the histories are streamed.
+      class(history_sink), intent(inout) :: sink
+      !> Whether the run has constraints.
+      logical, intent(in) :: coupled
+      !> Clock ticks spent writing (added to).
+      integer(int64), intent(inout) :: write_ticks
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer(int64) :: w0, w1
+      integer :: ib
+      logical :: full
+
+      full = .false.
+      do ib = 1, size(res%building)
+         full = full .or. response_block_full(res%building(ib))
+      end do
+      if (.not. full) return
+      call system_clock(w0)
+      do ib = 1, size(res%building)
+         call response_flush(res%building(ib), sink, coupled, ib, .true., error)
+         if (allocated(error)) return
+      end do
+      call system_clock(w1)
+      write_ticks = write_ticks + (w1 - w0)
+   end subroutine flush_full_blocks
+
+   !> The energy sample `k` of an output step (and the joints' history when constrained);
+   !> `sample` is set to it.
+   subroutine store_energy(res, k, st, models, cs, sample)
+      !> The result being integrated.
+      type(analysis_result), intent(inout) :: res
+      !> Index of the output sample.
+      integer, intent(in) :: k
+      !> The integrators.
+      type(newmark_state), intent(in) :: st(:)
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> The contact system.
+      type(contact_system), intent(in) :: cs
+      !> The stored sample.
+      real(dp), intent(out) :: sample(n_energy)
+      integer :: ib
+
+      do ib = 1, size(st)
+         call add_structure_energy(res%energy(:, k), st(ib), models(ib))
+      end do
+      if (cs%m > 0) then
+         res%energy(e_contact, k) = cs%element_work - cs%plastic_work
+         res%energy(e_plastic, k) = cs%plastic_work
+         call joint_history_record(res%joints, k, cs%joint)
+      end if
+      sample = res%energy(:, k)
+   end subroutine store_energy
 
    !> Exchange the step data of the integrators and the contact system with `sub`'s (a
    !> procedure of the module, not of `integrate`: an internal one would keep the time loop's
