@@ -224,9 +224,6 @@ contains
          if (output) call response_store(rec, b, u, v, a, ag)
          return
       end if
-      rec%pu = u(b%floor_dof)
-      rec%pv = v(b%floor_dof)
-      rec%pa = a(b%floor_dof) + ag
       call recover_all(b%drift, u, rec%pd)
       call recover_all(b%shear, u, rec%ps)
       if (rec%snapshots) call take_snapshots(b%n, rec%n, u, rec%ps, rec%peak(:, q_shear), rec%pool, &
@@ -235,7 +232,8 @@ contains
          call recover_all(b%member, u, rec%pm)
          call track_one(b%member%n, rec%pm, t, rec%member_peak, rec%member_time)
       end if
-      call track_general(rec%n, rec%pu, rec%pv, rec%pa, rec%pd, rec%ps, t, rec%peak, rec%peak_time)
+      call track_general(rec%n, b%n, b%floor_dof, u, v, a, ag, rec%pd, rec%ps, t, rec%pu, rec%pv, rec%pa, &
+                         rec%peak, rec%peak_time)
       if (.not. output) return
       rec%n_out = rec%n_out + 1
       k = rec%n_out
@@ -322,17 +320,27 @@ contains
       end do
    end subroutine chain_drift
 
-   !> Running absolute maxima of all five quantities at the response points and storey rows.
-   pure subroutine track_general(n, pu, pv, pa, pd, ps, t, peak, peak_time)
-      integer, intent(in) :: n
-      real(dp), intent(in) :: pu(n), pv(n), pa(n), pd(n), ps(n), t
+   !> The response points' u, v and a_abs (gathered from the DOF vectors at `dof`) and the
+   !> running absolute maxima of all five quantities at the points and storey rows, in one
+   !> pass over the floors (the same comparisons as one pass per quantity).
+   pure subroutine track_general(n, nu, dof, u, v, a, ag, pd, ps, t, pu, pv, pa, peak, peak_time)
+      integer, intent(in) :: n, nu, dof(n)
+      real(dp), intent(in) :: u(nu), v(nu), a(nu), ag, pd(n), ps(n), t
+      real(dp), intent(out) :: pu(n), pv(n), pa(n)
       real(dp), intent(inout) :: peak(n, n_history_quantities), peak_time(n, n_history_quantities)
+      integer :: i, k
 
-      call track_one(n, pu, t, peak(:, q_u), peak_time(:, q_u))
-      call track_one(n, pv, t, peak(:, q_v), peak_time(:, q_v))
-      call track_one(n, pa, t, peak(:, q_a_abs), peak_time(:, q_a_abs))
-      call track_one(n, pd, t, peak(:, q_drift), peak_time(:, q_drift))
-      call track_one(n, ps, t, peak(:, q_shear), peak_time(:, q_shear))
+      do i = 1, n
+         k = dof(i)
+         pu(i) = u(k)
+         pv(i) = v(k)
+         pa(i) = a(k) + ag
+         call keep_peak(pu(i), t, peak(i, q_u), peak_time(i, q_u))
+         call keep_peak(pv(i), t, peak(i, q_v), peak_time(i, q_v))
+         call keep_peak(pa(i), t, peak(i, q_a_abs), peak_time(i, q_a_abs))
+         call keep_peak(pd(i), t, peak(i, q_drift), peak_time(i, q_drift))
+         call keep_peak(ps(i), t, peak(i, q_shear), peak_time(i, q_shear))
+      end do
    end subroutine track_general
 
    !> Point every storey j whose shear exceeds its peak so far (called before the peaks are
@@ -381,6 +389,17 @@ contains
          end if
       end do
    end subroutine track_one
+
+   !> Running absolute maximum of one value: peak and its time when |x| exceeds the peak.
+   pure subroutine keep_peak(x, t, peak, peak_time)
+      real(dp), intent(in) :: x, t
+      real(dp), intent(inout) :: peak, peak_time
+
+      if (abs(x) > peak) then
+         peak = abs(x)
+         peak_time = t
+      end if
+   end subroutine keep_peak
 
    !> Output samples per block of a streamed history of n floors: `block` when positive,
    !> else about `default_block_bytes` per quantity; never more than the n_out of the run.

@@ -28,9 +28,22 @@ contains
       real(dp), intent(in) :: dag
 
       st%dag = dag
-      st%du = b%mass*(2.0_dp*st%c2*st%v + 2.0_dp*st%a - b%ground*dag) + 2.0_dp*st%cv
+      call rhs_kernel(st%n, 2.0_dp*st%c2, dag, b%mass, b%ground, st%v, st%a, st%cv, st%du)
       call band_solve(st%n, st%kd, st%chol, st%dinv, st%du)
    end subroutine predict_general
+
+   !> The step's right-hand side r = m (c4 v + 2 a - r_g dag) + 2 C v (c4 = 2 c2) on
+   !> explicit-shape arrays (one vectorised pass).
+   pure subroutine rhs_kernel(n, c4, dag, mass, ground, v, a, cv, r)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: c4, dag, mass(n), ground(n), v(n), a(n), cv(n)
+      real(dp), intent(out) :: r(n)
+      integer :: i
+
+      do i = 1, n
+         r(i) = mass(i)*(c4*v(i) + 2.0_dp*a(i) - ground(i)*dag) + 2.0_dp*cv(i)
+      end do
+   end subroutine rhs_kernel
 
    !> The general (banded) path of `newmark_commit`: the Newmark update, Kt u, Kt v and
    !> C v (derived, or by band products on a refresh step), sum(m r du), du.(Cv_old + Cv_new)
