@@ -225,8 +225,8 @@ contains
       type(contact_law), intent(in) :: law
       real(dp), intent(in) :: r
 
-      stays_open = r == 0.0_dp .and. j%r == 0.0_dp .and. law%dashpot == 0.0_dp .and. j%d == 0.0_dp .and. &
-                   law%kind == law_elastic .and. .not. (j%fractured .or. law%fractures)
+      stays_open = r == 0.0_dp .and. j%r == 0.0_dp .and. j%d == 0.0_dp .and. .not. j%fractured .and. &
+                   plain_law(law)
    end function stays_open
 
    !> The step of a joint that `stays_open`: d = 0, no force, no work; the same numbers as
