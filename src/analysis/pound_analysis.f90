@@ -30,8 +30,8 @@ module pound_analysis
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
-                            newmark_energies, newmark_n, en_input, en_kinetic, en_strain, en_damping
-   use pound_newmark, only: newmark_add_energies
+                            newmark_energies, newmark_add_energies, newmark_n, en_input, en_kinetic, en_strain, &
+                            en_damping
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &

@@ -35,7 +35,7 @@ module pound_newmark
    public :: newmark_add_response, newmark_set_state, newmark_dt, newmark_n, newmark_swap_step
    public :: newmark_u, newmark_v, newmark_a, newmark_du, newmark_u_at, newmark_v_at, newmark_predicted, newmark_energies
    public :: newmark_path, newmark_tridiagonal_factors
-   public :: kinetic_energy, strain_energy, newmark_add_balance
+   public :: kinetic_energy, strain_energy
    public :: en_input, en_kinetic, en_strain, en_damping
    public :: newmark_add_energies
 
@@ -93,8 +93,8 @@ module pound_newmark
          real(dp), intent(in), value :: dag
       end subroutine newmark_predict
       !> Complete the step with the increment `du` and account the energy; with `w_in` and
-      !> `e_out`, add the energy balance as `newmark_add_balance` does (in submodule
-      !> pound_newmark_step).
+      !> `e_out`, add the integrator's input work and its kinetic + strain + damping energy to
+      !> them (the per-step audit; in submodule pound_newmark_step).
       module subroutine newmark_commit(st, b, ag_old, ag_new, w_in, e_out)
          type(newmark_state), intent(inout) :: st
          type(structure_model), intent(in) :: b
@@ -468,20 +468,6 @@ contains
       v0 = st%v(i)
       am = 0.5_dp*(st%c1*st%du(i) - 2.0_dp*st%c2*st%v(i))
    end subroutine newmark_path
-
-   !> Add the integrator's input work to `w_in` and its kinetic + strain + damping energy to
-   !> `e_out` (the per-step audit; no array is formed).
-   pure subroutine newmark_add_balance(st, w_in, e_out)
-      !> Integrator state.
-      type(newmark_state), intent(in) :: st
-      !> Input work so far (added to).
-      real(dp), intent(inout) :: w_in
-      !> Kinetic + strain + damping energy so far (added to).
-      real(dp), intent(inout) :: e_out
-
-      w_in = w_in + st%input_work
-      e_out = e_out + ((st%kinetic + st%strain) + st%damping_energy)
-   end subroutine newmark_add_balance
 
    !> The running energies of the integrator (kJ): input work, kinetic, strain and damping
    !> energy at the current time (indices `en_input`, `en_kinetic`, `en_strain`, `en_damping`).

@@ -58,9 +58,9 @@ contains
    !> increment du . (C v_old + C v_new)/2: the trapezoidal sums under which the average
    !> acceleration method balances energy exactly for a linear system.
    !>
-   !> With `w_in` and `e_out` the step's energy balance is added to them as
-   !> `newmark_add_balance` adds it (the per-step audit of the time loop without a call of
-   !> its own).
+   !> With `w_in` and `e_out` the integrator's input work and its kinetic + strain + damping
+   !> energy are added to them (the per-step audit of the time loop without a call of its
+   !> own).
    module subroutine newmark_commit(st, b, ag_old, ag_new, w_in, e_out)
       !> Integrator state.
       type(newmark_state), intent(inout) :: st
