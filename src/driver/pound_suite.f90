@@ -50,11 +50,13 @@ module pound_suite
    use pound_run_case, only: case_options, case_result, run_case, configured_motion
    use pound_analysis, only: analysis_result, n_energy, analysis_copy
    use pound_analysis_batch, only: batch_eligible, run_uncoupled_batch, batch_lanes
-   use pound_cases, only: case_work, case_table, run_cases, first_failure, cases_ranks
+   use pound_cases, only: case_work, case_table, run_cases, first_failure, cases_ranks, case_message_len, &
+                          text_to_column, column_to_text
+   use pound_sort, only: sort_ascending
    implicit none
    private
 
-   public :: suite_result, run_suite, suite_motion, suite_pairs, n_spectrum, spectrum_damping
+   public :: suite_result, suite_failure, run_suite, suite_motion, suite_pairs, n_spectrum, spectrum_damping
    public :: motion_histories, bisection, bisection_step, bisection_update, time_history_gap
 
    !> Log-spaced periods of the suite spectra (before the buildings' periods are added).
@@ -65,6 +67,22 @@ module pound_suite
    !> run one by one), and at most this many bytes of their results held at once.
    integer, parameter :: batch_min = 3
    real(dp), parameter :: batch_bytes = 256.0_dp*2.0_dp**20
+   !> Failed trial gaps a motion's own threshold refinement carries to the writer (more are
+   !> counted in the last one's message).
+   integer, parameter :: refine_failures_kept = 8
+   !> Reals of one failure in a case's column: the gap, then the message (`text_to_column`).
+   integer, parameter :: failure_width = 2 + case_message_len
+
+   !> A failed case of a suite: a motion's run at the deck's gaps (uncoupled or coupled), at a
+   !> gap of its sweep, or at a trial gap of a threshold refinement.
+   type :: suite_failure
+      !> Motion index.
+      integer :: motion = 0
+      !> Gap of every joint (m); -1: the motion's run at the deck's gaps.
+      real(dp) :: gap = -1.0_dp
+      !> The error message.
+      character(len=case_message_len) :: message = ''
+   end type suite_failure
 
    !> Bisection for a threshold gap: `lo` fails the target, `hi` meets it; halved until
    !> hi - lo <= tol (reverse communication: `bisection_step` gives the trial gap,
@@ -144,6 +162,19 @@ module pound_suite
       real(dp) :: refine_tolerance = 0.0_dp
       !> Per motion: its histories, when asked (n_motions).
       type(motion_histories), allocatable :: histories(:)
+      !> Per motion: whether its run at the deck's gaps failed (it is then left out of every
+      !> statistic over the motions; n_motions).
+      logical, allocatable :: motion_failed(:)
+      !> Number of motions the statistics are over (those that did not fail).
+      integer :: n_used = 0
+      !> The motion whose case is the run's single-motion results (the first that did not fail).
+      integer :: first = 0
+      !> Per motion and sweep gap: whether the motion's run at the gap failed (n_motions, n_gaps);
+      !> per gap: whether any motion of the statistics failed at it (the suite gap is FAILED:
+      !> not meeting the target, its mean and max 0).
+      logical, allocatable :: sweep_failed(:, :), gap_failed(:)
+      !> Every failed case, by motion, then gap (-1, the deck's gaps, first).
+      type(suite_failure), allocatable :: failures(:)
    end type suite_result
 
    !> What the suite's cases share: the configuration (and the same without its sweep), the
@@ -165,6 +196,8 @@ module pound_suite
       real(dp), allocatable :: period(:), building_period(:)
       !> Contact pairs in deck order: buildings on the left and right, facing floors.
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
+      !> The motions the statistics are over (those whose run did not fail), in order.
+      integer, allocatable :: used(:)
    end type suite_context
 
    !> The motions of a suite without `&sweep` as cases: case i is the group of motions
@@ -182,18 +215,23 @@ module pound_suite
       procedure :: compute => suite_case
    end type suite_cases
 
-   !> The motions at one trial gap as cases: column = the largest |lambda| of motion m per
-   !> targeted quantity and building (n_history_quantities x n_buildings; 0 where not targeted).
+   !> The motions at one trial gap as cases: column = the largest |lambda| of motion
+   !> `motions(i)` per targeted quantity and building (n_history_quantities x n_buildings; 0
+   !> where not targeted).
    type, extends(case_work) :: motion_cases
       !> The refinement's data.
       type(suite_context), pointer :: ctx => null()
+      !> Motion index of each case.
+      integer, allocatable :: motions(:)
       !> Trial gap (m).
       real(dp) :: gap = 0.0_dp
    contains
       procedure :: compute => motion_case
    end type motion_cases
 
-   !> The motions' own threshold refinements as cases: column = motion k's refined gap.
+   !> The motions' own threshold refinements as cases: column = motion k's refined gap, the
+   !> number of its failed trial gaps and the first `refine_failures_kept` of them
+   !> (`failure_to_column`).
    type, extends(case_work) :: refine_cases
       !> The refinement's data.
       type(suite_context), pointer :: ctx => null()
@@ -277,9 +315,60 @@ contains
       !> The suite's data.
       type(suite_context), intent(in) :: ctx
 
-      width = 3 + size(ctx%period) + size(ctx%building_period) + &
-              3*n_history_quantities*sum(ctx%deck%buildings%n_storeys) + size(ctx%left)
+      width = failure_slot(ctx) + 1 + failure_width
    end function motion_width
+
+   !> Offset in a motion's column of its failure: 1 when its run failed, then the failure
+   !> (`failure_to_column`, gap -1).
+   pure integer function failure_slot(ctx) result(offset)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+
+      offset = motion_offset(ctx, 4, 1) + size(ctx%left)
+   end function failure_slot
+
+   !> A failure at `gap` (m; -1: the deck's gaps) with `message` into `values`
+   !> (`failure_width` reals).
+   pure subroutine failure_to_column(gap, message, values)
+      !> Gap (m).
+      real(dp), intent(in) :: gap
+      !> The error message (cut to `case_message_len`).
+      character(len=*), intent(in) :: message
+      !> The column's part.
+      real(dp), intent(out) :: values(:)
+
+      values(1) = gap
+      call text_to_column(message, values(2:failure_width))
+   end subroutine failure_to_column
+
+   !> The failure of motion k that `failure_to_column` put in `values`.
+   pure function column_failure(values, k) result(f)
+      !> The column's part.
+      real(dp), intent(in) :: values(:)
+      !> Motion index.
+      integer, intent(in) :: k
+      type(suite_failure) :: f
+
+      f%motion = k
+      f%gap = values(1)
+      f%message = column_to_text(values(2:failure_width))
+   end function column_failure
+
+   !> Add the failure `f` to `list` unless the same motion already failed at the same gap
+   !> (the suite's two refinements may try the same gap).
+   pure subroutine add_failure(list, f)
+      !> The failures so far.
+      type(suite_failure), allocatable, intent(inout) :: list(:)
+      !> The new one.
+      type(suite_failure), intent(in) :: f
+      integer :: i
+
+      if (.not. allocated(list)) allocate (list(0))
+      do i = 1, size(list)
+         if (list(i)%motion == f%motion .and. list(i)%gap == f%gap) return
+      end do
+      list = [list, f]
+   end subroutine add_failure
 
    !> Offset in a motion's column of block `which` (1 lambda, 2 uncoupled peaks, 3 coupled
    !> peaks) of building ib, each (n_storeys, n_history_quantities).
@@ -298,8 +387,9 @@ contains
    !> Motion k of the suite: scaled, its spectra, run (`run_case`) into `res`, and what the
    !> suite's statistics need of it in `col`: scale factor, PGA, whether the influence exists,
    !> Sa at the spectra's periods and at the buildings' periods, per building lambda, the
-   !> uncoupled and the coupled peaks, and per pair the no-contact gap (-1 without 'u').
-   !> With `unc`, the motion's uncoupled result is taken from there (a batch ran it).
+   !> uncoupled and the coupled peaks, and per pair the no-contact gap (-1 without 'u'). A run
+   !> that fails is no error: its failure is put in the column (`failure_slot`), the spectra
+   !> kept. With `unc`, the motion's uncoupled result is taken from there (a batch ran it).
    subroutine motion_run(ctx, k, res, col, error, unc)
       !> The suite's data.
       type(suite_context), intent(in) :: ctx
@@ -338,7 +428,11 @@ contains
       if (present(unc)) options%unc => unc
       call run_case(ctx%deck, res, error, options)
       if (allocated(error)) then
-         error%message = "&ground '"//ctx%deck%motions(k)%name//"': "//error%message
+         ! A failed run is the motion's failure, carried in its column: the others go on.
+         o = failure_slot(ctx)
+         col(o + 1) = 1.0_dp
+         call failure_to_column(-1.0_dp, error%message, col(o + 2:o + 1 + failure_width))
+         deallocate (error)
          return
       end if
       if (.not. (res%has_coupled .and. res%has_uncoupled)) return
@@ -378,7 +472,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: lam(n_history_quantities, size(work%ctx%models))
 
-      call motion_lambda(work%ctx, i, work%gap, lam, error)
+      call motion_lambda(work%ctx, work%motions(i), work%gap, lam, error)
       if (allocated(error)) return
       values = reshape(lam, [size(lam)])
    end subroutine motion_case
@@ -389,12 +483,25 @@ contains
       class(refine_cases), intent(inout) :: work
       !> Motion index.
       integer, intent(in) :: i
-      !> Its refined gap (m; -1: none).
+      !> Its refined gap (m; -1: none), its failed trial gaps.
       real(dp), intent(out) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      type(suite_failure), allocatable :: failures(:)
+      character(len=:), allocatable :: text
+      integer :: j, o
 
-      call refine(work%ctx, work%safe(i), i, values(1), error)
+      values = 0.0_dp
+      call refine(work%ctx, work%safe(i), i, values(1), failures, error)
+      if (allocated(error)) return
+      values(2) = real(size(failures), dp)
+      do j = 1, min(size(failures), refine_failures_kept)
+         text = trim(failures(j)%message)
+         if (j == refine_failures_kept .and. size(failures) > j) text = text//' (and '// &
+            str(size(failures) - j)//' more trial gaps of this refinement failed)'
+         o = 2 + (j - 1)*failure_width
+         call failure_to_column(failures(j)%gap, text, values(o + 1:o + failure_width))
+      end do
    end subroutine refine_case
 
    !> Motion m run at `gap` (no sweep): its largest |lambda| over the floors per quantity and
@@ -430,8 +537,10 @@ contains
 
    !> Bisection between the grid gap below `safe` (failing) and `safe` (passing), down to
    !> the tolerance: the motions run at the trial gap (no sweep), the criterion on the suite
-   !> mean (`which` = 0), on every motion (-1) or on motion `which` alone (> 0).
-   subroutine refine(ctx, safe, which, refined, error)
+   !> mean (`which` = 0), on every motion (-1) or on motion `which` alone (> 0). A trial gap
+   !> at which a motion fails does not meet the target (the refined gap lies above it); its
+   !> failures are added to `failures`.
+   subroutine refine(ctx, safe, which, refined, failures, error)
       !> The refinement's data.
       type(suite_context), intent(in), target :: ctx
       !> Safe grid gap (m; <= 0: none).
@@ -440,6 +549,8 @@ contains
       integer, intent(in) :: which
       !> Refined gap (m; -1: not refined).
       real(dp), intent(out) :: refined
+      !> The failed cases so far.
+      type(suite_failure), allocatable, intent(inout) :: failures(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       type(bisection) :: b
@@ -448,6 +559,7 @@ contains
       logical :: more
 
       refined = -1.0_dp
+      if (.not. allocated(failures)) allocate (failures(0))
       ig = findloc(ctx%gap, safe, 1)
       if (.not. (safe > 0.0_dp) .or. ig <= 1) return
       b = bisection(ctx%gap(ig - 1), safe, ctx%deck%sweep%refine_tolerance)
@@ -455,7 +567,7 @@ contains
       do
          call bisection_step(b, mid, more)
          if (.not. more) exit
-         call worst_at(ctx, mid, which, worst, error)
+         call worst_at(ctx, mid, which, worst, failures, error)
          if (allocated(error)) return
          call bisection_update(b, mid, worst <= ctx%deck%sweep%target)
       end do
@@ -465,8 +577,10 @@ contains
    !> The motions at one gap: the largest |lambda| over the targeted quantities and the
    !> buildings, as the suite mean (`which` = 0: the mean per quantity and building, then the
    !> largest), the largest over the motions (-1), or of motion `which` alone (> 0). The
-   !> motions of a suite criterion are cases (`motion_cases`), summed in motion order.
-   subroutine worst_at(ctx, gap, which, worst, error)
+   !> motions of a suite criterion (those of the statistics) are cases (`motion_cases`),
+   !> summed in motion order. A motion that fails at the gap is added to `failures` and the
+   !> gap does not meet the target (`worst` = huge).
+   subroutine worst_at(ctx, gap, which, worst, failures, error)
       !> The refinement's data.
       type(suite_context), intent(in), target :: ctx
       !> Trial gap (m).
@@ -475,6 +589,8 @@ contains
       integer, intent(in) :: which
       !> The criterion's value (%).
       real(dp), intent(out) :: worst
+      !> The failed cases so far.
+      type(suite_failure), allocatable, intent(inout) :: failures(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       type(motion_cases) :: cases
@@ -482,18 +598,26 @@ contains
       real(dp) :: lam(n_history_quantities, size(ctx%models)), total(n_history_quantities, size(ctx%models))
       integer :: m, nm
 
-      nm = size(ctx%deck%motions)
+      worst = huge(1.0_dp)
       if (which > 0) then
          call motion_lambda(ctx, which, gap, lam, error)
-         if (allocated(error)) return
+         if (allocated(error)) then
+            call add_failure(failures, suite_failure(which, gap, error%message))
+            deallocate (error)
+            return
+         end if
          worst = max(0.0_dp, maxval(lam))
          return
       end if
+      nm = size(ctx%used)
       cases%ctx => ctx
       cases%gap = gap
+      cases%motions = ctx%used
       call run_cases(cases, nm, size(lam), table)
-      call first_failure(table, motion_names(ctx%deck, ', gap = '//str(gap)//' m'), error)
-      if (allocated(error)) return
+      do m = 1, nm
+         if (table%failed(m)) call add_failure(failures, suite_failure(ctx%used(m), gap, table%message(m)))
+      end do
+      if (any(table%failed)) return
       total = 0.0_dp
       worst = 0.0_dp
       do m = 1, nm
@@ -723,13 +847,41 @@ contains
       start = [(min(1 + (g - 1)*size_of, n + 1), g=1, groups + 1)]
    end function batch_groups
 
-   !> Run every motion of the deck's suite and gather the suite statistics.
+   !> The failures by motion, then by gap (the deck's gaps, -1, first); `add_failure` keeps
+   !> one entry a motion and gap.
+   pure subroutine sort_failures(list)
+      !> The failures.
+      type(suite_failure), allocatable, intent(inout) :: list(:)
+      type(suite_failure), allocatable :: sorted(:)
+      real(dp), allocatable :: gaps(:)
+      integer :: k, i, j
+
+      allocate (sorted(0))
+      do k = minval([list%motion, huge(k)]), maxval([list%motion, 0])
+         gaps = pack(list%gap, list%motion == k)
+         call sort_ascending(gaps)
+         do i = 1, size(gaps)
+            do j = 1, size(list)
+               if (list(j)%motion == k .and. list(j)%gap == gaps(i)) sorted = [sorted, list(j)]
+            end do
+         end do
+      end do
+      call move_alloc(sorted, list)
+   end subroutine sort_failures
+
+   !> Run every motion of the deck's suite and gather the suite statistics. A motion whose
+   !> run fails, a gap of a motion's sweep or a trial gap of a refinement at which a motion
+   !> fails is recorded in `suite%failures` and the others go on: the failed motion is left out
+   !> of every statistic over the motions (they are over `suite%n_used` motions), a suite gap
+   !> at which a motion failed is FAILED (never meeting the target, so the safe gaps lie above
+   !> it); only a suite whose every motion fails is an error.
    subroutine run_suite(deck, suite, first, error, label)
       !> A validated configuration.
       type(deck_type), intent(in), target :: deck
       !> Everything the suite computes.
       type(suite_result), intent(out) :: suite
-      !> The case of the first motion (what a single-motion run writes).
+      !> The case of the first motion that did not fail (`suite%first`: what a single-motion
+      !> run writes).
       type(case_result), intent(out) :: first
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
@@ -746,9 +898,9 @@ contains
       type(case_result) :: res
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
       real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :)
-      real(dp), allocatable :: z(:), sweep_sum(:, :, :)
+      real(dp), allocatable :: z(:), sweep_sum(:, :, :), sweep_all(:, :, :, :)
       logical :: targeted(n_history_quantities)
-      integer :: nm, nb, k, ib, np, ip, nmax, ig
+      integer :: nm, nb, k, ib, np, ip, nmax, ig, iq
       integer, allocatable :: start(:), ms(:)
       type(analysis_result), allocatable, target :: batched(:)
       logical, allocatable :: batched_ok(:)
@@ -832,23 +984,33 @@ contains
       ctx%right = right
       ctx%fl = fl
       ctx%fr = fr
-      allocate (columns(motion_width(ctx), nm), whole(nm))
+      allocate (columns(motion_width(ctx), nm), whole(nm), suite%motion_failed(nm))
+      suite%motion_failed = .false.
+      allocate (suite%failures(0))
       whole = [(deck%sweep%active .or. k == 1 .or. deck%motions(k)%histories, k=1, nm)]
       ms = pack([(k, k=1, nm)], whole)
-      start = batch_groups(deck, models, size(ms), nm)
-      do ig = 1, size(start) - 1
-         call batch_uncoupled(ctx, ms(start(ig):start(ig + 1) - 1), batched, batched_ok, error)
-         if (allocated(error)) return
-         do ip = 1, size(batched)
-            k = ms(start(ig) + ip - 1)
-            if (k == 1) then
-               call whole_run(first, ip)
-            else
-               call whole_run(res, ip)
-            end if
+      do
+         start = batch_groups(deck, models, size(ms), nm)
+         do ig = 1, size(start) - 1
+            call batch_uncoupled(ctx, ms(start(ig):start(ig + 1) - 1), batched, batched_ok, error)
             if (allocated(error)) return
+            do ip = 1, size(batched)
+               k = ms(start(ig) + ip - 1)
+               if (suite%first == 0) then
+                  call whole_run(first, ip)
+               else
+                  call whole_run(res, ip)
+               end if
+               if (allocated(error)) return
+            end do
+            deallocate (batched, batched_ok)
          end do
-         deallocate (batched, batched_ok)
+         ! Every motion run whole failed: the next one is run whole too (the first motion that
+         ! does not fail gives the run's single-motion results).
+         if (suite%first > 0 .or. all(whole)) exit
+         k = findloc(whole, .false., 1)
+         whole(k) = .true.
+         ms = [k]
       end do
       motions%ctx => ctx
       motions%motion = pack([(k, k=1, nm)], .not. whole)
@@ -863,19 +1025,44 @@ contains
             columns(:, m) = reshape(table%values(1:size(columns, 1)*size(m), ig), [size(columns, 1), size(m)])
          end associate
       end do
+
+      ! The motions whose run failed are left out of every statistic over the motions.
+      ip = failure_slot(ctx)
+      do k = 1, nm
+         suite%motion_failed(k) = columns(ip + 1, k) > 0.0_dp
+         if (suite%motion_failed(k)) call add_failure(suite%failures, &
+                                                      column_failure(columns(ip + 2:ip + 1 + failure_width, k), k))
+      end do
+      suite%n_used = count(.not. suite%motion_failed)
+      if (suite%n_used == 0) then
+         call fatal_error(error, 'every motion of the suite failed; the first, '// &
+                          "&ground '"//trim(suite%names(suite%failures(1)%motion))//"': "// &
+                          trim(suite%failures(1)%message))
+         return
+      end if
+      ctx%used = pack([(k, k=1, nm)], .not. suite%motion_failed)
       do k = 1, nm
          call gather(columns(:, k))
       end do
-      suite%mean_sa = sum(suite%sa, dim=1)/nm
+      if (suite%n_used == nm) then
+         suite%mean_sa = sum(suite%sa, dim=1)/nm
+      else
+         suite%mean_sa = sum(suite%sa(ctx%used, :), dim=1)/suite%n_used
+      end if
 
+      if (.not. suite%has_coupled) call sort_failures(suite%failures)
       if (.not. suite%has_coupled) return
       do ib = 1, nb
          associate (s => suite%building(ib), n => deck%buildings(ib)%n_storeys)
-            s%max_lambda = maxval(s%lambda, dim=1)
+            if (suite%n_used == nm) then
+               s%max_lambda = maxval(s%lambda, dim=1)
+            else
+               s%max_lambda = maxval(s%lambda(ctx%used, :, :), dim=1)
+            end if
             where (any(s%lambda >= huge(1.0_dp), dim=1))
                s%mean_lambda = huge(1.0_dp)
             elsewhere
-               s%mean_lambda = sum(s%lambda, dim=1)/nm
+               s%mean_lambda = sum(s%lambda, dim=1)/suite%n_used
             end where
             s%lambda_of_means = influence_coefficient(mean_cpl(1:n, :, ib), mean_unc(1:n, :, ib))
          end associate
@@ -885,40 +1072,68 @@ contains
                     suite%separation(nm + 1, ip))
       end do
       if (suite%has_sweep) then
+         ! Means in motion order over the motions of the statistics; a gap at which one of them
+         ! failed is FAILED for the suite (mean and max 0, not meeting the target).
+         sweep_sum = 0.0_dp
+         do ip = 1, suite%n_used
+            sweep_sum = sweep_sum + sweep_all(:, :, :, ctx%used(ip))/suite%n_used
+         end do
+         do iq = 1, n_history_quantities
+            if (.not. targeted(iq)) sweep_sum(iq, :, :) = 0.0_dp
+         end do
+         suite%gap_failed = any(suite%sweep_failed(ctx%used, :), dim=1)
          suite%sweep_mean = maxval(reshape(sweep_sum, [n_history_quantities*nb, size(suite%sweep_gap)]), dim=1)
-         suite%sweep_max = maxval(suite%sweep_lambda, dim=1)
-         suite%safe_gap_mean = safe_gap(suite%sweep_mean)
-         suite%safe_gap_every = safe_gap(suite%sweep_max)
-         suite%non_monotone_mean = non_monotone(suite%sweep_mean, suite%safe_gap_mean)
-         suite%non_monotone_every = non_monotone(suite%sweep_max, suite%safe_gap_every)
+         if (suite%n_used == nm) then
+            suite%sweep_max = maxval(suite%sweep_lambda, dim=1)
+         else
+            suite%sweep_max = maxval(suite%sweep_lambda(ctx%used, :), dim=1)
+         end if
+         where (suite%gap_failed)
+            suite%sweep_mean = 0.0_dp
+            suite%sweep_max = 0.0_dp
+         end where
+         suite%safe_gap_mean = safe_gap(suite%sweep_mean, suite%gap_failed)
+         suite%safe_gap_every = safe_gap(suite%sweep_max, suite%gap_failed)
+         suite%non_monotone_mean = non_monotone(suite%sweep_mean, suite%gap_failed, suite%safe_gap_mean)
+         suite%non_monotone_every = non_monotone(suite%sweep_max, suite%gap_failed, suite%safe_gap_every)
          ctx%gap = suite%sweep_gap
-         call refine(ctx, suite%safe_gap_mean, 0, suite%refined_gap_mean, error)
+         call refine(ctx, suite%safe_gap_mean, 0, suite%refined_gap_mean, suite%failures, error)
          if (allocated(error)) return
-         call refine(ctx, suite%safe_gap_every, -1, suite%refined_gap_every, error)
+         call refine(ctx, suite%safe_gap_every, -1, suite%refined_gap_every, suite%failures, error)
          if (allocated(error)) return
          allocate (suite%safe_gap_motion(nm), suite%refined_gap_motion(nm), suite%non_monotone_motion(nm))
          do k = 1, nm
-            suite%safe_gap_motion(k) = safe_gap(suite%sweep_lambda(k, :))
-            suite%non_monotone_motion(k) = non_monotone(suite%sweep_lambda(k, :), suite%safe_gap_motion(k))
+            suite%safe_gap_motion(k) = -1.0_dp
+            suite%non_monotone_motion(k) = 0
+            if (suite%motion_failed(k)) cycle
+            suite%safe_gap_motion(k) = safe_gap(suite%sweep_lambda(k, :), suite%sweep_failed(k, :))
+            suite%non_monotone_motion(k) = non_monotone(suite%sweep_lambda(k, :), suite%sweep_failed(k, :), &
+                                                        suite%safe_gap_motion(k))
          end do
          ! The motions' own refinements are independent of each other: one case each.
          chains%ctx => ctx
          chains%safe = suite%safe_gap_motion
-         call run_cases(chains, nm, 1, table)
+         call run_cases(chains, nm, 2 + refine_failures_kept*failure_width, table)
          call first_failure(table, motion_names(deck, ''), error)
          if (allocated(error)) return
          do k = 1, nm
             suite%refined_gap_motion(k) = table%values(1, k)
+            do ip = 1, min(nint(table%values(2, k)), refine_failures_kept)
+               iq = 2 + (ip - 1)*failure_width
+               call add_failure(suite%failures, column_failure(table%values(iq + 1:iq + failure_width, k), k))
+            end do
             suite%separation(k, :)%time_history = time_history_gap(suite%safe_gap_motion(k), &
                                                                    suite%refined_gap_motion(k))
          end do
          suite%separation(nm + 1, :)%time_history = time_history_gap(suite%safe_gap_mean, suite%refined_gap_mean)
       end if
+      call sort_failures(suite%failures)
 
    contains
 
       !> Motion k run on every rank (its uncoupled run from the batch when it took it): its
-      !> column, its sweep and its histories.
+      !> column, and unless it failed its sweep and its histories; the first that does not
+      !> fail is the run's single-motion case.
       subroutine whole_run(r, j)
          type(case_result), intent(out) :: r
          integer, intent(in) :: j
@@ -929,8 +1144,9 @@ contains
             call motion_run(ctx, k, r, columns(:, k), error)
          end if
          if (allocated(error)) return
+         if (columns(failure_slot(ctx) + 1, k) > 0.0_dp) return
+         if (suite%first == 0) suite%first = k
          call gather_sweep(r)
-         if (allocated(error)) return
          call keep(r)
       end subroutine whole_run
 
@@ -946,40 +1162,39 @@ contains
          if (res%has_coupled) call analysis_copy(res%cpl, suite%histories(k)%cpl)
       end subroutine keep
 
-      !> The sweep of motion k (a case run on every rank).
+      !> The sweep of motion k (a case run on every rank): its largest |lambda| per quantity,
+      !> building and gap (summed into the suite means at the end, over the motions of the
+      !> statistics), its failed gaps.
       subroutine gather_sweep(res)
          type(case_result), intent(in) :: res
          integer :: iq, ig
 
          if (.not. (res%has_coupled .and. res%has_uncoupled .and. res%has_sweep)) return
-         if (any(res%sweep%failed)) then
-            ig = findloc(res%sweep%failed, .true., 1)
-            call fatal_error(error, "&ground '"//deck%motions(k)%name//"': gap sweep, gap = "// &
-                             str(res%sweep%gap(ig))//' m: '//trim(res%sweep%messages(ig))// &
-                             ' (a suite stops on a failed gap: its means would be wrong)')
-            return
-         end if
-         if (k == 1) then
+         if (.not. suite%has_sweep) then
             suite%has_sweep = .true.
             suite%sweep_gap = res%sweep%gap
-            allocate (suite%sweep_lambda(nm, size(res%sweep%gap)))
+            allocate (suite%sweep_lambda(nm, size(res%sweep%gap)), suite%sweep_failed(nm, size(res%sweep%gap)))
+            allocate (sweep_all(n_history_quantities, nb, size(res%sweep%gap), nm))
             allocate (sweep_sum(n_history_quantities, nb, size(res%sweep%gap)))
-            sweep_sum = 0.0_dp
+            suite%sweep_lambda = 0.0_dp
+            suite%sweep_failed = .false.
+            sweep_all = 0.0_dp
          end if
-         sweep_sum = sweep_sum + res%sweep%max_abs_lambda/nm
+         sweep_all(:, :, :, k) = res%sweep%max_abs_lambda
+         suite%sweep_failed(k, :) = res%sweep%failed
          do ig = 1, size(res%sweep%gap)
+            if (res%sweep%failed(ig)) call add_failure(suite%failures, &
+                                                       suite_failure(k, res%sweep%gap(ig), res%sweep%messages(ig)))
             suite%sweep_lambda(k, ig) = 0.0_dp
             do iq = 1, n_history_quantities
                if (targeted(iq)) suite%sweep_lambda(k, ig) = max(suite%sweep_lambda(k, ig), &
                                                                  maxval(res%sweep%max_abs_lambda(iq, :, ig)))
             end do
          end do
-         do iq = 1, n_history_quantities
-            if (.not. targeted(iq)) sweep_sum(iq, :, :) = 0.0_dp
-         end do
       end subroutine gather_sweep
 
-      !> Scaling, spectra, peaks, lambdas and rules of motion k from its column (`motion_run`).
+      !> Scaling, spectra, peaks, lambdas and rules of motion k from its column (`motion_run`);
+      !> a failed motion has its scaling and spectra only.
       subroutine gather(col)
          real(dp), intent(in) :: col(:)
          integer :: o, n, w, o2
@@ -997,9 +1212,11 @@ contains
             o = motion_offset(ctx, 1, ib)
             suite%building(ib)%lambda(k, :, :) = reshape(col(o + 1:o + w), [n, n_history_quantities])
             o = motion_offset(ctx, 2, ib)
-            mean_unc(1:n, :, ib) = mean_unc(1:n, :, ib) + reshape(col(o + 1:o + w), [n, n_history_quantities])/nm
+            mean_unc(1:n, :, ib) = mean_unc(1:n, :, ib) + reshape(col(o + 1:o + w), [n, n_history_quantities]) &
+                                   /suite%n_used
             o = motion_offset(ctx, 3, ib)
-            mean_cpl(1:n, :, ib) = mean_cpl(1:n, :, ib) + reshape(col(o + 1:o + w), [n, n_history_quantities])/nm
+            mean_cpl(1:n, :, ib) = mean_cpl(1:n, :, ib) + reshape(col(o + 1:o + w), [n, n_history_quantities]) &
+                                   /suite%n_used
          end do
          o = motion_offset(ctx, 4, 1)
          do ip = 1, np
@@ -1008,31 +1225,36 @@ contains
             call rules(col(o2 + fl(ip)), col(w + fr(ip)), ip, suite%separation(k, ip))
             suite%separation(k, ip)%no_contact = col(o + ip)
             suite%separation(nm + 1, ip)%no_contact = suite%separation(nm + 1, ip)%no_contact + &
-                                                      suite%separation(k, ip)%no_contact/nm
+                                                      suite%separation(k, ip)%no_contact/suite%n_used
          end do
       end subroutine gather
 
-      !> Number of grid gaps below `safe` whose `worst` meets the target.
-      integer function non_monotone(worst, safe)
-         real(dp), intent(in) :: worst(:), safe
+      !> Number of grid gaps below `safe` whose `worst` meets the target (failed gaps never do).
+      integer function non_monotone(worst, failed, safe)
+         real(dp), intent(in) :: worst(:)
+         logical, intent(in) :: failed(:)
+         real(dp), intent(in) :: safe
          integer :: ig
 
          non_monotone = 0
          if (.not. (safe > 0.0_dp)) return
          do ig = 1, size(worst)
-            if (suite%sweep_gap(ig) < safe .and. worst(ig) <= deck%sweep%target) non_monotone = non_monotone + 1
+            if (suite%sweep_gap(ig) < safe .and. worst(ig) <= deck%sweep%target .and. .not. failed(ig)) &
+               non_monotone = non_monotone + 1
          end do
       end function non_monotone
 
-      !> Smallest gap from which on every larger gap of the sweep `worst` <= the target.
-      real(dp) function safe_gap(worst)
+      !> Smallest gap from which on every larger gap of the sweep `worst` <= the target and
+      !> none failed (so it lies above every failed gap).
+      real(dp) function safe_gap(worst, failed)
          real(dp), intent(in) :: worst(:)
+         logical, intent(in) :: failed(:)
          integer :: ig
 
          safe_gap = -1.0_dp
          if (.not. (deck%sweep%target > 0.0_dp)) return
          do ig = size(worst), 1, -1
-            if (worst(ig) > deck%sweep%target) exit
+            if (worst(ig) > deck%sweep%target .or. failed(ig)) exit
             safe_gap = suite%sweep_gap(ig)
          end do
       end function safe_gap

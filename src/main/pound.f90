@@ -59,7 +59,7 @@ program pound
    logical :: is_suite, streamed
    integer :: progress_mode = progress_auto
    !> Exit status of a run whose results were written but some of whose cases (gaps of a
-   !> sweep) failed.
+   !> sweep; a suite's motions, their gaps and trial gaps) failed.
    integer, parameter :: failed_cases_status = 3
    logical :: writer
    !> Whether an error now may be rank 0's alone (its streamed HDF5 file), while the other
@@ -143,7 +143,14 @@ program pound
    call check(error)
    call write_summary()
    ! Results written, but some cases failed (named in the listing, the file and the summary).
-   if (.not. is_suite .and. res%has_sweep) then
+   if (is_suite) then
+      if (size(suite%failures) > 0) then
+         call stop_with(str(size(suite%failures))//' cases of the suite failed ('// &
+                        str(count(suite%motion_failed))//' of '//str(size(suite%names))// &
+                        ' motions left out of the suite statistics; named in '//outputs%listing//' and '// &
+                        outputs%h5//' /suite/failed); the other results were written', failed_cases_status)
+      end if
+   else if (res%has_sweep) then
       if (any(res%sweep%failed)) then
          call stop_with(str(count(res%sweep%failed))//' of '//str(size(res%sweep%failed))// &
                         ' gaps of the sweep failed (named in '//outputs%listing//' and '//outputs%h5// &
@@ -324,6 +331,15 @@ contains
             end if
          end if
       end associate
+      if (is_suite) then
+         if (size(suite%failures) > 0) then
+            write (line, '(a,i0,a,i0,a,i0,a)') '  suite: ', size(suite%names), ' motions, statistics over ', &
+               suite%n_used, ', ', size(suite%failures), ' failed cases (FAILED in the listing)'
+            text = text//trim(line)//new_line('a')
+         end if
+         if (suite%first > 1) text = text//'  the single-motion results are those of &ground '''// &
+                                     trim(suite%names(suite%first))//''' (the first that did not fail)'//new_line('a')
+      end if
       do i = 1, size(res%warnings)
          text = text//'  WARNING: '//trim(res%warnings(i))//new_line('a')
       end do

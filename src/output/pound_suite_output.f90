@@ -24,6 +24,10 @@
 !>     /suite/<motion>/ground/acceleration, /suite/<motion>/uncoupled/..., /suite/<motion>/coupled/...
 !>        (as /uncoupled and /coupled) and /suite/<motion>/coupled/contact/force, closing
 !>        (n_out, n_pairs): only for the motions whose `&ground` sets `histories`
+!>     only when some case failed: /suite/failed/motion, gap (m; -1: the deck's gaps), time (s),
+!>        step, message (n_failed), attributes n_motions, n_motions_used; /suite/motion_failed
+!>        (n_motions, 0/1); with &sweep /suite/sweep/failed (n_motions, n_gaps, 0/1) and
+!>        /suite/sweep/gap_failed (n_gaps, 0/1)
 !>
 !> (the arrays are written in Fortran order, so h5py shows them transposed).
 module pound_suite_output
@@ -37,6 +41,7 @@ module pound_suite_output
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
    use pound_results_h5, only: write_analysis_h5
+   use pound_cases, only: failure_time_step, case_message_len
    implicit none
    private
 
@@ -61,10 +66,16 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(building_influence), allocatable :: infl(:)
       integer :: ios, k, ib, q, ip, nm, nb
+      integer, allocatable :: used(:)
       character(len=256) :: msg
+      character(len=:), allocatable :: over
 
       nm = size(suite%names)
       nb = size(models)
+      used = pack([(k, k=1, nm)], .not. suite%motion_failed)
+      over = ''
+      if (suite%n_used < nm) over = ' over '//str(suite%n_used)//' of '//str(nm)//' motions ('// &
+                                    str(nm - suite%n_used)//' FAILED, left out)'
       ios = 0
       call write_section(u, 'Ground-motion suite ('//str(nm)//' motions)')
       write (u, '(a)', iostat=ios, iomsg=msg) '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
@@ -74,9 +85,17 @@ contains
       do k = 1, nm
          write (u, '(2x,a20,*(es14.6))', iostat=ios, iomsg=msg) trim(suite%names(k)), &
             suite%scale_factor(k), suite%pga(k), suite%sa_building(k, :)
+         if (suite%motion_failed(k)) write (u, '(2x,a20,a)', iostat=ios, iomsg=msg) '', &
+            '   FAILED (see the failed cases below): left out of every suite statistic'
       end do
-      write (u, '(2x,a20,14x,es14.6,*(es14.6))', iostat=ios, iomsg=msg) 'mean', sum(suite%pga)/nm, &
-         sum(suite%sa_building, dim=1)/nm
+      if (suite%n_used == nm) then
+         write (u, '(2x,a20,14x,es14.6,*(es14.6))', iostat=ios, iomsg=msg) 'mean', sum(suite%pga)/nm, &
+            sum(suite%sa_building, dim=1)/nm
+      else
+         write (u, '(2x,a20,14x,es14.6,*(es14.6))', iostat=ios, iomsg=msg) 'mean of '//str(suite%n_used)// &
+            ' of '//str(nm), sum(suite%pga, mask=.not. suite%motion_failed)/suite%n_used, &
+            sum(suite%sa_building(used, :), dim=1)/suite%n_used
+      end if
       write (u, '(2x,a20,28x,*(f14.4))', iostat=ios, iomsg=msg) 'period T1 (s)', suite%building_period
       write (u, '(/,2x,a20,2x,a)', iostat=ios, iomsg=msg) 'motion', 'source'
       do k = 1, nm
@@ -86,12 +105,19 @@ contains
          call fatal_error(error, 'listing: '//trim(msg))
          return
       end if
-      if (.not. suite%has_coupled) return
+      if (.not. suite%has_coupled) then
+         call write_failures()
+         return
+      end if
 
       call write_section(u, 'Suite: largest |lambda| per motion, building and quantity [%]')
       write (u, '(2x,a20,a10,*(a14))', iostat=ios, iomsg=msg) 'motion', 'building', &
          (trim(history_names(q)), q=1, n_history_quantities)
       do k = 1, nm
+         if (suite%motion_failed(k)) then
+            write (u, '(2x,a20,a)', iostat=ios, iomsg=msg) trim(suite%names(k)), '   FAILED'
+            cycle
+         end if
          do ib = 1, nb
             write (u, '(2x,a20,a10,*(es14.4))', iostat=ios, iomsg=msg) trim(suite%names(k)), &
                trim(models(ib)%name), (maxval(abs(suite%building(ib)%lambda(k, :, q))), &
@@ -101,13 +127,13 @@ contains
 
       allocate (infl(nb))
       write (u, '(/,a)', iostat=ios, iomsg=msg) '  Suite mean of the lambdas (each motion''s lambda, '// &
-         'then their arithmetic mean):'
+         'then their arithmetic mean'//over//'):'
       do ib = 1, nb
          infl(ib)%lambda = suite%building(ib)%mean_lambda
       end do
       call write_influence_tables(u, models, infl)
       write (u, '(/,a)', iostat=ios, iomsg=msg) '  Suite lambda of the means (the mean coupled and '// &
-         'uncoupled peaks, then lambda; the codes average the responses: this is the one they ask for):'
+         'uncoupled peaks'//over//', then lambda; the codes average the responses: this is the one they ask for):'
       do ib = 1, nb
          infl(ib)%lambda = suite%building(ib)%lambda_of_means
       end do
@@ -121,11 +147,17 @@ contains
          '  time_history = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
          '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
          '  (-1: not computed: no &sweep, no target_lambda, or no gap of the range meets it).', &
-         '  The suite row: rules on the mean peaks; no-contact gap: mean over the motions.'
+         '  The suite row: rules on the mean peaks; no-contact gap: mean over the motions'//over//'.'
       do ip = 1, size(suite%separation, 2)
          write (u, '(/,a,i0)', iostat=ios, iomsg=msg) '  pair ', ip
          write (u, '(2x,a20,*(a14))', iostat=ios, iomsg=msg) 'motion', (trim(rule_names(q)), q=1, size(rule_names))
          do k = 1, nm + 1
+            if (k <= nm) then
+               if (suite%motion_failed(k)) then
+                  write (u, '(2x,a20,a)', iostat=ios, iomsg=msg) trim(row_name(k)), '   FAILED'
+                  cycle
+               end if
+            end if
             associate (s => suite%separation(k, ip))
                write (u, '(2x,a20,*(es14.6))', iostat=ios, iomsg=msg) trim(row_name(k)), s%abs, &
                   s%srss, s%ec8, s%ddc, s%no_contact, s%time_history
@@ -135,9 +167,15 @@ contains
       if (suite%has_sweep) then
          call write_section(u, 'Suite gap sweep: largest |lambda| [%] over the targeted quantities')
          write (u, '(a)', iostat=ios, iomsg=msg) '  mean: the suite mean of each quantity''s and '// &
-            'building''s largest |lambda|, then the largest; max: the largest over the motions'
+            'building''s largest |lambda|, then the largest; max: the largest over the motions'//over
+         if (any(suite%gap_failed)) write (u, '(a)', iostat=ios, iomsg=msg) '  FAILED: a motion''s run '// &
+            'failed at the gap (see the failed cases below): not averaged over the others, never meeting the target'
          write (u, '(2x,a14,2a14)', iostat=ios, iomsg=msg) 'gap (m)', 'mean', 'max'
          do k = 1, size(suite%sweep_gap)
+            if (suite%gap_failed(k)) then
+               write (u, '(2x,es14.6,a)', iostat=ios, iomsg=msg) suite%sweep_gap(k), '        FAILED'
+               cycle
+            end if
             write (u, '(2x,es14.6,2es14.4)', iostat=ios, iomsg=msg) suite%sweep_gap(k), &
                suite%sweep_mean(k), suite%sweep_max(k)
          end do
@@ -158,13 +196,46 @@ contains
             '(the time_history rule)'
          write (u, '(2x,a20,3a14)', iostat=ios, iomsg=msg) 'motion', 'grid (m)', 'refined (m)', 'non-monotone'
          do k = 1, nm
+            if (suite%motion_failed(k)) then
+               write (u, '(2x,a20,a)', iostat=ios, iomsg=msg) trim(suite%names(k)), '        FAILED'
+               cycle
+            end if
             write (u, '(2x,a20,2es14.6,i14)', iostat=ios, iomsg=msg) trim(suite%names(k)), &
                suite%safe_gap_motion(k), suite%refined_gap_motion(k), suite%non_monotone_motion(k)
          end do
       end if
-      if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
+      if (ios /= 0) then
+         call fatal_error(error, 'listing: '//trim(msg))
+         return
+      end if
+      call write_failures()
 
    contains
+
+      !> The table of the failed cases: motion, gap (mm; '-': the deck's gaps), time, step, message.
+      subroutine write_failures()
+         real(dp) :: t
+         integer :: i, step
+         character(len=12) :: gap
+
+         if (size(suite%failures) == 0) return
+         call write_section(u, 'Failed cases of the suite ('//str(size(suite%failures))//')')
+         write (u, '(a)', iostat=ios, iomsg=msg) '  gap -: the motion''s run at the deck''s gaps failed (the '// &
+            'motion is left out of every suite statistic);', '  a gap: its run at that gap of the sweep or of a '// &
+            'refinement failed (the gap never meets the target).'
+         write (u, '(2x,a20,a12,a12,a10,2x,a)', iostat=ios, iomsg=msg) 'motion', 'gap [mm]', 't [s]', 'step', &
+            'message'
+         do i = 1, size(suite%failures)
+            associate (f => suite%failures(i))
+               call failure_time_step(f%message, t, step)
+               gap = '           -'
+               if (f%gap >= 0.0_dp) write (gap, '(f12.4)') 1000.0_dp*f%gap
+               write (u, '(2x,a20,a12,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) trim(suite%names(f%motion)), &
+                  gap, t, step, trim(f%message)
+            end associate
+         end do
+         if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
+      end subroutine write_failures
 
       function row_name(k) result(name)
          integer, intent(in) :: k
@@ -216,6 +287,7 @@ contains
          if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/period', suite%period, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/sa', suite%sa, error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/mean_sa', suite%mean_sa, error)
+         if (.not. allocated(error)) call write_failures()
          if (allocated(error) .or. .not. suite%has_coupled) return
          do ib = 1, size(models)
             b = models(ib)%name
@@ -270,10 +342,16 @@ contains
                                                         suite%non_monotone_every, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'refine_tolerance', &
                                                         suite%refine_tolerance, error)
+         if (.not. allocated(error) .and. size(suite%failures) > 0) then
+            call h5_write(h5, '/suite/sweep/failed', merge(1, 0, suite%sweep_failed), error)
+            if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/gap_failed', merge(1, 0, suite%gap_failed), &
+                                                      error)
+         end if
          ! /sweep (the first motion's own sweep, per quantity) gets the suite statistics beside it.
          if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_mean', suite%sweep_mean, error)
          if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_max', suite%sweep_max, error)
-         if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'motion', trim(suite%names(1)), error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'motion', trim(suite%names(suite%first)), &
+                                                        error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'suite_safe_gap_mean', suite%safe_gap_mean, &
                                                         error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'suite_safe_gap_every', suite%safe_gap_every, &
@@ -283,6 +361,34 @@ contains
          if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'suite_refined_gap_every', &
                                                         suite%refined_gap_every, error)
       end subroutine write_all
+
+      !> /suite/failed and /suite/motion_failed, when some case failed.
+      subroutine write_failures()
+         real(dp), allocatable :: t(:), gap(:)
+         integer, allocatable :: step(:)
+         character(len=len(suite%names)), allocatable :: motion(:)
+         character(len=case_message_len), allocatable :: message(:)
+         integer :: i, n
+
+         n = size(suite%failures)
+         if (n == 0) return
+         allocate (t(n), step(n), gap(n), motion(n), message(n))
+         do i = 1, n
+            call failure_time_step(suite%failures(i)%message, t(i), step(i))
+            gap(i) = suite%failures(i)%gap
+            motion(i) = suite%names(suite%failures(i)%motion)
+            message(i) = suite%failures(i)%message
+         end do
+         call h5_write(h5, '/suite/failed/motion', motion, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/gap', gap, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/time', t, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/step', step, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/message', message, error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions_used', suite%n_used, error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/motion_failed', merge(1, 0, suite%motion_failed), &
+                                                   error)
+      end subroutine write_failures
 
       !> /suite/<motion>/... for the motions whose histories were kept.
       subroutine write_histories()
