@@ -18,6 +18,8 @@
 !> error, SIGINT or SIGTERM this run's temporaries are removed and the exit status is non-zero.
 program pound
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
+   use, intrinsic :: ieee_exceptions, only: ieee_set_halting_mode, ieee_overflow, ieee_invalid, &
+                                            ieee_divide_by_zero
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_version, only: program_name, program_version
@@ -75,6 +77,7 @@ program pound
    call parse_arguments()
    call read_deck(deck_path, deck, error)
    call check(error)
+   call test_overflow()
 
    ! Ground motion (a record is read whole: its memory is proportional to the file). A suite
    ! (several &ground, a synthetic motion or scale_to) builds its motions one at a time.
@@ -365,6 +368,26 @@ contains
       read (value, *, iostat=stat) seconds
       if (stat == 0 .and. seconds > 0) call posix_sleep(seconds)
    end subroutine test_pause
+
+   !> Test hook: with POUND_TEST_OVERFLOW=<name> in the environment, the pulse of that
+   !> `&ground` gets the amplitude x0 = 1e300 m, beyond the reader's range (no deck can ask
+   !> for it), and the floating-point traps of a Debug build are lifted: the motion's run
+   !> overflows and fails as a real failure does (the run's finiteness checks name it). The
+   !> command-line and MPI tests of a suite's failed cases need a case that fails, and no deck
+   !> within the reader's ranges makes the solvers fail.
+   subroutine test_overflow()
+      character(len=64) :: name
+      integer :: stat, k
+
+      call get_environment_variable('POUND_TEST_OVERFLOW', name, status=stat)
+      if (stat /= 0) return
+      do k = 1, size(deck%motions)
+         if (deck%motions(k)%name /= name .or. deck%motions(k)%kind /= 'pulse') cycle
+         deck%motions(k)%x0 = 1.0e300_dp
+         if (k == 1) deck%ground%x0 = 1.0e300_dp
+         call ieee_set_halting_mode([ieee_overflow, ieee_invalid, ieee_divide_by_zero], .false.)
+      end do
+   end subroutine test_overflow
 
    !> Keep closed standard descriptors (0, 1, 2) from being reused by the run's files: they
    !> are occupied by /dev/null, and a closed standard output is remembered as a failure.

@@ -74,8 +74,8 @@ contains
       nb = size(models)
       used = pack([(k, k=1, nm)], .not. suite%motion_failed)
       over = ''
-      if (suite%n_used < nm) over = ' over '//str(suite%n_used)//' of '//str(nm)//' motions ('// &
-                                    str(nm - suite%n_used)//' FAILED, left out)'
+      if (suite%n_used < nm) over = ' ('//str(suite%n_used)//' of '//str(nm)//' motions used, '// &
+                                    str(nm - suite%n_used)//' FAILED and left out)'
       ios = 0
       call write_section(u, 'Ground-motion suite ('//str(nm)//' motions)')
       write (u, '(a)', iostat=ios, iomsg=msg) '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
