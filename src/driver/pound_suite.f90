@@ -56,7 +56,7 @@ module pound_suite
    implicit none
    private
 
-   public :: suite_result, suite_failure, run_suite, suite_motion, suite_pairs, n_spectrum, spectrum_damping
+   public :: suite_result, suite_failure, run_suite, suite_sweep_statistics, suite_motion, suite_pairs, n_spectrum, spectrum_damping
    public :: motion_histories, bisection, bisection_step, bisection_update, time_history_gap
 
    !> Log-spaced periods of the suite spectra (before the buildings' periods are added).
@@ -847,6 +847,96 @@ contains
       start = [(min(1 + (g - 1)*size_of, n + 1), g=1, groups + 1)]
    end function batch_groups
 
+   !> The suite's sweep statistics on the grid from every motion's sweep (`suite%sweep_gap`,
+   !> `sweep_lambda`, `sweep_failed`, `motion_failed` and `n_used` set): per gap the mean over the
+   !> motions used of each quantity's and building's largest |lambda| (summed in motion order),
+   !> then the largest over the targeted quantities, and the largest over the motions used; a gap
+   !> at which a motion used failed is `gap_failed` (mean and max 0, never meeting the target);
+   !> the safe gaps (on the mean, on every motion, per motion: from which on every larger gap
+   !> meets the target and none failed; -1: none, or no target) and the grid gaps below them that
+   !> pass nevertheless. A failed motion has none of its own (-1, 0).
+   pure subroutine suite_sweep_statistics(suite, sweep_all, targeted, target)
+      !> The suite.
+      type(suite_result), intent(inout) :: suite
+      !> Every motion's largest |lambda| (%), (n_history_quantities, n_buildings, n_gaps, n_motions).
+      real(dp), intent(in) :: sweep_all(:, :, :, :)
+      !> Quantities the target applies to.
+      logical, intent(in) :: targeted(:)
+      !> `&sweep target_lambda` (%; <= 0: none).
+      real(dp), intent(in) :: target
+      real(dp) :: total(size(sweep_all, 1), size(sweep_all, 2), size(sweep_all, 3))
+      integer, allocatable :: used(:)
+      integer :: nm, k, iq
+
+      nm = size(suite%motion_failed)
+      used = pack([(k, k=1, nm)], .not. suite%motion_failed)
+      total = 0.0_dp
+      do k = 1, size(used)
+         total = total + sweep_all(:, :, :, used(k))/suite%n_used
+      end do
+      do iq = 1, size(targeted)
+         if (.not. targeted(iq)) total(iq, :, :) = 0.0_dp
+      end do
+      suite%gap_failed = any(suite%sweep_failed(used, :), dim=1)
+      suite%sweep_mean = maxval(reshape(total, [size(total, 1)*size(total, 2), size(total, 3)]), dim=1)
+      if (suite%n_used == nm) then
+         suite%sweep_max = maxval(suite%sweep_lambda, dim=1)
+      else
+         suite%sweep_max = maxval(suite%sweep_lambda(used, :), dim=1)
+      end if
+      where (suite%gap_failed)
+         suite%sweep_mean = 0.0_dp
+         suite%sweep_max = 0.0_dp
+      end where
+      suite%safe_gap_mean = safe_gap(suite%sweep_mean, suite%gap_failed)
+      suite%safe_gap_every = safe_gap(suite%sweep_max, suite%gap_failed)
+      suite%non_monotone_mean = non_monotone(suite%sweep_mean, suite%gap_failed, suite%safe_gap_mean)
+      suite%non_monotone_every = non_monotone(suite%sweep_max, suite%gap_failed, suite%safe_gap_every)
+      allocate (suite%safe_gap_motion(nm), suite%non_monotone_motion(nm))
+      suite%safe_gap_motion = -1.0_dp
+      suite%non_monotone_motion = 0
+      do k = 1, size(used)
+         associate (m => used(k))
+            suite%safe_gap_motion(m) = safe_gap(suite%sweep_lambda(m, :), suite%sweep_failed(m, :))
+            suite%non_monotone_motion(m) = non_monotone(suite%sweep_lambda(m, :), suite%sweep_failed(m, :), &
+                                                        suite%safe_gap_motion(m))
+         end associate
+      end do
+
+   contains
+
+      !> Number of grid gaps below `safe` whose `worst` meets the target (failed gaps never do).
+      pure integer function non_monotone(worst, failed, safe)
+         real(dp), intent(in) :: worst(:)
+         logical, intent(in) :: failed(:)
+         real(dp), intent(in) :: safe
+         integer :: ig
+
+         non_monotone = 0
+         if (.not. (safe > 0.0_dp)) return
+         do ig = 1, size(worst)
+            if (suite%sweep_gap(ig) < safe .and. worst(ig) <= target .and. .not. failed(ig)) &
+               non_monotone = non_monotone + 1
+         end do
+      end function non_monotone
+
+      !> Smallest gap from which on every larger gap of the sweep `worst` <= the target and
+      !> none failed (so it lies above every failed gap).
+      pure real(dp) function safe_gap(worst, failed)
+         real(dp), intent(in) :: worst(:)
+         logical, intent(in) :: failed(:)
+         integer :: ig
+
+         safe_gap = -1.0_dp
+         if (.not. (target > 0.0_dp)) return
+         do ig = size(worst), 1, -1
+            if (worst(ig) > target .or. failed(ig)) exit
+            safe_gap = suite%sweep_gap(ig)
+         end do
+      end function safe_gap
+
+   end subroutine suite_sweep_statistics
+
    !> The failures by motion, then by gap (the deck's gaps, -1, first); `add_failure` keeps
    !> one entry a motion and gap.
    pure subroutine sort_failures(list)
@@ -898,7 +988,7 @@ contains
       type(case_result) :: res
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
       real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :)
-      real(dp), allocatable :: z(:), sweep_sum(:, :, :), sweep_all(:, :, :, :)
+      real(dp), allocatable :: z(:), sweep_all(:, :, :, :)
       logical :: targeted(n_history_quantities)
       integer :: nm, nb, k, ib, np, ip, nmax, ig, iq
       integer, allocatable :: start(:), ms(:)
@@ -1072,44 +1162,13 @@ contains
                     suite%separation(nm + 1, ip))
       end do
       if (suite%has_sweep) then
-         ! Means in motion order over the motions of the statistics; a gap at which one of them
-         ! failed is FAILED for the suite (mean and max 0, not meeting the target).
-         sweep_sum = 0.0_dp
-         do ip = 1, suite%n_used
-            sweep_sum = sweep_sum + sweep_all(:, :, :, ctx%used(ip))/suite%n_used
-         end do
-         do iq = 1, n_history_quantities
-            if (.not. targeted(iq)) sweep_sum(iq, :, :) = 0.0_dp
-         end do
-         suite%gap_failed = any(suite%sweep_failed(ctx%used, :), dim=1)
-         suite%sweep_mean = maxval(reshape(sweep_sum, [n_history_quantities*nb, size(suite%sweep_gap)]), dim=1)
-         if (suite%n_used == nm) then
-            suite%sweep_max = maxval(suite%sweep_lambda, dim=1)
-         else
-            suite%sweep_max = maxval(suite%sweep_lambda(ctx%used, :), dim=1)
-         end if
-         where (suite%gap_failed)
-            suite%sweep_mean = 0.0_dp
-            suite%sweep_max = 0.0_dp
-         end where
-         suite%safe_gap_mean = safe_gap(suite%sweep_mean, suite%gap_failed)
-         suite%safe_gap_every = safe_gap(suite%sweep_max, suite%gap_failed)
-         suite%non_monotone_mean = non_monotone(suite%sweep_mean, suite%gap_failed, suite%safe_gap_mean)
-         suite%non_monotone_every = non_monotone(suite%sweep_max, suite%gap_failed, suite%safe_gap_every)
+         call suite_sweep_statistics(suite, sweep_all, targeted, deck%sweep%target)
          ctx%gap = suite%sweep_gap
          call refine(ctx, suite%safe_gap_mean, 0, suite%refined_gap_mean, suite%failures, error)
          if (allocated(error)) return
          call refine(ctx, suite%safe_gap_every, -1, suite%refined_gap_every, suite%failures, error)
          if (allocated(error)) return
-         allocate (suite%safe_gap_motion(nm), suite%refined_gap_motion(nm), suite%non_monotone_motion(nm))
-         do k = 1, nm
-            suite%safe_gap_motion(k) = -1.0_dp
-            suite%non_monotone_motion(k) = 0
-            if (suite%motion_failed(k)) cycle
-            suite%safe_gap_motion(k) = safe_gap(suite%sweep_lambda(k, :), suite%sweep_failed(k, :))
-            suite%non_monotone_motion(k) = non_monotone(suite%sweep_lambda(k, :), suite%sweep_failed(k, :), &
-                                                        suite%safe_gap_motion(k))
-         end do
+         allocate (suite%refined_gap_motion(nm))
          ! The motions' own refinements are independent of each other: one case each.
          chains%ctx => ctx
          chains%safe = suite%safe_gap_motion
@@ -1175,7 +1234,6 @@ contains
             suite%sweep_gap = res%sweep%gap
             allocate (suite%sweep_lambda(nm, size(res%sweep%gap)), suite%sweep_failed(nm, size(res%sweep%gap)))
             allocate (sweep_all(n_history_quantities, nb, size(res%sweep%gap), nm))
-            allocate (sweep_sum(n_history_quantities, nb, size(res%sweep%gap)))
             suite%sweep_lambda = 0.0_dp
             suite%sweep_failed = .false.
             sweep_all = 0.0_dp
@@ -1228,36 +1286,6 @@ contains
                                                       suite%separation(k, ip)%no_contact/suite%n_used
          end do
       end subroutine gather
-
-      !> Number of grid gaps below `safe` whose `worst` meets the target (failed gaps never do).
-      integer function non_monotone(worst, failed, safe)
-         real(dp), intent(in) :: worst(:)
-         logical, intent(in) :: failed(:)
-         real(dp), intent(in) :: safe
-         integer :: ig
-
-         non_monotone = 0
-         if (.not. (safe > 0.0_dp)) return
-         do ig = 1, size(worst)
-            if (suite%sweep_gap(ig) < safe .and. worst(ig) <= deck%sweep%target .and. .not. failed(ig)) &
-               non_monotone = non_monotone + 1
-         end do
-      end function non_monotone
-
-      !> Smallest gap from which on every larger gap of the sweep `worst` <= the target and
-      !> none failed (so it lies above every failed gap).
-      real(dp) function safe_gap(worst, failed)
-         real(dp), intent(in) :: worst(:)
-         logical, intent(in) :: failed(:)
-         integer :: ig
-
-         safe_gap = -1.0_dp
-         if (.not. (deck%sweep%target > 0.0_dp)) return
-         do ig = size(worst), 1, -1
-            if (worst(ig) > deck%sweep%target .or. failed(ig)) exit
-            safe_gap = suite%sweep_gap(ig)
-         end do
-      end function safe_gap
 
       !> ABS, SRSS, EC8 and DDC of pair ip from the peaks p1, p2 (m).
       subroutine rules(p1, p2, ip, sep)
