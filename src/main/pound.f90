@@ -369,9 +369,10 @@ contains
       if (stat == 0 .and. seconds > 0) call posix_sleep(seconds)
    end subroutine test_pause
 
-   !> Test hook: with POUND_TEST_OVERFLOW=<name> in the environment, the pulse of that
-   !> `&ground` gets the amplitude x0 = 1e300 m, beyond the reader's range (no deck can ask
-   !> for it), and the floating-point traps of a Debug build are lifted: the motion's run
+   !> Test hook: with POUND_TEST_OVERFLOW=<name> in the environment, that `&ground` gets the
+   !> amplitude x0 = 1e300 m (a pulse) or pga = 1e300 m/s^2 (a synthetic motion), beyond the
+   !> reader's ranges (no deck can ask for it), and the floating-point traps of a Debug build
+   !> are lifted: the motion's run
    !> overflows and fails as a real failure does (the run's finiteness checks name it). The
    !> command-line and MPI tests of a suite's failed cases need a case that fails, and no deck
    !> within the reader's ranges makes the solvers fail.
@@ -382,9 +383,10 @@ contains
       call get_environment_variable('POUND_TEST_OVERFLOW', name, status=stat)
       if (stat /= 0) return
       do k = 1, size(deck%motions)
-         if (deck%motions(k)%name /= name .or. deck%motions(k)%kind /= 'pulse') cycle
+         if (deck%motions(k)%name /= name) cycle
          deck%motions(k)%x0 = 1.0e300_dp
-         if (k == 1) deck%ground%x0 = 1.0e300_dp
+         deck%motions(k)%pga = 1.0e300_dp
+         if (k == 1) deck%ground = deck%motions(k)
          call ieee_set_halting_mode([ieee_overflow, ieee_invalid, ieee_divide_by_zero], .false.)
       end do
    end subroutine test_overflow
