@@ -948,13 +948,17 @@ contains
 
       allocate (sorted(0))
       do k = minval([list%motion, huge(k)]), maxval([list%motion, 0])
-         gaps = pack(list%gap, list%motion == k)
+         allocate (gaps(0))
+         do j = 1, size(list)
+            if (list(j)%motion == k) gaps = [gaps, list(j)%gap]
+         end do
          call sort_ascending(gaps)
          do i = 1, size(gaps)
             do j = 1, size(list)
                if (list(j)%motion == k .and. list(j)%gap == gaps(i)) sorted = [sorted, list(j)]
             end do
          end do
+         deallocate (gaps)
       end do
       call move_alloc(sorted, list)
    end subroutine sort_failures
