@@ -25,7 +25,8 @@
 !>        (as /uncoupled and /coupled) and /suite/<motion>/coupled/contact/force, closing
 !>        (n_out, n_pairs): only for the motions whose `&ground` sets `histories`
 !>     only when some case failed: /suite/failed/motion, gap (m; -1: the deck's gaps), time (s),
-!>        step, message (n_failed), attributes n_motions, n_motions_used; /suite/motion_failed
+!>        step, message (n_failed), attributes n_motions, n_motions_used, single_motion (the
+!>        motion of /uncoupled, /coupled, /sweep: the first that did not fail); /suite/motion_failed
 !>        (n_motions, 0/1); with &sweep /suite/sweep/failed (n_motions, n_gaps, 0/1) and
 !>        /suite/sweep/gap_failed (n_gaps, 0/1)
 !>
@@ -386,6 +387,8 @@ contains
          if (.not. allocated(error)) call h5_write(h5, '/suite/failed/message', message, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions_used', suite%n_used, error)
+         if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'single_motion', &
+                                                        trim(suite%names(suite%first)), error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/motion_failed', merge(1, 0, suite%motion_failed), &
                                                    error)
       end subroutine write_failures
