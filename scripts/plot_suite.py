@@ -10,7 +10,10 @@ lambda of the storey shear per storey per motion (thin) with the mean of the lam
 building; the separation rules per contact pair against the time-history threshold gap of the
 sweep and the exact no-contact gap, per motion and for the suite; the sweep's suite mean and
 maximum of the largest |lambda| against the gap (each motion thin) with the target and the
-refined thresholds. `scripts/plot FILE.h5` draws the same plots for a file with /suite
+refined thresholds. Failed cases (/suite/failed): a failed motion's spectrum is dotted and
+named FAILED, it is left out of the lambda, separation and sweep plots (as of the means); a
+failed suite gap is left out of the sweep curves and marked by a red dotted line.
+`scripts/plot FILE.h5` draws the same plots for a file with /suite
 (plot_results.py calls `plot_all`). Run with /usr/bin/python3 (numpy, h5py, matplotlib). Exit
 status 1 with one 'plot_suite: error: ...' line on a bad file.
 """
@@ -34,13 +37,19 @@ def plot_all(s, plt, np, save):
     """Every suite plot of the /suite group `s`; save(fig, what) writes and closes a figure."""
     names = [n.decode() if isinstance(n, bytes) else str(n) for n in s["names"][...]]
     nm = len(names)
+    # Failed motions (their run failed: left out of every statistic) and suite gaps.
+    failed = s["motion_failed"][...].astype(bool) if "motion_failed" in s else np.zeros(nm, bool)
+    used = [k for k in range(nm) if not failed[k]]
 
     # Spectra: (n_motions, n_periods) in Fortran order -> h5py (n_periods, n_motions).
     period = s["spectrum/period"][...]
     sa = _cols(s["spectrum/sa"][...], nm, np)
     fig, ax = plt.subplots(figsize=(7, 4.5))
     for k, name in enumerate(names):
-        ax.loglog(period, sa[:, k], lw=0.8, alpha=0.7, label=name)
+        if failed[k]:
+            ax.loglog(period, sa[:, k], ":", lw=0.8, alpha=0.7, label=f"{name} (FAILED, not in the mean)")
+        else:
+            ax.loglog(period, sa[:, k], lw=0.8, alpha=0.7, label=name)
     ax.loglog(period, s["spectrum/mean_sa"][...], "k", lw=2.5, label="mean")
     if "target" in s:
         shown = False
@@ -65,7 +74,7 @@ def plot_all(s, plt, np, save):
         for ax, b in zip(axes[0], buildings):
             lam = _cols(s[f"influence/{b}/storey_shear"][...], nm, np)   # (n, n_motions)
             storeys = np.arange(1, lam.shape[0] + 1)
-            for k in range(nm):
+            for k in used:
                 ax.plot(lam[:, k], storeys, lw=0.8, alpha=0.7, label=names[k])
             ax.plot(s[f"mean/influence/{b}/storey_shear"][...], storeys, "k", lw=2.5, label="mean of lambdas")
             ax.plot(s[f"lambda_of_means/{b}/storey_shear"][...], storeys, "r--", lw=1.5, label="lambda of means")
@@ -86,16 +95,22 @@ def plot_all(s, plt, np, save):
         n_pairs = nc.shape[0]
         fig, axes = plt.subplots(1, n_pairs, figsize=(3.2 * n_pairs + 1, 4), squeeze=False)
         x = np.arange(nm + 1)
+        # A failed motion has no rules (its row is not plotted).
+        gone = np.append(failed, False)
+        nc = np.where(gone[None, :], np.nan, nc)
+        if th is not None:
+            th = np.where(gone[None, :], -1.0, th)
         for p, ax in enumerate(axes[0]):
             if th is not None and (th[p] >= 0).any():
                 ok = th[p] >= 0
                 ax.plot(x[ok], 1e3 * th[p][ok], "rs-", lw=2.5, label="time-history threshold")
             ax.plot(x, 1e3 * nc[p], "ko-", lw=2, label="no-contact gap")
             for r, m in zip(["abs", "srss", "ec8", "ddc"], ["^", "v", "D", "x"]):
-                v = _cols(s[f"separation/{r}"][...], nm + 1, np)
+                v = np.where(gone[None, :], np.nan, _cols(s[f"separation/{r}"][...], nm + 1, np))
                 ax.plot(x, 1e3 * v[p], marker=m, lw=0.8, ms=4, label=r.upper())
             ax.set_xticks(x)
-            ax.set_xticklabels(names + ["suite"], rotation=90, fontsize=7)
+            ax.set_xticklabels([n + (" (FAILED)" if f else "") for n, f in zip(names, failed)] + ["suite"],
+                               rotation=90, fontsize=7)
             ax.set_title(f"pair {p + 1}")
             ax.set_ylabel("separation (mm)")
         axes[0][0].legend(fontsize=7)
@@ -108,11 +123,16 @@ def plot_all(s, plt, np, save):
         sw = s["sweep"]
         gap = 1e3 * sw["gap"][...]
         per = _cols(sw["max_abs_lambda"][...], nm, np)                    # (n_gaps, n_motions)
+        if "failed" in sw:                                                # a motion's failed gaps
+            per = np.where(_cols(sw["failed"][...], nm, np) != 0, np.nan, per)
+        gap_failed = sw["gap_failed"][...].astype(bool) if "gap_failed" in sw else np.zeros(len(gap), bool)
         fig, ax = plt.subplots(figsize=(7, 4.5))
-        for k in range(nm):
+        for k in used:
             ax.plot(gap, per[:, k], lw=0.6, alpha=0.6, color="grey")
-        ax.plot(gap, sw["mean"][...], "k-", lw=2.5, label="suite mean")
-        ax.plot(gap, sw["max"][...], "k--", lw=1.5, label="maximum over the motions")
+        ax.plot(gap, np.where(gap_failed, np.nan, sw["mean"][...]), "k-", lw=2.5, label="suite mean")
+        ax.plot(gap, np.where(gap_failed, np.nan, sw["max"][...]), "k--", lw=1.5, label="maximum over the motions")
+        for i, g in enumerate(gap[gap_failed]):
+            ax.axvline(g, color="r", ls=":", lw=1, label="FAILED suite gap (left out)" if i == 0 else None)
         root = s.file
         target = float(root["sweep"].attrs.get("target_lambda", -1.0)) if "sweep" in root else -1.0
         if target > 0:

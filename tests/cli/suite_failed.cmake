@@ -24,3 +24,24 @@ expect_equal("exit status without the hook (${c_err})" 0 "${c_rc}")
 file(READ ${WORK_DIR}/clean/suite_failed.out listing)
 string(FIND "${listing}" "FAILED" pos)
 expect_equal("FAILED in the listing without the hook" -1 "${pos}")
+
+# The file names the failure, and scripts/plot draws the suite plots of it (the failed motion
+# left out, named FAILED).
+execute_process(COMMAND /usr/bin/python3 -c "
+import h5py
+f = h5py.File('${WORK_DIR}/failed/suite_failed.h5', 'r')
+d = f['suite/failed']
+assert [m.decode().strip() for m in d['motion'][...]] == ['big'], d['motion'][...]
+assert list(d['gap'][...]) == [-1.0] and list(d['step'][...]) == [1], (d['gap'][...], d['step'][...])
+assert d.attrs['n_motions_used'] == 2 and d.attrs['n_motions'] == 3
+assert list(f['suite/motion_failed'][...]) == [0, 1, 0]
+assert not f['suite/sweep/gap_failed'][...].any()
+print('ok')
+" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+expect_equal("HDF5 checks (${err})" 0 "${rc}")
+execute_process(COMMAND /usr/bin/python3 ${SOURCE_DIR}/scripts/plot_results.py ${WORK_DIR}/failed/suite_failed.h5
+                        --only suite --format png RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+expect_equal("plot exit (${err})" 0 "${rc}")
+foreach(p spectra lambda separation sweep)
+  expect_png("suite plot ${p}" ${WORK_DIR}/failed/suite_failed_suite_${p}.png)
+endforeach()
