@@ -26,7 +26,7 @@ module pound_response
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: n_history_quantities
-   use pound_structure, only: structure_model, recover_all
+   use pound_structure, only: structure_model, recover_all, recover_peaks
    implicit none
    private
 
@@ -229,8 +229,7 @@ contains
       if (rec%snapshots) call take_snapshots(b%n, rec%n, u, rec%ps, rec%peak(:, q_shear), rec%pool, &
                                              rec%slot_of, rec%refs, rec%free, rec%n_free)
       if (b%member%n > 0) then
-         call recover_all(b%member, u, rec%pm)
-         call track_one(b%member%n, rec%pm, t, rec%member_peak, rec%member_time)
+         call recover_peaks(b%member, u, t, rec%pm, rec%member_peak, rec%member_time)
       end if
       call track_general(rec%n, b%n, b%floor_dof, u, v, a, ag, rec%pd, rec%ps, t, rec%pu, rec%pv, rec%pa, &
                          rec%peak, rec%peak_time)
@@ -374,21 +373,6 @@ contains
          refs(new) = refs(new) + 1
       end do
    end subroutine take_snapshots
-
-   !> Running absolute maximum of one quantity.
-   pure subroutine track_one(n, x, t, peak, peak_time)
-      integer, intent(in) :: n
-      real(dp), intent(in) :: x(n), t
-      real(dp), intent(inout) :: peak(n), peak_time(n)
-      integer :: i
-
-      do i = 1, n
-         if (abs(x(i)) > peak(i)) then
-            peak(i) = abs(x(i))
-            peak_time(i) = t
-         end if
-      end do
-   end subroutine track_one
 
    !> Running absolute maximum of one value: peak and its time when |x| exceeds the peak.
    pure subroutine keep_peak(x, t, peak, peak_time)

@@ -22,6 +22,7 @@
 !> shear building's storey table of heights, storey stiffnesses and axial loads) lives in
 !> an extension of this type (`shear_building` extends it), so writers can still reach it.
 module pound_structure
+   use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
@@ -29,7 +30,8 @@ module pound_structure
    implicit none
    private
 
-   public :: structure_model, recovery_rows, recover, recover_all, group_rows, structure_label, structure_strain_energy
+   public :: structure_model, recovery_rows, recover, recover_all, recover_peaks, group_rows, structure_label
+   public :: structure_strain_energy
    public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof
 
    !> Natural modes a builder computes besides the two Rayleigh modes: the periods the listing
@@ -58,7 +60,13 @@ module pound_structure
       !> where a row has no entry). `recover_all` then reads each DOF once per group.
       integer :: group_width = 0
       integer, allocatable :: group_start(:), group_dof(:)
-      real(dp), allocatable :: group_coef(:, :)
+      !> Shared coefficient blocks of the grouped layout: group g's coefficients are the columns
+      !> `block_first(b) + (0 : group_start(g+1) - group_start(g) - 1)` of `group_coef` and
+      !> its rows' scales `block_scale(:, b)`, b = `group_block(g)`. Groups whose entry count,
+      !> coefficients and scales are the same bit for bit (the identical columns of a regular
+      !> frame) share one block, so that a step reads the coefficients from cache, not memory.
+      integer, allocatable :: group_block(:), block_first(:)
+      real(dp), allocatable :: group_coef(:, :), block_scale(:, :)
    end type recovery_rows
 
    !> A structural model ready for time integration (a plain data type: see the module doc).
@@ -149,53 +157,141 @@ contains
       !> Row values (rows%n).
       real(dp), intent(out) :: y(:)
 
+      real(dp) :: unused(4, 1)
+
       if (rows%group_width == 4) then
-         call grouped4_kernel(rows%n/4, size(rows%group_dof), size(u), rows%group_start, rows%group_dof, &
-                              rows%group_coef, rows%scale, u, y)
+         call grouped4_kernel(rows%n/4, size(rows%group_dof), size(rows%group_coef, 2), size(rows%block_first), &
+                              size(u), rows%group_start, rows%group_dof, rows%group_block, rows%block_first, &
+                              rows%group_coef, rows%block_scale, u, y, .false., 0.0_dp, unused, unused)
       else if (rows%group_width > 0) then
-         call grouped_kernel(rows%n/rows%group_width, rows%group_width, size(rows%group_dof), size(u), &
-                             rows%group_start, rows%group_dof, rows%group_coef, rows%scale, u, y)
+         call grouped_kernel(rows%n/rows%group_width, rows%group_width, size(rows%group_dof), &
+                             size(rows%group_coef, 2), size(rows%block_first), size(u), rows%group_start, &
+                             rows%group_dof, rows%group_block, rows%block_first, rows%group_coef, &
+                             rows%block_scale, u, y)
       else
          call rows_kernel(rows%n, size(rows%dof), size(u), rows%start, rows%dof, rows%coef, rows%scale, u, y)
       end if
    end subroutine recover_all
 
+   !> The running absolute maxima of the rows' values: where |y(j)| exceeds peak(j),
+   !> peak(j) = |y(j)| and peak_time(j) = t. Rows grouped by four (a frame's member rows) take
+   !> them in the recovery pass, without storing the values.
+   pure subroutine recover_peaks(rows, u, t, y, peak, peak_time)
+      !> The rows.
+      type(recovery_rows), intent(in) :: rows
+      !> DOF values (n).
+      real(dp), intent(in) :: u(:)
+      !> Time of u.
+      real(dp), intent(in) :: t
+      !> Work space (rows%n; the row values, except for rows grouped by four, whose values go
+      !> straight into the maxima).
+      real(dp), intent(inout) :: y(:)
+      !> Running absolute maxima of the rows and their times (rows%n each).
+      real(dp), intent(inout) :: peak(:), peak_time(:)
+      integer :: j
+
+      if (rows%group_width == 4) then
+         call grouped4_kernel(rows%n/4, size(rows%group_dof), size(rows%group_coef, 2), size(rows%block_first), &
+                              size(u), rows%group_start, rows%group_dof, rows%group_block, rows%block_first, &
+                              rows%group_coef, rows%block_scale, u, y, .true., t, peak, peak_time)
+         return
+      end if
+      call recover_all(rows, u, y)
+      do j = 1, rows%n
+         if (abs(y(j)) > peak(j)) then
+            peak(j) = abs(y(j))
+            peak_time(j) = t
+         end if
+      end do
+   end subroutine recover_peaks
+
    !> `recover_all` on the grouped layout: each group's DOFs read once, its rows summed side by
-   !> side. Every row's sum takes its products in the order of its entries (a row's entries
-   !> are in the order of the group's DOF list, `group_rows` checks), plus exact zeros where it
-   !> has no entry: the same values as `rows_kernel` (at most the sign of a zero differs).
-   pure subroutine grouped_kernel(ng, w, nnz, nu, start, dof, coef, scale, u, y)
-      integer, intent(in) :: ng, w, nnz, nu, start(ng + 1), dof(nnz)
-      real(dp), intent(in) :: coef(w, nnz), scale(w, ng), u(nu)
+   !> side with its block's coefficients. Every row's sum takes its products in the order of
+   !> its entries (a row's entries are in the order of the group's DOF list, `group_rows`
+   !> checks), plus exact zeros where it has no entry: the same values as `rows_kernel` (at
+   !> most the sign of a zero differs).
+   pure subroutine grouped_kernel(ng, w, nnz, nc, nb, nu, start, dof, block, first, coef, scale, u, y)
+      integer, intent(in) :: ng, w, nnz, nc, nb, nu, start(ng + 1), dof(nnz), block(ng), first(nb)
+      real(dp), intent(in) :: coef(w, nc), scale(w, nb), u(nu)
       real(dp), intent(out) :: y(w, ng)
       real(dp) :: x(w), ui
-      integer :: g, i
+      integer :: g, i, c
 
       do g = 1, ng
+         c = first(block(g)) - start(g)
          x = 0.0_dp
          do i = start(g), start(g + 1) - 1
             ui = u(dof(i))
-            x = x + coef(:, i)*ui
+            x = x + coef(:, c + i)*ui
          end do
-         y(:, g) = scale(:, g)*x
+         y(:, g) = scale(:, block(g))*x
       end do
    end subroutine grouped_kernel
 
    !> `grouped_kernel` for groups of four rows (a frame's member rows): the width a
-   !> constant, the four sums in registers.
-   pure subroutine grouped4_kernel(ng, nnz, nu, start, dof, coef, scale, u, y)
-      integer, intent(in) :: ng, nnz, nu, start(ng + 1), dof(nnz)
-      real(dp), intent(in) :: coef(4, nnz), scale(4, ng), u(nu)
-      real(dp), intent(out) :: y(4, ng)
-      real(dp) :: x(4)
-      integer :: g, i
+   !> constant, the sums in scalars (registers). Two neighbouring groups with as many entries
+   !> (the common case: alike members) are summed side by side, so that the chains of
+   !> dependent additions of the two overlap; each row's sum keeps its order. With `track`,
+   !> the values update the running absolute maxima and their times (t) instead of being
+   !> stored in y (`recover_peaks`; peak and peak_time are not referenced otherwise).
+   pure subroutine grouped4_kernel(ng, nnz, nc, nb, nu, start, dof, block, first, coef, scale, u, y, &
+                                   track, t, peak, peak_time)
+      integer, intent(in) :: ng, nnz, nc, nb, nu, start(ng + 1), dof(nnz), block(ng), first(nb)
+      real(dp), intent(in) :: coef(4, nc), scale(4, nb), u(nu)
+      real(dp), intent(inout) :: y(4, ng)
+      logical, intent(in) :: track
+      real(dp), intent(in) :: t
+      real(dp), intent(inout) :: peak(4, *), peak_time(4, *)
+      real(dp) :: x1, x2, x3, x4, z1, z2, z3, z4, ui, uk, w(4, 2)
+      integer :: g, h, i, k, c, d, len, q, r
 
-      do g = 1, ng
-         x = 0.0_dp
+      g = 1
+      do while (g <= ng)
+         len = start(g + 1) - start(g)
+         h = g
+         if (g < ng) then
+            if (start(g + 2) - start(g + 1) == len) h = g + 1
+         end if
+         c = first(block(g)) - start(g)
+         d = first(block(h)) - start(h)
+         x1 = 0.0_dp
+         x2 = 0.0_dp
+         x3 = 0.0_dp
+         x4 = 0.0_dp
+         z1 = 0.0_dp
+         z2 = 0.0_dp
+         z3 = 0.0_dp
+         z4 = 0.0_dp
+         ! h = g (a group alone): the second sums repeat the first's and are dropped.
          do i = start(g), start(g + 1) - 1
-            x = x + coef(:, i)*u(dof(i))
+            k = i + start(h) - start(g)
+            ui = u(dof(i))
+            uk = u(dof(k))
+            x1 = x1 + coef(1, c + i)*ui
+            x2 = x2 + coef(2, c + i)*ui
+            x3 = x3 + coef(3, c + i)*ui
+            x4 = x4 + coef(4, c + i)*ui
+            z1 = z1 + coef(1, d + k)*uk
+            z2 = z2 + coef(2, d + k)*uk
+            z3 = z3 + coef(3, d + k)*uk
+            z4 = z4 + coef(4, d + k)*uk
          end do
-         y(:, g) = scale(:, g)*x
+         w(:, 2) = scale(:, block(h))*[z1, z2, z3, z4]
+         w(:, 1) = scale(:, block(g))*[x1, x2, x3, x4]
+         if (track) then
+            do q = g, h
+               do r = 1, 4
+                  if (abs(w(r, q - g + 1)) > peak(r, q)) then
+                     peak(r, q) = abs(w(r, q - g + 1))
+                     peak_time(r, q) = t
+                  end if
+               end do
+            end do
+         else
+            y(:, h) = w(:, 2)
+            y(:, g) = w(:, 1)
+         end if
+         g = h + 1
       end do
    end subroutine grouped4_kernel
 
@@ -240,9 +336,64 @@ contains
       end do
       rows%group_start = gstart
       rows%group_dof = gdof(1:nnz)
-      rows%group_coef = gcoef(:, 1:nnz)
+      call share_blocks(rows, w, ng, gstart, gcoef)
       rows%group_width = w
    end subroutine group_rows
+
+   !> The shared coefficient blocks of `group_rows`' layout (`recovery_rows%group_block`): a
+   !> group takes the block of one of the `recent_blocks` newest blocks when its entry count,
+   !> coefficients and scales equal that block's bit for bit, else a new block of its own.
+   !> Identical members come in runs (storey by storey, column line by column line), so a
+   !> short window finds them at a cost linear in the number of groups.
+   pure subroutine share_blocks(rows, w, ng, gstart, gcoef)
+      !> The rows (their scales; the blocks are set).
+      type(recovery_rows), intent(inout) :: rows
+      !> Rows per group and number of groups.
+      integer, intent(in) :: w, ng
+      !> The groups' first entries (ng + 1) and coefficients (w, entries).
+      integer, intent(in) :: gstart(:)
+      real(dp), intent(in) :: gcoef(:, :)
+      integer, parameter :: recent_blocks = 8
+      integer, allocatable :: first(:), length(:)
+      real(dp), allocatable :: coef(:, :), scale(:, :)
+      integer :: g, b, nb, nc, len, found
+
+      allocate (rows%group_block(ng), first(ng), length(ng), coef(w, gstart(ng + 1) - 1), scale(w, ng))
+      nb = 0
+      nc = 0
+      do g = 1, ng
+         len = gstart(g + 1) - gstart(g)
+         found = 0
+         do b = nb, max(1, nb - recent_blocks + 1), -1
+            if (length(b) /= len) cycle
+            if (.not. all(same_bits(scale(:, b), rows%scale((g - 1)*w + 1:g*w)))) cycle
+            if (.not. all(same_bits(coef(:, first(b):first(b) + len - 1), gcoef(:, gstart(g):gstart(g + 1) - 1)))) &
+               cycle
+            found = b
+            exit
+         end do
+         if (found == 0) then
+            nb = nb + 1
+            first(nb) = nc + 1
+            length(nb) = len
+            coef(:, nc + 1:nc + len) = gcoef(:, gstart(g):gstart(g + 1) - 1)
+            scale(:, nb) = rows%scale((g - 1)*w + 1:g*w)
+            nc = nc + len
+            found = nb
+         end if
+         rows%group_block(g) = found
+      end do
+      rows%block_first = first(1:nb)
+      rows%group_coef = coef(:, 1:nc)
+      rows%block_scale = scale(:, 1:nb)
+   end subroutine share_blocks
+
+   !> Whether two reals hold the same bits (a zero's sign included).
+   elemental logical function same_bits(a, b)
+      real(dp), intent(in) :: a, b
+
+      same_bits = transfer(a, 0_int64) == transfer(b, 0_int64)
+   end function same_bits
 
    !> `recover_all` on explicit-shape arrays (one pass, no calls per row).
    pure subroutine rows_kernel(n, nnz, nu, start, dof, coef, scale, u, y)
