@@ -32,7 +32,7 @@ module pound_response
 
    public :: response_record, response_init, response_sample, response_finish, response_store
    public :: history_sink, response_flush, default_block_bytes, history_block, discard_sink
-   public :: response_block_full
+   public :: response_block_full, response_sample_rows
    public :: q_u, q_v, q_a_abs, q_drift, q_shear, deformed_limit
 
    !> Quantity indices.
@@ -217,13 +217,31 @@ contains
       real(dp), intent(in), value :: t
       !> Whether this is an output step.
       logical, intent(in), value :: output
-      integer :: k
 
       if (rec%stick) then
          call track_peaks(rec%n, u, v, a, ag, t, rec%peak, rec%peak_time)
          if (output) call response_store(rec, b, u, v, a, ag)
-         return
+      else
+         call response_sample_rows(rec, b, u, v, a, ag, t, output)
       end if
+   end subroutine response_sample
+
+   !> `response_sample` of a model that is not a stick: through the response points and
+   !> the recovery rows (a procedure of its own, so that a stick's step calls a small
+   !> `response_sample`; public only so that the compiler does not inline it).
+   pure subroutine response_sample_rows(rec, b, u, v, a, ag, t, output)
+      !> The record of a model that is not a stick.
+      type(response_record), intent(inout) :: rec
+      !> Its building.
+      type(structure_model), intent(in) :: b
+      !> Ground acceleration (m/s^2) and time (s), by value.
+      real(dp), intent(in), value :: ag, t
+      !> Relative displacement, velocity and acceleration (`b%n` each).
+      real(dp), intent(in) :: u(b%n), v(b%n), a(b%n)
+      !> Whether this is an output step.
+      logical, intent(in), value :: output
+      integer :: k
+
       call recover_all(b%drift, u, rec%pd)
       call recover_all(b%shear, u, rec%ps)
       if (rec%snapshots) call take_snapshots(b%n, rec%n, u, rec%ps, rec%peak(:, q_shear), rec%pool, &
@@ -242,7 +260,7 @@ contains
       if (rec%store(q_a_abs)) rec%a_abs(:, k) = rec%pa
       if (rec%store(q_drift)) rec%drift(:, k) = rec%pd
       if (rec%store(q_shear)) rec%shear(:, k) = rec%ps
-   end subroutine response_sample
+   end subroutine response_sample_rows
 
    !> Append a history sample of a stick (`rec%stick`) from its DOF vectors, peaks untouched:
    !> the output part of `response_sample` (also used by the batched uncoupled runs, which
@@ -254,8 +272,8 @@ contains
       type(structure_model), intent(in) :: b
       !> Relative displacement, velocity and acceleration (`b%n` each).
       real(dp), intent(in) :: u(b%n), v(b%n), a(b%n)
-      !> Ground acceleration (m/s^2).
-      real(dp), intent(in) :: ag
+      !> Ground acceleration (m/s^2; by value).
+      real(dp), intent(in), value :: ag
       integer :: k
 
       rec%n_out = rec%n_out + 1
