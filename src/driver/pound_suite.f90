@@ -1120,12 +1120,14 @@ contains
          end associate
       end do
 
-      ! The motions whose run failed are left out of every statistic over the motions.
+      ! The motions whose run failed are left out of every statistic over the motions; their
+      ! rows of the sweep are FAILED at every gap (their other per-motion rows stay 0).
       ip = failure_slot(ctx)
       do k = 1, nm
          suite%motion_failed(k) = columns(ip + 1, k) > 0.0_dp
-         if (suite%motion_failed(k)) call add_failure(suite%failures, &
-                                                      column_failure(columns(ip + 2:ip + 1 + failure_width, k), k))
+         if (.not. suite%motion_failed(k)) cycle
+         call add_failure(suite%failures, column_failure(columns(ip + 2:ip + 1 + failure_width, k), k))
+         if (suite%has_sweep) suite%sweep_failed(k, :) = .true.
       end do
       suite%n_used = count(.not. suite%motion_failed)
       if (suite%n_used == 0) then

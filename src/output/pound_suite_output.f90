@@ -27,7 +27,8 @@
 !>     only when some case failed: /suite/failed/motion, gap (m; -1: the deck's gaps), time (s),
 !>        step, message (n_failed), attributes n_motions, n_motions_used, single_motion (the
 !>        motion of /uncoupled, /coupled, /sweep: the first that did not fail); /suite/motion_failed
-!>        (n_motions, 0/1); with &sweep /suite/sweep/failed (n_motions, n_gaps, 0/1) and
+!>        (n_motions, 0/1); with &sweep /suite/sweep/failed (n_motions, n_gaps, 0/1; a failed
+!>        motion's row 1 at every gap) and
 !>        /suite/sweep/gap_failed (n_gaps, 0/1)
 !>
 !> (the arrays are written in Fortran order, so h5py shows them transposed).
