@@ -42,7 +42,7 @@ module pound_suite_output
    use pound_listing, only: write_section, write_influence_tables
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
-   use pound_results_h5, only: write_analysis_h5
+   use pound_results_h5, only: write_analysis_h5, write_failed_cases
    use pound_cases, only: failure_time_step, case_message_len
    implicit none
    private
@@ -364,28 +364,25 @@ contains
                                                         suite%refined_gap_every, error)
       end subroutine write_all
 
-      !> /suite/failed and /suite/motion_failed, when some case failed.
+      !> /suite/failed and /suite/motion_failed, when some case failed: `write_failed_cases`
+      !> (every failure a case) with the motion of each in place of the case index.
       subroutine write_failures()
-         real(dp), allocatable :: t(:), gap(:)
-         integer, allocatable :: step(:)
+         real(dp), allocatable :: gap(:)
          character(len=len(suite%names)), allocatable :: motion(:)
          character(len=case_message_len), allocatable :: message(:)
          integer :: i, n
 
          n = size(suite%failures)
          if (n == 0) return
-         allocate (t(n), step(n), gap(n), motion(n), message(n))
+         allocate (gap(n), motion(n), message(n))
          do i = 1, n
-            call failure_time_step(suite%failures(i)%message, t(i), step(i))
             gap(i) = suite%failures(i)%gap
             motion(i) = suite%names(suite%failures(i)%motion)
             message(i) = suite%failures(i)%message
          end do
          call h5_write(h5, '/suite/failed/motion', motion, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/gap', gap, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/time', t, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/step', step, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/message', message, error)
+         if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, spread(.true., 1, n), message, &
+                                                             error, indexed=.false.)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions_used', suite%n_used, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'single_motion', &
