@@ -993,6 +993,7 @@ contains
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
       real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :)
       real(dp), allocatable :: z(:), sweep_all(:, :, :, :)
+      character(len=:), allocatable :: text
       logical :: targeted(n_history_quantities)
       integer :: nm, nb, k, ib, np, ip, nmax, ig, iq
       integer, allocatable :: start(:), ms(:)
@@ -1131,9 +1132,10 @@ contains
       end do
       suite%n_used = count(.not. suite%motion_failed)
       if (suite%n_used == 0) then
-         call fatal_error(error, 'every motion of the suite failed; the first, '// &
-                          "&ground '"//trim(suite%names(suite%failures(1)%motion))//"': "// &
-                          trim(suite%failures(1)%message))
+         ! A suite of one motion (synthetic or scaled) fails as a run of that motion.
+         text = "&ground '"//trim(suite%names(suite%failures(1)%motion))//"': "//trim(suite%failures(1)%message)
+         if (nm > 1) text = 'every motion of the suite failed; the first, '//text
+         call fatal_error(error, text)
          return
       end if
       ctx%used = pack([(k, k=1, nm)], .not. suite%motion_failed)
