@@ -167,7 +167,7 @@ module pound_suite
       logical, allocatable :: motion_failed(:)
       !> Number of motions the statistics are over (those that did not fail).
       integer :: n_used = 0
-      !> The motion whose case is the run's single-motion results (the first that did not fail).
+      !> The motion whose case is the run's single-motion results (the first motion run whole that did not fail).
       integer :: first = 0
       !> Per motion and sweep gap: whether the motion's run at the gap failed (n_motions, n_gaps);
       !> per gap: whether any motion of the statistics failed at it (the suite gap is FAILED:

@@ -26,7 +26,8 @@
 !>        (n_out, n_pairs): only for the motions whose `&ground` sets `histories`
 !>     only when some case failed: /suite/failed/motion, gap (m; -1: the deck's gaps), time (s),
 !>        step, message (n_failed), attributes n_motions, n_motions_used, single_motion (the
-!>        motion of /uncoupled, /coupled, /sweep: the first that did not fail); /suite/motion_failed
+!>        motion of /uncoupled, /coupled, /sweep: the first motion run whole that did not fail);
+!>        /suite/motion_failed
 !>        (n_motions, 0/1); with &sweep /suite/sweep/failed (n_motions, n_gaps, 0/1; a failed
 !>        motion's row 1 at every gap) and
 !>        /suite/sweep/gap_failed (n_gaps, 0/1)
@@ -222,9 +223,9 @@ contains
 
          if (size(suite%failures) == 0) return
          call write_section(u, 'Failed cases of the suite ('//str(size(suite%failures))//')')
-         write (u, '(a)', iostat=ios, iomsg=msg) '  gap -: the motion''s run at the deck''s gaps failed (the '// &
-            'motion is left out of every suite statistic);', '  a gap: its run at that gap of the sweep or of a '// &
-            'refinement failed (the gap never meets the target).'
+         write (u, '(a)', iostat=ios, iomsg=msg) '  gap -: the motion''s run at the deck''s gaps failed, or '// &
+            'every gap of its sweep did (the motion is left out of every suite statistic);', &
+            '  a gap: its run at that gap of the sweep or of a refinement failed (the gap never meets the target).'
          write (u, '(2x,a20,a12,a12,a10,2x,a)', iostat=ios, iomsg=msg) 'motion', 'gap [mm]', 't [s]', 'step', &
             'message'
          do i = 1, size(suite%failures)
