@@ -35,7 +35,7 @@
 module pound_suite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str
+   use pound_strings, only: str, fit_with_suffix
    use pound_config, only: deck_type, ground_config, n_history_quantities
    use pound_deck_variables, only: word_len, path_len
    use pound_ground_motion, only: ground_motion_t, sample_ground
@@ -497,8 +497,8 @@ contains
       values(2) = real(size(failures), dp)
       do j = 1, min(size(failures), refine_failures_kept)
          text = trim(failures(j)%message)
-         if (j == refine_failures_kept .and. size(failures) > j) text = text//' (and '// &
-            str(size(failures) - j)//' more trial gaps of this refinement failed)'
+         if (j == refine_failures_kept .and. size(failures) > j) text = fit_with_suffix(text, ' (and '// &
+            str(size(failures) - j)//' more trial gaps of this refinement failed)', case_message_len)
          o = 2 + (j - 1)*failure_width
          call failure_to_column(failures(j)%gap, text, values(o + 1:o + failure_width))
       end do
