@@ -215,7 +215,8 @@ contains
 
    contains
 
-      !> The table of the failed cases: motion, gap (mm; '-': the deck's gaps), time, step, message.
+      !> The table of the failed cases: motion, gap (mm; '-': the deck's gaps), time, step, message;
+      !> each write checked, the first that fails named (no later write tried).
       subroutine write_failures()
          real(dp) :: t
          integer :: i, step
@@ -226,9 +227,10 @@ contains
          write (u, '(a)', iostat=ios, iomsg=msg) '  gap -: the motion''s run at the deck''s gaps failed, or '// &
             'every gap of its sweep did (the motion is left out of every suite statistic);', &
             '  a gap: its run at that gap of the sweep or of a refinement failed (the gap never meets the target).'
-         write (u, '(2x,a20,a12,a12,a10,2x,a)', iostat=ios, iomsg=msg) 'motion', 'gap [mm]', 't [s]', 'step', &
-            'message'
+         if (ios == 0) write (u, '(2x,a20,a12,a12,a10,2x,a)', iostat=ios, iomsg=msg) 'motion', 'gap [mm]', 't [s]', &
+            'step', 'message'
          do i = 1, size(suite%failures)
+            if (ios /= 0) exit
             associate (f => suite%failures(i))
                call failure_time_step(f%message, t, step)
                gap = '           -'
