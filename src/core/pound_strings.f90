@@ -6,7 +6,7 @@ module pound_strings
    implicit none
    private
 
-   public :: str, number_end, decimal_exponent, is_digit, shorten, short_real, fixed_cell
+   public :: str, number_end, decimal_exponent, is_digit, shorten, short_real, fixed_cell, fit_with_suffix
 
    !> Shortest readable text of a number.
    interface str
@@ -190,6 +190,20 @@ contains
          t = s(1:37)//'...'
       end if
    end function shorten
+
+   !> `text` with `suffix` after it in at most `width` characters: `text` is cut (never the
+   !> suffix) so that the suffix survives a later cut to `width`.
+   pure function fit_with_suffix(text, suffix, width) result(t)
+      !> Text (trailing blanks dropped).
+      character(len=*), intent(in) :: text
+      !> What must survive (e.g. a count).
+      character(len=*), intent(in) :: suffix
+      !> Characters kept.
+      integer, intent(in) :: width
+      character(len=:), allocatable :: t
+
+      t = text(1:min(len_trim(text), max(0, width - len(suffix))))//suffix
+   end function fit_with_suffix
 
    !> `x` in short form for bounds: '0', '10', '1e-7', '2.5e3'.
    pure function short_real(x) result(s)

@@ -35,7 +35,7 @@
 module pound_suite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str
+   use pound_strings, only: str, fit_with_suffix
    use pound_config, only: deck_type, ground_config, n_history_quantities
    use pound_deck_variables, only: word_len, path_len
    use pound_ground_motion, only: ground_motion_t, sample_ground
@@ -167,7 +167,7 @@ module pound_suite
       logical, allocatable :: motion_failed(:)
       !> Number of motions the statistics are over (those that did not fail).
       integer :: n_used = 0
-      !> The motion whose case is the run's single-motion results (the first that did not fail).
+      !> The motion whose case is the run's single-motion results (the first motion run whole that did not fail).
       integer :: first = 0
       !> Per motion and sweep gap: whether the motion's run at the gap failed (n_motions, n_gaps);
       !> per gap: whether any motion of the statistics failed at it (the suite gap is FAILED:
@@ -497,8 +497,8 @@ contains
       values(2) = real(size(failures), dp)
       do j = 1, min(size(failures), refine_failures_kept)
          text = trim(failures(j)%message)
-         if (j == refine_failures_kept .and. size(failures) > j) text = text//' (and '// &
-            str(size(failures) - j)//' more trial gaps of this refinement failed)'
+         if (j == refine_failures_kept .and. size(failures) > j) text = fit_with_suffix(text, ' (and '// &
+            str(size(failures) - j)//' more trial gaps of this refinement failed)', case_message_len)
          o = 2 + (j - 1)*failure_width
          call failure_to_column(failures(j)%gap, text, values(o + 1:o + failure_width))
       end do
@@ -993,6 +993,7 @@ contains
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
       real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :)
       real(dp), allocatable :: z(:), sweep_all(:, :, :, :)
+      character(len=:), allocatable :: text
       logical :: targeted(n_history_quantities)
       integer :: nm, nb, k, ib, np, ip, nmax, ig, iq
       integer, allocatable :: start(:), ms(:)
@@ -1120,18 +1121,21 @@ contains
          end associate
       end do
 
-      ! The motions whose run failed are left out of every statistic over the motions.
+      ! The motions whose run failed are left out of every statistic over the motions; their
+      ! rows of the sweep are FAILED at every gap (their other per-motion rows stay 0).
       ip = failure_slot(ctx)
       do k = 1, nm
          suite%motion_failed(k) = columns(ip + 1, k) > 0.0_dp
-         if (suite%motion_failed(k)) call add_failure(suite%failures, &
-                                                      column_failure(columns(ip + 2:ip + 1 + failure_width, k), k))
+         if (.not. suite%motion_failed(k)) cycle
+         call add_failure(suite%failures, column_failure(columns(ip + 2:ip + 1 + failure_width, k), k))
+         if (suite%has_sweep) suite%sweep_failed(k, :) = .true.
       end do
       suite%n_used = count(.not. suite%motion_failed)
       if (suite%n_used == 0) then
-         call fatal_error(error, 'every motion of the suite failed; the first, '// &
-                          "&ground '"//trim(suite%names(suite%failures(1)%motion))//"': "// &
-                          trim(suite%failures(1)%message))
+         ! A suite of one motion (synthetic or scaled) fails as a run of that motion.
+         text = "&ground '"//trim(suite%names(suite%failures(1)%motion))//"': "//trim(suite%failures(1)%message)
+         if (nm > 1) text = 'every motion of the suite failed; the first, '//text
+         call fatal_error(error, text)
          return
       end if
       ctx%used = pack([(k, k=1, nm)], .not. suite%motion_failed)

@@ -342,7 +342,8 @@ contains
             text = text//trim(line)//new_line('a')
          end if
          if (suite%first > 1) text = text//'  the single-motion results are those of &ground '''// &
-                                     trim(suite%names(suite%first))//''' (the first that did not fail)'//new_line('a')
+                                     trim(suite%names(suite%first))//''' (the first motion run whole that '// &
+                                     'did not fail)'//new_line('a')
       end if
       do i = 1, size(res%warnings)
          text = text//'  WARNING: '//trim(res%warnings(i))//new_line('a')

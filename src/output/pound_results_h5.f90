@@ -627,7 +627,8 @@ contains
    !> The failed cases of a set of cases (a sweep's gaps, a suite's motions) in group `path`:
    !> `case` (1-based index), `gap` (m), `time` (s) and `step` of the failure (-1: not named
    !> in the message) and `message`, one entry per failed case; attribute `n_cases` (all cases).
-   subroutine write_failed_cases(h5, path, gap, failed, messages, error)
+   !> Without `indexed` (.false.: the caller names the cases itself) neither `case` nor `n_cases`.
+   subroutine write_failed_cases(h5, path, gap, failed, messages, error, indexed)
       !> Open file.
       type(h5_file), intent(inout) :: h5
       !> Group path (e.g. '/sweep/failed').
@@ -640,11 +641,16 @@ contains
       character(len=*), intent(in) :: messages(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Whether to write `case` and `n_cases` (default .true.).
+      logical, intent(in), optional :: indexed
       integer, allocatable :: idx(:), step(:)
       real(dp), allocatable :: g(:), t(:)
       character(len=len(messages)), allocatable :: m(:)
+      logical :: with_index
       integer :: i
 
+      with_index = .true.
+      if (present(indexed)) with_index = indexed
       idx = pack([(i, i=1, size(failed))], failed)
       g = gap(idx)
       m = messages(idx)
@@ -652,8 +658,10 @@ contains
       do i = 1, size(idx)
          call failure_time_step(m(i), t(i), step(i))
       end do
-      call h5_write(h5, path//'/case', idx, error)
-      if (allocated(error)) return
+      if (with_index) then
+         call h5_write(h5, path//'/case', idx, error)
+         if (allocated(error)) return
+      end if
       call h5_write(h5, path//'/gap', g, error)
       if (allocated(error)) return
       call h5_write(h5, path//'/time', t, error)
@@ -661,7 +669,7 @@ contains
       call h5_write(h5, path//'/step', step, error)
       if (allocated(error)) return
       call h5_write(h5, path//'/message', m, error)
-      if (allocated(error)) return
+      if (allocated(error) .or. .not. with_index) return
       call h5_write_attr(h5, path, 'n_cases', size(failed), error)
    end subroutine write_failed_cases
 

@@ -26,8 +26,10 @@
 !>        (n_out, n_pairs): only for the motions whose `&ground` sets `histories`
 !>     only when some case failed: /suite/failed/motion, gap (m; -1: the deck's gaps), time (s),
 !>        step, message (n_failed), attributes n_motions, n_motions_used, single_motion (the
-!>        motion of /uncoupled, /coupled, /sweep: the first that did not fail); /suite/motion_failed
-!>        (n_motions, 0/1); with &sweep /suite/sweep/failed (n_motions, n_gaps, 0/1) and
+!>        motion of /uncoupled, /coupled, /sweep: the first motion run whole that did not fail);
+!>        /suite/motion_failed
+!>        (n_motions, 0/1); with &sweep /suite/sweep/failed (n_motions, n_gaps, 0/1; a failed
+!>        motion's row 1 at every gap) and
 !>        /suite/sweep/gap_failed (n_gaps, 0/1)
 !>
 !> (the arrays are written in Fortran order, so h5py shows them transposed).
@@ -41,7 +43,7 @@ module pound_suite_output
    use pound_listing, only: write_section, write_influence_tables
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
-   use pound_results_h5, only: write_analysis_h5
+   use pound_results_h5, only: write_analysis_h5, write_failed_cases
    use pound_cases, only: failure_time_step, case_message_len
    implicit none
    private
@@ -213,7 +215,8 @@ contains
 
    contains
 
-      !> The table of the failed cases: motion, gap (mm; '-': the deck's gaps), time, step, message.
+      !> The table of the failed cases: motion, gap (mm; '-': the deck's gaps), time, step, message;
+      !> each write checked, the first that fails named (no later write tried).
       subroutine write_failures()
          real(dp) :: t
          integer :: i, step
@@ -221,12 +224,13 @@ contains
 
          if (size(suite%failures) == 0) return
          call write_section(u, 'Failed cases of the suite ('//str(size(suite%failures))//')')
-         write (u, '(a)', iostat=ios, iomsg=msg) '  gap -: the motion''s run at the deck''s gaps failed (the '// &
-            'motion is left out of every suite statistic);', '  a gap: its run at that gap of the sweep or of a '// &
-            'refinement failed (the gap never meets the target).'
-         write (u, '(2x,a20,a12,a12,a10,2x,a)', iostat=ios, iomsg=msg) 'motion', 'gap [mm]', 't [s]', 'step', &
-            'message'
+         write (u, '(a)', iostat=ios, iomsg=msg) '  gap -: the motion''s run at the deck''s gaps failed, or '// &
+            'every gap of its sweep did (the motion is left out of every suite statistic);', &
+            '  a gap: its run at that gap of the sweep or of a refinement failed (the gap never meets the target).'
+         if (ios == 0) write (u, '(2x,a20,a12,a12,a10,2x,a)', iostat=ios, iomsg=msg) 'motion', 'gap [mm]', 't [s]', &
+            'step', 'message'
          do i = 1, size(suite%failures)
+            if (ios /= 0) exit
             associate (f => suite%failures(i))
                call failure_time_step(f%message, t, step)
                gap = '           -'
@@ -363,28 +367,25 @@ contains
                                                         suite%refined_gap_every, error)
       end subroutine write_all
 
-      !> /suite/failed and /suite/motion_failed, when some case failed.
+      !> /suite/failed and /suite/motion_failed, when some case failed: `write_failed_cases`
+      !> (every failure a case) with the motion of each in place of the case index.
       subroutine write_failures()
-         real(dp), allocatable :: t(:), gap(:)
-         integer, allocatable :: step(:)
+         real(dp), allocatable :: gap(:)
          character(len=len(suite%names)), allocatable :: motion(:)
          character(len=case_message_len), allocatable :: message(:)
          integer :: i, n
 
          n = size(suite%failures)
          if (n == 0) return
-         allocate (t(n), step(n), gap(n), motion(n), message(n))
+         allocate (gap(n), motion(n), message(n))
          do i = 1, n
-            call failure_time_step(suite%failures(i)%message, t(i), step(i))
             gap(i) = suite%failures(i)%gap
             motion(i) = suite%names(suite%failures(i)%motion)
             message(i) = suite%failures(i)%message
          end do
          call h5_write(h5, '/suite/failed/motion', motion, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/gap', gap, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/time', t, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/step', step, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/failed/message', message, error)
+         if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, spread(.true., 1, n), message, &
+                                                             error, indexed=.false.)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions_used', suite%n_used, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'single_motion', &
