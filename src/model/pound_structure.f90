@@ -157,17 +157,10 @@ contains
       !> Row values (rows%n).
       real(dp), intent(out) :: y(:)
 
-      real(dp) :: unused(4, 1)
-
       if (rows%group_width == 4) then
          call grouped4_kernel(rows%n/4, size(rows%group_dof), size(rows%group_coef, 2), size(rows%block_first), &
                               size(u), rows%group_start, rows%group_dof, rows%group_block, rows%block_first, &
-                              rows%group_coef, rows%block_scale, u, y, .false., 0.0_dp, unused, unused)
-      else if (rows%group_width > 0) then
-         call grouped_kernel(rows%n/rows%group_width, rows%group_width, size(rows%group_dof), &
-                             size(rows%group_coef, 2), size(rows%block_first), size(u), rows%group_start, &
-                             rows%group_dof, rows%group_block, rows%block_first, rows%group_coef, &
-                             rows%block_scale, u, y)
+                              rows%group_coef, rows%block_scale, u, y)
       else
          call rows_kernel(rows%n, size(rows%dof), size(u), rows%start, rows%dof, rows%coef, rows%scale, u, y)
       end if
@@ -193,7 +186,7 @@ contains
       if (rows%group_width == 4) then
          call grouped4_kernel(rows%n/4, size(rows%group_dof), size(rows%group_coef, 2), size(rows%block_first), &
                               size(u), rows%group_start, rows%group_dof, rows%group_block, rows%block_first, &
-                              rows%group_coef, rows%block_scale, u, y, .true., t, peak, peak_time)
+                              rows%group_coef, rows%block_scale, u, y, t, peak, peak_time)
          return
       end if
       call recover_all(rows, u, y)
@@ -205,43 +198,22 @@ contains
       end do
    end subroutine recover_peaks
 
-   !> `recover_all` on the grouped layout: each group's DOFs read once, its rows summed side by
-   !> side with its block's coefficients. Every row's sum takes its products in the order of
-   !> its entries (a row's entries are in the order of the group's DOF list, `group_rows`
-   !> checks), plus exact zeros where it has no entry: the same values as `rows_kernel` (at
-   !> most the sign of a zero differs).
-   pure subroutine grouped_kernel(ng, w, nnz, nc, nb, nu, start, dof, block, first, coef, scale, u, y)
-      integer, intent(in) :: ng, w, nnz, nc, nb, nu, start(ng + 1), dof(nnz), block(ng), first(nb)
-      real(dp), intent(in) :: coef(w, nc), scale(w, nb), u(nu)
-      real(dp), intent(out) :: y(w, ng)
-      real(dp) :: x(w), ui
-      integer :: g, i, c
-
-      do g = 1, ng
-         c = first(block(g)) - start(g)
-         x = 0.0_dp
-         do i = start(g), start(g + 1) - 1
-            ui = u(dof(i))
-            x = x + coef(:, c + i)*ui
-         end do
-         y(:, g) = scale(:, block(g))*x
-      end do
-   end subroutine grouped_kernel
-
-   !> `grouped_kernel` for groups of four rows (a frame's member rows): the width a
-   !> constant, the sums in scalars (registers). Two neighbouring groups with as many entries
-   !> (the common case: alike members) are summed side by side, so that the chains of
-   !> dependent additions of the two overlap; each row's sum keeps its order. With `track`,
-   !> the values update the running absolute maxima and their times (t) instead of being
-   !> stored in y (`recover_peaks`; peak and peak_time are not referenced otherwise).
+   !> `recover_all` on the grouped layout of four rows per group (a frame's member rows):
+   !> each group's DOFs read once, its rows summed side by side with its block's coefficients,
+   !> the sums in scalars (registers). Every row's sum takes its products in the order of its
+   !> entries (a row's entries are in the order of the group's DOF list, `group_rows` checks),
+   !> plus exact zeros where it has no entry: the same values as `rows_kernel` (at most the
+   !> sign of a zero differs). Two neighbouring groups with as many entries (the common case:
+   !> alike members) are summed side by side, so that the chains of dependent additions of the
+   !> two overlap. With `peak`, the values update the running absolute maxima and their times
+   !> (t) instead of being stored in y (`recover_peaks`).
    pure subroutine grouped4_kernel(ng, nnz, nc, nb, nu, start, dof, block, first, coef, scale, u, y, &
-                                   track, t, peak, peak_time)
+                                   t, peak, peak_time)
       integer, intent(in) :: ng, nnz, nc, nb, nu, start(ng + 1), dof(nnz), block(ng), first(nb)
       real(dp), intent(in) :: coef(4, nc), scale(4, nb), u(nu)
       real(dp), intent(inout) :: y(4, ng)
-      logical, intent(in) :: track
-      real(dp), intent(in) :: t
-      real(dp), intent(inout) :: peak(4, *), peak_time(4, *)
+      real(dp), intent(in), optional :: t
+      real(dp), intent(inout), optional :: peak(4, ng), peak_time(4, ng)
       real(dp) :: x1, x2, x3, x4, z1, z2, z3, z4, ui, uk, w(4, 2)
       integer :: g, h, i, k, c, d, len, q, r
 
@@ -278,7 +250,7 @@ contains
          end do
          w(:, 2) = scale(:, block(h))*[z1, z2, z3, z4]
          w(:, 1) = scale(:, block(g))*[x1, x2, x3, x4]
-         if (track) then
+         if (present(peak)) then
             do q = g, h
                do r = 1, 4
                   if (abs(w(r, q - g + 1)) > peak(r, q)) then
@@ -297,9 +269,10 @@ contains
 
    !> Set up the grouped layout of `rows` (`recovery_rows%group_width`) for groups of w
    !> consecutive rows: each group's DOF list is the union of its rows' DOFs in the order of
-   !> first appearance. Left without one (rows unchanged) when rows%n is not a multiple of w
-   !> or some row's entries are not in the order of its group's list (the sums would change
-   !> order).
+   !> first appearance. Groups of four only (a frame segment's member rows: the kernel's
+   !> width, `grouped4_kernel`). Left without one (rows unchanged) when w is not 4, rows%n is
+   !> not a multiple of w or some row's entries are not in the order of its group's list (the
+   !> sums would change order).
    pure subroutine group_rows(rows, w)
       !> The rows.
       type(recovery_rows), intent(inout) :: rows
@@ -310,7 +283,7 @@ contains
       integer :: ng, g, r, j, i, k, last, nnz
 
       rows%group_width = 0
-      if (w < 1 .or. rows%n == 0 .or. mod(rows%n, w) /= 0) return
+      if (w /= 4 .or. rows%n == 0 .or. mod(rows%n, w) /= 0) return
       ng = rows%n/w
       allocate (gstart(ng + 1), gdof(size(rows%dof)), gcoef(w, size(rows%dof)))
       gcoef = 0.0_dp
