@@ -36,13 +36,13 @@ module pound_analysis
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record, contact_swap_step, &
-                            contact_may_act, lcp_solver_lemke
+                            contact_may_act, lcp_solver_lemke, contact_track_closing, contact_track_paths
    use pound_deck_variables, only: max_substeps
    implicit none
    private
 
    public :: analysis_result, run_uncoupled, run_coupled, output_steps, history_sink
-   public :: coupled_model, coupled_prepare, coupled_integrate
+   public :: coupled_model, coupled_prepare, coupled_integrate, beyond_closing, probe_gap
    public :: e_input, e_kinetic, e_strain, e_damping, e_contact, e_plastic, n_energy, energy_names
    public :: add_warning, write_warnings, audit_warning_limit, resolved_steps
    public :: substeps_per_half_period, impact_substeps_of, contact_half_period, substep_text
@@ -57,6 +57,16 @@ module pound_analysis
    !> `stepping = 'impact'` without `impact_substeps`: the substep is at most the shortest
    !> contact half-period pi sqrt(m_eff/k0) divided by this.
    real(dp), parameter :: substeps_per_half_period = 40.0_dp
+   !> A gap no joint closes (m): `coupled_integrate` with every gap at it and `track` is the
+   !> buildings' uncoupled motion with the coupled analysis's own sums, and records per joint
+   !> the largest closing displacement its steps predict with every force released
+   !> (`cs%closing_max`). A run whose every gap is `beyond_closing` those values has no step
+   !> in which a joint can act (no LCP, no substep): it follows the same states bit for bit
+   !> and gives the same result.
+   real(dp), parameter :: probe_gap = 0.25_dp*huge(1.0_dp)
+   !> `beyond_closing`: a gap counts as beyond a joint's largest closing displacement c when it
+   !> is at least c + `closing_margin` |c| (room for the round-off of the path's vertex).
+   real(dp), parameter :: closing_margin = 1.0e-9_dp
 
    !> Energy history components.
    integer, parameter :: e_input = 1, e_kinetic = 2, e_strain = 3, e_damping = 4, e_contact = 5
@@ -298,7 +308,7 @@ contains
 
    !> The coupled time integration from a prepared model (left unchanged, so that it can be
    !> reused); `gaps`, when given, replace the gaps of the constraints.
-   subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps, ground, sink)
+   subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps, ground, sink, track)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
       !> The buildings.
@@ -319,6 +329,9 @@ contains
       type(ground_motion_t), intent(in), optional :: ground
       !> Where the histories are streamed (none: held whole in `res`).
       class(history_sink), intent(inout), optional :: sink
+      !> Record the joints' largest closing displacements in `cs%closing_max`
+      !> (`contact_track_closing`; default: no).
+      logical, intent(in), optional :: track
       type(newmark_state), allocatable :: st(:)
       type(impact_stepping) :: sub
       integer :: nb
@@ -329,6 +342,9 @@ contains
       st = prep%st
       cs = prep%cs
       if (present(gaps)) cs%pair(:)%gap = gaps
+      if (present(track)) then
+         if (track) call contact_track_closing(cs)
+      end if
       call start_result(res, cfg, size(ag) - 1, nb, error, cs%m)
       if (allocated(error)) return
       if (prep%substeps == 0) then
@@ -345,6 +361,17 @@ contains
       sub%ground = ground
       call integrate(cfg, models, ag, st, cs, res, error, sub, sink)
    end subroutine coupled_integrate
+
+   !> Whether every gap is beyond its joint's largest closing displacement (`probe_gap`)
+   !> (by `closing_margin`): a run with these gaps is the probe's run.
+   pure logical function beyond_closing(gaps, closing_max)
+      !> Gap of each joint (m).
+      real(dp), intent(in) :: gaps(:)
+      !> Largest closing displacement of each joint (m; `probe_gap`).
+      real(dp), intent(in) :: closing_max(:)
+
+      beyond_closing = all(gaps >= closing_max + closing_margin*abs(closing_max))
+   end function beyond_closing
 
    !> The time-step loop of every analysis, from integrators at t = 0 and a contact system
    !> (`cs%m` = 0: no constraints, the uncoupled run): predict every building, the step's
@@ -380,12 +407,13 @@ contains
       integer(int64) :: c0, c1, rate, write_ticks
       real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output
+      logical :: out, coupled, finite, impact, output, track
 
       nb = size(models)
       allocate (view(nb))
       coupled = cs%m > 0
       impact = present(sub)
+      track = impact .and. allocated(cs%closing_max)
       every = cfg%output_every
       h = cfg%dt
       if (impact) then
@@ -439,6 +467,7 @@ contains
          ! m passes of h = dt/m with the ground motion at the substeps' ends.
          n_sub = 1
          if (impact) then
+            if (track) call contact_track_paths(cs, st)
             if (contact_may_act(cs, st)) then
                n_sub = sub%m
                res%substepped = res%substepped + 1

@@ -11,7 +11,10 @@
 !> shared over the ranks with MPI; each gap's coupled run gives a column (the largest
 !> |lambda| per quantity and building, impacts, energy residual, first warning), and the
 !> result is assembled from the columns in gap order, so it is the same for any number of
-!> ranks. A gap whose run fails (e.g. an LCP with no solution) does not stop the others: it
+!> ranks. Before the gaps, one coupled run in which no joint can close (`probe_gap`)
+!> records each joint's largest closing displacement: a gap beyond them all has no contact in
+!> its run, which would be that run bit for bit, so its column is the probe's (no run). A gap
+!> whose run fails (e.g. an LCP with no solution) does not stop the others: it
 !> is marked (`failed`, `messages`), left out of the results (zeros, never meeting the target,
 !> so that the smallest safe gap lies above it) and named in a warning. Only a sweep whose
 !> every gap fails ends with an error naming the first.
@@ -24,9 +27,10 @@ module pound_sweep
    use pound_structure, only: structure_model
    use pound_ground_motion, only: ground_motion_t
    use pound_analysis, only: analysis_result, coupled_model, coupled_prepare, coupled_integrate, &
-                             add_warning, audit_warning_limit
+                             add_warning, audit_warning_limit, beyond_closing, probe_gap
    use pound_contact, only: contact_pair, contact_system
    use pound_influence, only: influence_of, max_abs_influence
+   use pound_progress, only: progress_run_done
    use pound_cases, only: case_work, case_table, run_cases, first_failure, text_to_column, column_to_text, &
                           case_message_len
    implicit none
@@ -50,6 +54,12 @@ module pound_sweep
       logical, allocatable :: meets(:)
       !> Whether each gap's coupled run failed (its results are zeros, left out).
       logical, allocatable :: failed(:)
+      !> Whether each gap lies beyond every joint's largest closing displacement without
+      !> contact (`probe_gap`): no contact, the probe's result taken, no run of its own.
+      logical, allocatable :: beyond(:)
+      !> The joints' largest closing displacement without contact (m; not allocated when the
+      !> probe failed).
+      real(dp), allocatable :: closing_max(:)
       !> The message of each failed gap (blank otherwise).
       character(len=case_message_len), allocatable :: messages(:)
       !> Smallest gap from which on every larger gap of the sweep meets the target (m).
@@ -65,7 +75,8 @@ module pound_sweep
 
    !> The gaps of a sweep as cases: gap i's coupled run, against the uncoupled result.
    !> Column: max |lambda| (n_history_quantities x n_buildings), impacts, energy residual,
-   !> number of warnings, the first warning (`text_to_column`).
+   !> number of warnings, 1 when the gap is beyond the joints' closing (the probe's column),
+   !> the first warning (`text_to_column`).
    type, extends(case_work) :: gap_cases
       !> Settings of the sweep's runs (no histories).
       type(analysis_config) :: cfg
@@ -79,6 +90,9 @@ module pound_sweep
       !> The gaps (m) and the number of constraints.
       real(dp), allocatable :: gap(:)
       integer :: n_pairs = 0
+      !> The probe's largest closing displacement of each joint and its column (not allocated
+      !> when the probe failed: every gap runs).
+      real(dp), allocatable :: closing_max(:), probe(:)
    contains
       procedure :: compute => gap_case
    end type gap_cases
@@ -98,22 +112,45 @@ contains
       type(analysis_result) :: cpl
       type(contact_system) :: cs
       real(dp) :: gaps(work%n_pairs)
-      integer :: nl
 
       gaps = work%gap(i)
+      if (allocated(work%probe)) then
+         if (beyond_closing(gaps, work%closing_max)) then
+            values = work%probe
+            ! A case done (the progress line counts cases), without a run.
+            call progress_run_done()
+            return
+         end if
+      end if
       call coupled_integrate(work%cfg, work%models, work%ag, work%prep, cpl, cs, error, gaps, work%ground)
       if (allocated(error)) return
+      call result_column(work, cpl, sum(cs%joint(:)%impacts), values)
+   end subroutine gap_case
+
+   !> A coupled run's column (`gap_cases`); the flag of a gap beyond the closing is 0.
+   subroutine result_column(work, cpl, impacts, values)
+      !> The sweep's cases.
+      class(gap_cases), intent(in) :: work
+      !> The coupled result.
+      type(analysis_result), intent(in) :: cpl
+      !> Its number of impacts.
+      integer, intent(in) :: impacts
+      !> The column.
+      real(dp), intent(out) :: values(:)
+      integer :: nl
+
       nl = n_history_quantities*size(work%models)
       values(1:nl) = reshape(max_abs_influence(influence_of(work%unc, cpl)), [nl])
-      values(nl + 1) = real(sum(cs%joint(:)%impacts), dp)
+      values(nl + 1) = real(impacts, dp)
       values(nl + 2) = cpl%energy_error
       values(nl + 3) = real(size(cpl%warnings), dp)
+      values(nl + 4) = 0.0_dp
       if (size(cpl%warnings) > 0) then
-         call text_to_column(trim(cpl%warnings(1)), values(nl + 4:))
+         call text_to_column(trim(cpl%warnings(1)), values(nl + 5:))
       else
-         call text_to_column('', values(nl + 4:))
+         call text_to_column('', values(nl + 5:))
       end if
-   end subroutine gap_case
+   end subroutine result_column
 
    !> The gaps of a sweep: n_gaps values evenly spaced from gap_from to gap_to.
    pure function sweep_gaps(cfg) result(gaps)
@@ -151,6 +188,9 @@ contains
       type(coupled_model), target :: prep
       type(gap_cases) :: cases
       type(case_table) :: table
+      type(analysis_result) :: probe
+      type(contact_system) :: probe_cs
+      type(error_type), allocatable :: probe_error
       integer :: nl
       integer(int64) :: c0, c1, rate
 
@@ -169,9 +209,20 @@ contains
       if (present(ground)) cases%ground => ground
       cases%gap = sweep_gaps(sweep)
       cases%n_pairs = size(pairs)
-      call run_cases(cases, sweep%n_gaps, nl + 4 + warning_len, table)
+      ! The probe: the joints' largest closing displacements without contact, and the column
+      ! of every gap beyond them. A probe that fails decides nothing: every gap runs.
+      call coupled_integrate(quiet, models, ag, prep, probe, probe_cs, probe_error, spread(probe_gap, 1, size(pairs)), &
+                             ground, track=.true.)
+      if (.not. allocated(probe_error)) then
+         cases%closing_max = probe_cs%closing_max
+         allocate (cases%probe(nl + 5 + warning_len))
+         call result_column(cases, probe, 0, cases%probe)
+         cases%probe(nl + 4) = 1.0_dp
+      end if
+      call run_cases(cases, sweep%n_gaps, nl + 5 + warning_len, table)
       call sweep_from_table(sweep, size(models), table, res, error)
       if (allocated(error)) return
+      if (allocated(cases%probe)) res%closing_max = cases%closing_max
       call system_clock(c1)
       res%seconds = real(c1 - c0, dp)/real(rate, dp)
    end subroutine run_sweep
@@ -212,13 +263,14 @@ contains
       end if
       res%failed = table%failed
       res%messages = table%message
+      res%beyond = table%values(nl + 4, :) > 0.0_dp .and. .not. table%failed
       do i = 1, sweep%n_gaps
          associate (col => table%values(:, i))
             if (col(nl + 3) > 0.0_dp) then
                n_bad = n_bad + 1
                if (col(nl + 2) > worst) then
                   worst = col(nl + 2)
-                  worst_text = 'gap = '//str(res%gap(i))//' m: '//column_to_text(col(nl + 4:))
+                  worst_text = 'gap = '//str(res%gap(i))//' m: '//column_to_text(col(nl + 5:))
                end if
             end if
             res%impacts(i) = nint(col(nl + 1))

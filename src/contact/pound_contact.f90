@@ -76,7 +76,7 @@ module pound_contact
 
    public :: contact_system, contact_init, contact_init_flexibility
    public :: contact_step, contact_solve, contact_commit, contact_update
-   public :: contact_swap_step, contact_may_act
+   public :: contact_swap_step, contact_may_act, contact_track_closing, contact_track_paths
    public :: residual_limit, fallback_max_rows, initial_hinges
    public :: lcp_solver_auto, lcp_solver_lemke
    ! Re-exported: the constraint definitions, the joints' state and the LCP statistics.
@@ -156,6 +156,10 @@ module pound_contact
       logical :: idle = .false.
       !> Whether each joint's law is a `plain_law` (elastic, no dashpot, not fracturing).
       logical, allocatable :: plain(:)
+      !> When allocated (`contact_track_closing`): per joint, the largest closing displacement
+      !> released of every force that the steps have predicted so far, at the steps' ends
+      !> (`contact_step`) and, where `contact_track_paths` is called, inside them (m).
+      real(dp), allocatable :: closing_max(:)
    end type contact_system
 
 contains
@@ -411,12 +415,11 @@ contains
       type(contact_system), intent(in) :: cs
       !> Integrators with the predicted increments du.
       type(newmark_state), intent(in) :: states(:)
-      real(dp) :: c0, cv, ca, u0, v0, am, vmax, s, h, q
-      integer :: k, e, b
+      real(dp) :: vmax, q
+      integer :: k
 
       acts = .false.
       if (cs%m == 0) return
-      h = 2.0_dp/cs%c2
       do k = 1, cs%m
          associate (p => cs%pair(k), j => cs%joint(k), c => cs%pair(k)%law%dashpot)
             if (j%fractured) cycle
@@ -424,23 +427,7 @@ contains
                acts = .true.
                return
             end if
-            c0 = 0.0_dp
-            cv = 0.0_dp
-            ca = 0.0_dp
-            do e = 1, 2
-               b = p%building(e)
-               if (b == 0) cycle
-               call newmark_path(states(b), p%dof(e), u0, v0, am)
-               c0 = c0 + end_sign(e)*u0
-               cv = cv + end_sign(e)*v0
-               ca = ca + end_sign(e)*am
-            end do
-            ! Largest closing displacement over the step: at its end, or at the vertex.
-            vmax = c0 + cv*h + 0.5_dp*ca*h*h
-            if (ca < 0.0_dp .and. cv > 0.0_dp) then
-               s = -cv/ca
-               if (s < h) vmax = max(vmax, c0 + 0.5_dp*cv*s)
-            end if
+            vmax = path_closing_max(cs, states, k)
             q = p%gap - vmax + (c*(cs%rate_a(k)*j%d + cs%rate_b(k)*j%ddot) + p%law%stiffness*j%plastic)/cs%phat(k)
             if (q < 0.0_dp) then
                acts = .true.
@@ -449,6 +436,65 @@ contains
          end associate
       end do
    end function contact_may_act
+
+   !> The largest closing displacement of joint k along the step predicted in `states`, every
+   !> force released: at the end of the step or at the vertex of its average-acceleration
+   !> path (a parabola in time) inside it (`contact_may_act`).
+   pure real(dp) function path_closing_max(cs, states, k) result(vmax)
+      !> The contact system.
+      type(contact_system), intent(in) :: cs
+      !> Integrators with the predicted increments du.
+      type(newmark_state), intent(in) :: states(:)
+      !> Joint.
+      integer, intent(in) :: k
+      real(dp) :: c0, cv, ca, u0, v0, am, s, h
+      integer :: e, b
+
+      h = 2.0_dp/cs%c2
+      c0 = 0.0_dp
+      cv = 0.0_dp
+      ca = 0.0_dp
+      do e = 1, 2
+         b = cs%pair(k)%building(e)
+         if (b == 0) cycle
+         call newmark_path(states(b), cs%pair(k)%dof(e), u0, v0, am)
+         c0 = c0 + end_sign(e)*u0
+         cv = cv + end_sign(e)*v0
+         ca = ca + end_sign(e)*am
+      end do
+      vmax = c0 + cv*h + 0.5_dp*ca*h*h
+      if (ca < 0.0_dp .and. cv > 0.0_dp) then
+         s = -cv/ca
+         if (s < h) vmax = max(vmax, c0 + 0.5_dp*cv*s)
+      end if
+   end function path_closing_max
+
+   !> Start recording, per joint, the largest closing displacement the steps predict with
+   !> every force released (`closing_max`): at the steps' ends in `contact_step`, inside the
+   !> steps where `contact_track_paths` is called. A run in which no joint acts (its gaps
+   !> above every value recorded) is the uncoupled motion of the buildings, so these are the
+   !> gaps beyond which the joints never close.
+   subroutine contact_track_closing(cs)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+
+      allocate (cs%closing_max(cs%m))
+      cs%closing_max = -huge(1.0_dp)
+   end subroutine contact_track_closing
+
+   !> Add the largest closing displacement inside the step predicted in `states` (the path
+   !> of `contact_may_act`) to `closing_max` (`contact_track_closing`).
+   subroutine contact_track_paths(cs, states)
+      !> The contact system, tracking.
+      type(contact_system), intent(inout) :: cs
+      !> Integrators with the predicted increments du.
+      type(newmark_state), intent(in) :: states(:)
+      integer :: k
+
+      do k = 1, cs%m
+         cs%closing_max(k) = max(cs%closing_max(k), path_closing_max(cs, states, k))
+      end do
+   end subroutine contact_track_paths
 
    !> Decide the contact forces at the end of the step and add their effect to du.
    !>
@@ -470,6 +516,7 @@ contains
       if (cs%m == 0) return
       ! Closing displacement if every force were released in this step.
       call closing_displacements(cs, states, .true.)
+      if (allocated(cs%closing_max)) cs%closing_max = max(cs%closing_max, cs%vp)
       ! No joint can act: what `contact_solve` would find (no force, no plastic flow, du
       ! unchanged), without its set-up.
       cs%idle = cs%shortcut

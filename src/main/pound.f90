@@ -209,13 +209,14 @@ contains
    end subroutine stop_with
 
    !> The integration runs the analyses make (the progress line's total): per motion, the
-   !> uncoupled run and, with contact, the coupled run and one per gap of the sweep (a suite's
-   !> refinement adds runs beyond these).
+   !> uncoupled run and, with contact, the coupled run and, with a sweep, its run without
+   !> contact and one per gap (a suite's refinement adds runs beyond these).
    integer function planned_runs()
       planned_runs = 1
       if (size(deck%contacts) > 0) then
          planned_runs = 2
-         if (deck%sweep%active) planned_runs = planned_runs + deck%sweep%n_gaps
+         ! A sweep: its run without contact (`probe_gap`) and its gaps.
+         if (deck%sweep%active) planned_runs = planned_runs + 1 + deck%sweep%n_gaps
       end if
       if (is_suite) planned_runs = planned_runs*size(deck%motions)
    end function planned_runs

@@ -707,6 +707,13 @@ contains
          '  ', size(res%gap), ' gaps applied to every contact pair; ', &
          res%seconds, ' s for all coupled runs'
       call note_io()
+      if (allocated(res%closing_max)) then
+         write (u, '(a,f10.4,a,/,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
+            '  largest closing displacement of any joint without contact: ', 1000.0_dp*maxval(res%closing_max), &
+            ' mm;', '  the ', count(res%beyond), ' of ', size(res%gap), &
+            ' gaps beyond it have no contact: one run without contact stands for them'
+         call note_io()
+      end if
       line = '    gap [mm]  impacts'
       do ib = 1, size(models)
          do k = 1, size(shown)

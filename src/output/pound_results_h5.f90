@@ -36,6 +36,10 @@
 !>     /influence/<b>/<q>                        (n) lambda in percent
 !>     /influence/<b>/columns/<c>                (n_segments) frame: lambda of the column peaks
 !>     /sweep/gap, impacts, meets                (n_gaps)
+!>     /sweep/no_contact                         (n_gaps) 1 where the gap is beyond every joint's
+!>                                               largest closing displacement without contact
+!>     /sweep/closing_max                        (n_pairs) those displacements (m; absent when
+!>                                               the run without contact failed)
 !>     /sweep/max_abs_lambda/<b>/<q>             (n_gaps) largest |lambda| over the storeys, percent;
 !>                                               attributes target_lambda, safe_gap (-1: none),
 !>                                               and, when some gaps failed, failed_gaps (count)
@@ -262,6 +266,12 @@ contains
          if (allocated(error)) return
          call h5_write(h5, '/sweep/meets', merge(1, 0, sweep%meets), error)
          if (allocated(error)) return
+         call h5_write(h5, '/sweep/no_contact', merge(1, 0, sweep%beyond), error)
+         if (allocated(error)) return
+         if (allocated(sweep%closing_max)) then
+            call h5_write(h5, '/sweep/closing_max', sweep%closing_max, error)
+            if (allocated(error)) return
+         end if
          do ib = 1, size(models)
             do q = 1, n_history_quantities
                row = sweep%max_abs_lambda(q, ib, :)

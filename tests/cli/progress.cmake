@@ -16,8 +16,9 @@ expect_equal("exit status --quiet" 0 "${q_rc}")
 expect_no_progress("stderr with --quiet" "${q_err}")
 run_pound(p ${SOURCE_DIR}/input/two_frames_gap_study.nml --progress)
 expect_equal("exit status --progress" 0 "${p_rc}")
-# Uncoupled, coupled and 50 gaps: 52 runs.
-expect_contains("stderr with --progress" "${p_err}" "pound: 52/52 runs (100.0 %), ")
+# Uncoupled, coupled, the sweep's run without contact and 50 gaps (a gap beyond the closing
+# counts as done without a run of its own): 53 runs.
+expect_contains("stderr with --progress" "${p_err}" "pound: 53/53 runs (100.0 %), ")
 string(REGEX MATCHALL "pound: [0-9]+/[0-9]+ runs[^\n]*\n" lines "${p_err}")
 list(GET lines -1 last)
-expect_contains("last progress line" "${last}" "52/52 runs (100.0 %)")
+expect_contains("last progress line" "${last}" "53/53 runs (100.0 %)")
