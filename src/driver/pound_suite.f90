@@ -198,6 +198,11 @@ module pound_suite
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
       !> The motions the statistics are over (those whose run did not fail), in order.
       integer, allocatable :: used(:)
+      !> With `&sweep`: each motion's uncoupled result without its histories, and whether it
+      !> is there (its run did not fail); the runs at a refinement's trial gaps take it instead
+      !> of running it again (it does not depend on the gap).
+      type(analysis_result), allocatable :: unc(:)
+      logical, allocatable :: has_unc(:)
    end type suite_context
 
    !> The motions of a suite without `&sweep` as cases: case i is the group of motions
@@ -508,7 +513,7 @@ contains
    !> building, zero for the quantities not targeted.
    subroutine motion_lambda(ctx, m, gap, lam, error)
       !> The refinement's data.
-      type(suite_context), intent(in) :: ctx
+      type(suite_context), intent(in), target :: ctx
       !> Motion index.
       integer, intent(in) :: m
       !> Gap of every joint (m).
@@ -527,6 +532,9 @@ contains
       allocate (opt%ground)
       call suite_motion(ctx%deck, m, ctx%models, opt%ground, factor, error)
       if (allocated(error)) return
+      if (allocated(ctx%has_unc)) then
+         if (ctx%has_unc(m)) opt%unc => ctx%unc(m)
+      end if
       call run_case(ctx%plain, r, error, opt)
       if (allocated(error)) return
       lam = max_abs_influence(r%influence)
@@ -1080,6 +1088,10 @@ contains
       ctx%fl = fl
       ctx%fr = fr
       allocate (columns(motion_width(ctx), nm), whole(nm), suite%motion_failed(nm))
+      if (deck%sweep%active) then
+         allocate (ctx%unc(nm), ctx%has_unc(nm))
+         ctx%has_unc = .false.
+      end if
       suite%motion_failed = .false.
       allocate (suite%failures(0))
       whole = [(deck%sweep%active .or. k == 1 .or. deck%motions(k)%histories, k=1, nm)]
@@ -1215,7 +1227,28 @@ contains
          if (suite%first == 0) suite%first = k
          call gather_sweep(r)
          call keep(r)
+         if (allocated(ctx%has_unc) .and. r%has_uncoupled) call keep_uncoupled(r%unc)
       end subroutine whole_run
+
+      !> Motion k's uncoupled result for the runs at trial gaps, without its histories (what
+      !> the influence coefficients need: the peaks).
+      subroutine keep_uncoupled(unc)
+         type(analysis_result), intent(in) :: unc
+         integer :: ib
+
+         call analysis_copy(unc, ctx%unc(k))
+         do ib = 1, size(ctx%unc(k)%building)
+            associate (b => ctx%unc(k)%building(ib))
+               if (allocated(b%u)) deallocate (b%u)
+               if (allocated(b%v)) deallocate (b%v)
+               if (allocated(b%a_abs)) deallocate (b%a_abs)
+               if (allocated(b%drift)) deallocate (b%drift)
+               if (allocated(b%shear)) deallocate (b%shear)
+               if (allocated(b%u_nodes)) deallocate (b%u_nodes)
+            end associate
+         end do
+         ctx%has_unc(k) = .true.
+      end subroutine keep_uncoupled
 
       !> The histories of motion k, when its `&ground` asks for them.
       subroutine keep(res)
