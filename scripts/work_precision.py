@@ -45,23 +45,26 @@ def analysis_group_span(text):
     raise SystemExit("work_precision: &analysis is not closed")
 
 
-def with_step(text, dt, output_every, stepping="uniform", substeps=0):
+def with_step(text, dt, output_every, stepping="uniform", substeps=0, free="newmark"):
     a, b = analysis_group_span(text)
     body = text[a:b]
     value = r"""('[^']*'|"[^"]*"|[^,\s/]+)"""
-    body = re.sub(r"\b(dt|output_every|history|stepping|impact_substeps)\s*=\s*" + value + r"\s*,?", " ", body,
-                  flags=re.I)
+    body = re.sub(r"\b(dt|output_every|history|stepping|impact_substeps|free_steps)\s*=\s*" + value + r"\s*,?", " ",
+                  body, flags=re.I)
     extra = f" stepping = '{stepping}',"
+    if free != "newmark":
+        extra += f" free_steps = '{free}',"
     if stepping == "impact" and substeps > 0:
         extra += f" impact_substeps = {substeps},"
     body = f" dt = {dt!r}, output_every = {output_every}, history = 'u'," + extra + body
     return text[:a] + body + text[b:]
 
 
-def run(exe, deck_text, deck_dir, tag, outdir, dt, out_every, repeats, stepping="uniform", substeps=0):
+def run(exe, deck_text, deck_dir, tag, outdir, dt, out_every, repeats, stepping="uniform", substeps=0,
+        free="newmark"):
     path = os.path.join(deck_dir, f".work_precision_{tag}.nml")
     with open(path, "w") as f:
-        f.write(with_step(deck_text, dt, out_every, stepping, substeps))
+        f.write(with_step(deck_text, dt, out_every, stepping, substeps, free))
     steps = None
     try:
         times_u, times_c = [], []
@@ -143,12 +146,15 @@ def main():
     ap.add_argument("--ref-factor", type=int, default=8, help="reference dt = smallest dt / this (power of 2)")
     ap.add_argument("--repeats", type=int, default=3)
     ap.add_argument("--outdir", default="out")
-    ap.add_argument("--stepping", default="uniform", help="comma separated: uniform, impact (one ladder each)")
+    ap.add_argument("--stepping", default="uniform",
+                    help="comma separated: uniform, impact, uniform-exact, impact-exact (one ladder each; "
+                         "-exact: free_steps = 'exact')")
     ap.add_argument("--substeps", type=int, default=0, help="impact_substeps of the impact ladder (0: automatic)")
     a = ap.parse_args()
     steppings = [x.strip() for x in a.stepping.split(",") if x.strip()]
-    if not steppings or any(x not in ("uniform", "impact") for x in steppings):
-        raise SystemExit("work_precision: --stepping takes uniform and/or impact")
+    kinds = ("uniform", "impact", "uniform-exact", "impact-exact")
+    if not steppings or any(x not in kinds for x in steppings):
+        raise SystemExit("work_precision: --stepping takes " + ", ".join(kinds))
     dts = sorted((float(s) for s in a.dts.split(",")), reverse=True)
     if len(dts) < 2:
         raise SystemExit("work_precision: give at least two time steps")
@@ -173,8 +179,9 @@ def main():
         for sp in steppings:
             rows = []
             for i, dt in enumerate(dts):
-                p, tu, tc, steps = run(a.exe, text, deck_dir, f"{sp}{i}", tmp, dt, every(dt), a.repeats, sp,
-                                       a.substeps)
+                stepping, _, free = sp.partition("-")
+                p, tu, tc, steps = run(a.exe, text, deck_dir, f"{sp}{i}", tmp, dt, every(dt), a.repeats, stepping,
+                                       a.substeps, free or "newmark")
                 rows.append((dt, tu, tc, errors(load(p), ref), steps))
             series[sp] = rows
     coupled = "coupled" in ref
@@ -192,15 +199,18 @@ def main():
             head += " peak force err | order | lambda err [pp] |"
             sep += "--:|--:|--:|"
         lines += [head, sep]
+        shown_free = set()
         for sp, rows in series.items():
-            if an == "uncoupled" and sp != steppings[0]:
-                continue  # the uncoupled analysis is uniform whatever the stepping
+            free = sp.partition("-")[2] or "newmark"
+            if an == "uncoupled" and free in shown_free:
+                continue  # the uncoupled analysis is uniform whatever the stepping (exact or not)
+            shown_free.add(free)
             for i, (dt, tu, tc, e, steps) in enumerate(rows):
                 t = tc if an == "coupled" else tu
                 prev = rows[i - 1] if i > 0 else None
                 o_s = order(prev[3][an]["shear"], e[an]["shear"], prev[0], dt) if prev else None
                 o_l = order(prev[3][an]["L2"], e[an]["L2"], prev[0], dt) if prev else None
-                shown = sp if an == "coupled" else "uniform"
+                shown = sp if an == "coupled" else ("uniform-exact" if free == "exact" else "uniform")
                 taken = steps if (an == "coupled" and steps is not None) else "-"
                 line = (f"| {shown} | {dt:g} | {taken} | {1e3 * t:.2f} | {fmt(e[an]['shear'])} | {fmt(o_s, '.2f')} | "
                         f"{fmt(e[an]['L2'])} | {fmt(o_l, '.2f')} |")
@@ -236,7 +246,7 @@ def plot(all_rows, coupled, base, title):
     import matplotlib.pyplot as plt
 
     fig, ax = plt.subplots(figsize=(6.4, 4.6))
-    colours = {"uniform": "black", "impact": "tab:red"}
+    colours = {"uniform": "black", "impact": "tab:red", "uniform-exact": "tab:blue", "impact-exact": "tab:green"}
     first = next(iter(all_rows))
     for sp, rows in all_rows.items():
         lines = []

@@ -29,6 +29,7 @@ module pound_analysis
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
+                            newmark_predict_exact, newmark_drop_exact, &
                             kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
                             newmark_energies, newmark_add_energies, newmark_n, en_input, en_kinetic, en_strain, &
                             en_damping
@@ -45,7 +46,7 @@ module pound_analysis
    public :: coupled_model, coupled_prepare, coupled_integrate, beyond_closing, probe_gap
    public :: e_input, e_kinetic, e_strain, e_damping, e_contact, e_plastic, n_energy, energy_names
    public :: add_warning, write_warnings, audit_warning_limit, resolved_steps
-   public :: substeps_per_half_period, impact_substeps_of, contact_half_period, substep_text
+   public :: substeps_per_half_period, impact_substeps_of, contact_half_period, substep_text, exact_text
    public :: start_result, audit_error, uncoupled_audit_warning, analysis_copy
    public :: flush_full_blocks, store_energy
 
@@ -57,6 +58,9 @@ module pound_analysis
    !> `stepping = 'impact'` without `impact_substeps`: the substep is at most the shortest
    !> contact half-period pi sqrt(m_eff/k0) divided by this.
    real(dp), parameter :: substeps_per_half_period = 40.0_dp
+   !> The same with exact free steps (`free_steps = 'exact'`), whose error is then the contact
+   !> substeps' alone.
+   real(dp), parameter, public :: substeps_per_half_period_exact = 60.0_dp
    !> A gap no joint closes (m): `coupled_integrate` with every gap at it and `track` is the
    !> buildings' uncoupled motion with the coupled analysis's own sums, and records per joint
    !> the largest closing displacement its steps predict with every force released
@@ -105,6 +109,9 @@ module pound_analysis
       integer :: substep_factor = 0, substepped = 0, substeps = 0
       !> The substep dt/m (s; 0: uniform stepping).
       real(dp) :: substep = 0.0_dp
+      !> `free_steps = 'exact'`: the steps taken exactly (no joint acting; -1: free steps by
+      !> Newmark).
+      integer :: exact_steps = -1
    end type analysis_result
 
    !> What the coupled analysis needs that does not depend on the gaps: the factored
@@ -177,7 +184,7 @@ contains
       if (allocated(error)) return
       allocate (st(nb))
       do ib = 1, nb
-         call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error)
+         call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error, exact=cfg%free_steps == 'exact')
          if (allocated(error)) return
       end do
       call integrate(cfg, models, ag, st, cs, res, error, sink=sink)
@@ -231,7 +238,7 @@ contains
       call check_ground_samples([ag0], cfg%dt, error)
       if (allocated(error)) return
       do ib = 1, size(models)
-         call newmark_init(prep%st(ib), models(ib), cfg%dt, ag0, error)
+         call newmark_init(prep%st(ib), models(ib), cfg%dt, ag0, error, exact=cfg%free_steps == 'exact')
          if (allocated(error)) return
       end do
       call contact_init(prep%cs, pairs, prep%st, models, error)
@@ -251,7 +258,8 @@ contains
 
    !> Substeps per impact step: `impact_substeps` when given, else the least m for which
    !> dt/m is at most the shortest contact half-period of the joints divided by
-   !> `substeps_per_half_period` (at least 2, at most `max_substeps`).
+   !> `substeps_per_half_period` (`substeps_per_half_period_exact` with exact free steps; at
+   !> least 2, at most `max_substeps`).
    integer function impact_substeps_of(cfg, models, cs) result(m)
       !> `&analysis` settings.
       type(analysis_config), intent(in) :: cfg
@@ -259,7 +267,7 @@ contains
       type(structure_model), intent(in) :: models(:)
       !> The constraints, their DOFs located (`contact_init`).
       type(contact_system), intent(in) :: cs
-      real(dp) :: half
+      real(dp) :: half, per_half
       integer :: k
 
       if (cfg%impact_substeps > 0) then
@@ -270,7 +278,9 @@ contains
       do k = 1, cs%m
          half = min(half, contact_half_period(cs%pair(k), models))
       end do
-      m = max(2, min(max_substeps, ceiling(substeps_per_half_period*cfg%dt/half - 1.0e-9_dp)))
+      per_half = substeps_per_half_period
+      if (cfg%free_steps == 'exact') per_half = substeps_per_half_period_exact
+      m = max(2, min(max_substeps, ceiling(per_half*cfg%dt/half - 1.0e-9_dp)))
    end function impact_substeps_of
 
    !> Contact half-period pi sqrt(m_eff/k0) of a joint (s), m_eff = m1 m2/(m1 + m2) of the
@@ -407,13 +417,16 @@ contains
       integer(int64) :: c0, c1, rate, write_ticks
       real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, track
+      logical :: out, coupled, finite, impact, output, track, exact
+      integer :: newmark_steps
 
       nb = size(models)
       allocate (view(nb))
       coupled = cs%m > 0
       impact = present(sub)
-      track = impact .and. allocated(cs%closing_max)
+      exact = cfg%free_steps == 'exact'
+      track = (impact .or. exact) .and. allocated(cs%closing_max)
+      newmark_steps = 0
       every = cfg%output_every
       h = cfg%dt
       if (impact) then
@@ -456,9 +469,15 @@ contains
          t = real(step, dp)*cfg%dt
          ag_old = ag(step - 1)
          ag_new = ag(step)
-         do ib = 1, nb
-            call newmark_predict(st(ib), models(ib), ag_new - ag_old)
-         end do
+         if (exact) then
+            do ib = 1, nb
+               call newmark_predict_exact(st(ib), models(ib), ag_old, ag_new)
+            end do
+         else
+            do ib = 1, nb
+               call newmark_predict(st(ib), models(ib), ag_new - ag_old)
+            end do
+         end if
          ! out = mod(step, every) == 0, counted down (no division per step)
          until_out = until_out - 1
          out = until_out == 0
@@ -471,7 +490,15 @@ contains
             if (contact_may_act(cs, st)) then
                n_sub = sub%m
                res%substepped = res%substepped + 1
+               newmark_steps = newmark_steps + 1
                call swap_steps(st, cs, sub)
+            end if
+         else if (exact .and. coupled) then
+            ! A joint can act: the step is Newmark's, predicted again.
+            if (track) call contact_track_paths(cs, st)
+            if (contact_may_act(cs, st)) then
+               newmark_steps = newmark_steps + 1
+               call predict_newmark(st, models, ag_new - ag_old)
             end if
          end if
          t_sub = t
@@ -560,6 +587,7 @@ contains
       do ib = 1, nb
          call response_finish(res%building(ib), models(ib))
       end do
+      if (exact) res%exact_steps = res%n_steps - newmark_steps
       res%energy_error = audit_error(resid, scale)
       if (res%energy_error <= audit_warning_limit) return
       if (coupled) then
@@ -631,6 +659,23 @@ contains
       sample = res%energy(:, k)
    end subroutine store_energy
 
+   !> Drop the exact steps predicted and predict the step by Newmark (`free_steps = 'exact'`, a
+   !> step in which a joint can act).
+   subroutine predict_newmark(st, models, dag)
+      !> Integrators.
+      type(newmark_state), intent(inout) :: st(:)
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> Ground acceleration increment of the step (m/s^2).
+      real(dp), intent(in) :: dag
+      integer :: ib
+
+      do ib = 1, size(st)
+         call newmark_drop_exact(st(ib))
+         call newmark_predict(st(ib), models(ib), dag)
+      end do
+   end subroutine predict_newmark
+
    !> Exchange the step data of the integrators and the contact system with `sub`'s (a
    !> procedure of the module, not of `integrate`: an internal one would keep the time loop's
    !> variables that it reaches in memory).
@@ -697,6 +742,17 @@ contains
              str(res%substepped)//' of '//str(res%n_steps)//' steps substepped, '//str(res%substeps)// &
              ' substeps taken ('//str(res%n_steps - res%substepped + res%substeps)//' steps in all)'
    end function substep_text
+
+   !> The steps an analysis with `free_steps = 'exact'` took exactly, as one line of text.
+   function exact_text(res) result(text)
+      !> The result.
+      type(analysis_result), intent(in) :: res
+      character(len=:), allocatable :: text
+
+      text = str(res%exact_steps)//' of '//str(res%n_steps)//' steps exact (no joint acting), '// &
+             str(res%n_steps - res%exact_steps)//" by Newmark's method"
+      if (res%substep_factor > 0) text = text//' in substeps'
+   end function exact_text
 
    !> Sizes, output times, a zero energy history and (with `n_pairs`) the contact histories
    !> of a result for `n_steps` steps; no warnings yet.

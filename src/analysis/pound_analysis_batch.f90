@@ -40,13 +40,16 @@ contains
    !> Whether the buildings can be run by `run_uncoupled_batch`: every model takes the fused
    !> tridiagonal path (half-bandwidth 1, every DOF moved by the ground), is a stick (response
    !> points DOFs 1..n, chain storey rows) and has two storeys or more (the one-storey kernel of
-   !> `pound_newmark_step` is straight-line code that the compiler fuses differently).
-   pure logical function batch_eligible(models)
+   !> `pound_newmark_step` is straight-line code that the compiler fuses differently), and the
+   !> steps are Newmark's (`free_steps = 'newmark'`: the batch has no exact steps).
+   pure logical function batch_eligible(cfg, models)
+      !> `&analysis` settings.
+      type(analysis_config), intent(in) :: cfg
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       integer :: ib
 
-      batch_eligible = size(models) > 0
+      batch_eligible = size(models) > 0 .and. cfg%free_steps == 'newmark'
       do ib = 1, size(models)
          if (models(ib)%kd /= 1 .or. .not. models(ib)%stick .or. models(ib)%n < 2) batch_eligible = .false.
          if (batch_eligible) batch_eligible = all(models(ib)%ground == 1.0_dp)

@@ -9,7 +9,7 @@ module pound_swap
 
    !> Exchange a and b.
    interface swap
-      module procedure swap_real, swap_vector, swap_matrix
+      module procedure swap_real, swap_logical, swap_vector, swap_matrix
    end interface swap
 
 contains
@@ -24,6 +24,17 @@ contains
       a = b
       b = x
    end subroutine swap_real
+
+   !> Exchange two logicals.
+   pure subroutine swap_logical(a, b)
+      !> The values exchanged.
+      logical, intent(inout) :: a, b
+      logical :: x
+
+      x = a
+      a = b
+      b = x
+   end subroutine swap_logical
 
    !> Exchange two allocatable vectors (either may be unallocated).
    pure subroutine swap_vector(a, b)

@@ -39,6 +39,10 @@ module pound_config
       !> Substeps per impact step (stepping = 'impact'); 0: chosen from the joints' contact
       !> half-periods.
       integer :: impact_substeps = 0
+      !> Steps in which no joint acts (every step of the uncoupled analysis): 'newmark' (average
+      !> acceleration, as every other step) or 'exact' (the exact step of the linear structure
+      !> under the ground acceleration linear between its samples, mode by mode).
+      character(len=8) :: free_steps = 'newmark'
       !> Histories in the HDF5 file in compressed (deflate) chunks.
       logical :: compress = .false.
       !> Every DOF's displacement history of each frame building (`u_nodes` in the HDF5 file,

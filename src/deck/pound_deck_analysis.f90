@@ -1,5 +1,5 @@
 !> Reader of `&analysis`: title, dt, t_end, output_every, history, stepping, impact_substeps,
-!> compress, node_histories, lcp_solver.
+!> compress, node_histories, lcp_solver, free_steps.
 module pound_deck_analysis
    use pound_config, only: analysis_config
    use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
@@ -30,7 +30,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=title_len) :: title
       character(len=path_len) :: history
-      character(len=word_len) :: stepping, lcp_solver
+      character(len=word_len) :: stepping, lcp_solver, free_steps
       real(dp) :: dt, t_end
       integer :: output_every, ios, impact_substeps
       logical :: compress, node_histories
@@ -38,7 +38,7 @@ contains
       character(len=512) :: msg
       type(site) :: at
       namelist /analysis/ title, dt, t_end, output_every, history, stepping, impact_substeps, compress, &
-                          node_histories, lcp_solver
+                          node_histories, lcp_solver, free_steps
 
       title = ' '
       history = ' '
@@ -50,6 +50,7 @@ contains
       compress = .false.
       node_histories = .false.
       lcp_solver = 'auto'
+      free_steps = 'newmark'
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -103,6 +104,8 @@ contains
       cfg%compress = compress
       cfg%node_histories = node_histories
       call one_of('lcp_solver', lcp_solver, 'auto', 'lemke', cfg%lcp_solver)
+      if (allocated(error)) return
+      call one_of('free_steps', free_steps, 'newmark', 'exact', cfg%free_steps)
       if (allocated(error)) return
       call parse_history(at, history, cfg%store, error)
 

@@ -62,7 +62,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(91) = [ &
+   type(var_spec), parameter :: variables(92) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -113,7 +113,7 @@ module pound_deck_variables
       var_spec('analysis', 'compress', 'l', 0), &
       var_spec('contact', 'elevations', 'r', max_pairs), &
       var_spec('analysis', 'node_histories', 'l', 0), &
-      var_spec('analysis', 'lcp_solver', 'c', 0)]
+      var_spec('analysis', 'lcp_solver', 'c', 0), var_spec('analysis', 'free_steps', 'c', 0)]
 
 contains
 

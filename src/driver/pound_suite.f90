@@ -301,7 +301,7 @@ contains
 
       allocate (batched(size(ms)), ok(size(ms)))
       ok = .false.
-      if (size(ms) < batch_min .or. .not. batch_eligible(ctx%models)) return
+      if (size(ms) < batch_min .or. .not. batch_eligible(ctx%deck%analysis, ctx%models)) return
       n_steps = nint(ctx%deck%analysis%t_end/ctx%deck%analysis%dt)
       allocate (agb(0:n_steps, size(ms)))
       do j = 1, size(ms)
@@ -841,7 +841,7 @@ contains
       integer :: ib, groups, n_out, size_of, g
 
       start = [(g, g=1, n + 1)]
-      if (n < batch_min .or. .not. batch_eligible(models)) return
+      if (n < batch_min .or. .not. batch_eligible(deck%analysis, models)) return
       n_out = nint(deck%analysis%t_end/deck%analysis%dt)/deck%analysis%output_every + 1
       bytes = real(1 + n_energy, dp)
       do ib = 1, size(models)

@@ -40,7 +40,7 @@ program pound
    use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror, &
                           posix_sleep
    use pound_strings, only: fixed_cell, str
-   use pound_analysis, only: substep_text
+   use pound_analysis, only: substep_text, exact_text
    use pound_response, only: discard_sink
    use pound_progress, only: progress_setup, progress_start, progress_finish, progress_auto, progress_on, &
                              progress_off
@@ -287,6 +287,8 @@ contains
       if (res%has_coupled .and. ios == 0) then
          if (res%cpl%substep_factor > 0) write (u, '(a)', iostat=ios) &
             '  impact stepping:       '//substep_text(res%cpl)
+         if (res%cpl%exact_steps >= 0 .and. ios == 0) write (u, '(a)', iostat=ios) &
+            '  free steps:            '//exact_text(res%cpl)
       end if
       call close_listing(u, path, err)
    end subroutine write_listing
@@ -326,6 +328,7 @@ contains
             if (cpl%substep_factor > 0) then
                text = text//'  impact stepping:       '//substep_text(cpl)//new_line('a')
             end if
+            if (cpl%exact_steps >= 0) text = text//'  free steps:            '//exact_text(cpl)//new_line('a')
          end if
          if (res%has_sweep) then
             write (line, '(a,i0,a,es10.3,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'

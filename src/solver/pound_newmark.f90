@@ -19,6 +19,13 @@
 !> energy accumulators). dt and the Newmark constants live here only (`newmark_dt`). The
 !> state is read through `newmark_u`, `newmark_v`, `newmark_a`, `newmark_du` (pointers to
 !> the state of a `target` argument, no copy), `newmark_predicted` and `newmark_energies`.
+!>
+!> **Exact free steps** (`newmark_init(..., exact=.true.)`, `&analysis free_steps = 'exact'`):
+!> the integrator also holds the modes of (K+G, M) and, per mode, the exact step for a ground
+!> acceleration linear over the step (`pound_modal_step`). `newmark_predict_exact` predicts the
+!> step exactly (du, and the v and a at its end) instead of by average acceleration; the next
+!> `newmark_commit` completes it, unless the caller drops it (`newmark_drop_exact`, a step in
+!> which a joint acts) and predicts by Newmark instead. Submodule pound_newmark_exact.
 module pound_newmark
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
@@ -37,7 +44,10 @@ module pound_newmark
    public :: newmark_path, newmark_tridiagonal_factors
    public :: kinetic_energy, strain_energy
    public :: en_input, en_kinetic, en_strain, en_damping
-   public :: newmark_add_energies
+   public :: newmark_add_energies, newmark_predict_exact, newmark_drop_exact, newmark_exact
+   !> Largest model (DOFs) that exact free steps take: they hold the n x n modes and cost
+   !> O(n^2) a step.
+   integer, parameter, public :: exact_max_dofs = 2000
 
    !> Indices of `newmark_energies`.
    integer, parameter :: en_input = 1, en_kinetic = 2, en_strain = 3, en_damping = 4
@@ -82,6 +92,22 @@ module pound_newmark
       !> `newmark_commit` for the energy audit of every step (they agree with
       !> `kinetic_energy` and `strain_energy` to round-off).
       real(dp) :: kinetic = 0.0_dp, strain = 0.0_dp
+      !> Exact free steps: whether this integrator takes them (`newmark_predict_exact`), whether
+      !> one is predicted and not yet committed, and whether q, qd are the modal coordinates
+      !> of u, v.
+      logical :: exact = .false., pending = .false., modal_valid = .false.
+      !> Exact free steps: mass-normalised modes (n, n), eigenvalues omega^2, modal damping
+      !> a0 + a1 omega^2, per mode the step's coefficients (22, n: see pound_newmark_exact) and
+      !> the terms of the step's energies in the ground acceleration alone, summed over the
+      !> modes (6) (`modal_step_coefficients`).
+      real(dp), allocatable :: phi(:, :), lam(:), cm(:), coef(:, :)
+      real(dp) :: ground_terms(6) = 0.0_dp
+      !> Exact free steps: modal coordinates and rates now and at the end of the predicted
+      !> step, the modal accelerations without the ground term at its end; v and a at its end
+      !> (n each).
+      real(dp), allocatable :: q(:), qd(:), xq(:), xqd(:), xw(:), xv(:), xa(:)
+      !> Exact free steps: input work and damping energy of the predicted step (kJ).
+      real(dp) :: x_input = 0.0_dp, x_damping = 0.0_dp
    end type newmark_state
 
    interface
@@ -112,6 +138,28 @@ module pound_newmark
          type(structure_model), intent(in) :: b
          real(dp), intent(out) :: mdu, ddamp
       end subroutine commit_general
+      !> Set up exact free steps: the modes and each mode's step (submodule
+      !> pound_newmark_exact).
+      module subroutine exact_init(st, b, error)
+         type(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine exact_init
+      !> Predict the step exactly for the ground acceleration linear from `ag_old` to `ag_new`
+      !> (du, and v, a at the end); an integrator without exact steps predicts by Newmark
+      !> (`newmark_predict`). Submodule pound_newmark_exact.
+      module subroutine newmark_predict_exact(st, b, ag_old, ag_new)
+         type(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in), value :: ag_old, ag_new
+      end subroutine newmark_predict_exact
+      !> Complete the exact step predicted by `newmark_predict_exact` (submodule
+      !> pound_newmark_exact).
+      module subroutine commit_exact(st, b, w_in, e_out)
+         type(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(inout), optional :: w_in, e_out
+      end subroutine commit_exact
    end interface
 
    interface
@@ -134,7 +182,7 @@ contains
 
    !> Factor Khat and start at rest relative to the ground, in equilibrium with the
    !> ground acceleration at t = 0: u = v = 0, M a = -M r a_g(0), so a = -r a_g(0).
-   subroutine newmark_init(st, b, dt, ag0, error, general, refresh)
+   subroutine newmark_init(st, b, dt, ag0, error, general, refresh, exact)
       !> Integrator state.
       type(newmark_state), intent(out) :: st
       !> The structural model.
@@ -150,6 +198,8 @@ contains
       !> General path: steps between exact band products for (K+G) u and (K+G) v
       !> (default `band_refresh_steps`; 1: a band product every step; >= 1).
       integer, intent(in), optional :: refresh
+      !> Prepare exact free steps (`newmark_predict_exact`; default: no).
+      logical, intent(in), optional :: exact
       real(dp) :: fk, fm
       integer :: n, info, i, stat, kd
       character(len=:), allocatable :: sources
@@ -257,6 +307,9 @@ contains
          if (present(refresh)) st%refresh = max(1, refresh)
          st%since_refresh = 0
       end if
+      if (present(exact)) then
+         if (exact) call exact_init(st, b, error)
+      end if
 
    contains
 
@@ -289,7 +342,31 @@ contains
          call swap(st%chol, other%chol)
       end if
       call swap(st%dinv, other%dinv)
+      ! Exact free steps belong to the step they were set up for: the other step takes the
+      ! other's setting (its modal data stay where they are).
+      call swap(st%exact, other%exact)
+      st%pending = .false.
+      st%modal_valid = .false.
    end subroutine newmark_swap_step
+
+   !> Drop the exact step predicted by `newmark_predict_exact` (a joint acts in the step: it is
+   !> predicted again by `newmark_predict`); the modal coordinates are taken from u, v again
+   !> at the next exact step.
+   pure subroutine newmark_drop_exact(st)
+      !> Integrator state.
+      type(newmark_state), intent(inout) :: st
+
+      st%pending = .false.
+      st%modal_valid = .false.
+   end subroutine newmark_drop_exact
+
+   !> Whether the integrator takes exact free steps.
+   pure logical function newmark_exact(st)
+      !> Integrator state.
+      type(newmark_state), intent(in) :: st
+
+      newmark_exact = st%exact
+   end function newmark_exact
 
    !> Overwrite the state (tests: initial conditions other than rest). `a` defaults to
    !> unchanged; C v is recomputed from the new v.

@@ -74,6 +74,10 @@ contains
       real(dp), intent(inout), optional :: e_out
       real(dp) :: mdu, ddamp, coef(4), sums(4)
 
+      if (st%pending) then
+         call commit_exact(st, b, w_in, e_out)
+         return
+      end if
       if (st%tridiagonal) then
          ! The scalars in and out of the kernel in two arrays (fewer arguments to pass).
          coef(1) = st%c1

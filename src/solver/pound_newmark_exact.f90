@@ -1,0 +1,234 @@
+!> Exact free steps of the Newmark integrator (`&analysis free_steps = 'exact'`): the step of
+!> the linear structure (K+G, M, Rayleigh C) under a ground acceleration linear over the step,
+!> mode by mode (`pound_modal_step`), with its input work and damping energy exact too, so the
+!> energy audit closes to round-off. The state stays u, v, a (and C v, the energies) as for a
+!> Newmark step; the modal coordinates are carried from one exact step to the next and taken
+!> from u, v again after steps that were not exact. A step costs O(n^2) (the modes' shapes),
+!> hence `exact_max_dofs`.
+!>
+!> Per mode, `coef(:, i)` holds: 1:4 and 5:8 the end q and q' against x = (q0, q0', a_g0, a_g1);
+!> 9:15 the input work and 16:22 the damping energy against the products (q0^2, q0 q0',
+!> q0'^2, q0 a_g0, q0 a_g1, q0' a_g0, q0' a_g1) (the forms' off-diagonal terms doubled); the
+!> forms' terms in a_g alone (a_g0^2, a_g0 a_g1, a_g1^2) are the same for every step and summed
+!> over the modes in `ground_terms` (1:3 input work, 4:6 damping energy).
+submodule(pound_newmark) pound_newmark_exact
+   use pound_modal_step, only: modal_step_coefficients
+   use pound_band_lapack, only: dsygv
+   implicit none
+
+contains
+
+   !> The modes of (K+G, M) (dense `dsygv`, mass-normalised) and each mode's step at dt.
+   module subroutine exact_init(st, b, error)
+      !> Integrator state (initialised by `newmark_init`).
+      type(newmark_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Error state: a DOF without mass, too many DOFs, the eigenproblem failed.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: a(:, :), m(:, :), w(:), work(:)
+      real(dp) :: gamma, wi(4, 4), wd(4, 4)
+      integer :: n, i, j, info, stat
+
+      n = st%n
+      if (n > exact_max_dofs) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact' takes at most "// &
+                          str(exact_max_dofs)//' DOFs (it holds the n x n modes and costs O(n^2) a step); '// &
+                          'the model has '//str(n)//": use free_steps = 'newmark'")
+         return
+      end if
+      do i = 1, n
+         if (.not. (b%mass(i) > 0.0_dp)) then
+            call fatal_error(error, structure_label(b)//': DOF '//str(i)//' has no mass ('//str(b%mass(i))// &
+                             " t): free_steps = 'exact' needs a mass at every DOF (a frame's rotations have "// &
+                             "none); use free_steps = 'newmark'")
+            return
+         end if
+      end do
+      allocate (a(n, n), m(n, n), w(n), work(max(1, 64*n)), st%phi(n, n), st%lam(n), st%cm(n), st%coef(22, n), &
+                st%q(n), st%qd(n), st%xq(n), st%xqd(n), st%xw(n), st%xv(n), st%xa(n), stat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': cannot allocate the modes ("// &
+                          str(n)//' x '//str(n)//')')
+         return
+      end if
+      a = 0.0_dp
+      m = 0.0_dp
+      do j = 1, n
+         do i = max(1, j - b%kd), j
+            a(i, j) = b%kt(b%kd + 1 + i - j, j)
+         end do
+         m(j, j) = b%mass(j)
+      end do
+      call dsygv(1, 'V', 'U', n, a, n, m, n, w, work, size(work), info)
+      if (info /= 0) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': the eigenproblem of (K+G, M) "// &
+                          'failed (dsygv info = '//str(info)//')')
+         return
+      end if
+      st%phi = a
+      st%lam = w
+      st%ground_terms = 0.0_dp
+      do i = 1, n
+         st%cm(i) = b%a0 + b%a1*w(i)
+         gamma = sum(st%phi(:, i)*b%mass*b%ground)
+         call modal_step_coefficients(w(i), st%cm(i), gamma, st%dt, st%coef(1:8, i), wi, wd)
+         st%coef(9:15, i) = form_terms(wi)
+         st%coef(16:22, i) = form_terms(wd)
+         st%ground_terms(1:3) = st%ground_terms(1:3) + [wi(3, 3), 2.0_dp*wi(3, 4), wi(4, 4)]
+         st%ground_terms(4:6) = st%ground_terms(4:6) + [wd(3, 3), 2.0_dp*wd(3, 4), wd(4, 4)]
+         if (.not. all(ieee_is_finite(st%coef(:, i)))) then
+            call fatal_error(error, structure_label(b)//": free_steps = 'exact': mode "//str(i)// &
+                             ' (omega^2 = '//str(w(i))//' 1/s^2) gives a step that is not finite at dt = '// &
+                             str(st%dt)//' s')
+            return
+         end if
+      end do
+      if (.not. all(ieee_is_finite(st%ground_terms))) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': the step's energy terms are "// &
+                          'not finite at dt = '//str(st%dt)//' s')
+         return
+      end if
+      st%exact = .true.
+      st%pending = .false.
+      st%modal_valid = .false.
+
+   contains
+
+      !> A form's terms in (q0^2, q0 q0', q0'^2, q0 a_g0, q0 a_g1, q0' a_g0, q0' a_g1).
+      pure function form_terms(f) result(t)
+         real(dp), intent(in) :: f(4, 4)
+         real(dp) :: t(7)
+
+         t = [f(1, 1), 2.0_dp*f(1, 2), f(2, 2), 2.0_dp*f(1, 3), 2.0_dp*f(1, 4), 2.0_dp*f(2, 3), 2.0_dp*f(2, 4)]
+      end function form_terms
+   end subroutine exact_init
+
+   !> Predict the step exactly: the modal coordinates at its end, du, v and a at its end, and
+   !> its input work and damping energy (committed by `newmark_commit`).
+   module subroutine newmark_predict_exact(st, b, ag_old, ag_new)
+      !> Integrator state; `du` is set.
+      type(newmark_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Ground acceleration at the start and the end of the step (m/s^2).
+      real(dp), intent(in), value :: ag_old, ag_new
+      integer :: n
+
+      if (.not. st%exact) then
+         call newmark_predict(st, b, ag_new - ag_old)
+         return
+      end if
+      n = st%n
+      if (.not. st%modal_valid) call modal_state(n, st%phi, b%mass, st%u, st%v, st%q, st%qd)
+      associate (g => st%ground_terms)
+         st%x_input = (g(1)*ag_old + g(2)*ag_new)*ag_old + g(3)*ag_new*ag_new
+         st%x_damping = (g(4)*ag_old + g(5)*ag_new)*ag_old + g(6)*ag_new*ag_new
+      end associate
+      call modal_kernel(n, st%coef, st%lam, st%cm, st%q, st%qd, ag_old, ag_new, st%xq, st%xqd, st%xw, &
+                        st%x_input, st%x_damping)
+      call shape_kernel(n, st%phi, st%xq, st%xqd, st%xw, st%u, b%ground, ag_new, st%du, st%xv, st%xa)
+      st%pending = .true.
+   end subroutine newmark_predict_exact
+
+   !> q = Phi^T M u, q' = Phi^T M v (mass-normalised modes).
+   pure subroutine modal_state(n, phi, mass, u, v, q, qd)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: phi(n, n), mass(n), u(n), v(n)
+      real(dp), intent(out) :: q(n), qd(n)
+      real(dp) :: mu(n), mv(n)
+      integer :: i
+
+      mu = mass*u
+      mv = mass*v
+      do i = 1, n
+         q(i) = dot_product(phi(:, i), mu)
+         qd(i) = dot_product(phi(:, i), mv)
+      end do
+   end subroutine modal_state
+
+   !> Each mode's step: q, q' and -(omega^2 q + c q') at the end, and the step's input work
+   !> and damping energy added to `din`, `ddamp`.
+   pure subroutine modal_kernel(n, coef, lam, cm, q, qd, ag0, ag1, xq, xqd, xw, din, ddamp)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: coef(22, n), lam(n), cm(n), q(n), qd(n), ag0, ag1
+      real(dp), intent(out) :: xq(n), xqd(n), xw(n)
+      real(dp), intent(inout) :: din, ddamp
+      real(dp) :: p(7), e1, e2
+      integer :: i
+
+      do i = 1, n
+         xq(i) = coef(1, i)*q(i) + coef(2, i)*qd(i) + coef(3, i)*ag0 + coef(4, i)*ag1
+         xqd(i) = coef(5, i)*q(i) + coef(6, i)*qd(i) + coef(7, i)*ag0 + coef(8, i)*ag1
+         xw(i) = -(lam(i)*xq(i) + cm(i)*xqd(i))
+         p = [q(i)*q(i), q(i)*qd(i), qd(i)*qd(i), q(i)*ag0, q(i)*ag1, qd(i)*ag0, qd(i)*ag1]
+         e1 = sum(coef(9:15, i)*p)
+         e2 = sum(coef(16:22, i)*p)
+         din = din + e1
+         ddamp = ddamp + e2
+      end do
+   end subroutine modal_kernel
+
+   !> u, v, a at the end from the modes: du = Phi q - u, v = Phi q', a = Phi w - r a_g.
+   pure subroutine shape_kernel(n, phi, xq, xqd, xw, u, ground, ag1, du, xv, xa)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: phi(n, n), xq(n), xqd(n), xw(n), u(n), ground(n), ag1
+      real(dp), intent(out) :: du(n), xv(n), xa(n)
+      integer :: i, j
+
+      do j = 1, n
+         du(j) = -u(j)
+         xv(j) = 0.0_dp
+         xa(j) = -ground(j)*ag1
+      end do
+      do i = 1, n
+         do j = 1, n
+            du(j) = du(j) + phi(j, i)*xq(i)
+            xv(j) = xv(j) + phi(j, i)*xqd(i)
+            xa(j) = xa(j) + phi(j, i)*xw(i)
+         end do
+      end do
+   end subroutine shape_kernel
+
+   !> Complete the predicted exact step: u, v, a, C v, the modal coordinates and the energies.
+   module subroutine commit_exact(st, b, w_in, e_out)
+      !> Integrator state with a pending exact step.
+      type(newmark_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Input work so far (added to; optional, with `e_out`).
+      real(dp), intent(inout), optional :: w_in
+      !> Kinetic + strain + damping energy so far (added to; optional, with `w_in`).
+      real(dp), intent(inout), optional :: e_out
+
+      st%u = st%u + st%du
+      st%v = st%xv
+      st%a = st%xa
+      st%q = st%xq
+      st%qd = st%xqd
+      st%modal_valid = .true.
+      st%pending = .false.
+      call band_symv(b%kt, st%v, st%cv)
+      if (.not. st%tridiagonal) then
+         st%ktv = st%cv
+         call band_symv(b%kt, st%u, st%ktu)
+         st%since_refresh = 0
+         st%fc = 0.0_dp
+         st%loaded = .false.
+      end if
+      st%cv = b%a0*b%mass*st%v + b%a1*st%cv
+      st%input_work = st%input_work + st%x_input
+      st%damping_energy = st%damping_energy + st%x_damping
+      st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
+      if (.not. st%tridiagonal .and. .not. allocated(b%strain_weight)) then
+         st%strain = 0.5_dp*dot_product(st%u, st%ktu)
+      else
+         st%strain = structure_strain_energy(b, st%u)
+      end if
+      if (present(w_in) .and. present(e_out)) then
+         w_in = w_in + st%input_work
+         e_out = e_out + ((st%kinetic + st%strain) + st%damping_energy)
+      end if
+   end subroutine commit_exact
+
+end submodule pound_newmark_exact
