@@ -44,7 +44,7 @@ module pound_newmark
    public :: newmark_path, newmark_tridiagonal_factors
    public :: kinetic_energy, strain_energy
    public :: en_input, en_kinetic, en_strain, en_damping
-   public :: newmark_add_energies, newmark_predict_exact, newmark_drop_exact, newmark_exact
+   public :: newmark_add_energies, newmark_predict_exact, newmark_drop_exact
    !> Largest model (DOFs) that exact free steps take: they hold the n x n modes and cost
    !> O(n^2) a step.
    integer, parameter, public :: exact_max_dofs = 2000
@@ -360,14 +360,6 @@ contains
       st%modal_valid = .false.
    end subroutine newmark_drop_exact
 
-   !> Whether the integrator takes exact free steps.
-   pure logical function newmark_exact(st)
-      !> Integrator state.
-      type(newmark_state), intent(in) :: st
-
-      newmark_exact = st%exact
-   end function newmark_exact
-
    !> Overwrite the state (tests: initial conditions other than rest). `a` defaults to
    !> unchanged; C v is recomputed from the new v.
    subroutine newmark_set_state(st, b, u, v, a)
@@ -390,6 +382,9 @@ contains
       st%cv = b%a0*b%mass*st%v + b%a1*st%cv
       st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
       st%strain = structure_strain_energy(b, st%u)
+      ! Exact free steps take the modal coordinates from the new u, v.
+      st%pending = .false.
+      st%modal_valid = .false.
    end subroutine newmark_set_state
 
    !> Overwrite x with Khat^{-1} x (one tridiagonal or banded solve).
