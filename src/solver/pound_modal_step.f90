@@ -11,7 +11,7 @@
 !>     q1 = coef(1:4) . x,   q1' = coef(5:8) . x,
 !>
 !> and the energies of the step are quadratic forms in x (Van Loan's block exponential for
-!> the integrals int_0^h y^T Q y dt): the input work -Gamma int q' a_g dt = x^T wi x and the
+!> the integrals int_0^h y^T Q y dt over a short step, doubled up to h): the input work -Gamma int q' a_g dt = x^T wi x and the
 !> damping energy c int q'^2 dt = x^T wd x. Everything is computed once per mode and step
 !> size; a step then costs a few multiply-adds per mode.
 module pound_modal_step
@@ -60,19 +60,32 @@ contains
       wd = integral_form(a, q, h, t)
    end subroutine modal_step_coefficients
 
-   !> t^T (int_0^h exp(A^T s) Q exp(A s) ds) t, by the exponential of the block matrix
-   !> [[-A^T, Q], [0, A]] h (Van Loan), symmetrised.
+   !> t^T (int_0^h exp(A^T s) Q exp(A s) ds) t, symmetrised. The integral over h/2^k, with
+   !> |A| h/2^k <= 1/2, is the exponential of the block matrix [[-A^T, Q], [0, A]] h/2^k (Van
+   !> Loan); it is then doubled k times, W(2 s) = W(s) + exp(A s)^T W(s) exp(A s), which never
+   !> forms exp(-A^T h): that factor grows as exp(c h) for a strongly damped mode and would
+   !> leave W to the cancellation of huge terms.
    pure function integral_form(a, q, h, t) result(w)
       real(dp), intent(in) :: a(4, 4), q(4, 4), h, t(4, 4)
       real(dp) :: w(4, 4)
-      real(dp) :: big(8, 8), e(8, 8)
+      real(dp) :: big(8, 8), e(8, 8), p(4, 4), h0, nrm
+      integer :: k, halvings
 
+      nrm = maxval(sum(abs(a), dim=1))*h
+      halvings = 0
+      if (nrm > 0.5_dp) halvings = ceiling(log(nrm/0.5_dp)/log(2.0_dp))
+      h0 = h/2.0_dp**halvings
       big = 0.0_dp
       big(1:4, 1:4) = -transpose(a)
       big(1:4, 5:8) = q
       big(5:8, 5:8) = a
-      e = expm(big*h)
-      w = matmul(transpose(e(5:8, 5:8)), e(1:4, 5:8))
+      e = expm(big*h0)
+      p = e(5:8, 5:8)
+      w = matmul(transpose(p), e(1:4, 5:8))
+      do k = 1, halvings
+         w = w + matmul(transpose(p), matmul(w, p))
+         p = matmul(p, p)
+      end do
       w = matmul(transpose(t), matmul(w, t))
       w = 0.5_dp*(w + transpose(w))
    end function integral_form
