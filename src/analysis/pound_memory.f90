@@ -19,7 +19,8 @@
 !>   (`model = 'frame'`) counts its DOFs, 3 per node (3 n_lines (n_storeys column_elements + 1)),
 !>   each with 8 band matrices of half-bandwidth 3 n_lines + 2 (K+G, M, C, factors, work),
 !>   and per analysis its deformed shapes (DOFs x n_storeys, at most `deformed_limit`) and
-!>   column-segment peaks.
+!>   column-segment peaks; with `free_steps = 'exact'`, 5 n^2 reals per building of n floors
+!>   (its modes in up to three integrators and the dense eigenproblem of their set-up).
 !>
 !> The memory available is the smallest of: MemAvailable of /proc/meminfo, the memory
 !> limit less the current use of the process's cgroup and of each of its ancestors
@@ -107,6 +108,14 @@ contains
                if (deck%analysis%node_histories) est%node_columns = est%node_columns + dofs
             end associate
          end do
+         ! Exact free steps: the n x n modes of each building, held by up to three integrators
+         ! at once (the uncoupled one, the coupled model's, its run's copy), and the dense
+         ! eigenproblem of their set-up.
+         if (deck%analysis%free_steps == 'exact') then
+            do ib = 1, size(deck%buildings)
+               frame_bytes = frame_bytes + 5.0_dp*8.0_dp*real(deck%buildings(ib)%n_storeys, dp)**2
+            end do
+         end if
       end if
       joints = 0.0_dp
       if (allocated(deck%contacts)) then
