@@ -28,6 +28,8 @@ set(POUND_SOURCES
   solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
   # solver: exact free steps (modes of (K+G, M), each mode's exact step)
   solver/pound_modal_step.f90 solver/pound_newmark_exact.f90
+  # solver: the exponential of a small matrix (exact steps of oscillators)
+  solver/pound_expm.f90
   # solver: several ground motions of one shear building at once (motion-fastest lanes)
   solver/pound_newmark_batch.f90
   # solver: exact step of a linear oscillator under piecewise-linear forcing

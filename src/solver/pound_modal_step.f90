@@ -16,10 +16,11 @@
 !> size; a step then costs a few multiply-adds per mode.
 module pound_modal_step
    use pound_kinds, only: dp
+   use pound_expm, only: expm
    implicit none
    private
 
-   public :: modal_step_coefficients, expm
+   public :: modal_step_coefficients
 
 contains
 
@@ -89,34 +90,5 @@ contains
       w = matmul(transpose(t), matmul(w, t))
       w = 0.5_dp*(w + transpose(w))
    end function integral_form
-
-   !> Matrix exponential of a small dense matrix: scaling and squaring with the Taylor
-   !> series of the scaled matrix (norm at most 1/2) summed until its terms no longer change
-   !> the sum.
-   pure function expm(a) result(e)
-      !> The matrix (n x n).
-      real(dp), intent(in) :: a(:, :)
-      real(dp) :: e(size(a, 1), size(a, 2))
-      real(dp) :: b(size(a, 1), size(a, 2)), term(size(a, 1), size(a, 2)), nrm
-      integer :: s, k, i
-
-      nrm = maxval(sum(abs(a), dim=1))
-      s = 0
-      if (nrm > 0.5_dp) s = ceiling(log(nrm/0.5_dp)/log(2.0_dp))
-      b = a/2.0_dp**s
-      e = 0.0_dp
-      do i = 1, size(a, 1)
-         e(i, i) = 1.0_dp
-      end do
-      term = e
-      do k = 1, 40
-         term = matmul(term, b)/real(k, dp)
-         if (all(e + term == e)) exit
-         e = e + term
-      end do
-      do k = 1, s
-         e = matmul(e, e)
-      end do
-   end function expm
 
 end module pound_modal_step

@@ -15,6 +15,7 @@
 !> for any zeta >= 0.
 module pound_sdof
    use pound_kinds, only: dp
+   use pound_expm, only: expm
    implicit none
    private
 
@@ -77,32 +78,5 @@ contains
       u = step%a(1, 1)*u0 + step%a(1, 2)*v + step%b(1, 1)*p0 + step%b(1, 2)*p1
       v = step%a(2, 1)*u0 + step%a(2, 2)*v + step%b(2, 1)*p0 + step%b(2, 2)*p1
    end subroutine sdof_advance
-
-   !> exp(x) of a 4x4 matrix: scaling so that the 1-norm is at most 1/2, Taylor series to
-   !> 18 terms (truncation below 1e-22), then squaring back.
-   pure function expm(x) result(e)
-      real(dp), intent(in) :: x(4, 4)
-      real(dp) :: e(4, 4)
-      real(dp) :: y(4, 4), term(4, 4), nrm
-      integer :: s, k, i
-
-      nrm = maxval(sum(abs(x), dim=1))
-      s = 0
-      if (nrm > 0.5_dp) s = ceiling(log(nrm/0.5_dp)/log(2.0_dp))
-      y = x/2.0_dp**s
-      e = 0.0_dp
-      term = 0.0_dp
-      do i = 1, 4
-         e(i, i) = 1.0_dp
-         term(i, i) = 1.0_dp
-      end do
-      do k = 1, 18
-         term = matmul(term, y)/real(k, dp)
-         e = e + term
-      end do
-      do k = 1, s
-         e = matmul(e, e)
-      end do
-   end function expm
 
 end module pound_sdof
