@@ -360,8 +360,9 @@ contains
       st%modal_valid = .false.
    end subroutine newmark_drop_exact
 
-   !> Overwrite the state (tests: initial conditions other than rest). `a` defaults to
-   !> unchanged; C v is recomputed from the new v.
+   !> Overwrite the state (tests: initial conditions other than rest; an exact step's end).
+   !> Each of u, v, a defaults to unchanged; C v, (K+G) u and v and the kinetic and strain
+   !> energy are recomputed from the state.
    subroutine newmark_set_state(st, b, u, v, a)
       !> Integrator state.
       type(newmark_state), intent(inout) :: st

@@ -204,27 +204,14 @@ contains
       st%u = st%u + st%du
       st%v = st%xv
       st%a = st%xa
+      ! C v, (K+G) u and v, the kinetic and strain energy of the new state, as for any state
+      ! put in (then the modal coordinates are the step's).
+      call newmark_set_state(st, b)
       st%q = st%xq
       st%qd = st%xqd
       st%modal_valid = .true.
-      st%pending = .false.
-      call band_symv(b%kt, st%v, st%cv)
-      if (.not. st%tridiagonal) then
-         st%ktv = st%cv
-         call band_symv(b%kt, st%u, st%ktu)
-         st%since_refresh = 0
-         st%fc = 0.0_dp
-         st%loaded = .false.
-      end if
-      st%cv = b%a0*b%mass*st%v + b%a1*st%cv
       st%input_work = st%input_work + st%x_input
       st%damping_energy = st%damping_energy + st%x_damping
-      st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
-      if (.not. st%tridiagonal .and. .not. allocated(b%strain_weight)) then
-         st%strain = 0.5_dp*dot_product(st%u, st%ktu)
-      else
-         st%strain = structure_strain_energy(b, st%u)
-      end if
       if (present(w_in) .and. present(e_out)) then
          w_in = w_in + st%input_work
          e_out = e_out + ((st%kinetic + st%strain) + st%damping_energy)
