@@ -484,21 +484,20 @@ contains
          if (out) until_out = every
          ! A step is one pass of the body below, or, with impact stepping when a joint can act,
          ! m passes of h = dt/m with the ground motion at the substeps' ends.
+         ! With exact free steps (uniform stepping) a step in which a joint can act is Newmark's
+         ! at dt, predicted again.
          n_sub = 1
-         if (impact) then
-            if (track) call contact_track_paths(cs, st)
-            if (contact_may_act(cs, st)) then
-               n_sub = sub%m
-               res%substepped = res%substepped + 1
-               newmark_steps = newmark_steps + 1
-               call swap_steps(st, cs, sub)
-            end if
-         else if (exact .and. coupled) then
-            ! A joint can act: the step is Newmark's, predicted again.
+         if (impact .or. (exact .and. coupled)) then
             if (track) call contact_track_paths(cs, st)
             if (contact_may_act(cs, st)) then
                newmark_steps = newmark_steps + 1
-               call predict_newmark(st, models, ag_new - ag_old)
+               if (impact) then
+                  n_sub = sub%m
+                  res%substepped = res%substepped + 1
+                  call swap_steps(st, cs, sub)
+               else
+                  call predict_newmark(st, models, ag_new - ag_old)
+               end if
             end if
          end if
          t_sub = t
