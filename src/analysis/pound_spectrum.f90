@@ -32,6 +32,8 @@ module pound_spectrum
    !> Periods closer than this relative distance count as the same period in `period_grid`.
    real(dp), parameter :: same_period = 1.0e-9_dp
    real(dp), parameter :: two_pi = 2.0_dp*acos(-1.0_dp)
+   !> Oscillators advanced together by `peak_displacements` (two AVX2 vectors of doubles).
+   integer, parameter :: lanes = 8
 
 contains
 
@@ -61,8 +63,9 @@ contains
          if (allocated(error)) return
       end do
       allocate (sa(size(periods)))
+      call peak_displacements(accel, dt, periods, zeta, sa)
       do k = 1, size(periods)
-         sa(k) = (two_pi/periods(k))**2*peak_displacement(accel, dt, periods(k), zeta)
+         sa(k) = (two_pi/periods(k))**2*sa(k)
       end do
    end subroutine response_spectrum
 
@@ -209,20 +212,68 @@ contains
       periods = all(1:m)
    end subroutine period_grid
 
-   !> max_t |u(t)| (m) of the oscillator (T, zeta) under -accel, from rest.
-   pure function peak_displacement(accel, dt, period, zeta) result(umax)
-      real(dp), intent(in) :: accel(:), dt, period, zeta
-      real(dp) :: umax
-      type(sdof_step_t) :: step
-      real(dp) :: h, u, v, u0, v0, p0, p1, pa, pb
-      integer :: m, i, j, n_tail
+   !> max_t |u(t)| (m) of the oscillators (T_k, zeta) under -accel, from rest, for every
+   !> period T_k of `periods`.
+   !>
+   !> Consecutive periods with the same number of substeps per sample advance together, up to
+   !> `lanes` at a time: the oscillators are independent, so the lanes' recurrences overlap and
+   !> vectorise. Each lane performs the operations of one oscillator alone (`sdof_advance`,
+   !> then `step_peak` on the steps where its velocity changes sign), so the peaks do not depend
+   !> on the grouping.
+   pure subroutine peak_displacements(accel, dt, periods, zeta, umax)
+      real(dp), intent(in) :: accel(:), dt, periods(:), zeta
+      real(dp), intent(out) :: umax(:)
+      integer :: k0, k1, m
 
-      m = max(1, ceiling(points_per_period*dt/period))
+      k0 = 1
+      do while (k0 <= size(periods))
+         m = substeps(periods(k0))
+         k1 = k0
+         do while (k1 < size(periods) .and. k1 - k0 + 1 < lanes)
+            if (substeps(periods(k1 + 1)) /= m) exit
+            k1 = k1 + 1
+         end do
+         call peak_group(accel, dt, m, periods(k0:k1), zeta, umax(k0:k1))
+         k0 = k1 + 1
+      end do
+
+   contains
+
+      pure integer function substeps(period)
+         real(dp), intent(in) :: period
+
+         substeps = max(1, ceiling(points_per_period*dt/period))
+      end function substeps
+
+   end subroutine peak_displacements
+
+   !> The peaks of up to `lanes` oscillators with the same substep count m (h = dt/m); lanes
+   !> beyond size(periods) repeat the first period and are dropped.
+   pure subroutine peak_group(accel, dt, m, periods, zeta, umax)
+      real(dp), intent(in) :: accel(:), dt
+      integer, intent(in) :: m
+      real(dp), intent(in) :: periods(:), zeta
+      real(dp), intent(out) :: umax(:)
+      type(sdof_step_t) :: step(lanes)
+      real(dp), dimension(lanes) :: a11, a12, a21, a22, b11, b12, b21, b22, u, v, u0, v0, pk, cross
+      real(dp) :: h, p0, p1, pa, pb
+      integer :: i, j, l, n_tail
+
       h = dt/m
-      step = sdof_step(two_pi/period, zeta, h)
+      do l = 1, lanes
+         step(l) = sdof_step(two_pi/periods(min(l, size(periods))), zeta, h)
+      end do
+      a11 = step%a(1, 1)
+      a12 = step%a(1, 2)
+      a21 = step%a(2, 1)
+      a22 = step%a(2, 2)
+      b11 = step%b(1, 1)
+      b12 = step%b(1, 2)
+      b21 = step%b(2, 1)
+      b22 = step%b(2, 2)
       u = 0.0_dp
       v = 0.0_dp
-      umax = 0.0_dp
+      pk = 0.0_dp
       do i = 1, size(accel) - 1
          p0 = -accel(i)
          p1 = -accel(i + 1)
@@ -230,21 +281,35 @@ contains
          do j = 1, m
             pa = pb
             pb = p0 + (p1 - p0)*(real(j, dp)/m)
-            u0 = u
-            v0 = v
-            call sdof_advance(step, pa, pb, u, v)
-            umax = max(umax, step_peak(u0, v0, u, v, h))
+            ! `sdof_advance` of every lane; |u| at the step's end, and whether v changed sign.
+            do l = 1, lanes
+               u0(l) = u(l)
+               v0(l) = v(l)
+               u(l) = a11(l)*u0(l) + a12(l)*v0(l) + b11(l)*pa + b12(l)*pb
+               v(l) = a21(l)*u0(l) + a22(l)*v0(l) + b21(l)*pa + b22(l)*pb
+               pk(l) = max(pk(l), abs(u(l)))
+               cross(l) = v0(l)*v(l)
+            end do
+            ! The interpolated extremum within the step, where v changed sign (`step_peak`).
+            if (any(cross < 0.0_dp)) then
+               do l = 1, lanes
+                  if (cross(l) < 0.0_dp) pk(l) = max(pk(l), step_peak(u0(l), v0(l), u(l), v(l), h))
+               end do
+            end if
          end do
       end do
       ! Free vibration after the last sample, up to its first extremum.
-      n_tail = ceiling(0.5_dp*period/sqrt(1.0_dp - zeta**2)/h) + 1
-      do j = 1, n_tail
-         u0 = u
-         v0 = v
-         call sdof_advance(step, 0.0_dp, 0.0_dp, u, v)
-         umax = max(umax, step_peak(u0, v0, u, v, h))
+      do l = 1, size(periods)
+         n_tail = ceiling(0.5_dp*periods(l)/sqrt(1.0_dp - zeta**2)/h) + 1
+         do j = 1, n_tail
+            u0(l) = u(l)
+            v0(l) = v(l)
+            call sdof_advance(step(l), 0.0_dp, 0.0_dp, u(l), v(l))
+            pk(l) = max(pk(l), step_peak(u0(l), v0(l), u(l), v(l), h))
+         end do
+         umax(l) = pk(l)
       end do
-   end function peak_displacement
+   end subroutine peak_group
 
    !> Largest |u| over a step from (u0, v0) to (u1, v1) of length h: |u1|, or, when the
    !> velocity changes sign, the extremum of the cubic Hermite interpolant of (u, u').
