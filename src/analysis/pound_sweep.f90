@@ -37,6 +37,7 @@ module pound_sweep
    private
 
    public :: sweep_result, run_sweep, sweep_gaps, sweep_from_table
+   public :: gap_cases, gap_cases_init, gap_cases_probe, gap_cases_set_probe, sweep_column_width
 
    !> Characters kept of a gap's first warning.
    integer, parameter :: warning_len = 512
@@ -73,20 +74,21 @@ module pound_sweep
       character(len=:), allocatable :: warnings(:)
    end type sweep_result
 
-   !> The gaps of a sweep as cases: gap i's coupled run, against the uncoupled result.
-   !> Column: max |lambda| (n_history_quantities x n_buildings), impacts, energy residual,
-   !> number of warnings, 1 when the gap is beyond the joints' closing (the probe's column),
-   !> the first warning (`text_to_column`).
+   !> The gaps of a sweep as cases: gap i's coupled run, against the uncoupled result
+   !> (`gap_cases_init`, then `gap_cases_probe` or `gap_cases_set_probe`).
+   !> Column (`sweep_column_width` reals): max |lambda| (n_history_quantities x n_buildings),
+   !> impacts, energy residual, number of warnings, 1 when the gap is beyond the joints'
+   !> closing (the probe's column), the first warning (`text_to_column`).
    type, extends(case_work) :: gap_cases
       !> Settings of the sweep's runs (no histories).
       type(analysis_config) :: cfg
       !> The buildings, the ground samples, the prepared coupled model, the uncoupled result,
-      !> the ground motion (may be unassociated).
+      !> the ground motion (not allocated: none needed).
       type(structure_model), pointer :: models(:) => null()
-      real(dp), pointer :: ag(:) => null()
-      type(coupled_model), pointer :: prep => null()
+      real(dp), allocatable :: ag(:)
+      type(coupled_model) :: prep
       type(analysis_result), pointer :: unc => null()
-      type(ground_motion_t), pointer :: ground => null()
+      type(ground_motion_t), allocatable :: ground
       !> The gaps (m) and the number of constraints.
       real(dp), allocatable :: gap(:)
       integer :: n_pairs = 0
@@ -122,7 +124,11 @@ contains
             return
          end if
       end if
-      call coupled_integrate(work%cfg, work%models, work%ag, work%prep, cpl, cs, error, gaps, work%ground)
+      if (allocated(work%ground)) then
+         call coupled_integrate(work%cfg, work%models, work%ag, work%prep, cpl, cs, error, gaps, work%ground)
+      else
+         call coupled_integrate(work%cfg, work%models, work%ag, work%prep, cpl, cs, error, gaps)
+      end if
       if (allocated(error)) return
       call result_column(work, cpl, sum(cs%joint(:)%impacts), values)
    end subroutine gap_case
@@ -173,7 +179,7 @@ contains
       !> The buildings.
       type(structure_model), intent(in), target :: models(:)
       !> Ground acceleration at t_n = n dt (m/s^2).
-      real(dp), intent(in), target :: ag(0:)
+      real(dp), intent(in) :: ag(0:)
       !> The constraints of the deck.
       type(contact_pair), intent(in) :: pairs(:)
       !> Uncoupled result.
@@ -183,49 +189,105 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
-      type(ground_motion_t), intent(in), optional, target :: ground
-      type(analysis_config) :: quiet
-      type(coupled_model), target :: prep
+      type(ground_motion_t), intent(in), optional :: ground
       type(gap_cases) :: cases
       type(case_table) :: table
-      type(analysis_result) :: probe
-      type(contact_system) :: probe_cs
-      type(error_type), allocatable :: probe_error
-      integer :: nl
       integer(int64) :: c0, c1, rate
 
       call system_clock(c0, rate)
-      quiet = cfg
-      quiet%store = .false.
-      quiet%output_every = max(1, nint(cfg%t_end/cfg%dt))
-      call coupled_prepare(quiet, models, ag(0), pairs, prep, error)
+      call gap_cases_init(cases, cfg, sweep, models, ag, pairs, unc, error, ground)
       if (allocated(error)) return
-      nl = n_history_quantities*size(models)
-      cases%cfg = quiet
-      cases%models => models
-      cases%ag => ag
-      cases%prep => prep
-      cases%unc => unc
-      if (present(ground)) cases%ground => ground
-      cases%gap = sweep_gaps(sweep)
-      cases%n_pairs = size(pairs)
-      ! The probe: the joints' largest closing displacements without contact, and the column
-      ! of every gap beyond them. A probe that fails decides nothing: every gap runs.
-      call coupled_integrate(quiet, models, ag, prep, probe, probe_cs, probe_error, spread(probe_gap, 1, size(pairs)), &
-                             ground, track=.true.)
-      if (.not. allocated(probe_error)) then
-         cases%closing_max = probe_cs%closing_max
-         allocate (cases%probe(nl + 5 + warning_len))
-         call result_column(cases, probe, 0, cases%probe)
-         cases%probe(nl + 4) = 1.0_dp
-      end if
-      call run_cases(cases, sweep%n_gaps, nl + 5 + warning_len, table)
+      call gap_cases_probe(cases)
+      call run_cases(cases, sweep%n_gaps, sweep_column_width(size(models)), table)
       call sweep_from_table(sweep, size(models), table, res, error)
       if (allocated(error)) return
       if (allocated(cases%probe)) res%closing_max = cases%closing_max
       call system_clock(c1)
       res%seconds = real(c1 - c0, dp)/real(rate, dp)
    end subroutine run_sweep
+
+   !> Reals in a gap's column (`gap_cases`) for nb buildings.
+   pure integer function sweep_column_width(nb) result(width)
+      !> Number of buildings.
+      integer, intent(in) :: nb
+
+      width = n_history_quantities*nb + 5 + warning_len
+   end function sweep_column_width
+
+   !> The gaps of `sweep` as cases against the uncoupled result `unc`: what the coupled runs
+   !> share and what does not depend on the gap (the factored Khat of every building, the
+   !> condensed constraints) prepared once; the runs store no histories. No probe yet: every
+   !> gap runs until `gap_cases_probe` or `gap_cases_set_probe`.
+   subroutine gap_cases_init(cases, cfg, sweep, models, ag, pairs, unc, error, ground)
+      !> The cases.
+      type(gap_cases), intent(out) :: cases
+      !> `&analysis` settings.
+      type(analysis_config), intent(in) :: cfg
+      !> `&sweep`.
+      type(sweep_config), intent(in) :: sweep
+      !> The buildings (kept by reference).
+      type(structure_model), intent(in), target :: models(:)
+      !> Ground acceleration at t_n = n dt (m/s^2).
+      real(dp), intent(in) :: ag(0:)
+      !> The constraints of the deck.
+      type(contact_pair), intent(in) :: pairs(:)
+      !> Uncoupled result (kept by reference; its peaks are used).
+      type(analysis_result), intent(in), target :: unc
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
+      type(ground_motion_t), intent(in), optional :: ground
+
+      cases%cfg = cfg
+      cases%cfg%store = .false.
+      cases%cfg%output_every = max(1, nint(cfg%t_end/cfg%dt))
+      call coupled_prepare(cases%cfg, models, ag(0), pairs, cases%prep, error)
+      if (allocated(error)) return
+      cases%models => models
+      cases%ag = ag
+      cases%unc => unc
+      if (present(ground)) cases%ground = ground
+      cases%gap = sweep_gaps(sweep)
+      cases%n_pairs = size(pairs)
+   end subroutine gap_cases_init
+
+   !> The probe: one coupled run in which no joint can close (`probe_gap`) records each joint's
+   !> largest closing displacement; every gap beyond them all then takes the probe's column
+   !> (no run). A probe that fails decides nothing: every gap runs.
+   subroutine gap_cases_probe(cases)
+      !> The cases (`gap_cases_init`).
+      type(gap_cases), intent(inout) :: cases
+      type(analysis_result) :: probe
+      type(contact_system) :: probe_cs
+      type(error_type), allocatable :: probe_error
+
+      if (allocated(cases%ground)) then
+         call coupled_integrate(cases%cfg, cases%models, cases%ag, cases%prep, probe, probe_cs, probe_error, &
+                                spread(probe_gap, 1, cases%n_pairs), cases%ground, track=.true.)
+      else
+         call coupled_integrate(cases%cfg, cases%models, cases%ag, cases%prep, probe, probe_cs, probe_error, &
+                                spread(probe_gap, 1, cases%n_pairs), track=.true.)
+      end if
+      if (allocated(probe_error)) return
+      cases%closing_max = probe_cs%closing_max
+      allocate (cases%probe(sweep_column_width(size(cases%models))))
+      call result_column(cases, probe, 0, cases%probe)
+      cases%probe(n_history_quantities*size(cases%models) + 4) = 1.0_dp
+   end subroutine gap_cases_probe
+
+   !> Take a probe made elsewhere (`gap_cases_probe` of the same motion and models: its
+   !> `closing_max` and `probe`).
+   pure subroutine gap_cases_set_probe(cases, closing_max, column)
+      !> The cases (`gap_cases_init`).
+      type(gap_cases), intent(inout) :: cases
+      !> Each joint's largest closing displacement (m).
+      real(dp), intent(in) :: closing_max(:)
+      !> The probe's column.
+      real(dp), intent(in) :: column(:)
+
+      cases%closing_max = closing_max
+      cases%probe = column
+   end subroutine gap_cases_set_probe
 
    !> The sweep result from its cases' table (column i: gap i, see `gap_cases`). A failed gap
    !> is marked, its results zeros, counted as not meeting the target (so that the smallest

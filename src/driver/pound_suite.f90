@@ -48,7 +48,11 @@ module pound_suite
    use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
                                separation_ddc, cqc_correlation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion
-   use pound_analysis, only: analysis_result, n_energy, analysis_copy
+   use pound_analysis, only: analysis_result, n_energy, analysis_copy, add_warning
+   use pound_contact, only: contact_pair, pairs_from_config
+   use pound_sweep, only: sweep_result, gap_cases, gap_cases_init, gap_cases_probe, gap_cases_set_probe, &
+                          sweep_column_width, sweep_from_table
+   use iso_fortran_env, only: int64
    use pound_analysis_batch, only: batch_eligible, run_uncoupled_batch, batch_lanes
    use pound_cases, only: case_work, case_table, run_cases, first_failure, cases_ranks, case_message_len, &
                           text_to_column, column_to_text
@@ -198,11 +202,16 @@ module pound_suite
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
       !> The motions the statistics are over (those whose run did not fail), in order.
       integer, allocatable :: used(:)
-      !> With `&sweep`: each motion's uncoupled result without its histories, and whether it
-      !> is there (its run did not fail); the runs at a refinement's trial gaps take it instead
-      !> of running it again (it does not depend on the gap).
+      !> With `&sweep`: each motion's uncoupled peaks (from its column), and whether they are
+      !> there (its run did not fail); the runs at the sweep's gaps and at a refinement's trial
+      !> gaps compare with them instead of running the uncoupled analysis again (it does not
+      !> depend on the gap).
       type(analysis_result), allocatable :: unc(:)
       logical, allocatable :: has_unc(:)
+      !> Whether the motions' sweeps run (`&sweep` and contact): each motion's case then makes
+      !> its sweep's probe, and the gaps of every motion are the cases of one loop
+      !> (`suite_gap_cases`).
+      logical :: sweep = .false.
    end type suite_context
 
    !> The motions of a suite without `&sweep` as cases: case i is the group of motions
@@ -233,6 +242,26 @@ module pound_suite
    contains
       procedure :: compute => motion_case
    end type motion_cases
+
+   !> The sweeps of the motions as the cases of one loop: case (j - 1) n_gaps + g is gap g of
+   !> motion `motions(j)`, its coupled run against the motion's uncoupled peaks
+   !> (`ctx%unc`), or the probe's column when the gap is beyond the joints' closing. A rank
+   !> sets up the motion of a case (its ground motion, the gap-independent part of the coupled
+   !> analysis) when its previous case was another motion's.
+   type, extends(case_work) :: suite_gap_cases
+      !> The suite's data.
+      type(suite_context), pointer :: ctx => null()
+      !> Motion index of each block of n_gaps cases.
+      integer, allocatable :: motions(:)
+      !> Each motion's probe block of its column (`probe_slot`), by entry of `motions`.
+      real(dp), allocatable :: probes(:, :)
+      !> Entry of `motions` that `gaps` is set up for (0: none).
+      integer :: current = 0
+      !> That motion's gaps.
+      type(gap_cases) :: gaps
+   contains
+      procedure :: compute => suite_gap_case
+   end type suite_gap_cases
 
    !> The motions' own threshold refinements as cases: column = motion k's refined gap, the
    !> number of its failed trial gaps and the first `refine_failures_kept` of them
@@ -321,7 +350,25 @@ contains
       type(suite_context), intent(in) :: ctx
 
       width = failure_slot(ctx) + 1 + failure_width
+      if (ctx%sweep) width = probe_slot(ctx) + probe_width(ctx)
    end function motion_width
+
+   !> Offset in a motion's column of its sweep's probe (with `ctx%sweep`): 1 when the probe
+   !> ran, each joint's largest closing displacement, the probe's column (`gap_cases_probe`).
+   pure integer function probe_slot(ctx) result(offset)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+
+      offset = failure_slot(ctx) + 1 + failure_width
+   end function probe_slot
+
+   !> Reals of the probe block (`probe_slot`).
+   pure integer function probe_width(ctx) result(width)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+
+      width = 1 + size(ctx%left) + sweep_column_width(size(ctx%models))
+   end function probe_width
 
    !> Offset in a motion's column of its failure: 1 when its run failed, then the failure
    !> (`failure_to_column`, gap -1).
@@ -392,16 +439,18 @@ contains
    !> Motion k of the suite: scaled, its spectra, run (`run_case`) into `res`, and what the
    !> suite's statistics need of it in `col`: scale factor, PGA, whether the influence exists,
    !> Sa at the spectra's periods and at the buildings' periods, per building lambda, the
-   !> uncoupled and the coupled peaks, and per pair the no-contact gap (-1 without 'u'). A run
-   !> that fails is no error: its failure is put in the column (`failure_slot`), the spectra
-   !> kept. With `unc`, the motion's uncoupled result is taken from there (a batch ran it).
+   !> uncoupled and the coupled peaks, and per pair the no-contact gap (-1 without 'u'); with
+   !> the motions' sweeps (`ctx%sweep`), not the sweep's gaps (`suite_gap_cases`) but its
+   !> probe (`probe_slot`). A run that fails is no error: its failure is put in the column
+   !> (`failure_slot`), the spectra kept. With `unc`, the motion's uncoupled result is taken
+   !> from there (a batch ran it).
    subroutine motion_run(ctx, k, res, col, error, unc)
       !> The suite's data.
       type(suite_context), intent(in) :: ctx
       !> Motion index.
       integer, intent(in) :: k
       !> The motion's case.
-      type(case_result), intent(out) :: res
+      type(case_result), intent(out), target :: res
       !> Its column (`motion_width` reals).
       real(dp), intent(out) :: col(:)
       !> Error state.
@@ -431,7 +480,11 @@ contains
       if (allocated(error)) return
       col(o + 1:o + size(sa)) = sa
       if (present(unc)) options%unc => unc
-      call run_case(ctx%deck, res, error, options)
+      if (ctx%sweep) then
+         call run_case(ctx%plain, res, error, options)
+      else
+         call run_case(ctx%deck, res, error, options)
+      end if
       if (allocated(error)) then
          ! A failed run is the motion's failure, carried in its column: the others go on.
          o = failure_slot(ctx)
@@ -463,7 +516,112 @@ contains
             end associate
          end if
       end do
+      if (ctx%sweep) call motion_probe(ctx, res, ag, options%ground, col(probe_slot(ctx) + 1:))
    end subroutine motion_run
+
+   !> The probe of motion k's sweep (`gap_cases_probe`) into its block of the column
+   !> (`probe_slot`): 1 and the joints' largest closing displacements and the probe's column,
+   !> or 0 when the probe could not be made (every gap then runs).
+   subroutine motion_probe(ctx, res, ag, ground, block)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+      !> The motion's case (models, uncoupled result).
+      type(case_result), intent(in), target :: res
+      !> The motion's ground acceleration at every step (m/s^2).
+      real(dp), intent(in) :: ag(0:)
+      !> The motion.
+      type(ground_motion_t), intent(in) :: ground
+      !> The probe block (`probe_width` reals).
+      real(dp), intent(out) :: block(:)
+      type(gap_cases) :: cases
+      type(contact_pair), allocatable :: pairs(:)
+      type(error_type), allocatable :: error
+      integer :: nj
+
+      block = 0.0_dp
+      nj = size(ctx%left)
+      pairs = pairs_from_config(ctx%deck%contacts, building_names(res%models), error)
+      if (allocated(error)) return
+      call gap_cases_init(cases, ctx%deck%analysis, ctx%deck%sweep, res%models, ag, pairs, res%unc, error, ground)
+      if (allocated(error)) return
+      call gap_cases_probe(cases)
+      if (.not. allocated(cases%probe)) return
+      block(1) = 1.0_dp
+      block(2:1 + nj) = cases%closing_max
+      block(2 + nj:) = cases%probe
+   end subroutine motion_probe
+
+   !> The buildings' names (as `run_case` gives them to the joints).
+   pure function building_names(models) result(names)
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      character(len=64) :: names(size(models))
+      integer :: ib
+
+      do ib = 1, size(models)
+         names(ib) = models(ib)%name
+      end do
+   end function building_names
+
+   !> A motion's uncoupled peaks from its column (`motion_run`), as the uncoupled result that
+   !> the coupled runs at other gaps compare with (`influence_of` takes the peaks).
+   pure subroutine peaks_from_column(ctx, col, unc)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+      !> The motion's column.
+      real(dp), intent(in) :: col(:)
+      !> Its uncoupled peaks (no output times, no histories).
+      type(analysis_result), intent(out) :: unc
+      integer :: ib, n, o
+
+      allocate (unc%time(0), unc%energy(n_energy, 0), unc%building(size(ctx%models)))
+      do ib = 1, size(ctx%models)
+         n = ctx%deck%buildings(ib)%n_storeys
+         o = motion_offset(ctx, 2, ib)
+         unc%building(ib)%peak = reshape(col(o + 1:o + n*n_history_quantities), [n, n_history_quantities])
+      end do
+   end subroutine peaks_from_column
+
+   !> Gap case i of the motions' sweeps (a case of `suite_gap_cases`).
+   recursive subroutine suite_gap_case(work, i, values, error)
+      !> The cases.
+      class(suite_gap_cases), intent(inout) :: work
+      !> Case index.
+      integer, intent(in) :: i
+      !> The gap's column (`gap_cases`).
+      real(dp), intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(ground_motion_t) :: gm
+      type(contact_pair), allocatable :: pairs(:)
+      real(dp), allocatable :: ag(:)
+      real(dp) :: factor
+      integer :: j, k, ng, nj, n_steps
+
+      ng = work%ctx%deck%sweep%n_gaps
+      j = (i - 1)/ng + 1
+      if (work%current /= j) then
+         work%current = 0
+         k = work%motions(j)
+         associate (deck => work%ctx%deck)
+            n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
+            call suite_motion(deck, k, work%ctx%models, gm, factor, error)
+            if (allocated(error)) return
+            allocate (ag(0:n_steps))
+            call sample_ground(gm, deck%analysis%dt, n_steps, ag)
+            pairs = pairs_from_config(deck%contacts, building_names(work%ctx%models), error)
+            if (allocated(error)) return
+            call gap_cases_init(work%gaps, deck%analysis, deck%sweep, work%ctx%models, ag, pairs, &
+                                work%ctx%unc(k), error, gm)
+            if (allocated(error)) return
+         end associate
+         nj = size(work%ctx%left)
+         if (work%probes(1, j) > 0.0_dp) call gap_cases_set_probe(work%gaps, work%probes(2:1 + nj, j), &
+                                                                  work%probes(2 + nj:, j))
+         work%current = j
+      end if
+      call work%gaps%compute(i - (j - 1)*ng, values, error)
+   end subroutine suite_gap_case
 
    !> Motion m at the trial gap (a case of `motion_cases`).
    recursive subroutine motion_case(work, i, values, error)
@@ -1067,14 +1225,14 @@ contains
          end select
       end do
 
-      ! The motions: with `&sweep` each runs on every rank in turn (its sweep's gaps are the
-      ! cases); without, they are the cases, and those the writers need whole (the first, and
-      ! those whose histories are kept) run on every rank beside them. Either way the
-      ! statistics take the motions' columns in motion order. The uncoupled runs are batched
-      ! in groups of consecutive motions (`batch_groups`): the whole motions' groups on every
-      ! rank, the other motions' groups as the cases (at most as many motions a group as give
-      ! every rank a case); a batched run is bit for bit its run alone, so the grouping and the
-      ! ranks do not change the numbers.
+      ! The motions are the cases, and those the writers need whole (the first, and those
+      ! whose histories are kept) run on every rank beside them; the statistics take the
+      ! motions' columns in motion order. The uncoupled runs are batched in groups of
+      ! consecutive motions (`batch_groups`): the whole motions' groups on every rank, the
+      ! other motions' groups as the cases (at most as many motions a group as give every rank
+      ! a case); a batched run is bit for bit its run alone, so the grouping and the ranks do
+      ! not change the numbers. With `&sweep` a motion's case makes its sweep's probe, and the
+      ! gaps of all the motions' sweeps are then the cases of one loop (`motion_sweeps`).
       ctx%deck => deck
       ctx%plain = deck
       ctx%plain%sweep%active = .false.
@@ -1087,6 +1245,7 @@ contains
       ctx%right = right
       ctx%fl = fl
       ctx%fr = fr
+      ctx%sweep = deck%sweep%active .and. np > 0
       allocate (columns(motion_width(ctx), nm), whole(nm), suite%motion_failed(nm))
       if (deck%sweep%active) then
          allocate (ctx%unc(nm), ctx%has_unc(nm))
@@ -1094,7 +1253,7 @@ contains
       end if
       suite%motion_failed = .false.
       allocate (suite%failures(0))
-      whole = [(deck%sweep%active .or. k == 1 .or. deck%motions(k)%histories, k=1, nm)]
+      whole = [(k == 1 .or. deck%motions(k)%histories, k=1, nm)]
       ms = pack([(k, k=1, nm)], whole)
       do
          start = batch_groups(deck, models, size(ms), nm)
@@ -1132,6 +1291,10 @@ contains
             columns(:, m) = reshape(table%values(1:size(columns, 1)*size(m), ig), [size(columns, 1), size(m)])
          end associate
       end do
+      if (ctx%sweep) then
+         call motion_sweeps()
+         if (allocated(error)) return
+      end if
 
       ! The motions whose run failed are left out of every statistic over the motions; their
       ! rows of the sweep are FAILED at every gap (their other per-motion rows stay 0).
@@ -1225,30 +1388,85 @@ contains
          if (allocated(error)) return
          if (columns(failure_slot(ctx) + 1, k) > 0.0_dp) return
          if (suite%first == 0) suite%first = k
-         call gather_sweep(r)
          call keep(r)
-         if (allocated(ctx%has_unc) .and. r%has_uncoupled) call keep_uncoupled(r%unc)
       end subroutine whole_run
 
-      !> Motion k's uncoupled result for the runs at trial gaps, without its histories (what
-      !> the influence coefficients need: the peaks).
-      subroutine keep_uncoupled(unc)
-         type(analysis_result), intent(in) :: unc
-         integer :: ib
+      !> The sweeps of the motions whose run did not fail, as one loop of cases
+      !> (`suite_gap_cases`), against their uncoupled peaks (kept in `ctx%unc` for the
+      !> refinements too); each motion's sweep result from its gaps (`sweep_from_table`). A
+      !> motion whose every gap fails fails as its run would (its column marked, its histories
+      !> dropped). The first motion that does not fail is the run's single-motion case: run
+      !> whole again if the one run whole failed here; it takes its sweep (result, warnings).
+      subroutine motion_sweeps()
+         type(suite_gap_cases) :: gaps
+         type(case_table) :: all, one
+         type(sweep_result), allocatable :: sweeps(:)
+         type(error_type), allocatable :: failed
+         character(len=:), allocatable :: text
+         real(dp), allocatable :: col(:)
+         integer, allocatable :: ks(:)
+         integer :: j, ng, fs, ps, nj, k1, iw
+         integer(int64) :: c0, c1, rate
 
-         call analysis_copy(unc, ctx%unc(k))
-         do ib = 1, size(ctx%unc(k)%building)
-            associate (b => ctx%unc(k)%building(ib))
-               if (allocated(b%u)) deallocate (b%u)
-               if (allocated(b%v)) deallocate (b%v)
-               if (allocated(b%a_abs)) deallocate (b%a_abs)
-               if (allocated(b%drift)) deallocate (b%drift)
-               if (allocated(b%shear)) deallocate (b%shear)
-               if (allocated(b%u_nodes)) deallocate (b%u_nodes)
-            end associate
+         call system_clock(c0, rate)
+         fs = failure_slot(ctx)
+         ps = probe_slot(ctx)
+         nj = size(ctx%left)
+         ng = deck%sweep%n_gaps
+         ks = pack([(k, k=1, nm)], columns(fs + 1, :) == 0.0_dp .and. columns(3, :) > 0.0_dp)
+         do j = 1, size(ks)
+            call peaks_from_column(ctx, columns(:, ks(j)), ctx%unc(ks(j)))
+            ctx%has_unc(ks(j)) = .true.
          end do
-         ctx%has_unc(k) = .true.
-      end subroutine keep_uncoupled
+         gaps%ctx => ctx
+         gaps%motions = ks
+         gaps%probes = columns(ps + 1:ps + probe_width(ctx), ks)
+         call run_cases(gaps, size(ks)*ng, sweep_column_width(nb), all)
+         call system_clock(c1)
+         allocate (sweeps(nm))
+         do j = 1, size(ks)
+            k = ks(j)
+            one%values = all%values(:, (j - 1)*ng + 1:j*ng)
+            one%failed = all%failed((j - 1)*ng + 1:j*ng)
+            one%message = all%message((j - 1)*ng + 1:j*ng)
+            call sweep_from_table(deck%sweep, nb, one, sweeps(k), failed)
+            if (allocated(failed)) then
+               ! As `motion_run` marks a failed run (its message as `run_case` gives it).
+               text = failed%message
+               if (allocated(ctx%label)) then
+                  if (len(ctx%label) > 0) text = ctx%label//': '//text
+               end if
+               columns(3, k) = 0.0_dp
+               columns(motion_offset(ctx, 1, 1) + 1:fs, k) = 0.0_dp
+               columns(fs + 1, k) = 1.0_dp
+               call failure_to_column(-1.0_dp, text, columns(fs + 2:fs + 1 + failure_width, k))
+               ctx%has_unc(k) = .false.
+               suite%histories(k) = motion_histories()
+               deallocate (failed)
+               cycle
+            end if
+            if (gaps%probes(1, j) > 0.0_dp) sweeps(k)%closing_max = gaps%probes(2:1 + nj, j)
+            ! The loop's time shared evenly by the motions.
+            sweeps(k)%seconds = real(c1 - c0, dp)/real(rate, dp)/size(ks)
+            call gather_sweep(sweeps(k))
+         end do
+         k1 = findloc(columns(fs + 1, :) == 0.0_dp, .true., 1)
+         if (k1 == 0) return
+         if (k1 /= suite%first) then
+            k = k1
+            allocate (col(size(columns, 1)))
+            call motion_run(ctx, k, first, col, error)
+            if (allocated(error)) return
+            suite%first = k
+         end if
+         first%sweep = sweeps(k1)
+         first%has_sweep = .true.
+         if (allocated(sweeps(k1)%warnings)) then
+            do iw = 1, size(sweeps(k1)%warnings)
+               call add_warning(first%warnings, trim(sweeps(k1)%warnings(iw)))
+            end do
+         end if
+      end subroutine motion_sweeps
 
       !> The histories of motion k, when its `&ground` asks for them.
       subroutine keep(res)
@@ -1262,32 +1480,30 @@ contains
          if (res%has_coupled) call analysis_copy(res%cpl, suite%histories(k)%cpl)
       end subroutine keep
 
-      !> The sweep of motion k (a case run on every rank): its largest |lambda| per quantity,
-      !> building and gap (summed into the suite means at the end, over the motions of the
-      !> statistics), its failed gaps.
-      subroutine gather_sweep(res)
-         type(case_result), intent(in) :: res
+      !> The sweep of motion k: its largest |lambda| per quantity, building and gap (summed
+      !> into the suite means at the end, over the motions of the statistics), its failed gaps.
+      subroutine gather_sweep(sweep)
+         type(sweep_result), intent(in) :: sweep
          integer :: iq, ig
 
-         if (.not. (res%has_coupled .and. res%has_uncoupled .and. res%has_sweep)) return
          if (.not. suite%has_sweep) then
             suite%has_sweep = .true.
-            suite%sweep_gap = res%sweep%gap
-            allocate (suite%sweep_lambda(nm, size(res%sweep%gap)), suite%sweep_failed(nm, size(res%sweep%gap)))
-            allocate (sweep_all(n_history_quantities, nb, size(res%sweep%gap), nm))
+            suite%sweep_gap = sweep%gap
+            allocate (suite%sweep_lambda(nm, size(sweep%gap)), suite%sweep_failed(nm, size(sweep%gap)))
+            allocate (sweep_all(n_history_quantities, nb, size(sweep%gap), nm))
             suite%sweep_lambda = 0.0_dp
             suite%sweep_failed = .false.
             sweep_all = 0.0_dp
          end if
-         sweep_all(:, :, :, k) = res%sweep%max_abs_lambda
-         suite%sweep_failed(k, :) = res%sweep%failed
-         do ig = 1, size(res%sweep%gap)
-            if (res%sweep%failed(ig)) call add_failure(suite%failures, &
-                                                       suite_failure(k, res%sweep%gap(ig), res%sweep%messages(ig)))
+         sweep_all(:, :, :, k) = sweep%max_abs_lambda
+         suite%sweep_failed(k, :) = sweep%failed
+         do ig = 1, size(sweep%gap)
+            if (sweep%failed(ig)) call add_failure(suite%failures, &
+                                                       suite_failure(k, sweep%gap(ig), sweep%messages(ig)))
             suite%sweep_lambda(k, ig) = 0.0_dp
             do iq = 1, n_history_quantities
                if (targeted(iq)) suite%sweep_lambda(k, ig) = max(suite%sweep_lambda(k, ig), &
-                                                                 maxval(res%sweep%max_abs_lambda(iq, :, ig)))
+                                                                 maxval(sweep%max_abs_lambda(iq, :, ig)))
             end do
          end do
       end subroutine gather_sweep
