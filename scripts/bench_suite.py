@@ -10,7 +10,14 @@
    motions (one batch of lanes) and under 1 motion, run interleaved (8, 1, 8, 1, ...): the
    uncoupled integration's DOF-steps/s per motion as the program reports it (the batch's loop
    time shared by its motions), medians and the median of the pairwise ratios.
-3. With --opensees PYTHON (an interpreter with openseespy, numpy, h5py): the study of 1 with
+3. With --mpi MPI_EXE (pound built with -DPOUND_MPI=ON): strong scaling of the study of 1, the
+   whole `mpirun -np 1` and `mpirun -np 2` commands run interleaved (wall time, medians and the
+   median of the pairwise ratios), and this machine's own ceiling for two processes: one serial
+   run of the study against two serial runs of it at once (if the two cores were independent,
+   the pair would take as long as one run; the ratio bounds what any program gains from a second
+   core here). Open MPI is started with the settings for one node (`OMPI_MCA_pml=ob1`,
+   `OMPI_MCA_btl=self,vader`: no probing of network transports, 0.13 s instead of 0.35 s).
+4. With --opensees PYTHON (an interpreter with openseespy, numpy, h5py): the study of 1 with
    OpenSeesPy on the same model (scripts/bench_suite_opensees.py: every motion uncoupled and at
    5 of the 50 gaps, the time per coupled run extrapolated to the 550) and its ratio to pound's
    median process time. Only reported when the interpreter has openseespy.
@@ -86,6 +93,49 @@ def run(exe, deck, out):
     return cpu, wall, (float(m.group(1)) if m else None)
 
 
+def wall(cmd, env=None):
+    start = time.perf_counter()
+    subprocess.run(cmd, check=True, capture_output=True, env=env)
+    return time.perf_counter() - start
+
+
+def mpi_scaling(exe, mpi_exe, deck, tmp, repeats):
+    """Strong scaling of the study on 1 and 2 ranks, and the machine's ceiling for 2 processes."""
+    env = dict(os.environ, OMPI_MCA_pml="ob1", OMPI_MCA_btl="self,vader")
+    mpirun = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np"]
+    out = [os.path.join(tmp, f"mpi{i}") for i in range(3)]
+    one = mpirun + ["1", mpi_exe, deck, "-o", out[0], "--quiet"]
+    two = mpirun + ["2", mpi_exe, deck, "-o", out[1], "--quiet"]
+    start = mpirun + ["2", mpi_exe, "--version"]
+    serial = [exe, deck, "-o", out[2], "--quiet"]
+    pair = ["sh", "-c", f"'{exe}' '{deck}' -o '{out[0]}' --quiet & '{exe}' '{deck}' -o '{out[1]}' --quiet; wait"]
+    wall(one, env)  # warm-up
+    t = {"one": [], "two": [], "start": [], "serial": [], "pair": []}
+    for _ in range(repeats):
+        t["one"].append(wall(one, env))
+        t["two"].append(wall(two, env))
+        t["start"].append(wall(start, env))
+        t["serial"].append(wall(serial))
+        t["pair"].append(wall(pair))
+    med = {k: statistics.median(v) for k, v in t.items()}
+    speedup = [a / b for a, b in zip(t["one"], t["two"])]
+    pair_ratio = [b / a for a, b in zip(t["serial"], t["pair"])]
+    print(f"MPI strong scaling of the study (wall time of the whole command, {repeats} interleaved runs each, "
+          f"medians):\n")
+    print("| command | wall [s] (median) | min, max |")
+    print("|---|--:|--:|")
+    for key, name in (("one", "mpirun -np 1 pound"), ("two", "mpirun -np 2 pound"),
+                      ("start", "mpirun -np 2 pound --version (start-up alone)"),
+                      ("serial", "pound (serial build)"), ("pair", "two serial runs at once")):
+        print(f"| {name} | {med[key]:.3f} | {min(t[key]):.3f}, {max(t[key]):.3f} |")
+    ceiling = 2.0 / statistics.median(pair_ratio)
+    print(f"\n2 ranks against 1: median of pairwise speed-ups {statistics.median(speedup):.2f}x "
+          f"(min {min(speedup):.2f}, max {max(speedup):.2f}); target 1.8x")
+    print(f"This machine's ceiling for two processes: two serial runs at once take "
+          f"{statistics.median(pair_ratio):.3f}x the time of one (median of pairwise ratios), "
+          f"so two cores give at most {ceiling:.2f}x the throughput of one")
+
+
 def opensees(python, exe, seed, tmp, pound_seconds):
     """The OpenSeesPy study and its ratio to pound's process time (nothing without openseespy)."""
     try:
@@ -115,6 +165,7 @@ def opensees(python, exe, seed, tmp, pound_seconds):
 def main():
     exe, seed, repeats = sys.argv[1], sys.argv[2], int(sys.argv[3])
     python = sys.argv[sys.argv.index("--opensees") + 1] if "--opensees" in sys.argv else None
+    mpi_exe = sys.argv[sys.argv.index("--mpi") + 1] if "--mpi" in sys.argv else None
     with tempfile.TemporaryDirectory() as tmp:
         suite = os.path.join(tmp, "suite.nml")
         with open(suite, "w") as f:
@@ -150,6 +201,9 @@ def main():
             print(f"| {motions} | {statistics.median(r):.3e} | {min(r):.3e}, {max(r):.3e} |")
         print(f"\n{BATCH} motions / 1 motion: median of pairwise ratios {statistics.median(ratios):.2f} "
               f"(min {min(ratios):.2f}, max {max(ratios):.2f})")
+        if mpi_exe is not None:
+            print()
+            mpi_scaling(exe, mpi_exe, suite, tmp, repeats)
         if python is not None:
             print()
             opensees(python, exe, seed, tmp, cpu)
