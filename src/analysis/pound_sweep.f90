@@ -83,7 +83,7 @@ module pound_sweep
       !> Settings of the sweep's runs (no histories).
       type(analysis_config) :: cfg
       !> The buildings, the ground samples, the prepared coupled model, the uncoupled result,
-      !> the ground motion (not allocated: none needed).
+      !> the ground motion (not allocated: none needed; passed on as an absent argument).
       type(structure_model), pointer :: models(:) => null()
       real(dp), allocatable :: ag(:)
       type(coupled_model) :: prep
@@ -124,11 +124,8 @@ contains
             return
          end if
       end if
-      if (allocated(work%ground)) then
-         call coupled_integrate(work%cfg, work%models, work%ag, work%prep, cpl, cs, error, gaps, work%ground)
-      else
-         call coupled_integrate(work%cfg, work%models, work%ag, work%prep, cpl, cs, error, gaps)
-      end if
+      ! An unallocated `ground` is an absent argument.
+      call coupled_integrate(work%cfg, work%models, work%ag, work%prep, cpl, cs, error, gaps, work%ground)
       if (allocated(error)) return
       call result_column(work, cpl, sum(cs%joint(:)%impacts), values)
    end subroutine gap_case
@@ -261,13 +258,8 @@ contains
       type(contact_system) :: probe_cs
       type(error_type), allocatable :: probe_error
 
-      if (allocated(cases%ground)) then
-         call coupled_integrate(cases%cfg, cases%models, cases%ag, cases%prep, probe, probe_cs, probe_error, &
-                                spread(probe_gap, 1, cases%n_pairs), cases%ground, track=.true.)
-      else
-         call coupled_integrate(cases%cfg, cases%models, cases%ag, cases%prep, probe, probe_cs, probe_error, &
-                                spread(probe_gap, 1, cases%n_pairs), track=.true.)
-      end if
+      call coupled_integrate(cases%cfg, cases%models, cases%ag, cases%prep, probe, probe_cs, probe_error, &
+                             spread(probe_gap, 1, cases%n_pairs), cases%ground, track=.true.)
       if (allocated(probe_error)) return
       cases%closing_max = probe_cs%closing_max
       allocate (cases%probe(sweep_column_width(size(cases%models))))
