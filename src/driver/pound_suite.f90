@@ -393,6 +393,25 @@ contains
       call text_to_column(message, values(2:failure_width))
    end subroutine failure_to_column
 
+   !> Mark a motion's column `col` as its failed run's (`failure_slot`) with `message`: the
+   !> scaling and the spectra kept, its results (influence flag, lambdas, peaks, no-contact
+   !> gaps) zero.
+   pure subroutine mark_failed(ctx, message, col)
+      !> The suite's data.
+      type(suite_context), intent(in) :: ctx
+      !> The error message.
+      character(len=*), intent(in) :: message
+      !> The motion's column.
+      real(dp), intent(inout) :: col(:)
+      integer :: o
+
+      o = failure_slot(ctx)
+      col(3) = 0.0_dp
+      col(motion_offset(ctx, 1, 1) + 1:o) = 0.0_dp
+      col(o + 1) = 1.0_dp
+      call failure_to_column(-1.0_dp, message, col(o + 2:o + 1 + failure_width))
+   end subroutine mark_failed
+
    !> The failure of motion k that `failure_to_column` put in `values`.
    pure function column_failure(values, k) result(f)
       !> The column's part.
@@ -487,9 +506,7 @@ contains
       end if
       if (allocated(error)) then
          ! A failed run is the motion's failure, carried in its column: the others go on.
-         o = failure_slot(ctx)
-         col(o + 1) = 1.0_dp
-         call failure_to_column(-1.0_dp, error%message, col(o + 2:o + 1 + failure_width))
+         call mark_failed(ctx, error%message, col)
          deallocate (error)
          return
       end if
@@ -1436,10 +1453,7 @@ contains
                if (allocated(ctx%label)) then
                   if (len(ctx%label) > 0) text = ctx%label//': '//text
                end if
-               columns(3, k) = 0.0_dp
-               columns(motion_offset(ctx, 1, 1) + 1:fs, k) = 0.0_dp
-               columns(fs + 1, k) = 1.0_dp
-               call failure_to_column(-1.0_dp, text, columns(fs + 2:fs + 1 + failure_width, k))
+               call mark_failed(ctx, text, columns(:, k))
                ctx%has_unc(k) = .false.
                suite%histories(k) = motion_histories()
                deallocate (failed)
