@@ -19,7 +19,7 @@ module pound_run_case
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_building, only: building_model, build_building
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_names
    use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning, history_sink, &
                              analysis_copy
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
@@ -125,7 +125,6 @@ contains
       type(case_options), intent(in), optional :: options
       type(ground_motion_t) :: deck_gm
       type(contact_pair), allocatable :: pairs(:)
-      character(len=64), allocatable :: names(:)
       character(len=:), allocatable :: prefix
       real(dp), allocatable :: ag(:)
       logical :: coupled_only
@@ -165,14 +164,13 @@ contains
       res%ag_out = ag(0:n_steps:deck%analysis%output_every)
 
       ! Models.
-      allocate (res%models(size(deck%buildings)), res%buildings(size(deck%buildings)), names(size(deck%buildings)))
+      allocate (res%models(size(deck%buildings)), res%buildings(size(deck%buildings)))
       do ib = 1, size(res%models)
          call build_building(deck%buildings(ib), res%models(ib), res%buildings(ib), error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
          end if
-         names(ib) = res%models(ib)%name
       end do
 
       ! Analyses.
@@ -186,7 +184,7 @@ contains
          res%has_uncoupled = .true.
       end if
       if (size(deck%contacts) > 0) then
-         pairs = pairs_from_config(deck%contacts, names, error)
+         pairs = pairs_from_config(deck%contacts, structure_names(res%models), error)
          if (allocated(error)) then
             error%message = prefix//error%message
             return

@@ -40,7 +40,7 @@ module pound_suite
    use pound_deck_variables, only: word_len, path_len
    use pound_ground_motion, only: ground_motion_t, sample_ground
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_names
    use pound_building, only: building_model, build_building
    use pound_spectrum, only: response_spectrum, period_grid, peak_ground_acceleration, &
                              scale_to_pga, scale_to_sa
@@ -557,7 +557,7 @@ contains
 
       block = 0.0_dp
       nj = size(ctx%left)
-      pairs = pairs_from_config(ctx%deck%contacts, building_names(res%models), error)
+      pairs = pairs_from_config(ctx%deck%contacts, structure_names(res%models), error)
       if (allocated(error)) return
       call gap_cases_init(cases, ctx%deck%analysis, ctx%deck%sweep, res%models, ag, pairs, res%unc, error, ground)
       if (allocated(error)) return
@@ -567,18 +567,6 @@ contains
       block(2:1 + nj) = cases%closing_max
       block(2 + nj:) = cases%probe
    end subroutine motion_probe
-
-   !> The buildings' names (as `run_case` gives them to the joints).
-   pure function building_names(models) result(names)
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      character(len=64) :: names(size(models))
-      integer :: ib
-
-      do ib = 1, size(models)
-         names(ib) = models(ib)%name
-      end do
-   end function building_names
 
    !> A motion's uncoupled peaks from its column (`motion_run`), as the uncoupled result that
    !> the coupled runs at other gaps compare with (`influence_of` takes the peaks).
@@ -626,7 +614,7 @@ contains
             if (allocated(error)) return
             allocate (ag(0:n_steps))
             call sample_ground(gm, deck%analysis%dt, n_steps, ag)
-            pairs = pairs_from_config(deck%contacts, building_names(work%ctx%models), error)
+            pairs = pairs_from_config(deck%contacts, structure_names(work%ctx%models), error)
             if (allocated(error)) return
             call gap_cases_init(work%gaps, deck%analysis, deck%sweep, work%ctx%models, ag, pairs, &
                                 work%ctx%unc(k), error, gm)

@@ -31,6 +31,7 @@ module pound_structure
    private
 
    public :: structure_model, recovery_rows, recover, recover_all, recover_peaks, group_rows, structure_label
+   public :: structure_names
    public :: structure_strain_energy
    public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof
 
@@ -511,6 +512,18 @@ contains
          s = 'building '//m%name
       end if
    end function structure_label
+
+   !> The models' names, in order (what the joints of a configuration name: `pairs_from_config`).
+   pure function structure_names(models) result(names)
+      !> The models.
+      type(structure_model), intent(in) :: models(:)
+      character(len=64) :: names(size(models))
+      integer :: ib
+
+      do ib = 1, size(models)
+         names(ib) = models(ib)%name
+      end do
+   end function structure_names
 
    !> Strain energy including the geometric term, u^T (K+G) u / 2 (kJ): storey by storey
    !> from `strain_weight` and the drift rows when the model has them, else from the band.
