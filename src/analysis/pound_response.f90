@@ -108,6 +108,8 @@ module pound_response
       !> u_j - u_{j-1} (times the shear row's scale): peaks and histories are taken
       !> straight from the DOF vectors (same numbers as the general path, fewer passes).
       logical :: stick = .false.
+      !> A stick's peaks: whether the last step set a new maximum (`track_peaks`).
+      logical :: rising = .true.
       !> General path: the response points' u, v, a_abs and the storey rows of the step.
       real(dp), allocatable :: pu(:), pv(:), pa(:), pd(:), ps(:)
       !> Member rows (`structure_model%member`): peak absolute value and its time per row, and
@@ -219,7 +221,7 @@ contains
       logical, intent(in), value :: output
 
       if (rec%stick) then
-         call track_peaks(rec%n, u, v, a, ag, t, rec%peak, rec%peak_time)
+         call track_peaks(rec%n, u, v, a, ag, t, rec%peak, rec%peak_time, rec%rising)
          if (output) call response_store(rec, b, u, v, a, ag)
       else
          call response_sample_rows(rec, b, u, v, a, ag, t, output)
@@ -289,37 +291,62 @@ contains
       end if
    end subroutine response_store
 
-   !> Running absolute maxima of u, v, a_abs and drift in one pass over the floors
-   !> (explicit-shape arrays, so the compiler sees plain contiguous memory).
-   pure subroutine track_peaks(n, u, v, a, ag, t, peak, peak_time)
+   !> Running absolute maxima of u, v, a_abs and drift (explicit-shape arrays, so the
+   !> compiler sees plain contiguous memory).
+   !>
+   !> New maxima come in runs of steps (while the response grows) between long runs of steps
+   !> without any. After a step without one (`rising` false) a pass without branches counts
+   !> the new maxima first (vectorised) and the floors are visited only when there are some;
+   !> after a step with one they are visited at once.
+   pure subroutine track_peaks(n, u, v, a, ag, t, peak, peak_time, rising)
       integer, intent(in) :: n
       real(dp), intent(in) :: u(n), v(n), a(n), ag, t
       real(dp), intent(inout) :: peak(n, n_history_quantities), peak_time(n, n_history_quantities)
+      !> Whether the last step set a new maximum (updated for this one).
+      logical, intent(inout) :: rising
       real(dp) :: x, below
-      integer :: i
+      integer :: i, hits
 
+      if (.not. rising) then
+         hits = merge(1, 0, abs(u(1)) > peak(1, q_drift))
+         !GCC$ vector
+         do i = 2, n
+            hits = hits + merge(1, 0, abs(u(i) - u(i - 1)) > peak(i, q_drift))
+         end do
+         !GCC$ vector
+         do i = 1, n
+            hits = hits + merge(1, 0, abs(u(i)) > peak(i, q_u)) + merge(1, 0, abs(v(i)) > peak(i, q_v)) + &
+                   merge(1, 0, abs(a(i) + ag) > peak(i, q_a_abs))
+         end do
+         if (hits == 0) return
+      end if
+      rising = .false.
       below = 0.0_dp
       do i = 1, n
          x = abs(u(i))
          if (x > peak(i, q_u)) then
             peak(i, q_u) = x
             peak_time(i, q_u) = t
+            rising = .true.
          end if
          x = abs(v(i))
          if (x > peak(i, q_v)) then
             peak(i, q_v) = x
             peak_time(i, q_v) = t
+            rising = .true.
          end if
          x = abs(a(i) + ag)
          if (x > peak(i, q_a_abs)) then
             peak(i, q_a_abs) = x
             peak_time(i, q_a_abs) = t
+            rising = .true.
          end if
          x = abs(u(i) - below)
          below = u(i)
          if (x > peak(i, q_drift)) then
             peak(i, q_drift) = x
             peak_time(i, q_drift) = t
+            rising = .true.
          end if
       end do
    end subroutine track_peaks
