@@ -38,7 +38,7 @@ module pound_newmark
    implicit none
    private
 
-   public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_solve
+   public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_advance, newmark_solve
    public :: newmark_add_response, newmark_set_state, newmark_dt, newmark_n, newmark_swap_step
    public :: newmark_u, newmark_v, newmark_a, newmark_du, newmark_u_at, newmark_v_at, newmark_predicted, newmark_energies
    public :: newmark_path, newmark_tridiagonal_factors
@@ -127,6 +127,14 @@ module pound_newmark
          real(dp), intent(in), value :: ag_old, ag_new
          real(dp), intent(inout), optional :: w_in, e_out
       end subroutine newmark_commit
+      !> `newmark_commit`, then `newmark_predict` of the next step (in submodule
+      !> pound_newmark_step).
+      module subroutine newmark_advance(st, b, ag_old, ag_new, dag_next, w_in, e_out)
+         type(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in), value :: ag_old, ag_new, dag_next
+         real(dp), intent(inout) :: w_in, e_out
+      end subroutine newmark_advance
       !> The banded path of the step (submodule pound_newmark_band).
       module subroutine predict_general(st, b, dag)
          type(newmark_state), intent(inout) :: st

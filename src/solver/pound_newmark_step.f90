@@ -51,6 +51,28 @@ contains
       end subroutine predict_kernel
    end subroutine newmark_predict
 
+   !> `newmark_commit`, then `newmark_predict` of the next step for its ground acceleration
+   !> increment `dag_next`: the step of a model without contact loads. The time loop
+   !> samples the committed step after this call (u, v and a are the committed ones), so
+   !> that the work of sampling overlaps the next step's tridiagonal solve, which is a chain
+   !> of dependent operations.
+   module subroutine newmark_advance(st, b, ag_old, ag_new, dag_next, w_in, e_out)
+      !> Integrator state.
+      type(newmark_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Ground acceleration at the start and end of the step, and the increment of the next
+      !> step (m/s^2; by value).
+      real(dp), intent(in), value :: ag_old, ag_new, dag_next
+      !> Input work so far (added to).
+      real(dp), intent(inout) :: w_in
+      !> Kinetic + strain + damping energy so far (added to).
+      real(dp), intent(inout) :: e_out
+
+      call newmark_commit(st, b, ag_old, ag_new, w_in, e_out)
+      call newmark_predict(st, b, dag_next)
+   end subroutine newmark_advance
+
    !> Complete the step with the increment `du` and account the energy.
    !>
    !> `ag_old` and `ag_new` are the ground accelerations at the start and end of the step;
