@@ -295,9 +295,9 @@ contains
    !> compiler sees plain contiguous memory).
    !>
    !> New maxima come in runs of steps (while the response grows) between long runs of steps
-   !> without any. After a step without one (`rising` false) a pass without branches counts
-   !> the new maxima first (vectorised) and the floors are visited only when there are some;
-   !> after a step with one they are visited at once.
+   !> without any. After a step without one (`rising` false) one pass without branches counts
+   !> the new maxima of all four quantities first (vectorised) and the floors are visited
+   !> only when there are some; after a step with one they are visited at once.
    pure subroutine track_peaks(n, u, v, a, ag, t, peak, peak_time, rising)
       integer, intent(in) :: n
       real(dp), intent(in) :: u(n), v(n), a(n), ag, t
@@ -308,15 +308,13 @@ contains
       integer :: i, hits
 
       if (.not. rising) then
-         hits = merge(1, 0, abs(u(1)) > peak(1, q_drift))
+         ! (The drift of floor 1 is its u: its peak is u's.)
+         hits = merge(1, 0, abs(u(1)) > peak(1, q_u)) + merge(1, 0, abs(v(1)) > peak(1, q_v)) + &
+                merge(1, 0, abs(a(1) + ag) > peak(1, q_a_abs))
          !GCC$ vector
          do i = 2, n
-            hits = hits + merge(1, 0, abs(u(i) - u(i - 1)) > peak(i, q_drift))
-         end do
-         !GCC$ vector
-         do i = 1, n
             hits = hits + merge(1, 0, abs(u(i)) > peak(i, q_u)) + merge(1, 0, abs(v(i)) > peak(i, q_v)) + &
-                   merge(1, 0, abs(a(i) + ag) > peak(i, q_a_abs))
+                   merge(1, 0, abs(a(i) + ag) > peak(i, q_a_abs)) + merge(1, 0, abs(u(i) - u(i - 1)) > peak(i, q_drift))
          end do
          if (hits == 0) return
       end if
