@@ -471,11 +471,7 @@ contains
       write_ticks = 0
       until_out = every
       call system_clock(c0, rate)
-      if (plain .and. res%n_steps > 0) then
-         do ib = 1, nb
-            call newmark_predict(st(ib), models(ib), ag(1) - ag(0))
-         end do
-      end if
+      if (plain .and. res%n_steps > 0) call predict_newmark(st, models, ag(1) - ag(0))
       do step = 1, res%n_steps
          if (mod(step, progress_stride) == 0) call progress_steps(step, res%n_steps)
          t = real(step, dp)*cfg%dt
@@ -674,8 +670,8 @@ contains
       sample = res%energy(:, k)
    end subroutine store_energy
 
-   !> Drop the exact steps predicted and predict the step by Newmark (`free_steps = 'exact'`, a
-   !> step in which a joint can act).
+   !> Predict the step of every building by Newmark, dropping any exact step predicted
+   !> (`free_steps = 'exact'`, a step in which a joint can act; a plain run's first step).
    subroutine predict_newmark(st, models, dag)
       !> Integrators.
       type(newmark_state), intent(inout) :: st(:)
