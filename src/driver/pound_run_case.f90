@@ -28,7 +28,7 @@ module pound_run_case
    implicit none
    private
 
-   public :: case_options, case_result, run_case, deck_ground_motion, configured_motion
+   public :: case_options, case_result, run_case, deck_ground_motion, configured_motion, label_prefix
 
    !> What distinguishes one case of a configuration from another; every component is
    !> optional (the defaults run the configuration as the deck states it).
@@ -112,6 +112,19 @@ contains
       end select
    end subroutine configured_motion
 
+   !> What `run_case` puts before its error messages for a case labelled `label` (`case_options`):
+   !> 'label: ', or nothing without a label or with an empty one.
+   pure function label_prefix(label) result(prefix)
+      !> The case's label (absent: none).
+      character(len=*), intent(in), optional :: label
+      character(len=:), allocatable :: prefix
+
+      prefix = ''
+      if (present(label)) then
+         if (len(label) > 0) prefix = label//': '
+      end if
+   end function label_prefix
+
    !> Run one case of the validated configuration `deck`: ground sampling, models, joints,
    !> uncoupled and coupled analyses, influence coefficients, gap sweep and warnings.
    subroutine run_case(deck, res, error, options)
@@ -136,9 +149,8 @@ contains
       nullify (sink)
       if (present(options)) then
          sink => options%sink
-         if (allocated(options%label)) then
-            if (len(options%label) > 0) prefix = options%label//': '
-         end if
+         ! An unallocated label is an absent argument.
+         prefix = label_prefix(options%label)
          coupled_only = options%coupled_only
       end if
 

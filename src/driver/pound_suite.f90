@@ -47,7 +47,7 @@ module pound_suite
    use pound_influence, only: influence_coefficient, max_abs_influence
    use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
                                separation_ddc, cqc_correlation, no_contact_gap
-   use pound_run_case, only: case_options, case_result, run_case, configured_motion
+   use pound_run_case, only: case_options, case_result, run_case, configured_motion, label_prefix
    use pound_analysis, only: analysis_result, n_energy, analysis_copy, add_warning
    use pound_contact, only: contact_pair, pairs_from_config
    use pound_sweep, only: sweep_result, gap_cases, gap_cases_init, gap_cases_probe, gap_cases_set_probe, &
@@ -1407,7 +1407,6 @@ contains
          type(case_table) :: all, one
          type(sweep_result), allocatable :: sweeps(:)
          type(error_type), allocatable :: failed
-         character(len=:), allocatable :: text
          real(dp), allocatable :: col(:)
          integer, allocatable :: ks(:)
          integer :: j, ng, fs, ps, nj, k1, iw
@@ -1437,11 +1436,7 @@ contains
             call sweep_from_table(deck%sweep, nb, one, sweeps(k), failed)
             if (allocated(failed)) then
                ! As `motion_run` marks a failed run (its message as `run_case` gives it).
-               text = failed%message
-               if (allocated(ctx%label)) then
-                  if (len(ctx%label) > 0) text = ctx%label//': '//text
-               end if
-               call mark_failed(ctx, text, columns(:, k))
+               call mark_failed(ctx, label_prefix(ctx%label)//failed%message, columns(:, k))
                ctx%has_unc(k) = .false.
                suite%histories(k) = motion_histories()
                deallocate (failed)
