@@ -334,12 +334,11 @@ contains
       n_steps = nint(ctx%deck%analysis%t_end/ctx%deck%analysis%dt)
       allocate (agb(0:n_steps, size(ms)))
       do j = 1, size(ms)
-         call suite_motion(ctx%deck, ms(j), ctx%models, gm, factor, error)
+         call suite_motion_samples(ctx%deck, ms(j), ctx%models, gm, factor, agb(:, j), error)
          if (allocated(error)) then
             error%message = "&ground '"//ctx%deck%motions(ms(j))%name//"': "//error%message
             return
          end if
-         call sample_ground(gm, ctx%deck%analysis%dt, n_steps, agb(:, j))
       end do
       call run_uncoupled_batch(ctx%deck%analysis, ctx%models, agb, batched, ok)
    end subroutine batch_uncoupled
@@ -486,9 +485,8 @@ contains
       n_steps = nint(ctx%deck%analysis%t_end/dt)
       if (allocated(ctx%label)) options%label = ctx%label
       allocate (options%ground, ag(0:n_steps))
-      call suite_motion(ctx%deck, k, ctx%models, options%ground, col(1), error)
+      call suite_motion_samples(ctx%deck, k, ctx%models, options%ground, col(1), ag, error)
       if (allocated(error)) return
-      call sample_ground(options%ground, dt, n_steps, ag)
       col(2) = peak_ground_acceleration(ag)
       o = 3
       call response_spectrum(ag, dt, ctx%period, spectrum_damping, sa, error)
@@ -610,10 +608,9 @@ contains
          k = work%motions(j)
          associate (deck => work%ctx%deck)
             n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
-            call suite_motion(deck, k, work%ctx%models, gm, factor, error)
-            if (allocated(error)) return
             allocate (ag(0:n_steps))
-            call sample_ground(gm, deck%analysis%dt, n_steps, ag)
+            call suite_motion_samples(deck, k, work%ctx%models, gm, factor, ag, error)
+            if (allocated(error)) return
             pairs = pairs_from_config(deck%contacts, structure_names(work%ctx%models), error)
             if (allocated(error)) return
             call gap_cases_init(work%gaps, deck%analysis, deck%sweep, work%ctx%models, ag, pairs, &
@@ -968,6 +965,29 @@ contains
       end subroutine synthetic
 
    end subroutine suite_motion
+
+   !> Motion k as run (`suite_motion`) and its ground accelerations at t_n = n dt,
+   !> n = 0..size(ag) - 1 (m/s^2).
+   subroutine suite_motion_samples(deck, k, models, gm, factor, ag, error)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Motion index in `deck%motions`.
+      integer, intent(in) :: k
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> The motion as run.
+      type(ground_motion_t), intent(out) :: gm
+      !> Scale factor applied by the suite.
+      real(dp), intent(out) :: factor
+      !> The samples.
+      real(dp), intent(out) :: ag(0:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      call suite_motion(deck, k, models, gm, factor, error)
+      if (allocated(error)) return
+      call sample_ground(gm, deck%analysis%dt, size(ag) - 1, ag)
+   end subroutine suite_motion_samples
 
    !> The contact pairs of the deck in order: building indices and floors (n_pairs each).
    pure subroutine suite_pairs(deck, left, right, floor_left, floor_right)
