@@ -71,7 +71,9 @@ pound_runner_args() {
 
 # pound_build TYPE [NAME [CMAKE_ARG...]]: configure (first time only) and build build/<NAME>
 # (default: build/<type>) with pound_runner_args and the extra arguments; an up-to-date tree
-# is left alone. A build directory configured with other such arguments (e.g. before the real
+# is left alone. Every target is built, unless POUND_BUILD_TARGET names one (scripts/run:
+# POUND_BUILD_TARGET=pound, the program without the tests); the configuration is the same
+# either way, so scripts/run and scripts/test share build/release without reconfiguring it. A build directory configured with other such arguments (e.g. before the real
 # pFUnit was installed) is removed and configured afresh, so that no stale cache is reused.
 # The tests find shared/ at $POUND_SHARED_DIR (reconfigured when it changes).
 pound_build() {
@@ -91,11 +93,24 @@ pound_build() {
   elif [ "$(sed -n 's/^POUND_SHARED_DIR:PATH=//p' "$dir/CMakeCache.txt")" != "$POUND_SHARED_DIR" ]; then
     cmake "$dir" -DPOUND_SHARED_DIR="$POUND_SHARED_DIR" >/dev/null || return 1
   fi
-  cmake --build "$dir" -j "$(nproc)" -- --no-print-directory >"$dir/build.log" 2>&1 || {
+  cmake --build "$dir" ${POUND_BUILD_TARGET:+--target "$POUND_BUILD_TARGET"} -j "$(nproc)" -- \
+    --no-print-directory >"$dir/build.log" 2>&1 || {
     cat "$dir/build.log" >&2
     echo "pound: build failed ($type), log: $dir/build.log" >&2
     return 1
   }
+}
+
+# pound_program_current EXE: status 0 when EXE exists and is newer than every file and folder
+# of src/, cmake/ and CMakeLists.txt (a folder's time changes when a file in it is added,
+# removed or renamed), i.e. when building it again would change nothing; 1 otherwise. One
+# `find`, a few milliseconds: scripts/run's test before it would call cmake.
+pound_program_current() {
+  local newer
+  [ -x "$1" ] || return 1
+  newer="$(find "$POUND_ROOT/src" "$POUND_ROOT/cmake" "$POUND_ROOT/CMakeLists.txt" -newer "$1" -print -quit)" \
+    || return 1
+  [ -z "$newer" ]
 }
 
 # pound_test_runner DIR: the runner of the .pf tests in a configured build directory.
