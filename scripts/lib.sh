@@ -113,6 +113,26 @@ pound_program_current() {
   [ -z "$newer" ]
 }
 
+# pound_program: make build/release/pound current for the scripts that run the program
+# (scripts/run, scripts/work_precision, scripts/bench_*): nothing when pound_program_current
+# holds; otherwise install what is missing and build the program alone (POUND_BUILD_TARGET=pound;
+# the tests are scripts/test's), saying on standard error before the build what it builds and
+# after it how long it took.
+pound_program() {
+  local exe="$POUND_ROOT/build/release/pound" start=$SECONDS
+  pound_program_current "$exe" && return 0
+  pound_setup || return 1
+  if [ -x "$exe" ]; then
+    echo "pound: the sources changed since build/release/pound was built: rebuilding it" \
+         "(log: build/release/build.log)" >&2
+  else
+    echo "pound: building the program once into build/release/pound (about a minute on 2 cores," \
+         "longer on a busy machine; later calls reuse it at once; log: build/release/build.log)" >&2
+  fi
+  POUND_BUILD_TARGET=pound pound_build Release || return 1
+  echo "pound: built build/release/pound in $((SECONDS - start)) s" >&2
+}
+
 # pound_test_runner DIR: the runner of the .pf tests in a configured build directory.
 pound_test_runner() {
   sed -n 's/^POUND_TEST_RUNNER:INTERNAL=//p' "$1/CMakeCache.txt" 2>/dev/null
