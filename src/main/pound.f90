@@ -188,9 +188,9 @@ contains
       type(error_type), allocatable, intent(out) :: err
 
       if (size(deck%motions) > 1) then
-         call write_summary_attributes(outputs%h5_tmp, summary_text, err, suite)
+         call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err, suite)
       else
-         call write_summary_attributes(outputs%h5_tmp, summary_text, err)
+         call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err)
       end if
       if (allocated(err)) return
       call write_summary_csv(outputs%summary_tmp, summary_items, err)

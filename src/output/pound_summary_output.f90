@@ -20,9 +20,12 @@
 !> lines); a suite (several `&ground`) adds its answer: `suite_answer` (one line),
 !> `suite_refined_gap_mean`, `suite_refined_gap_every`, `suite_safe_gap_mean`,
 !> `suite_safe_gap_every` (m, as `/suite/sweep`, -1: none), `suite_motions`,
-!> `suite_motions_used`, `suite_failed_cases`, and the single-motion case of `/uncoupled`,
-!> `/coupled`, `/sweep`: `single_motion` (its name), `single_motion_index` (1-based),
-!> `single_motion_heading` ('motion k of n: NAME').
+!> `suite_motions_used`, `suite_failed_cases`, with contact per building in deck order the
+!> signed storey-shear lambda (%) of largest |lambda| over the storeys of the suite mean of the
+!> lambdas, of any one motion and of the mean peaks (`suite_mean_lambda_storey_shear`,
+!> `suite_max_lambda_storey_shear`, `suite_lambda_of_means_storey_shear`), and the
+!> single-motion case of `/uncoupled`, `/coupled`, `/sweep`: `single_motion` (its name),
+!> `single_motion_index` (1-based), `single_motion_heading` ('motion k of n: NAME').
 module pound_summary_output
    use pound_kinds, only: dp
    use, intrinsic :: iso_fortran_env, only: int64
@@ -129,9 +132,11 @@ contains
 
    !> Root attributes of the results file at `path` (written and closed): `summary`, and with
    !> `suite` its answer and single-motion case (see the module notes).
-   subroutine write_summary_attributes(path, lines, error, suite)
+   subroutine write_summary_attributes(path, items, lines, error, suite)
       !> Results file.
       character(len=*), intent(in) :: path
+      !> The summary's items (`build_summary`).
+      type(summary_item), intent(in) :: items(:)
       !> The summary's text lines (`summary_lines`).
       character(len=*), intent(in) :: lines(:)
       !> Error state.
@@ -171,7 +176,24 @@ contains
          if (.not. allocated(error)) call h5_write_attr(h5, '/', 'single_motion', trim(s%names(s%first)), error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/', 'single_motion_index', s%first, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/', 'single_motion_heading', motion_heading(s), error)
+         if (.not. allocated(error)) call per_building('mean_lambda_storey_shear')
+         if (.not. allocated(error)) call per_building('max_lambda_storey_shear')
+         if (.not. allocated(error)) call per_building('lambda_of_means_storey_shear')
       end subroutine suite_attributes
+
+      !> Root attribute suite_<quantity>: the suite items of that quantity, one per building in
+      !> deck order (none without contact).
+      subroutine per_building(quantity)
+         character(len=*), intent(in) :: quantity
+         real(dp), allocatable :: v(:)
+         integer :: k
+
+         allocate (v(0))
+         do k = 1, size(items)
+            if (items(k)%kind == 'suite' .and. items(k)%quantity == quantity) v = [v, items(k)%value]
+         end do
+         if (size(v) > 0) call h5_write_attr(h5, '/', 'suite_'//quantity, v, error)
+      end subroutine per_building
 
    end subroutine write_summary_attributes
 
