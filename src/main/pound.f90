@@ -1,7 +1,8 @@
 !> pound: seismic pounding of adjacent buildings.
 !>
 !>     pound DECK.nml [-o DIR] [--progress | --quiet]
-!>                                 writes DIR/<stem>.out (listing) and DIR/<stem>.h5 (histories)
+!>                                 writes DIR/<stem>.out (listing), DIR/<stem>.h5 (histories) and
+!>                                 DIR/<stem>_summary.csv (the engineering summary, pound_summary)
 !>     pound --help | --version
 !>
 !> Long runs show a progress line on standard error when it is a terminal (pound_progress);
@@ -135,7 +136,7 @@ program pound
    end if
    call make_summary()
 
-   ! Outputs: this run's temporaries first, published together when both are complete.
+   ! Outputs: this run's temporaries first, published together when all are complete.
    call write_listing(outputs%listing_tmp, error)
    call check(error)
    call test_pause()
@@ -146,8 +147,10 @@ program pound
    end if
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
       call write_suite_h5(outputs%h5_tmp, res%models, suite, error)
-   if (.not. allocated(error)) call write_summary_files(error)
+   if (.not. allocated(error)) call write_summary_h5(error)
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
+   call check(error)
+   call write_summary_csv(outputs%summary_tmp, summary_items, error)
    call check(error)
    call publish_outputs(outputs, error)
    call check(error)
@@ -183,8 +186,8 @@ contains
       end if
    end subroutine make_summary
 
-   !> The summary's root attributes in the results file and `<stem>_summary.csv` (temporaries).
-   subroutine write_summary_files(err)
+   !> The summary's root attributes in the results file (this run's temporary).
+   subroutine write_summary_h5(err)
       type(error_type), allocatable, intent(out) :: err
 
       if (size(deck%motions) > 1) then
@@ -192,9 +195,7 @@ contains
       else
          call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err)
       end if
-      if (allocated(err)) return
-      call write_summary_csv(outputs%summary_tmp, summary_items, err)
-   end subroutine write_summary_files
+   end subroutine write_summary_h5
 
    !> The results file: this run's temporary, created here or (`file`) open since the
    !> analyses streamed their histories into it.
