@@ -122,6 +122,19 @@ def pair_elevations(label, names, heights):
     return None
 
 
+def single_motion_heading(f):
+    """'motion k of n: NAME' of a suite's file (several &ground): the motion whose results are
+    /uncoupled, /coupled, /sweep (root attribute `single_motion_heading`; older files: the first
+    motion that did not fail)."""
+    heading = _text(f.attrs.get("single_motion_heading", "")).strip()
+    if heading:
+        return heading
+    names = [_text(n).strip() for n in f["suite/names"][...]]
+    failed = list(f["suite/motion_failed"][...]) if "suite/motion_failed" in f else [0] * len(names)
+    k = next((i for i, x in enumerate(failed) if not x), 0)
+    return f"motion {k + 1} of {len(names)}: {names[k]}" if names else "motion ?"
+
+
 def read_results(path):
     import h5py
     import numpy as np
@@ -158,6 +171,10 @@ def read_results(path):
     r.path = path
     with f:
         r.title = _text(f.attrs.get("title", os.path.basename(path))).strip()
+        if "suite" in f:
+            answer = _text(f.attrs.get("suite_answer", "")).strip()
+            r.title += "\n" + single_motion_heading(f) + " (this motion alone; " + \
+                (answer if answer else "the suite's answer: the suite plots") + ")"
         if "dt" in f.attrs:
             r.dt = float(np.asarray(f.attrs["dt"]).ravel()[0])
         model = need("/model")
@@ -310,7 +327,13 @@ def suptitle(fig, r, what, note=""):
     text = f"{r.title}\n{what}"
     if note:
         text += f"  ({note})"
-    fig.suptitle(text)
+    # A suite's file adds a line (the motion): raised by it, above the axes' own titles (the
+    # saved figure's tight box takes it in).
+    extra = text.count("\n") - 1
+    if extra > 0:
+        fig.suptitle(text, y=0.98 + extra * 13.0 / (72.0 * fig.get_figheight()))
+    else:
+        fig.suptitle(text)
 
 
 def save(fig, r, name, args, written):

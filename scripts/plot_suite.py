@@ -33,10 +33,27 @@ def _cols(a, n, np):
     return a if a.shape[1] == n else a.T
 
 
+def suite_answer(s, nm):
+    """The suite's answer, the first line of every suite plot's title: the root attribute
+    `suite_answer` that pound writes, or (older files) the refined thresholds of /suite/sweep."""
+    text = s.file.attrs.get("suite_answer", None)
+    if text is not None:
+        return text.decode() if isinstance(text, bytes) else str(text)
+    text = f"suite of {nm} motions"
+    if "sweep/refined_gap_mean" in s:
+        def gap(key):
+            g = float(s["sweep/" + key][()])
+            return f"{1e3 * g:.2f} mm" if g >= 0 else "none"
+        text += f": gap {gap('refined_gap_mean')} on the mean, {gap('refined_gap_every')} on every motion"
+    return text
+
+
 def plot_all(s, plt, np, save):
-    """Every suite plot of the /suite group `s`; save(fig, what) writes and closes a figure."""
+    """Every suite plot of the /suite group `s`; save(fig, what) writes and closes a figure.
+    Every figure's title leads with the suite's answer (`suite_answer`)."""
     names = [n.decode() if isinstance(n, bytes) else str(n) for n in s["names"][...]]
     nm = len(names)
+    answer = suite_answer(s, nm)
     # Failed motions (their run failed: left out of every statistic) and suite gaps.
     failed = s["motion_failed"][...].astype(bool) if "motion_failed" in s else np.zeros(nm, bool)
     used = [k for k in range(nm) if not failed[k]]
@@ -64,6 +81,7 @@ def plot_all(s, plt, np, save):
     ax.set_ylabel("Sa (m/s$^2$), 5 % damping")
     ax.set_title("Spectra of the scaled motions; dashed: fundamental periods")
     ax.legend(fontsize=7, ncol=2)
+    fig.suptitle(answer, fontsize=9)
     fig.tight_layout()
     save(fig, "spectra")
 
@@ -83,6 +101,7 @@ def plot_all(s, plt, np, save):
             ax.set_xlabel("lambda (%)")
             ax.set_ylabel("storey")
             ax.legend(fontsize=6)
+        fig.suptitle(answer, fontsize=9)
         fig.tight_layout()
         save(fig, "lambda")
 
@@ -114,7 +133,7 @@ def plot_all(s, plt, np, save):
             ax.set_title(f"pair {p + 1}")
             ax.set_ylabel("separation (mm)")
         axes[0][0].legend(fontsize=7)
-        fig.suptitle("Code rules on elastic peaks (no amplification) vs the time-history gap", fontsize=9)
+        fig.suptitle(answer + "\nCode rules on elastic peaks (no amplification) vs the time-history gap", fontsize=9)
         fig.tight_layout()
         save(fig, "separation")
 
@@ -146,6 +165,7 @@ def plot_all(s, plt, np, save):
         ax.set_ylabel("largest |lambda| (%), targeted quantities")
         ax.set_title("Gap sweep over the suite (thin: each motion)")
         ax.legend(fontsize=7)
+        fig.suptitle(answer, fontsize=9)
         fig.tight_layout()
         save(fig, "sweep")
 

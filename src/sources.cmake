@@ -55,6 +55,8 @@ set(POUND_SOURCES
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
   # outputs: the suite's listing sections and /suite
   output/pound_suite_output.f90
+  # outputs: the engineering summary (terminal, top of the listing, <stem>_summary.csv, root attributes)
+  output/pound_summary.f90 output/pound_summary_output.f90
 )
 # The case scheduler's implementation (a submodule of pound_cases): the cases in order by
 # default, shared over MPI ranks with -DPOUND_MPI=ON (the top CMakeLists.txt picks one).

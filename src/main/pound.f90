@@ -1,7 +1,8 @@
 !> pound: seismic pounding of adjacent buildings.
 !>
 !>     pound DECK.nml [-o DIR] [--progress | --quiet]
-!>                                 writes DIR/<stem>.out (listing) and DIR/<stem>.h5 (histories)
+!>                                 writes DIR/<stem>.out (listing), DIR/<stem>.h5 (histories) and
+!>                                 DIR/<stem>_summary.csv (the engineering summary, pound_summary)
 !>     pound --help | --version
 !>
 !> Long runs show a progress line on standard error when it is a terminal (pound_progress);
@@ -31,7 +32,9 @@ program pound
    use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
                             write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
-                            open_listing, close_listing
+                            open_listing, close_listing, write_section
+   use pound_summary, only: summary_item, build_summary, summary_lines, motion_heading, summary_text_len
+   use pound_summary_output, only: write_summary_csv, write_summary_attributes
    use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
    use pound_h5, only: h5_file
    use pound_files, only: output_set, plan_outputs, publish_outputs, discard_outputs, &
@@ -59,6 +62,9 @@ program pound
    character(len=512) :: ground_text(1)
    type(suite_result) :: suite
    logical :: is_suite, streamed
+   !> The engineering summary (`pound_summary`): its items and its text lines.
+   type(summary_item), allocatable :: summary_items(:)
+   character(len=2*summary_text_len), allocatable :: summary_text(:)
    integer :: progress_mode = progress_auto
    !> Exit status of a run whose results were written but some of whose cases (gaps of a
    !> sweep; a suite's motions, their gaps and trial gaps) failed.
@@ -128,8 +134,9 @@ program pound
       call cases_stop()
       call posix_exit_now(0)
    end if
+   call make_summary()
 
-   ! Outputs: this run's temporaries first, published together when both are complete.
+   ! Outputs: this run's temporaries first, published together when all are complete.
    call write_listing(outputs%listing_tmp, error)
    call check(error)
    call test_pause()
@@ -140,7 +147,10 @@ program pound
    end if
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
       call write_suite_h5(outputs%h5_tmp, res%models, suite, error)
+   if (.not. allocated(error)) call write_summary_h5(error)
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
+   call check(error)
+   call write_summary_csv(outputs%summary_tmp, summary_items, error)
    call check(error)
    call publish_outputs(outputs, error)
    call check(error)
@@ -164,6 +174,28 @@ program pound
    call cases_stop()
 
 contains
+
+   !> The engineering summary's items and text lines (a suite: its answer first).
+   subroutine make_summary()
+      if (size(deck%motions) > 1) then
+         call build_summary(deck, res, summary_items, suite)
+         summary_text = summary_lines(summary_items, motion_heading(suite))
+      else
+         call build_summary(deck, res, summary_items)
+         summary_text = summary_lines(summary_items)
+      end if
+   end subroutine make_summary
+
+   !> The summary's root attributes in the results file (this run's temporary).
+   subroutine write_summary_h5(err)
+      type(error_type), allocatable, intent(out) :: err
+
+      if (size(deck%motions) > 1) then
+         call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err, suite)
+      else
+         call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err)
+      end if
+   end subroutine write_summary_h5
 
    !> The results file: this run's temporary, created here or (`file`) open since the
    !> analyses streamed their histories into it.
@@ -263,8 +295,16 @@ contains
 
       call open_listing(path, u, err)
       if (allocated(err)) return
-      call write_listing_header(u, deck, ground_text)
-      call write_model_summary(u, res%models, res%buildings)
+      if (size(deck%motions) > 1) then
+         call write_listing_header(u, deck, [character(len=len(ground_text)) :: motion_heading(suite)//': '// &
+                                             ground_text(1)], summary_text)
+         call write_model_summary(u, res%models, res%buildings)
+         call write_section(u, motion_heading(suite)//': the single-motion results of this motion alone '// &
+                            '(the suite''s answer: Summary above and Ground-motion suite below)')
+      else
+         call write_listing_header(u, deck, ground_text, summary_text)
+         call write_model_summary(u, res%models, res%buildings)
+      end if
       call write_peak_tables(u, 'Uncoupled', res%models, res%unc)
       if (.not. res%has_coupled) call write_column_tables(u, res%models, res%buildings, res%unc)
       if (res%has_coupled) then
@@ -307,6 +347,9 @@ contains
                ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
             text = text//trim(line)//new_line('a')
          end do
+         do i = 1, size(summary_text)
+            text = text//'  '//trim(summary_text(i))//new_line('a')
+         end do
          write (line, '(a,es10.3,a,es9.2)') '  uncoupled integration: ', unc%seconds, &
             ' s, energy balance error ', unc%energy_error
          text = text//trim(line)//new_line('a')
@@ -334,8 +377,12 @@ contains
             write (line, '(a,i0,a,es10.3,a)') '  gap sweep: ', size(sweep%gap), ' gaps in ', sweep%seconds, ' s'
             text = text//trim(line)//new_line('a')
             if (sweep%found) then
-               write (line, '(a,f10.4,a)') '  smallest gap meeting the target: ', 1000.0_dp*sweep%safe_gap, ' mm'
-               text = text//trim(line)//new_line('a')
+               write (line, '(a,f10.4,a)') 'smallest gap meeting the target: ', 1000.0_dp*sweep%safe_gap, ' mm'
+               if (size(deck%motions) > 1) then
+                  text = text//'  '//motion_heading(suite)//', '//trim(line)//' (this motion alone)'//new_line('a')
+               else
+                  text = text//'  '//trim(line)//new_line('a')
+               end if
             end if
          end if
       end associate
@@ -352,7 +399,7 @@ contains
       do i = 1, size(res%warnings)
          text = text//'  WARNING: '//trim(res%warnings(i))//new_line('a')
       end do
-      text = text//'  wrote '//outputs%listing//' and '//outputs%h5//new_line('a')
+      text = text//'  wrote '//outputs%listing//' and '//outputs%h5//' (summary: '//outputs%summary//')'//new_line('a')
       if (stdout_closed) then
          call stop_with('cannot write the summary: standard output is closed (the results were written to '// &
                         outputs%listing//' and '//outputs%h5//')', 1)

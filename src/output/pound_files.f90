@@ -1,16 +1,18 @@
 !> Output files that appear complete, as a pair, or not at all.
 !>
-!> A run's two outputs (`<stem>.out`, `<stem>.h5`) are written under temporary names that
-!> are unique to the process, `.<stem>.out.<pid>-<tag>.partial` and
-!> `.<stem>.h5.<pid>-<tag>.partial` beside the final ones, created exclusively when the run
-!> starts (which also proves the folder writable before anything is computed). When both
-!> are complete they are published together (`publish_outputs`) while the run holds an
-!> exclusive lock (flock) on the output folder:
+!> A run's outputs (`<stem>.out`, `<stem>.h5`, `<stem>_summary.csv`) are written under temporary
+!> names that are unique to the process, `.<stem>.out.<pid>-<tag>.partial`,
+!> `.<stem>.h5.<pid>-<tag>.partial` and `.<stem>_summary.csv.<pid>-<tag>.partial` beside the
+!> final ones, created exclusively when the run starts (which also proves the folder writable
+!> before anything is computed). When all are complete they are published together
+!> (`publish_outputs`) while the run holds an exclusive lock (flock) on the output folder:
 !>
 !> 1. the final names are checked again (not a folder, not the deck or the record);
-!> 2. an existing `<stem>.h5` is set aside as `.<stem>.h5.<pid>-<tag>.previous.partial`;
-!> 3. the new `.h5` is renamed into place, then the new `.out`;
-!> 4. if the second rename fails, the new `.h5` is removed and the previous one restored.
+!> 2. an existing `<stem>.h5` and `<stem>_summary.csv` are set aside as
+!>    `.<stem>.h5.<pid>-<tag>.previous.partial` and `.<stem>_summary.csv.<pid>-<tag>.previous.partial`;
+!> 3. the new `.h5` is renamed into place, then the new `_summary.csv`, then the new `.out`;
+!> 4. if a later rename fails, the new files already in place are removed and the previous
+!>    ones restored.
 !>
 !> So runs writing the same stem into one folder publish one after the other: the final
 !> pair always comes from one run (the last to publish), and a run either publishes both of
@@ -40,9 +42,9 @@ module pound_files
       !> Output folder, as given.
       character(len=:), allocatable :: dir
       !> Final names.
-      character(len=:), allocatable :: listing, h5
-      !> This run's temporaries and the name an existing `.h5` is set aside under.
-      character(len=:), allocatable :: listing_tmp, h5_tmp, previous
+      character(len=:), allocatable :: listing, h5, summary
+      !> This run's temporaries and the names an existing `.h5` and `_summary.csv` are set aside under.
+      character(len=:), allocatable :: listing_tmp, h5_tmp, previous, summary_tmp, summary_previous
       !> Input files an output must never be (deck, record); '' entries are ignored.
       character(len=:), allocatable :: inputs(:)
    end type output_set
@@ -50,8 +52,8 @@ module pound_files
    !> Longest temporary name the signal handler can remove.
    integer, parameter :: max_name = 4096
    !> Temporaries registered for removal by the signal handler (NUL-terminated).
-   character(kind=c_char), volatile, save :: registered(max_name, 2)
-   logical, volatile, save :: in_use(2) = .false.
+   character(kind=c_char), volatile, save :: registered(max_name, 3)
+   logical, volatile, save :: in_use(3) = .false.
    !> Inside the renames of a publication: a signal is only recorded.
    logical, volatile, save :: critical = .false.
    integer, volatile, save :: deferred_signal = 0
@@ -92,6 +94,7 @@ contains
       stem = file_stem(deck_path)
       set%listing = join_path(dir, stem//'.out')
       set%h5 = join_path(dir, stem//'.h5')
+      set%summary = join_path(dir, stem//'_summary.csv')
       call check_targets(set, error)
       if (allocated(error)) return
       do attempt = 1, 100
@@ -99,8 +102,11 @@ contains
          set%listing_tmp = join_path(dir, '.'//stem//'.out.'//tag//'.partial')
          set%h5_tmp = join_path(dir, '.'//stem//'.h5.'//tag//'.partial')
          set%previous = join_path(dir, '.'//stem//'.h5.'//tag//'.previous.partial')
-         if (len(set%h5_tmp) >= max_name .or. len(set%listing_tmp) >= max_name) then
-            call fatal_error(error, 'output path too long: '//set%h5_tmp)
+         set%summary_tmp = join_path(dir, '.'//stem//'_summary.csv.'//tag//'.partial')
+         set%summary_previous = join_path(dir, '.'//stem//'_summary.csv.'//tag//'.previous.partial')
+         if (len(set%h5_tmp) >= max_name .or. len(set%listing_tmp) >= max_name .or. &
+             len(set%summary_tmp) >= max_name) then
+            call fatal_error(error, 'output path too long: '//set%summary_tmp)
             return
          end if
          call create_new(set%listing_tmp, 1, error)
@@ -109,6 +115,7 @@ contains
             return
          end if
          call create_new(set%h5_tmp, 2, error)
+         if (.not. allocated(error)) call create_new(set%summary_tmp, 3, error)
          if (.not. allocated(error)) return
          call discard_outputs(set)
          if (index(error%message, 'exists') == 0) return
@@ -124,18 +131,29 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(c_ptr) :: lock
       integer :: e
-      logical :: had_previous
+      logical :: had_previous, had_summary, summary_published
 
       ! Without flock (some network file systems) the pair is still published as a pair,
       ! only not serialised with other runs.
       call posix_lock_directory(set%dir, lock, e)
       critical = .true.
+      had_previous = .false.
+      had_summary = .false.
+      summary_published = .false.
       call check_targets(set, error)
       if (.not. allocated(error)) then
          e = posix_rename(set%h5, set%previous)
          had_previous = e == 0
          if (e /= 0 .and. e /= errno_enoent) then
             call fatal_error(error, 'cannot replace '//set%h5//': '//posix_strerror(e))
+         end if
+      end if
+      if (.not. allocated(error)) then
+         e = posix_rename(set%summary, set%summary_previous)
+         had_summary = e == 0
+         if (e /= 0 .and. e /= errno_enoent) then
+            call fatal_error(error, 'cannot replace '//set%summary//': '//posix_strerror(e))
+            call restore_previous(.false.)
          end if
       end if
       if (.not. allocated(error)) then
@@ -147,13 +165,23 @@ contains
          end if
       end if
       if (.not. allocated(error)) then
+         e = posix_rename(set%summary_tmp, set%summary)
+         summary_published = e == 0
+         if (e /= 0) then
+            call fatal_error(error, 'cannot publish '//set%summary//' (renaming '//set%summary_tmp//'): '// &
+                             posix_strerror(e)//'; '//set%h5//' was not published either')
+            call restore_previous(.true.)
+         end if
+      end if
+      if (.not. allocated(error)) then
          e = posix_rename(set%listing_tmp, set%listing)
          if (e /= 0) then
             call fatal_error(error, 'cannot publish '//set%listing//' (renaming '//set%listing_tmp// &
                              '): '//posix_strerror(e)//'; '//set%h5//' was not published either')
             call restore_previous(.true.)
-         else if (had_previous) then
-            e = posix_unlink(set%previous)
+         else
+            if (had_previous) e = posix_unlink(set%previous)
+            if (had_summary) e = posix_unlink(set%summary_previous)
          end if
       end if
       call discard_outputs(set)
@@ -162,12 +190,16 @@ contains
 
    contains
 
+      !> Undo: the new files in place removed (`published`: the new `.h5`, and the new
+      !> `_summary.csv` if it was renamed), the previous ones renamed back.
       subroutine restore_previous(published)
          logical, intent(in) :: published
          integer :: ignore
 
          if (published) ignore = posix_unlink(set%h5)
+         if (summary_published) ignore = posix_unlink(set%summary)
          if (had_previous) ignore = posix_rename(set%previous, set%h5)
+         if (had_summary) ignore = posix_rename(set%summary_previous, set%summary)
       end subroutine restore_previous
 
    end subroutine publish_outputs
@@ -181,6 +213,7 @@ contains
       in_use = .false.
       if (allocated(set%listing_tmp)) ignore = posix_unlink(set%listing_tmp)
       if (allocated(set%h5_tmp)) ignore = posix_unlink(set%h5_tmp)
+      if (allocated(set%summary_tmp)) ignore = posix_unlink(set%summary_tmp)
    end subroutine discard_outputs
 
    !> Refuse final names that are folders or the same file as one of the inputs.
@@ -190,11 +223,13 @@ contains
       character(len=:), allocatable :: target
       integer :: i, k
 
-      do k = 1, 2
+      do k = 1, 3
          if (k == 1) then
             target = set%h5
-         else
+         else if (k == 2) then
             target = set%listing
+         else
+            target = set%summary
          end if
          if (posix_is_directory(target)) then
             call fatal_error(error, 'output '//target//' is a folder: remove or rename it')

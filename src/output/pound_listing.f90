@@ -128,14 +128,16 @@ contains
       end if
    end subroutine note_io
 
-   !> Program, version, date, deck, title, units and the deck echo.
-   subroutine write_listing_header(u, deck, ground_text)
+   !> Program, version, date, deck, title, units, the summary (when given) and the deck echo.
+   subroutine write_listing_header(u, deck, ground_text, summary)
       !> Open unit.
       integer, intent(in) :: u
       !> The deck.
       type(deck_type), intent(in) :: deck
       !> Ground motion summary lines.
       character(len=*), intent(in) :: ground_text(:)
+      !> The engineering summary's lines (`pound_summary`), a section of their own after the title block.
+      character(len=*), intent(in), optional :: summary(:)
       character(len=8) :: date
       character(len=10) :: time
       integer :: i, start
@@ -157,6 +159,13 @@ contains
       call note_io()
       write (u, '(a)', iostat=ios, iomsg=msg) repeat('=', 78)
       call note_io()
+      if (present(summary)) then
+         call write_section(u, 'Summary')
+         do i = 1, size(summary)
+            write (u, '(a)', iostat=ios, iomsg=msg) '  '//trim(summary(i))
+            call note_io()
+         end do
+      end if
       call write_section(u, 'Deck echo')
       start = 1
       do i = 1, len(deck%text)

@@ -1,0 +1,700 @@
+!> The engineering summary of a run: the answer an engineer copies into a report, computed from
+!> the results (nothing is run again) and given as items (`summary_item`) that the terminal
+!> summary, the top of the listing and `<stem>_summary.csv` (`pound_summary_output`) share.
+!>
+!> Order of the items:
+!> 1. a suite (several `&ground`): the suite's answer first: the thresholds of the suite sweep
+!>    on the mean and on every motion (refined by bisection, then on the grid), the motions
+!>    used and the failed cases, and per building the largest |lambda| of the storey shear over
+!>    the storeys of the suite mean of the lambdas, of the lambda of the means and of any one
+!>    motion (with that motion);
+!> 2. per building (a suite: of the single-motion case, `motion_heading`): the largest
+!>    |lambda| of the storey shear with its storey and the time of the coupled peak; for a
+!>    frame also of the column segments' shear and end moments with the segment (storey,
+!>    column line) and time; the largest impact force on the building with its joint and time;
+!> 3. per contact pair: the no-contact gap, the time-history threshold gap of the sweep and
+!>    the code separation rules (ABS, SRSS, EC8, DDC with its correlation rho; `pair_rules`,
+!>    the one call of `pound_separation` here) on the uncoupled peaks of the facing floors (a
+!>    suite: its row of the suite, on the mean peaks);
+!> 4. collapses (none can happen: the buildings of this version are elastic), failed sweep
+!>    gaps, warnings.
+!>
+!> A value that cannot be given is "n/a" (`available = .false.`), never a number; +huge (a
+!> lambda whose uncoupled peak is 0) is "inf". Gaps are in mm, lambda in %, forces in kN.
+module pound_summary
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use pound_kinds, only: dp
+   use pound_error, only: error_type
+   use pound_strings, only: str
+   use pound_config, only: deck_type
+   use pound_response, only: q_u, q_shear
+   use pound_run_case, only: case_result
+   use pound_suite, only: suite_result
+   use pound_separation, only: separation_t, separation_rules, no_contact_gap
+   implicit none
+   private
+
+   public :: summary_item, build_summary, summary_lines, motion_heading, value_text, suite_answer_line
+
+   !> Length of the text fields of an item.
+   integer, parameter, public :: summary_text_len = 1024
+   !> Width of the label column of the text lines.
+   integer, parameter :: label_width = 56
+
+   !> One line of the summary (one row of the CSV file).
+   type :: summary_item
+      !> 'suite', 'building', 'pair', 'collapse', 'failed' or 'warning'.
+      character(len=16) :: kind = ''
+      !> Building name, pair label, or 'suite' / 'run'.
+      character(len=summary_text_len) :: subject = ''
+      !> Machine name of the quantity, e.g. 'refined_gap_mean', 'lambda_storey_shear'.
+      character(len=40) :: quantity = ''
+      !> Human description for the text lines.
+      character(len=summary_text_len) :: label = ''
+      !> Value in `unit` (valid when `available`).
+      real(dp) :: value = 0.0_dp
+      !> Whether the value exists ('n/a' otherwise).
+      logical :: available = .true.
+      !> 'mm', '%', 'kN', 's', '-' (a count or a ratio), '' (text only).
+      character(len=8) :: unit = ''
+      !> Where (storey, segment, joint, motion), or why n/a.
+      character(len=summary_text_len) :: location = ''
+      !> Time of the peak (s); negative: none.
+      real(dp) :: time = -1.0_dp
+   end type summary_item
+
+contains
+
+   !> Every item of the summary of the case `res` of the configuration `deck`; with `suite`
+   !> (a deck with several `&ground`) the suite's answer first and the case is the suite's
+   !> single-motion case (`suite%first`).
+   subroutine build_summary(deck, res, items, suite)
+      !> The validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> The single-motion case (the program's results).
+      type(case_result), intent(in) :: res
+      !> The summary.
+      type(summary_item), allocatable, intent(out) :: items(:)
+      !> The suite, when the deck has several `&ground`.
+      type(suite_result), intent(in), optional :: suite
+      character(len=:), allocatable :: motion
+      integer :: ib, ip, i
+
+      allocate (items(0))
+      motion = ''
+      if (present(suite)) then
+         call suite_items(suite)
+         motion = ' ('//motion_heading(suite)//')'
+      end if
+      do ib = 1, size(res%models)
+         call building_items(ib)
+      end do
+      if (res%has_coupled) then
+         do ip = 1, res%cs%m
+            call pair_items(ip)
+         end do
+      end if
+      call add(item('collapse', 'run', 'collapse', 'collapses', unit='', &
+                    location='not modelled: the buildings of this version are elastic and cannot collapse', &
+                    available=.false.))
+      if (res%has_sweep) then
+         if (any(res%sweep%failed)) call add(item('failed', 'run', 'failed_sweep_gaps', &
+                                                  'failed gaps of the sweep'//motion, &
+                                                  real(count(res%sweep%failed), dp), '-', &
+                                                  'of '//str(size(res%sweep%failed))//' gaps'))
+      end if
+      if (allocated(res%warnings)) then
+         do i = 1, size(res%warnings)
+            call add(item('warning', 'run', 'warning', 'WARNING'//motion, unit='', &
+                          location=trim(res%warnings(i)), available=.false.))
+         end do
+      end if
+
+   contains
+
+      subroutine add(it)
+         type(summary_item), intent(in) :: it
+
+         items = [items, it]
+      end subroutine add
+
+      !> The suite's answer.
+      subroutine suite_items(s)
+         type(suite_result), intent(in) :: s
+         integer :: nm, ib, j, k, kk
+         real(dp) :: v, best
+         character(len=:), allocatable :: b, tol
+         character(len=24) :: buf
+
+         nm = size(s%names)
+         if (s%has_sweep) then
+            write (buf, '(f0.4)') 1000.0_dp*s%refine_tolerance
+            if (buf(1:1) == '.') buf = '0'//buf
+            tol = 'bisection to '//trim(buf)//' mm'
+            call add(gap_item('refined_gap_mean', 'suite gap: sweep threshold on the mean, refined', &
+                              s%refined_gap_mean, tol))
+            call add(gap_item('refined_gap_every', 'suite gap: sweep threshold on every motion, refined', &
+                              s%refined_gap_every, tol))
+            call add(gap_item('safe_gap_mean', 'suite gap on the sweep grid, on the mean', s%safe_gap_mean, &
+                              'grid of '//str(size(s%sweep_gap))//' gaps'))
+            call add(gap_item('safe_gap_every', 'suite gap on the sweep grid, on every motion', s%safe_gap_every, &
+                              'grid of '//str(size(s%sweep_gap))//' gaps'))
+         else
+            call add(item('suite', 'suite', 'refined_gap_mean', 'suite gap: sweep threshold on the mean', &
+                          unit='mm', location='no &sweep with target_lambda: not computed', available=.false.))
+         end if
+         call add(item('suite', 'suite', 'motions', 'motions of the suite', real(nm, dp), '-', &
+                       'statistics over '//str(s%n_used)))
+         if (size(s%failures) > 0) then
+            call add(item('suite', 'suite', 'failed_cases', 'failed cases of the suite', real(size(s%failures), dp), &
+                          '-', str(nm - s%n_used)//' motions left out; named in the listing and /suite/failed'))
+         else
+            call add(item('suite', 'suite', 'failed_cases', 'failed cases of the suite', 0.0_dp, '-', 'none'))
+         end if
+         if (.not. s%has_coupled) return
+         do ib = 1, size(s%building)
+            b = trim(res%models(ib)%name)
+            associate (sb => s%building(ib))
+               j = largest(sb%mean_lambda(:, q_shear))
+               call add(item('suite', b, 'mean_lambda_storey_shear', b//': suite mean of the storey-shear lambdas', &
+                             sb%mean_lambda(j, q_shear), '%', 'storey '//str(j)))
+               j = largest(sb%lambda_of_means(:, q_shear))
+               call add(item('suite', b, 'lambda_of_means_storey_shear', b//': storey-shear lambda of the mean peaks', &
+                             sb%lambda_of_means(j, q_shear), '%', 'storey '//str(j)))
+               best = -1.0_dp
+               j = 1
+               kk = 0
+               do k = 1, nm
+                  if (s%motion_failed(k)) cycle
+                  v = maxval(abs(sb%lambda(k, :, q_shear)))
+                  if (v > best) then
+                     best = v
+                     kk = k
+                     j = largest(sb%lambda(k, :, q_shear))
+                  end if
+               end do
+               if (kk > 0) then
+                  call add(item('suite', b, 'max_lambda_storey_shear', b//': largest storey-shear lambda of any motion', &
+                                sb%lambda(kk, j, q_shear), '%', 'storey '//str(j)//', motion '//trim(s%names(kk))))
+               end if
+            end associate
+         end do
+      end subroutine suite_items
+
+      !> A gap item of the suite (m in, mm out; negative: none).
+      function gap_item(quantity, label, gap, where) result(it)
+         character(len=*), intent(in) :: quantity, label, where
+         real(dp), intent(in) :: gap
+         type(summary_item) :: it
+
+         if (gap >= 0.0_dp) then
+            it = item('suite', 'suite', quantity, label, 1000.0_dp*gap, 'mm', where)
+         else
+            it = item('suite', 'suite', quantity, label, unit='mm', available=.false., &
+                      location='none: no target_lambda, or no gap of the sweep range meets it')
+         end if
+      end function gap_item
+
+      !> Largest storey-shear lambda, of the column segments (frames), largest impact force.
+      subroutine building_items(ib)
+         integer, intent(in) :: ib
+         character(len=:), allocatable :: b
+         integer :: j, k, s, nq, e, best_k
+         real(dp) :: f, t
+         character(len=:), allocatable :: joint
+
+         b = trim(res%models(ib)%name)
+         if (.not. res%has_coupled) then
+            call add(item('building', b, 'lambda_storey_shear', b//': largest storey-shear lambda'//motion, &
+                          unit='%', location='no &contact: no coupled run', available=.false.))
+            return
+         end if
+         j = largest(res%influence(ib)%lambda(:, q_shear))
+         call add(item('building', b, 'lambda_storey_shear', b//': largest storey-shear lambda'//motion, &
+                       res%influence(ib)%lambda(j, q_shear), '%', 'storey '//str(j), &
+                       res%cpl%building(ib)%peak_time(j, q_shear)))
+         if (allocated(res%buildings(ib)%frame) .and. allocated(res%influence(ib)%member_lambda) .and. &
+             allocated(res%cpl%building(ib)%member_time)) then
+            nq = size(res%models(ib)%member_names)
+            associate (ml => res%influence(ib)%member_lambda, fr => res%buildings(ib)%frame%frame, &
+                       ce => res%buildings(ib)%frame%column_element)
+               ! Shear (quantity 1 of a segment), then the larger of the end moments (2, 3).
+               do k = 1, 2
+                  best_k = 0
+                  do s = 1, size(ce)
+                     do j = merge(1, 2, k == 1), merge(1, 3, k == 1)
+                        if (best_k == 0) then
+                           best_k = (s - 1)*nq + j
+                        else if (abs(ml((s - 1)*nq + j)) > abs(ml(best_k))) then
+                           best_k = (s - 1)*nq + j
+                        end if
+                     end do
+                  end do
+                  if (best_k == 0) cycle
+                  s = (best_k - 1)/nq + 1
+                  e = ce(s)
+                  call add(item('building', b, merge('lambda_column_shear ', 'lambda_column_moment', k == 1), &
+                                b//': largest column-segment '//merge('shear lambda ', 'moment lambda', k == 1)// &
+                                motion, ml(best_k), '%', 'segment '//str(s)//' (storey '// &
+                                str(fr%element_group(e))//', column line '// &
+                                str(fr%node_line(fr%element_nodes(1, e)))//', '// &
+                                trim(res%models(ib)%member_names(best_k - (s - 1)*nq))//')', &
+                                res%cpl%building(ib)%member_time(best_k)))
+               end do
+            end associate
+         end if
+         f = -1.0_dp
+         t = -1.0_dp
+         joint = ''
+         do k = 1, res%cs%m
+            if (all(res%cs%pair(k)%building /= ib)) cycle
+            if (res%cs%joint(k)%peak_force > f) then
+               f = res%cs%joint(k)%peak_force
+               t = res%cs%joint(k)%peak_time
+               joint = res%cs%pair(k)%label
+            end if
+         end do
+         if (f > 0.0_dp) then
+            call add(item('building', b, 'impact_force', b//': largest impact force'//motion, f, 'kN', &
+                          'joint '//joint, t))
+         else if (f == 0.0_dp) then
+            call add(item('building', b, 'impact_force', b//': largest impact force'//motion, 0.0_dp, 'kN', &
+                          'no impact'))
+         else
+            call add(item('building', b, 'impact_force', b//': largest impact force'//motion, unit='kN', &
+                          location='no joint at this building', available=.false.))
+         end if
+      end subroutine building_items
+
+      !> No-contact gap, time-history threshold gap and code rules of pair ip.
+      subroutine pair_items(ip)
+         integer, intent(in) :: ip
+         type(separation_t) :: sep
+         character(len=:), allocatable :: p, why, where
+         logical :: have
+         real(dp) :: gap
+
+         p = trim(res%cs%pair(ip)%label)
+         if (present(suite)) then
+            associate (s => suite%separation(size(suite%names) + 1, ip))
+               if (s%no_contact >= 0.0_dp) then
+                  call add(item('pair', p, 'no_contact_gap', p//': no-contact gap, mean over the motions', &
+                                1000.0_dp*s%no_contact, 'mm', 'max_t (u1 - u2) of the uncoupled histories'))
+               else
+                  call add(item('pair', p, 'no_contact_gap', p//': no-contact gap', unit='mm', &
+                                location='the deck''s history stores no u', available=.false.))
+               end if
+               call th_item(p, s%time_history, 'suite sweep threshold on the mean (one gap for every joint)')
+               call rule_items(p, s, .true., 'suite mean peaks')
+            end associate
+            return
+         end if
+         call pair_no_contact(res, ip, gap, why)
+         if (len(why) == 0) then
+            call add(item('pair', p, 'no_contact_gap', p//': no-contact gap', 1000.0_dp*gap, 'mm', &
+                          'max_t (u1 - u2) of the uncoupled run'))
+         else
+            call add(item('pair', p, 'no_contact_gap', p//': no-contact gap', unit='mm', location=why, &
+                          available=.false.))
+         end if
+         gap = -1.0_dp
+         where = 'no &sweep'
+         if (res%has_sweep) then
+            where = 'no target_lambda, or no gap of the sweep range meets it'
+            if (res%sweep%found) gap = res%sweep%safe_gap
+         end if
+         if (gap >= 0.0_dp) where = 'sweep threshold (one gap for every joint)'
+         call th_item(p, gap, where)
+         call pair_rules(res, ip, sep, have, why)
+         if (have) then
+            call rule_items(p, sep, .true., 'uncoupled peaks of the facing floors')
+         else
+            call rule_items(p, sep, .false., why)
+         end if
+      end subroutine pair_items
+
+      !> The time-history threshold gap of pair p (m in, mm out; negative: n/a, `where` says why).
+      subroutine th_item(p, gap, where)
+         character(len=*), intent(in) :: p
+         real(dp), intent(in) :: gap
+         character(len=*), intent(in) :: where
+
+         if (gap >= 0.0_dp) then
+            call add(item('pair', p, 'time_history_gap', p//': time-history threshold gap', 1000.0_dp*gap, 'mm', where))
+         else
+            call add(item('pair', p, 'time_history_gap', p//': time-history threshold gap', unit='mm', &
+                          location=where, available=.false.))
+         end if
+      end subroutine th_item
+
+      !> ABS, SRSS, EC8, DDC (mm) and rho of pair p (`have` false: n/a, `where` says why).
+      subroutine rule_items(p, sep, have, where)
+         character(len=*), intent(in) :: p
+         type(separation_t), intent(in) :: sep
+         logical, intent(in) :: have
+         character(len=*), intent(in) :: where
+         character(len=*), parameter :: quantity(4) = [character(len=13) :: 'code_gap_abs', 'code_gap_srss', &
+                                                       'code_gap_ec8', 'code_gap_ddc']
+         character(len=*), parameter :: rule(4) = [character(len=40) :: 'ABS = u1 + u2', 'SRSS', &
+                                                   'EC8 4.4.2.7 (x0.7 where floors coincide)', 'DDC (CQC rho)']
+         real(dp) :: v(4)
+         integer :: r
+
+         v = [sep%abs, sep%srss, sep%ec8, sep%ddc]
+         do r = 1, 4
+            if (have) then
+               call add(item('pair', p, trim(quantity(r)), p//': code gap '//trim(rule(r)), 1000.0_dp*v(r), 'mm', &
+                             where//', elastic, no amplification'))
+            else
+               call add(item('pair', p, trim(quantity(r)), p//': code gap '//trim(rule(r)), unit='mm', &
+                             location=where, available=.false.))
+            end if
+         end do
+         if (have) then
+            call add(item('pair', p, 'ddc_rho', p//': DDC correlation rho', sep%rho, '-', where))
+         else
+            call add(item('pair', p, 'ddc_rho', p//': DDC correlation rho', unit='-', location=where, &
+                          available=.false.))
+         end if
+      end subroutine rule_items
+
+   end subroutine build_summary
+
+   !> An item.
+   pure function item(kind, subject, quantity, label, value, unit, location, time, available) result(it)
+      character(len=*), intent(in) :: kind, subject, quantity, label
+      real(dp), intent(in), optional :: value, time
+      character(len=*), intent(in), optional :: unit, location
+      logical, intent(in), optional :: available
+      type(summary_item) :: it
+
+      it%kind = kind
+      it%subject = subject
+      it%quantity = quantity
+      it%label = label
+      if (present(value)) it%value = value
+      if (present(unit)) it%unit = unit
+      if (present(location)) it%location = location
+      if (present(time)) it%time = time
+      if (present(available)) it%available = available
+   end function item
+
+   !> Index of the largest |x| (the first of equals); 1 for an empty array.
+   pure integer function largest(x) result(j)
+      real(dp), intent(in) :: x(:)
+
+      j = 1
+      if (size(x) > 0) j = maxloc(abs(x), dim=1)
+   end function largest
+
+   !> The no-contact gap max_t (u1(t) - u2(t)) of pair ip of a single-motion case (m, >= 0):
+   !> the sweep's largest closing displacement of the joint in its run without contact (every
+   !> step's path, `/sweep/closing_max`) when the case has one, otherwise from the uncoupled
+   !> u histories when they are held whole (not streamed) at both facing floors; `why` is
+   !> empty when the gap is given, else why it is n/a.
+   subroutine pair_no_contact(res, ip, gap, why)
+      type(case_result), intent(in) :: res
+      integer, intent(in) :: ip
+      real(dp), intent(out) :: gap
+      character(len=:), allocatable, intent(out) :: why
+      real(dp), allocatable :: h(:, :)
+      integer :: e, b, n
+
+      gap = 0.0_dp
+      why = ''
+      if (res%has_sweep) then
+         if (allocated(res%sweep%closing_max)) then
+            if (size(res%sweep%closing_max) >= ip) then
+               gap = max(0.0_dp, res%sweep%closing_max(ip))
+               return
+            end if
+         end if
+      end if
+      n = res%unc%n_out
+      allocate (h(max(n, 1), 2))
+      h = 0.0_dp
+      associate (pair => res%cs%pair(ip))
+         do e = 1, 2
+            b = pair%building(e)
+            if (b == 0) cycle
+            associate (r => res%unc%building(b))
+               if (pair%floor(e) == 0) then
+                  ! A point between floors: its DOF's history, when every DOF's is held.
+                  if (.not. allocated(r%u_nodes) .or. r%streamed .or. n == 0) then
+                     why = 'a pair between floors: give a &sweep (its run without contact gives the gap)'
+                     return
+                  end if
+                  h(1:n, e) = r%u_nodes(pair%dof(e), 1:n)
+               else
+                  if (.not. allocated(r%u) .or. r%streamed .or. n == 0) then
+                     why = 'give a &sweep (its run without contact gives the gap)'
+                     return
+                  end if
+                  h(1:n, e) = r%u(pair%floor(e), 1:n)
+               end if
+            end associate
+         end do
+      end associate
+      gap = no_contact_gap(h(:, 1), h(:, 2))
+   end subroutine pair_no_contact
+
+   !> The code separation rules of pair ip of a single-motion case on the uncoupled peak
+   !> displacements of its facing floors (a rigid neighbour: 0, its period and damping those of
+   !> the building); the one place where the summary calls `pound_separation`'s rules (the
+   !> no-contact gap is `pair_no_contact`'s). `have` is false (and `why` says why) for a pair
+   !> between floors, whose peak the uncoupled run does not keep.
+   subroutine pair_rules(res, ip, sep, have, why)
+      type(case_result), intent(in) :: res
+      integer, intent(in) :: ip
+      type(separation_t), intent(out) :: sep
+      logical, intent(out) :: have
+      character(len=:), allocatable, intent(out) :: why
+      type(error_type), allocatable :: error
+      real(dp) :: u(2), t(2), z(2), level(2)
+      integer :: e, b, other
+
+      have = .false.
+      why = ''
+      associate (pair => res%cs%pair(ip))
+         do e = 1, 2
+            b = pair%building(e)
+            other = pair%building(3 - e)
+            if (b == 0) b = other
+            if (b == 0) then
+               why = 'no building at either end'
+               return
+            end if
+            u(e) = 0.0_dp
+            level(e) = -1.0_dp
+            t(e) = res%models(b)%period(1)
+            z(e) = res%models(b)%damping_ratio
+            if (pair%building(e) == 0) cycle
+            if (pair%floor(e) == 0) then
+               why = 'the pair is between floors: its peak displacement is not kept'
+               return
+            end if
+            u(e) = res%unc%building(b)%peak(pair%floor(e), q_u)
+            level(e) = sum(res%buildings(b)%height(1:pair%floor(e)))
+         end do
+         call separation_rules(u(1), u(2), t(1), t(2), z(1), z(2), &
+                               all(level >= 0.0_dp) .and. abs(level(1) - level(2)) <= 1.0e-9_dp, &
+                               [0.0_dp], [0.0_dp], sep, error)
+      end associate
+      if (allocated(error)) then
+         why = error%message
+         return
+      end if
+      have = .true.
+   end subroutine pair_rules
+
+   !> The heading of a suite's single-motion results: 'motion k of n: NAME'.
+   pure function motion_heading(suite) result(text)
+      !> The suite.
+      type(suite_result), intent(in) :: suite
+      character(len=:), allocatable :: text
+
+      if (suite%first < 1 .or. suite%first > size(suite%names)) then
+         text = 'no motion of '//str(size(suite%names))
+      else
+         text = 'motion '//str(suite%first)//' of '//str(size(suite%names))//': '//trim(suite%names(suite%first))
+      end if
+   end function motion_heading
+
+   !> One line of the suite's answer (for plot titles and the HDF5 root): the refined
+   !> thresholds of the suite sweep on the mean and on every motion, or why there are none.
+   pure function suite_answer_line(suite) result(text)
+      !> The suite.
+      type(suite_result), intent(in) :: suite
+      character(len=:), allocatable :: text
+
+      text = 'suite of '//str(size(suite%names))//' motions'
+      if (.not. suite%has_sweep) then
+         text = text//': no sweep threshold (no &sweep)'
+      else
+         text = text//': gap '//gap_text(suite%refined_gap_mean, suite%safe_gap_mean)//' on the mean, '// &
+                gap_text(suite%refined_gap_every, suite%safe_gap_every)//' on every motion'
+      end if
+      if (size(suite%failures) > 0) text = text//'; '//str(size(suite%failures))//' failed cases'
+
+   contains
+
+      pure function gap_text(refined, safe) result(t)
+         real(dp), intent(in) :: refined, safe
+         character(len=:), allocatable :: t
+         character(len=16) :: buf
+
+         if (refined >= 0.0_dp) then
+            write (buf, '(f0.2)') 1000.0_dp*refined
+            t = trim(buf)//' mm'
+         else if (safe >= 0.0_dp) then
+            write (buf, '(f0.2)') 1000.0_dp*safe
+            t = trim(buf)//' mm (grid)'
+         else
+            t = 'none'
+         end if
+      end function gap_text
+
+   end function suite_answer_line
+
+   !> The value of an item as text: 'n/a', 'inf', or the number (`digits` decimals).
+   pure function value_text(it, digits) result(text)
+      !> The item.
+      type(summary_item), intent(in) :: it
+      !> Decimals of the fixed form (the scientific form beyond 1e9 or below 1e-3).
+      integer, intent(in) :: digits
+      character(len=:), allocatable :: text
+      character(len=40) :: buf
+      character(len=16) :: fmt
+
+      if (.not. it%available) then
+         text = 'n/a'
+      else if (it%value >= huge(1.0_dp)) then
+         text = 'inf'
+      else if (.not. ieee_is_finite(it%value)) then
+         text = 'n/a'
+      else if (it%unit == '-' .and. it%value == aint(it%value) .and. abs(it%value) < 1.0e9_dp) then
+         write (buf, '(i0)') nint(it%value)
+         text = trim(buf)
+      else if (it%value /= 0.0_dp .and. (abs(it%value) >= 1.0e9_dp .or. abs(it%value) < 10.0_dp**(-digits))) then
+         write (buf, '(es12.4)') it%value
+         text = trim(adjustl(buf))
+      else
+         write (fmt, '(a,i0,a)') '(f0.', digits, ')'
+         write (buf, fmt) it%value
+         text = trim(adjustl(buf))
+         if (text(1:1) == '.') text = '0'//text
+         if (text(1:min(2, len(text))) == '-.') text = '-0'//text(2:)
+      end if
+   end function value_text
+
+   !> The summary as text lines (the terminal and the top of the listing): a suite's answer
+   !> first, then `motion_heading`'s line and the single-motion items; label, value and unit,
+   !> then where and when.
+   pure function summary_lines(items, heading) result(lines)
+      !> The items (`build_summary`).
+      type(summary_item), intent(in) :: items(:)
+      !> A suite's heading of the single-motion items (absent or empty: none).
+      character(len=*), intent(in), optional :: heading
+      character(len=2*summary_text_len), allocatable :: lines(:)
+      character(len=:), allocatable :: line, where
+      integer :: i
+      logical :: headed, counted
+
+      allocate (lines(0))
+      headed = .true.
+      if (present(heading)) headed = len(heading) == 0
+      do i = 1, size(items)
+         associate (it => items(i))
+            if (.not. headed .and. it%kind /= 'suite') then
+               lines = [character(len=2*summary_text_len) :: lines, &
+                        'single-motion results below: '//heading//' (not the suite''s answer)']
+               headed = .true.
+            end if
+            if (it%kind == 'warning') then
+               ! The warnings themselves follow the summary (terminal) or their tables (listing).
+               if (i == 1) then
+                  counted = .false.
+               else
+                  counted = items(i - 1)%kind == 'warning'
+               end if
+               if (.not. counted) lines = [character(len=2*summary_text_len) :: lines, &
+                                           'warnings: '//str(count(items(i:)%kind == 'warning'))// &
+                                           ' (the WARNING lines)']
+               cycle
+            end if
+            if (it%kind == 'pair') then
+               if (it%quantity == 'no_contact_gap') call pair_line(i)
+               cycle
+            end if
+            line = trim(it%label)//':'
+            if (len(line) < label_width) line = line//repeat(' ', label_width - len(line))
+            line = line//' '//value_text(it, decimals(it%unit))
+            if (it%available .and. len_trim(it%unit) > 0 .and. it%unit /= '-') line = line//' '//trim(it%unit)
+            where = trim(it%location)
+            if (it%time >= 0.0_dp) where = where//', t = '//time_text(it%time)//' s'
+            if (len(where) > 0) line = line//'  ('//where//')'
+            lines = [character(len=2*summary_text_len) :: lines, line]
+         end associate
+      end do
+
+   contains
+
+      !> The items of one pair (from `first` on, while the subject is the same) on one line of
+      !> gaps in mm, then a line of notes: what each is based on, or why it is n/a.
+      pure subroutine pair_line(first)
+         integer, intent(in) :: first
+         character(len=:), allocatable :: text, notes
+         integer :: k
+
+         text = 'pair '//trim(items(first)%subject)//', gaps [mm]:'
+         notes = ''
+         k = first
+         do while (k <= size(items))
+            if (items(k)%kind /= 'pair' .or. items(k)%subject /= items(first)%subject) exit
+            associate (p => items(k))
+               if (k > first .and. p%quantity /= 'ddc_rho') text = text//','
+               text = text//' '//short_name(p%quantity)//' '//value_text(p, decimals(p%unit))
+               if (p%quantity == 'ddc_rho') text = text//')'
+               if (p%quantity == 'no_contact_gap' .or. p%quantity == 'time_history_gap') then
+                  if (len(notes) > 0) notes = notes//'; '
+                  notes = notes//short_name(p%quantity)//': '//trim(p%location)
+               else if (p%quantity == 'code_gap_abs') then
+                  notes = notes//'; code rules: '//trim(p%location)
+               end if
+            end associate
+            k = k + 1
+         end do
+         lines = [character(len=2*summary_text_len) :: lines, text, '  ('//notes//')']
+      end subroutine pair_line
+
+      !> The short name of a pair's quantity on its line.
+      pure function short_name(quantity) result(name)
+         character(len=*), intent(in) :: quantity
+         character(len=:), allocatable :: name
+
+         select case (quantity)
+         case ('no_contact_gap')
+            name = 'no-contact'
+         case ('time_history_gap')
+            name = 'time-history'
+         case ('code_gap_abs')
+            name = 'ABS'
+         case ('code_gap_srss')
+            name = 'SRSS'
+         case ('code_gap_ec8')
+            name = 'EC8'
+         case ('code_gap_ddc')
+            name = 'DDC'
+         case ('ddc_rho')
+            name = '(DDC rho'
+         case default
+            name = trim(quantity)
+         end select
+      end function short_name
+
+      pure integer function decimals(unit)
+         character(len=*), intent(in) :: unit
+
+         select case (unit)
+         case ('mm')
+            decimals = 4
+         case ('%', 'kN')
+            decimals = 2
+         case default
+            decimals = 3
+         end select
+      end function decimals
+
+      pure function time_text(t) result(s)
+         real(dp), intent(in) :: t
+         character(len=:), allocatable :: s
+         character(len=24) :: buf
+
+         write (buf, '(f0.4)') t
+         s = trim(buf)
+         if (s(1:1) == '.') s = '0'//s
+      end function time_text
+
+   end function summary_lines
+
+end module pound_summary
