@@ -10,6 +10,10 @@ set(POUND_SOURCES
   core/pound_swap.f90
   # core: the case scheduler (independent cases into a table; its implementation below)
   core/pound_cases.f90
+  # core: the exponential of a small matrix, and the exact step of a linear oscillator under
+  # piecewise-linear forcing (used by the models' synthetic motions, the spectra and the exact
+  # free steps: core, so that no model module uses the solver)
+  core/pound_expm.f90 core/pound_sdof.f90
   # core: the rules of a joint envelope (shared by the deck reader and the contact law)
   core/pound_envelope_rules.f90
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
@@ -28,12 +32,8 @@ set(POUND_SOURCES
   solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
   # solver: exact free steps (modes of (K+G, M), each mode's exact step)
   solver/pound_modal_step.f90 solver/pound_newmark_exact.f90
-  # solver: the exponential of a small matrix (exact steps of oscillators)
-  solver/pound_expm.f90
   # solver: several ground motions of one shear building at once (motion-fastest lanes)
   solver/pound_newmark_batch.f90
-  # solver: exact step of a linear oscillator under piecewise-linear forcing
-  solver/pound_sdof.f90
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
   contact/pound_contact_law.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
   contact/pound_joint_state.f90 contact/pound_lcp_statistics.f90 contact/pound_contact_lcp.f90

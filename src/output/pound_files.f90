@@ -33,7 +33,7 @@ module pound_files
    implicit none
    private
 
-   public :: rename_file, delete_file, file_stem, file_exists, directory_of, join_path
+   public :: delete_file, file_stem, file_exists, directory_of, join_path
    public :: output_set, plan_outputs, publish_outputs, discard_outputs, install_signal_cleanup
    public :: make_directories, same_file
 
@@ -398,20 +398,6 @@ contains
       call posix_file_id(b, dev_b, ino_b, eb)
       same = ea == 0 .and. eb == 0 .and. dev_a == dev_b .and. ino_a == ino_b
    end function same_file
-
-   !> Rename `old` to `new`, replacing `new`.
-   subroutine rename_file(old, new, error)
-      !> Existing file.
-      character(len=*), intent(in) :: old
-      !> New name.
-      character(len=*), intent(in) :: new
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: e
-
-      e = posix_rename(old, new)
-      if (e /= 0) call fatal_error(error, 'cannot rename '//old//' to '//new//': '//posix_strerror(e))
-   end subroutine rename_file
 
    !> Delete a file if it exists (errors ignored: used on the way out of a failure).
    subroutine delete_file(path)

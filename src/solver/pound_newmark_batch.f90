@@ -24,12 +24,9 @@ module pound_newmark_batch
    private
 
    public :: batch_lanes, newmark_batch, batch_init, batch_step, batch_lane_state, batch_reset_lane
-   public :: batch_peak_u, batch_peak_v, batch_peak_a, batch_peak_drift
 
    !> Motions advanced together (two AVX2 vectors of doubles).
    integer, parameter :: batch_lanes = 8
-   !> Quantities whose peaks the kernel tracks (index 2 of the peak arrays).
-   integer, parameter :: batch_peak_u = 1, batch_peak_v = 2, batch_peak_a = 3, batch_peak_drift = 4
 
    !> The integrator state of one building for `batch_lanes` motions.
    type :: newmark_batch
@@ -85,7 +82,8 @@ contains
 
    !> One step of every lane (predict and commit of `pound_newmark` with no other load), and the
    !> running peaks: `peak(l, q, i)` the absolute maximum so far of quantity q at floor i in
-   !> lane l and `peak_time` when it first occurred (q = batch_peak_u .. batch_peak_drift).
+   !> lane l and `peak_time` when it first occurred (q = 1 u, 2 v, 3 absolute
+   !> acceleration, 4 drift).
    subroutine batch_step(bt, b, ag_old, ag_new, t, peak, peak_time)
       !> The batch.
       type(newmark_batch), intent(inout) :: bt
