@@ -275,7 +275,7 @@ contains
          if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
       end if
       if (size(deck%motions) > 1) then
-         call write_suite_listing(u, res%models, suite, err)
+         call write_suite_listing(u, res%models, suite, err, res%cs)
          if (allocated(err)) return
       end if
       write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', res%unc%seconds, ' s'
