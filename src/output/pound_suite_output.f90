@@ -1,7 +1,8 @@
 !> Outputs of a suite of ground motions (`pound_suite`): the listing sections and the HDF5
 !> group `/suite`, written only when the deck has more than one motion.
 !>
-!> HDF5 (appended to the results file):
+!> HDF5 (appended to the results file; shapes as h5py reads them, one row per motion; every
+!> dataset has a `units` attribute):
 !>
 !>     /suite/names, /suite/scale_factor, /suite/pga            (n_motions); m/s^2
 !>     /suite/source       (n_motions) record file as resolved, 'synthetic, seed N' or 'pulse'
@@ -32,7 +33,9 @@
 !>        motion's row 1 at every gap) and
 !>        /suite/sweep/gap_failed (n_gaps, 0/1)
 !>
-!> (the arrays are written in Fortran order, so h5py shows them transposed).
+!> (the per-motion arrays are held (n_motions, n) in Fortran and written transposed, so that
+!> h5py, C and NumPy read them as documented, with one row per motion like the histories' one
+!> row per output time).
 module pound_suite_output
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
@@ -354,29 +357,30 @@ contains
          integer :: ib, q, r
          character(len=:), allocatable :: b, qn
 
-         call h5_write(h5, '/suite/names', suite%names, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/source', suite%source, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/scale_factor', suite%scale_factor, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/pga', suite%pga, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/building_period', suite%building_period, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/target', suite%target, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/target_period', suite%target_period, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/period', suite%period, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/sa', suite%sa, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/mean_sa', suite%mean_sa, error)
+         call h5_write(h5, '/suite/names', suite%names, error, units='-')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/source', suite%source, error, units='-')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/scale_factor', suite%scale_factor, error, units='1')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/pga', suite%pga, error, units='m/s^2')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/building_period', suite%building_period, error, units='s')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/target', suite%target, error, units='m/s^2')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/target_period', suite%target_period, error, units='s')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/period', suite%period, error, units='s')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/sa', transpose(suite%sa), error, units='m/s^2')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/mean_sa', suite%mean_sa, error, units='m/s^2')
          if (.not. allocated(error)) call write_failures()
          if (allocated(error) .or. .not. suite%has_coupled) return
          do ib = 1, size(models)
             b = models(ib)%name
             do q = 1, n_history_quantities
                qn = trim(history_names(q))
-               call h5_write(h5, '/suite/influence/'//b//'/'//qn, suite%building(ib)%lambda(:, :, q), error)
+               call h5_write(h5, '/suite/influence/'//b//'/'//qn, transpose(suite%building(ib)%lambda(:, :, q)), &
+                            error, units='%')
                if (.not. allocated(error)) call h5_write(h5, '/suite/mean/influence/'//b//'/'//qn, &
-                                                         suite%building(ib)%mean_lambda(:, q), error)
+                                                         suite%building(ib)%mean_lambda(:, q), error, units='%')
                if (.not. allocated(error)) call h5_write(h5, '/suite/max/influence/'//b//'/'//qn, &
-                                                         suite%building(ib)%max_lambda(:, q), error)
+                                                         suite%building(ib)%max_lambda(:, q), error, units='%')
                if (.not. allocated(error)) call h5_write(h5, '/suite/lambda_of_means/'//b//'/'//qn, &
-                                                         suite%building(ib)%lambda_of_means(:, q), error)
+                                                         suite%building(ib)%lambda_of_means(:, q), error, units='%')
                if (allocated(error)) return
             end do
          end do
@@ -395,24 +399,25 @@ contains
             case default
                rule = suite%separation%time_history
             end select
-            call h5_write(h5, '/suite/separation/'//trim(rule_names(r)), rule, error)
+            call h5_write(h5, '/suite/separation/'//trim(rule_names(r)), transpose(rule), error, units='m')
             if (allocated(error)) return
          end do
          call write_histories()
          if (allocated(error) .or. .not. suite%has_sweep) return
-         call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max_abs_lambda', suite%sweep_lambda, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/mean', suite%sweep_mean, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max', suite%sweep_max, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_mean', suite%safe_gap_mean, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_every', suite%safe_gap_every, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_mean', suite%refined_gap_mean, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_every', suite%refined_gap_every, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_motion', suite%safe_gap_motion, error)
+         call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max_abs_lambda', transpose(suite%sweep_lambda), error, &
+                                                   units='%')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/mean', suite%sweep_mean, error, units='%')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max', suite%sweep_max, error, units='%')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_mean', suite%safe_gap_mean, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_every', suite%safe_gap_every, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_mean', suite%refined_gap_mean, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_every', suite%refined_gap_every, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_motion', suite%safe_gap_motion, error, units='m')
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_motion', suite%refined_gap_motion, &
-                                                   error)
+                                                   error, units='m')
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/non_monotone_motion', &
-                                                   suite%non_monotone_motion, error)
+                                                   suite%non_monotone_motion, error, units='1')
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'non_monotone_mean', &
                                                         suite%non_monotone_mean, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'non_monotone_every', &
@@ -420,13 +425,14 @@ contains
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'refine_tolerance', &
                                                         suite%refine_tolerance, error)
          if (.not. allocated(error) .and. size(suite%failures) > 0) then
-            call h5_write(h5, '/suite/sweep/failed', merge(1, 0, suite%sweep_failed), error)
+            call h5_write(h5, '/suite/sweep/failed', transpose(merge(1, 0, suite%sweep_failed)), error, &
+                                units='1')
             if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/gap_failed', merge(1, 0, suite%gap_failed), &
-                                                      error)
+                                                      error, units='1')
          end if
          ! /sweep (the first motion's own sweep, per quantity) gets the suite statistics beside it.
-         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_mean', suite%sweep_mean, error)
-         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_max', suite%sweep_max, error)
+         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_mean', suite%sweep_mean, error, units='%')
+         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_max', suite%sweep_max, error, units='%')
          if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'motion', trim(suite%names(suite%first)), &
                                                         error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'suite_safe_gap_mean', suite%safe_gap_mean, &
@@ -455,7 +461,7 @@ contains
             motion(i) = suite%names(suite%failures(i)%motion)
             message(i) = suite%failures(i)%message
          end do
-         call h5_write(h5, '/suite/failed/motion', motion, error)
+         call h5_write(h5, '/suite/failed/motion', motion, error, units='-')
          if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, spread(.true., 1, n), message, &
                                                              error, indexed=.false.)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
@@ -463,7 +469,7 @@ contains
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'single_motion', &
                                                         trim(suite%names(suite%first)), error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/motion_failed', merge(1, 0, suite%motion_failed), &
-                                                   error)
+                                                   error, units='1')
       end subroutine write_failures
 
       !> /suite/<motion>/... for the motions whose histories were kept.
@@ -475,15 +481,15 @@ contains
             if (.not. suite%histories(k)%stored) cycle
             associate (h => suite%histories(k))
                g = '/suite/'//trim(suite%names(k))
-               call h5_write(h5, g//'/ground/time', h%unc%time, error)
-               if (.not. allocated(error)) call h5_write(h5, g//'/ground/acceleration', h%ag_out, error)
+               call h5_write(h5, g//'/ground/time', h%unc%time, error, units='s')
+               if (.not. allocated(error)) call h5_write(h5, g//'/ground/acceleration', h%ag_out, error, units='m/s^2')
                if (.not. allocated(error)) call write_analysis_h5(h5, g//'/uncoupled', models, h%unc, error)
                if (allocated(error)) return
                if (.not. h%has_coupled) cycle
                call write_analysis_h5(h5, g//'/coupled', models, h%cpl, error)
-               if (.not. allocated(error)) call h5_write(h5, g//'/coupled/contact/force', h%cpl%joints%force, error)
+               if (.not. allocated(error)) call h5_write(h5, g//'/coupled/contact/force', h%cpl%joints%force, error, units='kN')
                if (.not. allocated(error)) call h5_write(h5, g//'/coupled/contact/closing', &
-                                                         h%cpl%joints%closing, error)
+                                                         h%cpl%joints%closing, error, units='m')
                if (allocated(error)) return
             end associate
          end do
