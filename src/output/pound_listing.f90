@@ -576,8 +576,8 @@ contains
          nq = size(models(ib)%member_names)
          write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//models(ib)%name
          call note_io()
-         line = repeat(' ', 36)
-         head = '     seg storey line  z1 [m]  z2 [m]'
+         line = repeat(' ', 38)
+         head = '     seg  storey  line  z1 [m]  z2 [m]'
          do q = 1, nq
             if (both) then
                line = line//'  '//heads(q)//repeat(' ', 19)
@@ -591,16 +591,16 @@ contains
             call note_io()
             line = trim(head)
          else
-            line = head(1:36)//trim(line(37:))
+            line = head(1:38)//trim(line(39:))
          end if
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
          associate (f => buildings(ib)%frame%frame, ce => buildings(ib)%frame%column_element)
             do s = size(ce), 1, -1
                e = ce(s)
-               write (head, '(2x,i6,i7,i5,2f8.3)') s, f%element_group(e), f%node_line(f%element_nodes(1, e)), &
+               write (head, '(2x,i6,i8,i6,2f8.3)') s, f%element_group(e), f%node_line(f%element_nodes(1, e)), &
                   f%node_z(f%element_nodes(1, e)), f%node_z(f%element_nodes(2, e))
-               line = head(1:36)
+               line = head(1:38)
                do q = 1, nq
                   associate (k => (s - 1)*nq + q)
                      if (both) then
