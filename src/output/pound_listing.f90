@@ -156,7 +156,8 @@ contains
       call note_io()
       write (u, '(a)', iostat=ios, iomsg=msg) 'title: '//deck%analysis%title
       call note_io()
-      write (u, '(a)', iostat=ios, iomsg=msg) 'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ'
+      write (u, '(a)', iostat=ios, iomsg=msg) 'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
+         'gaps, displacements, drifts and penetrations in mm'
       call note_io()
       write (u, '(a)', iostat=ios, iomsg=msg) repeat('=', 78)
       call note_io()
