@@ -275,8 +275,7 @@ contains
       real(dp), intent(in) :: values
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      !> Its `units` attribute (e.g. 'm', 'kN m', '1' for a dimensionless number or a code,
-      !> '-' for text); none when absent.
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer(hsize_t) :: dims(0)
@@ -299,8 +298,7 @@ contains
       real(dp), intent(in) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      !> Its `units` attribute (e.g. 'm', 'kN m', '1' for a dimensionless number or a code,
-      !> '-' for text); none when absent.
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer :: hdferr
@@ -322,8 +320,7 @@ contains
       real(dp), intent(in) :: values(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      !> Its `units` attribute (e.g. 'm', 'kN m', '1' for a dimensionless number or a code,
-      !> '-' for text); none when absent.
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer :: hdferr
@@ -345,8 +342,7 @@ contains
       integer, intent(in) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      !> Its `units` attribute (e.g. 'm', 'kN m', '1' for a dimensionless number or a code,
-      !> '-' for text); none when absent.
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer :: hdferr
@@ -368,8 +364,7 @@ contains
       integer, intent(in) :: values(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      !> Its `units` attribute (e.g. 'm', 'kN m', '1' for a dimensionless number or a code,
-      !> '-' for text); none when absent.
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer :: hdferr
@@ -397,8 +392,7 @@ contains
       logical, intent(in) :: compress
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      !> Its `units` attribute (e.g. 'm', 'kN m', '1' for a dimensionless number or a code,
-      !> '-' for text); none when absent.
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       type(h5_ids) :: ids
       character(len=:), allocatable :: p
@@ -510,8 +504,7 @@ contains
       character(len=*), intent(in) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      !> Its `units` attribute (e.g. 'm', 'kN m', '1' for a dimensionless number or a code,
-      !> '-' for text); none when absent.
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       type(h5_ids) :: ids
       character(len=:), allocatable :: p

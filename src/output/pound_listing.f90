@@ -15,7 +15,7 @@ module pound_listing
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
-   use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic_plastic, &
+   use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic, law_elastic_plastic, &
                                 law_bilinear, law_piecewise, law_parabola_cubic
    use pound_lemke, only: lemke_status_name
    use pound_influence, only: building_influence
@@ -428,8 +428,16 @@ contains
                left_cell(p%label, w), fixed_cell(mm*p%gap, 12, 3), law_name(p%law%kind), &
                p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
             call note_io()
+         end associate
+      end do
+      ! The parameters of the laws beyond k0 and c, after the table (not between its rows).
+      do k = 1, cs%m
+         associate (p => cs%pair(k))
+            if (p%law%restitution <= 0.0_dp .and. p%law%kind == law_elastic) cycle
+            write (u, '(a)', iostat=ios, iomsg=msg) '  '//p%label//':'
+            call note_io()
             if (p%law%restitution > 0.0_dp) then
-               write (u, '(16x,a,f6.3,a)', iostat=ios, iomsg=msg) 'c calibrated to the restitution e =', &
+               write (u, '(4x,a,f6.3,a)', iostat=ios, iomsg=msg) 'c calibrated to the restitution e =', &
                   p%law%restitution, ' (exact relation of the joint, README)'
                call note_io()
             end if
@@ -512,29 +520,29 @@ contains
 
          select case (law%kind)
          case (law_elastic_plastic)
-            write (u, '(16x,a,es11.4,a)', iostat=ios, iomsg=msg) 'yield force ', law%yield_force, ' kN'
+            write (u, '(4x,a,es11.4,a)', iostat=ios, iomsg=msg) 'yield force ', law%yield_force, ' kN'
             call note_io()
          case (law_bilinear)
-            write (u, '(16x,a,es11.4,a,es11.4,a)', iostat=ios, iomsg=msg) &
+            write (u, '(4x,a,es11.4,a,es11.4,a)', iostat=ios, iomsg=msg) &
                'yield force ', law%yield_force, ' kN, second slope ', &
                law%second_slope, ' kN/m'
             call note_io()
          case (law_piecewise)
-            write (u, '(16x,a,i0,a)', iostat=ios, iomsg=msg) &
+            write (u, '(4x,a,i0,a)', iostat=ios, iomsg=msg) &
                'envelope through ', size(law%env_d), ' points (d [mm], r [kN]):'
             call note_io()
-            write (u, '(16x,4(a,es10.3,a,es10.3,a))', iostat=ios, iomsg=msg) &
+            write (u, '(4x,4(a,es10.3,a,es10.3,a))', iostat=ios, iomsg=msg) &
                ('(', mm*law%env_d(i), ', ', law%env_r(i), ') ', &
                i=1, size(law%env_d))
             call note_io()
          case (law_parabola_cubic)
-            write (u, '(16x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)', iostat=ios, iomsg=msg) &
+            write (u, '(4x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)', iostat=ios, iomsg=msg) &
                'rB = ', law%peak_force, ' kN, dB = ', &
                mm*law%peak_penetration, ' mm, dF = ', mm*law%fracture_penetration, ' mm, ', law%n_segments, &
                ' chords per curved branch'
             call note_io()
          end select
-         if (is_plastic(law) .and. law%fractures) write (u, '(16x,a,es11.4,a)', iostat=ios, iomsg=msg) &
+         if (is_plastic(law) .and. law%fractures) write (u, '(4x,a,es11.4,a)', iostat=ios, iomsg=msg) &
             'fractures at d = ', mm*law%env_d(size(law%env_d)), ' mm'
          call note_io()
       end subroutine law_parameters

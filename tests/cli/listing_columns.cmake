@@ -4,7 +4,8 @@
 # heading's columns, every numeric cell is one number (tests/cli/listing_columns.py, on
 # /usr/bin/python3), the pairs are named in full ('<building>:<floor>-<building>:z=<m>m'),
 # gaps are in mm, every dataset of the results files has a 'units' attribute and the
-# per-motion /suite arrays have one row per motion.
+# per-motion /suite arrays have one row per motion. The same checks on example decks with
+# other contact laws and on a suite with a failed motion.
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
 set(PY /usr/bin/python3)
 set(CHECK ${CMAKE_CURRENT_LIST_DIR}/listing_columns.py)
@@ -31,3 +32,23 @@ expect_contains("separation table in mm" "${listing}" "Separation rules per cont
 execute_process(COMMAND ${PY} ${CHECK} ${WORK_DIR}/long_names_suite.out ${WORK_DIR}/long_names_suite.h5 30 2
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 expect_equal("suite listing and results (${out}${err})" 0 "${rc}")
+expect_contains("whole motion names" "${listing}"
+                "\n  SYNTHETIC_MOTION_WITH_A_VERY_LONG_NAME_FOR_THE_LISTING_COLUMNS_2  ")
+
+# The example decks with other laws (parabola_cubic, bilinear, restitution) and floors
+# striking columns, and a suite with a failed motion (FAILED rows, the failed-case table).
+foreach(deck input/two_frames_pdelta.nml input/frame_to_column.nml tests/data/good_decks/bounds_edges.nml
+        tests/data/good_decks/restitution.nml)
+  get_filename_component(stem ${deck} NAME_WE)
+  run_pound(e ${SOURCE_DIR}/${deck})
+  expect_equal("pound exit, ${deck} (${e_err})" 0 "${e_rc}")
+  execute_process(COMMAND ${PY} ${CHECK} ${WORK_DIR}/${stem}.out ${WORK_DIR}/${stem}.h5 15
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  expect_equal("${deck}: listing and results (${out}${err})" 0 "${rc}")
+endforeach()
+file(COPY ${SOURCE_DIR}/tests/data/suite_failed.nml DESTINATION ${WORK_DIR})
+run_shell(sf "POUND_TEST_OVERFLOW=big \"$POUND\" suite_failed.nml --quiet")
+expect_equal("failed suite exit (${sf_err})" 3 "${sf_rc}")
+execute_process(COMMAND ${PY} ${CHECK} ${WORK_DIR}/suite_failed.out ${WORK_DIR}/suite_failed.h5 30 3
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+expect_equal("failed suite: listing and results (${out}${err})" 0 "${rc}")
