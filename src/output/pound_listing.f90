@@ -293,7 +293,7 @@ contains
          call note_io()
          write (u, '(a)', iostat=ios, iomsg=msg) '  x of the column lines [m]:'
          call note_io()
-         write (u, '(4x,8f10.3)', iostat=ios, iomsg=msg) f%line_x
+         write (u, '(4x,*(a))', iostat=ios, iomsg=msg) (fixed_cell(f%line_x(j), 10, 3), j=1, size(f%line_x))
          call note_io()
          write (u, '(a)', iostat=ios, iomsg=msg) '  storey    h [m]    mass [t]  column E [kN/m2]'// &
             '   A [m2]     I [m4]  beam E [kN/m2]   A [m2]     I [m4]'
@@ -567,7 +567,7 @@ contains
       type(building_influence), intent(in), optional :: infl(:)
       character(len=*), parameter :: heads(4) = ['|V| [kN]  ', '|M1| [kNm]', '|M2| [kNm]', '|dN| [kN] ']
       character(len=:), allocatable :: line
-      character(len=160) :: head
+      character(len=256) :: head
       integer :: ib, s, q, e, nq
       logical :: both, first
 
@@ -585,8 +585,8 @@ contains
          nq = size(models(ib)%member_names)
          write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//models(ib)%name
          call note_io()
-         line = repeat(' ', 38)
-         head = '     seg  storey  line  z1 [m]  z2 [m]'
+         line = repeat(' ', 46)
+         head = '     seg  storey  line      z1 [m]      z2 [m]'
          do q = 1, nq
             if (both) then
                line = line//'  '//heads(q)//repeat(' ', 19)
@@ -600,16 +600,16 @@ contains
             call note_io()
             line = trim(head)
          else
-            line = head(1:38)//trim(line(39:))
+            line = head(1:46)//trim(line(47:))
          end if
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
          associate (f => buildings(ib)%frame%frame, ce => buildings(ib)%frame%column_element)
             do s = size(ce), 1, -1
                e = ce(s)
-               write (head, '(2x,i6,i8,i6,2f8.3)') s, f%element_group(e), f%node_line(f%element_nodes(1, e)), &
-                  f%node_z(f%element_nodes(1, e)), f%node_z(f%element_nodes(2, e))
-               line = head(1:38)
+               write (head, '(2x,i6,i8,i6,2a12)') s, f%element_group(e), f%node_line(f%element_nodes(1, e)), &
+                  fixed_cell(f%node_z(f%element_nodes(1, e)), 12, 3), fixed_cell(f%node_z(f%element_nodes(2, e)), 12, 3)
+               line = head(1:46)
                do q = 1, nq
                   associate (k => (s - 1)*nq + q)
                      if (both) then
