@@ -97,10 +97,10 @@ def plot_all(s, plt, np, save):
         if "separation/time_history" in s:
             th = _cols(s["separation/time_history"][...], nm + 1, np)
         n_pairs = nc.shape[0]
-        pair_names = []
-        if "/coupled/contact" in s.file:
+        pairs = s["separation"].attrs.get("pairs", "")
+        if not len(pairs) and "/coupled/contact" in s.file:
             pairs = s.file["/coupled/contact"].attrs.get("pairs", "")
-            pair_names = (pairs.decode() if isinstance(pairs, bytes) else str(pairs)).split()
+        pair_names = (pairs.decode() if isinstance(pairs, bytes) else str(pairs)).split()
         fig, axes = plt.subplots(1, n_pairs, figsize=(3.2 * n_pairs + 1, 4), squeeze=False)
         x = np.arange(nm + 1)
         # A failed motion has no rules (its row is not plotted).

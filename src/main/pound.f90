@@ -139,7 +139,7 @@ program pound
       call write_h5()
    end if
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
-      call write_suite_h5(outputs%h5_tmp, res%models, suite, error)
+      call write_suite_h5(outputs%h5_tmp, res%models, suite, error, res%cs)
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
    call publish_outputs(outputs, error)

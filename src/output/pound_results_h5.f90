@@ -68,7 +68,7 @@ module pound_results_h5
    private
 
    public :: write_results_h5, write_analysis_h5, h5_history_sink, history_sink_init, write_failed_cases
-   public :: quantity_units, member_units
+   public :: quantity_units, member_units, pair_list
 
    !> Streams the uncoupled and coupled histories into an open results file: each dataset
    !> is created at its full shape (n_out, n) with its first block (chunked; compressed with
@@ -392,7 +392,6 @@ contains
       end subroutine write_dof_layout
 
       subroutine write_contact()
-         character(len=:), allocatable :: labels
          character(len=*), parameter :: c = '/coupled/contact'
          character(len=16), allocatable :: laws(:)
          integer :: k, ne
@@ -478,12 +477,7 @@ contains
                             '(status 2) or at its pivot cap (3); the LCP was solved by enumeration and '// &
                             'the solution nearest the previous state taken', error)
          if (allocated(error)) return
-         labels = ''
-         do k = 1, cs%m
-            if (k > 1) labels = labels//' '
-            labels = labels//cs%pair(k)%label
-         end do
-         call h5_write_attr(h5, c, 'pairs', labels, error)
+         call h5_write_attr(h5, c, 'pairs', pair_list(cs), error)
          if (allocated(error)) return
          call h5_write_attr(h5, c, 'lcp_solves', cs%stats%solves, error)
          if (allocated(error)) return
@@ -727,5 +721,19 @@ contains
          units = 'kN'
       end if
    end function member_units
+
+   !> The labels of the pairs (`pair_label`), separated by one blank (a label has none).
+   function pair_list(cs) result(labels)
+      !> The contact system.
+      type(contact_system), intent(in) :: cs
+      character(len=:), allocatable :: labels
+      integer :: k
+
+      labels = ''
+      do k = 1, cs%m
+         if (k > 1) labels = labels//' '
+         labels = labels//cs%pair(k)%label
+      end do
+   end function pair_list
 
 end module pound_results_h5

@@ -47,7 +47,7 @@ module pound_suite_output
    use pound_listing, only: write_section, write_influence_tables, gap_cell, mm
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
-   use pound_results_h5, only: write_analysis_h5, write_failed_cases
+   use pound_results_h5, only: write_analysis_h5, write_failed_cases, pair_list
    use pound_cases, only: failure_time_step, case_message_len
    implicit none
    private
@@ -331,7 +331,7 @@ contains
    end subroutine write_suite_listing
 
    !> Append `/suite` to the results file at `path`.
-   subroutine write_suite_h5(path, models, suite, error)
+   subroutine write_suite_h5(path, models, suite, error, cs)
       !> Results file (written and closed).
       character(len=*), intent(in) :: path
       !> The buildings.
@@ -340,6 +340,9 @@ contains
       type(suite_result), intent(in) :: suite
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> The contact system of the deck: its pairs' labels become the attribute `pairs` of
+      !> /suite/separation (blank-separated, in the order of the columns).
+      type(contact_system), intent(in), optional :: cs
       type(error_type), allocatable :: close_error
       type(h5_file) :: h5
 
@@ -402,6 +405,12 @@ contains
             call h5_write(h5, '/suite/separation/'//trim(rule_names(r)), transpose(rule), error, units='m')
             if (allocated(error)) return
          end do
+         if (present(cs)) then
+            if (cs%m > 0 .and. cs%m == size(suite%separation, 2)) then
+               call h5_write_attr(h5, '/suite/separation', 'pairs', pair_list(cs), error)
+               if (allocated(error)) return
+            end if
+         end if
          call write_histories()
          if (allocated(error) .or. .not. suite%has_sweep) return
          call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error, units='m')

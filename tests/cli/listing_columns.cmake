@@ -32,6 +32,14 @@ expect_contains("separation table in mm" "${listing}" "Separation rules per cont
 execute_process(COMMAND ${PY} ${CHECK} ${WORK_DIR}/long_names_suite.out ${WORK_DIR}/long_names_suite.h5 30 2
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 expect_equal("suite listing and results (${out}${err})" 0 "${rc}")
+execute_process(COMMAND ${PY} -c "
+import h5py
+f = h5py.File('${WORK_DIR}/long_names_suite.h5', 'r')
+pairs = f['suite/separation'].attrs['pairs'].split()
+assert pairs == f['coupled/contact'].attrs['pairs'].split(), pairs
+assert pairs == ['${RC}:%d-${ST}:%d' % (k, k) for k in (1, 2, 3)], pairs
+" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+expect_equal("/suite/separation pairs attribute (${err})" 0 "${rc}")
 expect_contains("whole motion names" "${listing}"
                 "\n  SYNTHETIC_MOTION_WITH_A_VERY_LONG_NAME_FOR_THE_LISTING_COLUMNS_2  ")
 
