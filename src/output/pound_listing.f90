@@ -419,13 +419,13 @@ contains
       do k = 1, cs%m
          w = max(w, len(cs%pair(k)%label))
       end do
-      write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell('pair', w)// &
-         '    gap [mm]  law               k0 [kN/m]   c [kNs/m]  dashpot_rate'
+      write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell('pair', w)//'    gap [mm]  '//left_cell('law', 16)// &
+         right_cell('k0 [kN/m]', 12)//right_cell('c [kNs/m]', 12)//'  dashpot_rate'
       call note_io()
       do k = 1, cs%m
          associate (p => cs%pair(k))
             write (u, '(2x,a,a12,2x,a16,es12.3,es12.3,2x,a)', iostat=ios, iomsg=msg) &
-               left_cell(p%label, w), fixed_cell(mm*p%gap, 12, 3), law_name(p%law%kind), &
+               left_cell(p%label, w), fixed_cell(mm*p%gap, 12, 3), left_cell(law_name(p%law%kind), 16), &
                p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
             call note_io()
          end associate
