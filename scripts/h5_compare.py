@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Compare two pound HDF5 files dataset by dataset, bit for bit.
 
-    scripts/h5_compare A.h5 B.h5 [--ignore-attr NAME ...] [--rtol R]
+    scripts/h5_compare A.h5 B.h5 [--ignore-attr NAME ...] [--rtol R] [--transposed PREFIX ...]
 
 Every group, dataset and attribute of either file must exist in the other with the same
 shape, type and bytes (NaN compares equal to NaN at the same place). Attributes that carry
@@ -11,6 +11,11 @@ difference otherwise, 2 on a usage error or an unreadable file.
 With --rtol R, floating-point datasets whose bytes differ are compared numerically instead:
 they pass when max |a - b| <= R max |a| over the dataset (the largest relative difference of
 every such dataset is printed, to document round-off differences); attributes stay exact.
+
+With --transposed PREFIX, a 2-D dataset of A whose path starts with PREFIX (no leading '/') is
+compared transposed with B's: for comparing files across a change of a dataset's orientation
+(issue 27 stored /suite/spectrum/sa, /suite/influence, /suite/separation, /suite/sweep/max_abs_lambda
+and /suite/sweep/failed with one row per motion; an older file has them transposed).
 """
 import sys
 
@@ -59,6 +64,15 @@ def main(argv):
     args = [a for a in argv if not a.startswith("--")]
     ignored = set(DEFAULT_IGNORED)
     rtol = None
+    transposed = []
+    while "--transposed" in argv:
+        i = argv.index("--transposed")
+        if i + 1 >= len(argv):
+            print(__doc__.strip().splitlines()[2].strip(), file=sys.stderr)
+            return 2
+        transposed.append(argv[i + 1].lstrip("/"))
+        argv = argv[:i] + argv[i + 2:]
+    args = [a for a in argv if not a.startswith("--")]
     if "--rtol" in argv:
         i = argv.index("--rtol")
         if i + 1 >= len(argv):
@@ -88,8 +102,11 @@ def main(argv):
         if isinstance(oa, h5py.Dataset) != isinstance(ob, h5py.Dataset):
             diffs.append(f"{name}: group in one file, dataset in the other")
             continue
-        if isinstance(oa, h5py.Dataset) and not same(oa[()], ob[()]):
-            rel = relative_difference(oa[()], ob[()]) if rtol is not None else None
+        va = oa[()] if isinstance(oa, h5py.Dataset) else None
+        if va is not None and va.ndim == 2 and any(name.startswith(p) for p in transposed):
+            va = va.T
+        if isinstance(oa, h5py.Dataset) and not same(va, ob[()]):
+            rel = relative_difference(va, ob[()]) if rtol is not None else None
             if rel is None or rel > rtol:
                 diffs.append(f"{name}: data differ" + ("" if rel is None else f" (relative {rel:.3e})"))
             else:

@@ -101,12 +101,13 @@ def parse_pair(label, names):
 
 
 def pair_elevations(label, names, heights):
-    """'A:z3m-B:1' -> ('A', 3.0, 'B', z of B's floor 1): each end's elevation (m) from its floor
-    (the building's storey heights) or from the 'z<metres>m' of a column point; None if unknown."""
+    """'A:z=3.00m-B:1' -> ('A', 3.0, 'B', z of B's floor 1): each end's elevation (m) from its floor
+    (the building's storey heights) or from the 'z=<metres>m' of a column point (pound before
+    issue 27 wrote 'z<metres>m', also read); None if unknown."""
     import numpy as np
 
     def end(text):
-        m = re.fullmatch(r"(.+):(?:(\d+)|z([0-9.]+)m)", text)
+        m = re.fullmatch(r"(.+):(?:(\d+)|z=?([0-9.]+)m)", text)
         if not m or m.group(1) not in names:
             return None
         if m.group(2) is not None:

@@ -28,9 +28,13 @@ def fail(message):
 
 
 def _cols(a, n, np):
-    """A (n_x, n) view of a dataset written (n, n_x) in Fortran order (h5py transposes)."""
+    """A (n_x, n) view of a per-motion dataset: pound stores them with one row per motion,
+    (n, n_x) as h5py reads them (issue 27); n is checked."""
     a = np.atleast_2d(a)
-    return a if a.shape[1] == n else a.T
+    if a.shape[0] != n:
+        fail(f"a /suite dataset has {a.shape[0]} rows, expected {n} (one per motion): "
+             "a file written before issue 27 (transposed /suite arrays)?")
+    return a.T
 
 
 def suite_answer(s, nm):
@@ -58,7 +62,7 @@ def plot_all(s, plt, np, save):
     failed = s["motion_failed"][...].astype(bool) if "motion_failed" in s else np.zeros(nm, bool)
     used = [k for k in range(nm) if not failed[k]]
 
-    # Spectra: (n_motions, n_periods) in Fortran order -> h5py (n_periods, n_motions).
+    # Spectra: (n_motions, n_periods) as stored -> (n_periods, n_motions) for plotting.
     period = s["spectrum/period"][...]
     sa = _cols(s["spectrum/sa"][...], nm, np)
     fig, ax = plt.subplots(figsize=(7, 4.5))
@@ -112,6 +116,10 @@ def plot_all(s, plt, np, save):
         if "separation/time_history" in s:
             th = _cols(s["separation/time_history"][...], nm + 1, np)
         n_pairs = nc.shape[0]
+        pairs = s["separation"].attrs.get("pairs", "")
+        if not len(pairs) and "/coupled/contact" in s.file:
+            pairs = s.file["/coupled/contact"].attrs.get("pairs", "")
+        pair_names = (pairs.decode() if isinstance(pairs, bytes) else str(pairs)).split()
         fig, axes = plt.subplots(1, n_pairs, figsize=(3.2 * n_pairs + 1, 4), squeeze=False)
         x = np.arange(nm + 1)
         # A failed motion has no rules (its row is not plotted).
@@ -130,7 +138,7 @@ def plot_all(s, plt, np, save):
             ax.set_xticks(x)
             ax.set_xticklabels([n + (" (FAILED)" if f else "") for n, f in zip(names, failed)] + ["suite"],
                                rotation=90, fontsize=7)
-            ax.set_title(f"pair {p + 1}")
+            ax.set_title(f"pair {pair_names[p]}" if p < len(pair_names) else f"pair {p + 1}", fontsize=7)
             ax.set_ylabel("separation (mm)")
         axes[0][0].legend(fontsize=7)
         fig.suptitle(answer + "\nCode rules on elastic peaks (no amplification) vs the time-history gap", fontsize=9)

@@ -16,11 +16,12 @@ module pound_contact_pair
    implicit none
    private
 
-   public :: contact_pair, pairs_from_config, end_sign
+   public :: contact_pair, pairs_from_config, end_sign, pair_label
 
    !> One unilateral constraint: its two ends, its gap and its law.
    type :: contact_pair
-      !> Text for messages and the listing, e.g. 'A:2-B:2'.
+      !> Name of the pair in messages, the listing and the HDF5 file (`pair_label`), e.g.
+      !> 'RC:3-STEEL:z=7.50m'.
       character(len=:), allocatable :: label
       !> Building index of each end (1 = left, 2 = right); 0 = rigid fixed neighbour.
       integer :: building(2) = 0
@@ -87,8 +88,7 @@ contains
                pairs(n)%building = [c%left_index, c%right_index]
                pairs(n)%floor = [c%floor_left(k), c%floor_right(k)]
                if (allocated(c%elevation)) pairs(n)%elevation = c%elevation(k)
-               pairs(n)%label = trim(names(c%left_index))//':'//end_text(pairs(n), 1)//'-'// &
-                                trim(names(c%right_index))//':'//end_text(pairs(n), 2)
+               pairs(n)%label = pair_label(pairs(n), names(c%left_index), names(c%right_index))
                pairs(n)%gap = c%gap(k)
                pairs(n)%law = law
             end do
@@ -96,7 +96,24 @@ contains
       end do
    end function pairs_from_config
 
-   !> A pair end in labels: its floor, or its elevation for a point between floors ('z3.25m').
+   !> The name of a pair wherever one is named (listing, messages, HDF5 attributes and
+   !> paths): '<left building>:<end>-<right building>:<end>', an end being the floor number
+   !> ('3') or, for a point between floors, its elevation above the common base in metres
+   !> with at least two and at most three decimals ('z=7.50m', 'z=3.255m'); e.g.
+   !> 'RC:3-STEEL:z=7.50m'. The whole names are kept; the label has no blank (building
+   !> names are letters, digits, '_' and '-'), and the '-' after the left end is the
+   !> separator (an end never holds a '-').
+   pure function pair_label(p, left, right) result(s)
+      !> The pair (its floors and elevation set).
+      type(contact_pair), intent(in) :: p
+      !> Names of its left and right buildings (trailing blanks dropped).
+      character(len=*), intent(in) :: left, right
+      character(len=:), allocatable :: s
+
+      s = trim(left)//':'//end_text(p, 1)//'-'//trim(right)//':'//end_text(p, 2)
+   end function pair_label
+
+   !> A pair end in labels: its floor, or its elevation for a point between floors ('z=3.25m').
    pure function end_text(p, e) result(s)
       !> The pair (its floors and elevation set).
       type(contact_pair), intent(in) :: p
@@ -111,11 +128,8 @@ contains
          write (buf, '(f0.3)') p%elevation
          s = trim(adjustl(buf))
          if (s(1:1) == '.') s = '0'//s
-         do while (s(len(s):len(s)) == '0')
-            s = s(1:len(s) - 1)
-         end do
-         if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
-         s = 'z'//s//'m'
+         if (s(len(s):len(s)) == '0') s = s(1:len(s) - 1)
+         s = 'z='//s//'m'
       end if
    end function end_text
 

@@ -6,7 +6,7 @@ module pound_strings
    implicit none
    private
 
-   public :: str, number_end, decimal_exponent, is_digit, shorten, short_real, fixed_cell, fit_with_suffix
+   public :: str, number_end, decimal_exponent, is_digit, shorten, short_real, fixed_cell, fit_with_suffix, left_cell, right_cell
 
    !> Shortest readable text of a number.
    interface str
@@ -235,8 +235,10 @@ contains
 
    !> `x` right-aligned in a field of width `w`: fixed point with `d` decimals (Fw.d) when it
    !> fits, scientific (ESw.k, as many digits as fit) when the fixed form would overflow the
-   !> field (asterisks) or, with `nonzero`, print a non-zero value as zero (a period or a
-   !> mass of 0.00000). A listing column never shows '****' or a misleading 0.
+   !> field (asterisks) or fill it to its first character (no blank before the next cell
+   !> to its left) or, with `nonzero`, print a non-zero value as zero (a period or a mass of
+   !> 0.00000). A listing column never shows '****' or a misleading 0, and the cell always
+   !> starts with a blank (w >= 10), so cells side by side never run into each other.
    pure function fixed_cell(x, w, d, nonzero) result(cell)
       !> Value.
       real(dp), intent(in) :: x
@@ -254,9 +256,32 @@ contains
       write (cell, fmt) x
       lost = .false.
       if (present(nonzero)) lost = nonzero .and. x /= 0.0_dp .and. abs(x) < 0.5_dp*10.0_dp**(-d)
-      if (index(cell, '*') == 0 .and. .not. lost) return
+      if (index(cell, '*') == 0 .and. cell(1:1) == ' ' .and. .not. lost) return
       write (fmt, '(a,i0,a,i0,a)') '(es', w, '.', max(1, w - 8), ')'
       write (cell, fmt) x
    end function fixed_cell
+
+   !> `text` left-aligned in a field of at least `w` characters (longer text kept whole).
+   pure function left_cell(text, w) result(cell)
+      !> The text (a name or a label).
+      character(len=*), intent(in) :: text
+      !> Field width.
+      integer, intent(in) :: w
+      character(len=:), allocatable :: cell
+
+      cell = text//repeat(' ', max(0, w - len(text)))
+   end function left_cell
+
+   !> `text` right-aligned in a field of at least `w` characters (longer text kept whole,
+   !> after one blank).
+   pure function right_cell(text, w) result(cell)
+      !> The text (a heading or a name).
+      character(len=*), intent(in) :: text
+      !> Field width.
+      integer, intent(in) :: w
+      character(len=:), allocatable :: cell
+
+      cell = repeat(' ', max(1, w - len(text)))//text
+   end function right_cell
 
 end module pound_strings

@@ -146,7 +146,7 @@ program pound
       call write_h5()
    end if
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
-      call write_suite_h5(outputs%h5_tmp, res%models, suite, error)
+      call write_suite_h5(outputs%h5_tmp, res%models, suite, error, res%cs)
    if (.not. allocated(error)) call write_summary_h5(error)
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
@@ -315,7 +315,7 @@ contains
          if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
       end if
       if (size(deck%motions) > 1) then
-         call write_suite_listing(u, res%models, suite, err)
+         call write_suite_listing(u, res%models, suite, err, res%cs)
          if (allocated(err)) return
       end if
       write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', res%unc%seconds, ' s'

@@ -84,8 +84,9 @@ module pound_h5
    end type h5_file
 
    !> Write a new dataset at a path, creating missing groups:
-   !> `call h5_write(file, path, values, error)` with `values` real(dp) scalar, 1-D or 2-D,
-   !> default integer 1-D or 2-D (H5LT), or character 1-D (trailing blanks dropped).
+   !> `call h5_write(file, path, values, error[, units])` with `values` real(dp) scalar, 1-D
+   !> or 2-D, default integer 1-D or 2-D (H5LT), or character 1-D (trailing blanks dropped);
+   !> `units` becomes the dataset's string attribute `units`.
    interface h5_write
       module procedure write_real_0d, write_real_1d, write_real_2d, write_int_1d, write_int_2d, &
          write_string_1d
@@ -265,7 +266,7 @@ contains
    ! ------------------------------------------------------------------ datasets (H5LT)
 
    !> Real scalar dataset.
-   subroutine write_real_0d(file, path, values, error)
+   subroutine write_real_0d(file, path, values, error, units)
       !> File open for writing.
       type(h5_file), intent(in) :: file
       !> Dataset path.
@@ -274,6 +275,8 @@ contains
       real(dp), intent(in) :: values
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
+      character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer(hsize_t) :: dims(0)
       integer :: hdferr
@@ -282,10 +285,11 @@ contains
       if (allocated(error)) return
       call h5ltmake_dataset_double_f(file%id, p, 0, dims, values, hdferr)
       call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
+      call put_units(file, path, units, error)
    end subroutine write_real_0d
 
    !> Real 1-D dataset.
-   subroutine write_real_1d(file, path, values, error)
+   subroutine write_real_1d(file, path, values, error, units)
       !> File open for writing.
       type(h5_file), intent(in) :: file
       !> Dataset path.
@@ -294,6 +298,8 @@ contains
       real(dp), intent(in) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
+      character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer :: hdferr
 
@@ -301,10 +307,11 @@ contains
       if (allocated(error)) return
       call h5ltmake_dataset_double_f(file%id, p, 1, shape(values, kind=hsize_t), values, hdferr)
       call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
+      call put_units(file, path, units, error)
    end subroutine write_real_1d
 
    !> Real 2-D dataset, written as given: Fortran (n1, n2) is seen by h5py as (n2, n1).
-   subroutine write_real_2d(file, path, values, error)
+   subroutine write_real_2d(file, path, values, error, units)
       !> File open for writing.
       type(h5_file), intent(in) :: file
       !> Dataset path.
@@ -313,6 +320,8 @@ contains
       real(dp), intent(in) :: values(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
+      character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer :: hdferr
 
@@ -320,10 +329,11 @@ contains
       if (allocated(error)) return
       call h5ltmake_dataset_double_f(file%id, p, 2, shape(values, kind=hsize_t), values, hdferr)
       call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
+      call put_units(file, path, units, error)
    end subroutine write_real_2d
 
    !> Integer 1-D dataset (stored as 32-bit signed).
-   subroutine write_int_1d(file, path, values, error)
+   subroutine write_int_1d(file, path, values, error, units)
       !> File open for writing.
       type(h5_file), intent(in) :: file
       !> Dataset path.
@@ -332,6 +342,8 @@ contains
       integer, intent(in) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
+      character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer :: hdferr
 
@@ -339,10 +351,11 @@ contains
       if (allocated(error)) return
       call h5ltmake_dataset_int_f(file%id, p, 1, shape(values, kind=hsize_t), values, hdferr)
       call check_lt(hdferr, file, p, 'h5ltmake_dataset_int_f', error)
+      call put_units(file, path, units, error)
    end subroutine write_int_1d
 
    !> Integer 2-D dataset (stored as 32-bit signed; h5py sees the transpose, see the notes).
-   subroutine write_int_2d(file, path, values, error)
+   subroutine write_int_2d(file, path, values, error, units)
       !> File open for writing.
       type(h5_file), intent(in) :: file
       !> Dataset path.
@@ -351,6 +364,8 @@ contains
       integer, intent(in) :: values(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
+      character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer :: hdferr
 
@@ -358,6 +373,7 @@ contains
       if (allocated(error)) return
       call h5ltmake_dataset_int_f(file%id, p, 2, shape(values, kind=hsize_t), values, hdferr)
       call check_lt(hdferr, file, p, 'h5ltmake_dataset_int_f', error)
+      call put_units(file, path, units, error)
    end subroutine write_int_2d
 
    ! ------------------------------------------------------------------ chunked histories
@@ -365,7 +381,7 @@ contains
    !> Create the 2-D real dataset `path` of Fortran shape (rows, columns) (h5py: (columns,
    !> rows)), chunked by whole columns, compressed (shuffle + deflate) when `compress`; its
    !> columns are written by `h5_write_columns` (columns never written read as 0).
-   subroutine h5_create_history(file, path, rows, columns, compress, error)
+   subroutine h5_create_history(file, path, rows, columns, compress, error, units)
       !> File open for writing.
       type(h5_file), intent(in) :: file
       !> Dataset path.
@@ -376,6 +392,8 @@ contains
       logical, intent(in) :: compress
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
+      character(len=*), intent(in), optional :: units
       type(h5_ids) :: ids
       character(len=:), allocatable :: p
       integer(hid_t) :: dcpl
@@ -408,6 +426,7 @@ contains
       end if
       call h5pclose_f(dcpl, ignore)
       call release(ids, file, 'write', 'dataset', p, error)
+      call put_units(file, path, units, error)
    end subroutine h5_create_history
 
    !> Write `values` (rows, k) into columns first .. first+k-1 of the history `path`
@@ -459,8 +478,24 @@ contains
 
    ! ------------------------------------------------------------------ what H5LT lacks
 
+   !> The `units` attribute of the dataset just written at `path` (nothing when `units` is
+   !> absent or the write failed).
+   subroutine put_units(file, path, units, error)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> The units, if any.
+      character(len=*), intent(in), optional :: units
+      !> Error state of the write (kept when set).
+      type(error_type), allocatable, intent(inout) :: error
+
+      if (allocated(error) .or. .not. present(units)) return
+      call write_attr_string(file, path, 'units', units, error)
+   end subroutine put_units
+
    !> 1-D dataset of variable-length UTF-8 strings; trailing blanks of each element are dropped.
-   subroutine write_string_1d(file, path, values, error)
+   subroutine write_string_1d(file, path, values, error, units)
       !> File open for writing.
       type(h5_file), intent(in) :: file
       !> Dataset path.
@@ -469,6 +504,8 @@ contains
       character(len=*), intent(in) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
+      character(len=*), intent(in), optional :: units
       type(h5_ids) :: ids
       character(len=:), allocatable :: p
       character(kind=c_char), allocatable, target :: chars(:)
@@ -496,6 +533,7 @@ contains
          if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
       end if
       call release(ids, file, 'write', 'dataset', p, error)
+      call put_units(file, path, units, error)
    end subroutine write_string_1d
 
    !> String attribute (variable-length UTF-8, stored exactly as given).

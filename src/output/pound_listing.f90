@@ -4,7 +4,7 @@
 !> and reported by `listing_io_error`, which the caller asks after the last write.
 module pound_listing
    use pound_kinds, only: dp
-   use pound_strings, only: fixed_cell
+   use pound_strings, only: fixed_cell, left_cell, right_cell
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_error, only: error_type, fatal_error
    use pound_posix, only: posix_set_errno, posix_storage_error
@@ -15,7 +15,7 @@ module pound_listing
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
-   use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic_plastic, &
+   use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic, law_elastic_plastic, &
                                 law_bilinear, law_piecewise, law_parabola_cubic
    use pound_lemke, only: lemke_status_name
    use pound_influence, only: building_influence
@@ -27,7 +27,10 @@ module pound_listing
 
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
    public :: write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables
-   public :: listing_io_error, open_listing, close_listing
+   public :: listing_io_error, open_listing, close_listing, gap_cell, mm
+
+   !> Millimetres per metre: gaps, displacements, drifts and penetrations are listed in mm.
+   real(dp), parameter :: mm = 1000.0_dp
 
    !> Modes listed in the model summary (the HDF5 file has every mode the builder computed).
    integer, parameter :: max_listed_modes = modes_listed
@@ -155,7 +158,8 @@ contains
       call note_io()
       write (u, '(a)', iostat=ios, iomsg=msg) 'title: '//deck%analysis%title
       call note_io()
-      write (u, '(a)', iostat=ios, iomsg=msg) 'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ'
+      write (u, '(a)', iostat=ios, iomsg=msg) 'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
+         'gaps, displacements, drifts and penetrations in mm'
       call note_io()
       write (u, '(a)', iostat=ios, iomsg=msg) repeat('=', 78)
       call note_io()
@@ -298,7 +302,7 @@ contains
          call note_io()
          write (u, '(a)', iostat=ios, iomsg=msg) '  x of the column lines [m]:'
          call note_io()
-         write (u, '(4x,8f10.3)', iostat=ios, iomsg=msg) f%line_x
+         write (u, '(4x,*(a))', iostat=ios, iomsg=msg) (fixed_cell(f%line_x(j), 10, 3), j=1, size(f%line_x))
          call note_io()
          write (u, '(a)', iostat=ios, iomsg=msg) '  storey    h [m]    mass [t]  column E [kN/m2]'// &
             '   A [m2]     I [m4]  beam E [kN/m2]   A [m2]     I [m4]'
@@ -375,18 +379,18 @@ contains
             write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//b%name
             call note_io()
             write (u, '(a)', iostat=ios, iomsg=msg) &
-               '   floor     |u| [m]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]'
+               '   floor    |u| [mm]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]'
             call note_io()
             do j = size(b%floor_dof), 1, -1
                write (u, '(2x,i6,es12.4,a9,es12.4,a9,es16.4,a9)', iostat=ios, iomsg=msg) &
-                  j, p(j, q_u), fixed_cell(t(j, q_u), 9, 3), &
+                  j, mm*p(j, q_u), fixed_cell(t(j, q_u), 9, 3), &
                   p(j, q_v), fixed_cell(t(j, q_v), 9, 3), p(j, q_a_abs), fixed_cell(t(j, q_a_abs), 9, 3)
                call note_io()
             end do
-            write (u, '(a)', iostat=ios, iomsg=msg) '  storey   |drift| [m]    t [s]   |Q| [kN]     t [s]'
+            write (u, '(a)', iostat=ios, iomsg=msg) '  storey  |drift| [mm]    t [s]    |Q| [kN]    t [s]'
             call note_io()
             do j = size(b%floor_dof), 1, -1
-               write (u, '(2x,i6,es14.4,a9,es11.4,a9)', iostat=ios, iomsg=msg) j, p(j, q_drift), &
+               write (u, '(2x,i6,es14.4,a9,es12.4,a9)', iostat=ios, iomsg=msg) j, mm*p(j, q_drift), &
                   fixed_cell(t(j, q_drift), 9, 3), p(j, q_shear), fixed_cell(t(j, q_shear), 9, 3)
                call note_io()
             end do
@@ -398,10 +402,12 @@ contains
       call note_io()
       call write_warning_lines(u, res%warnings)
       j = res%n_out
-      write (u, '(a)', iostat=ios, iomsg=msg) &
-         '  at the end [kJ]:      input     kinetic      strain     damping     contact     plastic'
+      write (u, '(a)', iostat=ios, iomsg=msg) '  energies at the end [kJ]:'
       call note_io()
-      write (u, '(a,6es12.4)', iostat=ios, iomsg=msg) '                 ', res%energy(:, j)
+      write (u, '(a)', iostat=ios, iomsg=msg) &
+         '         input     kinetic      strain     damping     contact     plastic'
+      call note_io()
+      write (u, '(a,6es12.4)', iostat=ios, iomsg=msg) '  ', res%energy(:, j)
       call note_io()
    end subroutine write_peak_tables
 
@@ -413,39 +419,51 @@ contains
       !> Contact system at the end of the coupled run.
       type(contact_system), intent(in) :: cs
       integer, parameter :: max_listed_events = 20
-      integer :: k
+      integer :: k, w
       real(dp) :: mean_pivots
-      character(len=16) :: fractured
+      character(len=12) :: fractured
 
       call write_section(u, 'Contact (unilateral constraints between facing floors)')
-      write (u, '(a)', iostat=ios, iomsg=msg) &
-         '  pair          gap [m]  law                 k0 [kN/m]   c [kNs/m]  dashpot rate'
+      w = 4
+      do k = 1, cs%m
+         w = max(w, len(cs%pair(k)%label))
+      end do
+      write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell('pair', w)//'    gap [mm]  '//left_cell('law', 16)// &
+         right_cell('k0 [kN/m]', 12)//right_cell('c [kNs/m]', 12)//'  dashpot_rate'
       call note_io()
       do k = 1, cs%m
          associate (p => cs%pair(k))
-            write (u, '(2x,a12,es10.3,2x,a16,es13.3,es12.3,2x,a)', iostat=ios, iomsg=msg) &
-               p%label, p%gap, law_name(p%law%kind), &
+            write (u, '(2x,a,a12,2x,a16,es12.3,es12.3,2x,a)', iostat=ios, iomsg=msg) &
+               left_cell(p%label, w), fixed_cell(mm*p%gap, 12, 3), left_cell(law_name(p%law%kind), 16), &
                p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
             call note_io()
+         end associate
+      end do
+      ! The parameters of the laws beyond k0 and c, after the table (not between its rows).
+      do k = 1, cs%m
+         associate (p => cs%pair(k))
+            if (p%law%restitution <= 0.0_dp .and. p%law%kind == law_elastic) cycle
+            write (u, '(a)', iostat=ios, iomsg=msg) '  '//p%label//':'
+            call note_io()
             if (p%law%restitution > 0.0_dp) then
-               write (u, '(16x,a,f6.3,a)', iostat=ios, iomsg=msg) 'c calibrated to the restitution e =', &
+               write (u, '(4x,a,f6.3,a)', iostat=ios, iomsg=msg) 'c calibrated to the restitution e =', &
                   p%law%restitution, ' (exact relation of the joint, README)'
                call note_io()
             end if
             call law_parameters(p%law)
          end associate
       end do
-      write (u, '(/,a)', iostat=ios, iomsg=msg) &
-         '  pair         impacts  in contact [s]  peak r [kN]    t [s]  max pen. [m]'// &
-         '  plastic left [m]  fractured'
+      write (u, '(/,a)', iostat=ios, iomsg=msg) '  '//left_cell('pair', w)// &
+         '   impacts  in_contact [s]  peak r [kN]     t [s]  max_pen. [mm]'// &
+         '  plastic_left [mm]  fractured_at [s]'
       call note_io()
       do k = 1, cs%m
          associate (p => cs%joint(k))
-            fractured = 'no'
-            if (p%fractured) write (fractured, '(a,f9.4,a)') 'at', p%fracture_time, ' s'
-            write (u, '(2x,a12,i8,f16.4,es13.4,f9.4,es14.4,es18.4,2x,a)', iostat=ios, iomsg=msg) &
-               cs%pair(k)%label, p%impacts, p%contact_time, &
-               p%peak_force, p%peak_time, p%peak_penetration, p%plastic, trim(fractured)
+            fractured = '          no'
+            if (p%fractured) fractured = fixed_cell(p%fracture_time, 12, 4)
+            write (u, '(2x,a,i10,a16,es13.4,a10,es15.4,es19.4,6x,a12)', iostat=ios, iomsg=msg) &
+               left_cell(cs%pair(k)%label, w), p%impacts, fixed_cell(p%contact_time, 16, 4), &
+               p%peak_force, fixed_cell(p%peak_time, 10, 4), mm*p%peak_penetration, mm*p%plastic, fractured
             call note_io()
          end associate
       end do
@@ -511,30 +529,30 @@ contains
 
          select case (law%kind)
          case (law_elastic_plastic)
-            write (u, '(16x,a,es11.4,a)', iostat=ios, iomsg=msg) 'yield force ', law%yield_force, ' kN'
+            write (u, '(4x,a,es11.4,a)', iostat=ios, iomsg=msg) 'yield force ', law%yield_force, ' kN'
             call note_io()
          case (law_bilinear)
-            write (u, '(16x,a,es11.4,a,es11.4,a)', iostat=ios, iomsg=msg) &
+            write (u, '(4x,a,es11.4,a,es11.4,a)', iostat=ios, iomsg=msg) &
                'yield force ', law%yield_force, ' kN, second slope ', &
                law%second_slope, ' kN/m'
             call note_io()
          case (law_piecewise)
-            write (u, '(16x,a,i0,a)', iostat=ios, iomsg=msg) &
-               'envelope through ', size(law%env_d), ' points (d [m], r [kN]):'
+            write (u, '(4x,a,i0,a)', iostat=ios, iomsg=msg) &
+               'envelope through ', size(law%env_d), ' points (d [mm], r [kN]):'
             call note_io()
-            write (u, '(16x,4(a,es10.3,a,es10.3,a))', iostat=ios, iomsg=msg) &
-               ('(', law%env_d(i), ', ', law%env_r(i), ') ', &
+            write (u, '(4x,4(a,es10.3,a,es10.3,a))', iostat=ios, iomsg=msg) &
+               ('(', mm*law%env_d(i), ', ', law%env_r(i), ') ', &
                i=1, size(law%env_d))
             call note_io()
          case (law_parabola_cubic)
-            write (u, '(16x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)', iostat=ios, iomsg=msg) &
+            write (u, '(4x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)', iostat=ios, iomsg=msg) &
                'rB = ', law%peak_force, ' kN, dB = ', &
-               law%peak_penetration, ' m, dF = ', law%fracture_penetration, ' m, ', law%n_segments, &
+               mm*law%peak_penetration, ' mm, dF = ', mm*law%fracture_penetration, ' mm, ', law%n_segments, &
                ' chords per curved branch'
             call note_io()
          end select
-         if (is_plastic(law) .and. law%fractures) write (u, '(16x,a,es11.4,a)', iostat=ios, iomsg=msg) &
-            'fractures at d = ', law%env_d(size(law%env_d)), ' m'
+         if (is_plastic(law) .and. law%fractures) write (u, '(4x,a,es11.4,a)', iostat=ios, iomsg=msg) &
+            'fractures at d = ', mm*law%env_d(size(law%env_d)), ' mm'
          call note_io()
       end subroutine law_parameters
 
@@ -558,7 +576,7 @@ contains
       type(building_influence), intent(in), optional :: infl(:)
       character(len=*), parameter :: heads(4) = ['|V| [kN]  ', '|M1| [kNm]', '|M2| [kNm]', '|dN| [kN] ']
       character(len=:), allocatable :: line
-      character(len=160) :: head
+      character(len=256) :: head
       integer :: ib, s, q, e, nq
       logical :: both, first
 
@@ -576,8 +594,8 @@ contains
          nq = size(models(ib)%member_names)
          write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//models(ib)%name
          call note_io()
-         line = repeat(' ', 36)
-         head = '     seg storey line  z1 [m]  z2 [m]'
+         line = repeat(' ', 46)
+         head = '     seg  storey  line      z1 [m]      z2 [m]'
          do q = 1, nq
             if (both) then
                line = line//'  '//heads(q)//repeat(' ', 19)
@@ -591,16 +609,16 @@ contains
             call note_io()
             line = trim(head)
          else
-            line = head(1:36)//trim(line(37:))
+            line = head(1:46)//trim(line(47:))
          end if
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
          associate (f => buildings(ib)%frame%frame, ce => buildings(ib)%frame%column_element)
             do s = size(ce), 1, -1
                e = ce(s)
-               write (head, '(2x,i6,i7,i5,2f8.3)') s, f%element_group(e), f%node_line(f%element_nodes(1, e)), &
-                  f%node_z(f%element_nodes(1, e)), f%node_z(f%element_nodes(2, e))
-               line = head(1:36)
+               write (head, '(2x,i6,i8,i6,2a12)') s, f%element_group(e), f%node_line(f%element_nodes(1, e)), &
+                  fixed_cell(f%node_z(f%element_nodes(1, e)), 12, 3), fixed_cell(f%node_z(f%element_nodes(2, e)), 12, 3)
+               line = head(1:46)
                do q = 1, nq
                   associate (k => (s - 1)*nq + q)
                      if (both) then
@@ -653,43 +671,51 @@ contains
 
    contains
 
+      !> One column per building, as wide as its whole name and two blanks (at least 14);
+      !> a building without the storey (floor) shows '-'.
       subroutine table(title, row, q)
          character(len=*), intent(in) :: title, row
          integer, intent(in) :: q
-         character(len=14) :: cell
+         character(len=6) :: number
          character(len=:), allocatable :: line
-         integer :: j, ib
+         integer :: j, ib, w
          real(dp) :: lambda
 
          write (u, '(/,a)', iostat=ios, iomsg=msg) '  '//title
          call note_io()
-         line = '  '//row//repeat(' ', 6 - len(row))
+         line = '  '//right_cell(row, 6)
          do ib = 1, size(models)
-            cell = models(ib)%name(1:min(14, len(models(ib)%name)))
-            line = line//adjustr(cell)
+            line = line//right_cell(models(ib)%name, column_width(ib))
          end do
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
          do j = maxval([(size(models(ib)%floor_dof), ib=1, size(models))]), 1, -1
-            write (cell, '(i6)') j
-            line = '  '//cell(1:6)//'  '
+            write (number, '(i6)') j
+            line = '  '//number
             do ib = 1, size(models)
+               w = column_width(ib)
                if (j > size(models(ib)%floor_dof)) then
-                  cell = ''
+                  line = line//right_cell('-', w)
                else
                   lambda = infl(ib)%lambda(j, q)
                   if (lambda >= huge(1.0_dp)) then
-                     cell = '           inf'
+                     line = line//right_cell('inf', w)
                   else
-                     cell = fixed_cell(lambda, 14, 2)
+                     line = line//repeat(' ', w - 14)//fixed_cell(lambda, 14, 2)
                   end if
                end if
-               line = line//cell
             end do
             write (u, '(a)', iostat=ios, iomsg=msg) line
             call note_io()
          end do
       end subroutine table
+
+      !> Width of building ib's column.
+      pure integer function column_width(ib)
+         integer, intent(in) :: ib
+
+         column_width = max(14, len(models(ib)%name) + 2)
+      end function column_width
 
    end subroutine write_influence_tables
 
@@ -707,7 +733,7 @@ contains
       integer, parameter :: shown(4) = [q_shear, q_drift, q_u, q_a_abs]
       character(len=*), parameter :: heads(4) = [character(len=9) :: 'Q', 'drift', 'u', 'a_abs']
       character(len=:), allocatable :: line
-      character(len=10) :: cell
+      character(len=11) :: cell
       integer :: i, ib, k, step
       real(dp) :: t
 
@@ -723,39 +749,36 @@ contains
             ' gaps beyond it have no contact: one run without contact stands for them'
          call note_io()
       end if
-      line = '    gap [mm]  impacts'
       do ib = 1, size(models)
+         write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//models(ib)%name
+         call note_io()
+         line = '      gap [mm]    impacts'
          do k = 1, size(shown)
-            cell = trim(models(ib)%name(1:min(len(models(ib)%name), 4)))//':'//trim(heads(k))
-            line = line//adjustr(cell)
+            line = line//right_cell(trim(heads(k)), 10)
          end do
-      end do
-      if (cfg%target > 0.0_dp) line = line//'  target'
-      write (u, '(a)', iostat=ios, iomsg=msg) line
-      call note_io()
-      do i = 1, size(res%gap)
-         write (cell, '(f10.4)') 1000.0_dp*res%gap(i)
-         line = '  '//cell
-         if (res%failed(i)) then
-            write (u, '(a)', iostat=ios, iomsg=msg) line//'   FAILED (see the failed gaps below)'
-            call note_io()
-            cycle
-         end if
-         write (cell, '(i9)') res%impacts(i)
-         line = line//cell(1:9)
-         do ib = 1, size(models)
-            do k = 1, size(shown)
-               if (res%max_abs_lambda(shown(k), ib, i) >= huge(1.0_dp)) then
-                  cell = '       inf'
-               else
-                  cell = fixed_cell(res%max_abs_lambda(shown(k), ib, i), 10, 2)
-               end if
-               line = line//cell
-            end do
-         end do
-         if (cfg%target > 0.0_dp) line = line//merge('     met', '        ', res%meets(i))
+         if (cfg%target > 0.0_dp) line = line//'  target'
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
+         do i = 1, size(res%gap)
+            line = '  '//fixed_cell(mm*res%gap(i), 12, 4)
+            if (res%failed(i)) then
+               write (u, '(a)', iostat=ios, iomsg=msg) line//'   FAILED (see the failed gaps below)'
+               call note_io()
+               cycle
+            end if
+            write (cell, '(i11)') res%impacts(i)
+            line = line//cell
+            do k = 1, size(shown)
+               if (res%max_abs_lambda(shown(k), ib, i) >= huge(1.0_dp)) then
+                  line = line//right_cell('inf', 10)
+               else
+                  line = line//fixed_cell(res%max_abs_lambda(shown(k), ib, i), 10, 2)
+               end if
+            end do
+            if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
+            write (u, '(a)', iostat=ios, iomsg=msg) line
+            call note_io()
+         end do
       end do
       if (cfg%target > 0.0_dp) then
          if (res%found) then
@@ -774,17 +797,33 @@ contains
          write (u, '(/,a,i0,a,i0,a)', iostat=ios, iomsg=msg) '  Failed gaps (', count(res%failed), ' of ', &
             size(res%gap), '; left out, counted as not meeting the target):'
          call note_io()
-         write (u, '(a)', iostat=ios, iomsg=msg) '    case    gap [mm]       t [s]      step  message'
+         write (u, '(a)', iostat=ios, iomsg=msg) '    case      gap [mm]       t [s]      step  message'
          call note_io()
          do i = 1, size(res%gap)
             if (.not. res%failed(i)) cycle
             call failure_time_step(res%messages(i), t, step)
-            write (u, '(i8,f12.4,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) i, 1000.0_dp*res%gap(i), t, step, &
+            write (u, '(i8,a14,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) i, fixed_cell(mm*res%gap(i), 14, 4), t, step, &
                trim(res%messages(i))
             call note_io()
          end do
       end if
       call write_warning_lines(u, res%warnings)
    end subroutine write_sweep_table
+
+   !> A gap in mm (3 decimals) in a field of width `w` (>= 10), or 'n/a' for a negative value
+   !> (the -1 of a gap that was not computed or does not exist).
+   pure function gap_cell(x, w) result(cell)
+      !> The gap (m), negative when there is none.
+      real(dp), intent(in) :: x
+      !> Field width.
+      integer, intent(in) :: w
+      character(len=w) :: cell
+
+      if (x < 0.0_dp) then
+         cell = repeat(' ', w - 3)//'n/a'
+      else
+         cell = fixed_cell(mm*x, w, 3)
+      end if
+   end function gap_cell
 
 end module pound_listing

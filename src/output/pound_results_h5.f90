@@ -1,6 +1,9 @@
 !> The HDF5 results file (`.h5`): model data, histories, peaks, contact and influence.
 !>
-!> Layout (as read by h5py; histories are (n_out, n) with one row per output time):
+!> Layout (as read by h5py; histories are (n_out, n) with one row per output time). Every
+!> dataset carries a string attribute `units` ('m', 'kN', 's', '%', 'kN m', '1' for a
+!> dimensionless number, a count, an index or a code, '-' for text; a dataset whose columns
+!> differ lists them, e.g. '1/s, s'):
 !>
 !>     /                          attributes program, version, units, title, deck
 !>     /ground/time, /ground/acceleration        (n_out), m/s^2; attribute description
@@ -65,6 +68,7 @@ module pound_results_h5
    private
 
    public :: write_results_h5, write_analysis_h5, h5_history_sink, history_sink_init, write_failed_cases
+   public :: quantity_units, member_units, pair_list
 
    !> Streams the uncoupled and coupled histories into an open results file: each dataset
    !> is created at its full shape (n_out, n) with its first block (chunked; compressed with
@@ -88,6 +92,8 @@ module pound_results_h5
    !> Units, as written in the root attribute.
    character(len=*), parameter :: units = 'kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
                                           'influence coefficients percent'
+   !> Units of a frame's node map coefficients.
+   character(len=*), parameter :: node_coefficient_units = '1 (m where a rotation enters a translation)'
    !> Columns of a frame's node map (`node_dofs`, `node_coefficients`): two terms per direction.
    character(len=*), parameter :: node_map_columns = 'horizontal(term 1, term 2) vertical(term 1, term 2) '// &
                                                      'rotation(term 1, term 2); DOF 0: no term'
@@ -142,7 +148,8 @@ contains
       path = merge('/coupled  ', '/uncoupled', coupled)
       path = trim(path)//'/'//trim(sink%names(building))//'/'//trim(history_names(quantity))
       if (first == 1) then
-         call h5_create_history(sink%h5, path, size(values, 1), sink%n_out, sink%compress, error)
+         call h5_create_history(sink%h5, path, size(values, 1), sink%n_out, sink%compress, error, &
+                                  units=quantity_units(quantity))
       end if
       if (.not. allocated(error)) call h5_write_columns(sink%h5, path, first, values, error)
       if (allocated(error)) error%message = 'cannot write '//sink%label//': '//error%message
@@ -208,9 +215,9 @@ contains
          if (allocated(error)) return
          call h5_write_attr(h5, '/', 'dt', deck%analysis%dt, error)
          if (allocated(error)) return
-         call h5_write(h5, '/ground/time', unc%time, error)
+         call h5_write(h5, '/ground/time', unc%time, error, units='s')
          if (allocated(error)) return
-         call h5_write(h5, '/ground/acceleration', ag_out, error)
+         call h5_write(h5, '/ground/acceleration', ag_out, error, units='m/s^2')
          if (allocated(error)) return
          call h5_write_attr(h5, '/ground', 'description', ground_text, error)
          if (allocated(error)) return
@@ -231,7 +238,7 @@ contains
             do ib = 1, size(models)
                do q = 1, n_history_quantities
                   call h5_write(h5, '/influence/'//models(ib)%name//'/'//trim(history_names(q)), &
-                                influence(ib)%lambda(:, q), error)
+                                influence(ib)%lambda(:, q), error, units='%')
                   if (allocated(error)) return
                end do
                if (allocated(influence(ib)%member_lambda)) call write_member_influence(models(ib), influence(ib))
@@ -251,7 +258,8 @@ contains
          nq = size(b%member_names)
          do k = 1, nq
             rv = infl%member_lambda(k::nq)
-            call h5_write(h5, '/influence/'//b%name//'/'//b%member_group//'/'//trim(b%member_names(k)), rv, error)
+            call h5_write(h5, '/influence/'//b%name//'/'//b%member_group//'/'//trim(b%member_names(k)), rv, error, &
+                          units='%')
             if (allocated(error)) return
          end do
       end subroutine write_member_influence
@@ -260,23 +268,23 @@ contains
          ! A contiguous copy of each (quantity, building) row (no array temporary at the call).
          real(dp), allocatable :: row(:)
 
-         call h5_write(h5, '/sweep/gap', sweep%gap, error)
+         call h5_write(h5, '/sweep/gap', sweep%gap, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, '/sweep/impacts', sweep%impacts, error)
+         call h5_write(h5, '/sweep/impacts', sweep%impacts, error, units='1')
          if (allocated(error)) return
-         call h5_write(h5, '/sweep/meets', merge(1, 0, sweep%meets), error)
+         call h5_write(h5, '/sweep/meets', merge(1, 0, sweep%meets), error, units='1')
          if (allocated(error)) return
-         call h5_write(h5, '/sweep/no_contact', merge(1, 0, sweep%beyond), error)
+         call h5_write(h5, '/sweep/no_contact', merge(1, 0, sweep%beyond), error, units='1')
          if (allocated(error)) return
          if (allocated(sweep%closing_max)) then
-            call h5_write(h5, '/sweep/closing_max', sweep%closing_max, error)
+            call h5_write(h5, '/sweep/closing_max', sweep%closing_max, error, units='m')
             if (allocated(error)) return
          end if
          do ib = 1, size(models)
             do q = 1, n_history_quantities
                row = sweep%max_abs_lambda(q, ib, :)
                call h5_write(h5, '/sweep/max_abs_lambda/'//models(ib)%name//'/'//trim(history_names(q)), &
-                             row, error)
+                             row, error, units='%')
                if (allocated(error)) return
             end do
          end do
@@ -297,26 +305,26 @@ contains
          character(len=:), allocatable :: g
 
          g = '/model/'//b%name//'/'
-         call h5_write(h5, g//'height', s%height, error)
+         call h5_write(h5, g//'height', s%height, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, g//'mass', s%floor_mass, error)
+         call h5_write(h5, g//'mass', s%floor_mass, error, units='t')
          if (allocated(error)) return
          if (allocated(s%frame)) then
             call write_frame(g, s)
             if (.not. allocated(error)) call write_dof_layout(g, b, s)
          else
-            call h5_write(h5, g//'storey_stiffness', s%storey_stiffness, error)
+            call h5_write(h5, g//'storey_stiffness', s%storey_stiffness, error, units='kN/m')
             if (allocated(error)) return
-            call h5_write(h5, g//'geometric_stiffness', s%geometric_stiffness, error)
+            call h5_write(h5, g//'geometric_stiffness', s%geometric_stiffness, error, units='kN/m')
             if (allocated(error)) return
-            call h5_write(h5, g//'axial_load', s%axial_load, error)
+            call h5_write(h5, g//'axial_load', s%axial_load, error, units='kN')
          end if
          if (allocated(error)) return
-         call h5_write(h5, g//'periods', b%period, error)
+         call h5_write(h5, g//'periods', b%period, error, units='s')
          if (allocated(error)) return
-         call h5_write(h5, g//'omega', b%omega, error)
+         call h5_write(h5, g//'omega', b%omega, error, units='rad/s')
          if (allocated(error)) return
-         call h5_write(h5, g//'rayleigh', [b%a0, b%a1], error)
+         call h5_write(h5, g//'rayleigh', [b%a0, b%a1], error, units='1/s, s')
          if (allocated(error)) return
          call h5_write_attr(h5, '/model/'//b%name, 'p_delta', merge(1, 0, s%p_delta), error)
          if (allocated(error)) return
@@ -330,25 +338,25 @@ contains
          type(building_model), intent(in) :: s
 
          associate (f => s%frame%frame)
-            call h5_write(h5, g//'nodes', reshape([f%node_x, f%node_z], [f%n_nodes, 2]), error)
+            call h5_write(h5, g//'nodes', reshape([f%node_x, f%node_z], [f%n_nodes, 2]), error, units='m')
             if (allocated(error)) return
             call h5_write_attr(h5, g//'nodes', 'columns', 'x z (m)', error)
             if (allocated(error)) return
             call h5_write(h5, g//'elements', reshape([f%element_nodes(1, :), f%element_nodes(2, :), &
-                          f%element_kind, f%element_group], [f%n_elements, 4]), error)
+                          f%element_kind, f%element_group], [f%n_elements, 4]), error, units='1')
             if (allocated(error)) return
             call h5_write_attr(h5, g//'elements', 'columns', 'node1 node2 kind(1 column, 2 beam) storey', error)
             if (allocated(error)) return
             call h5_write(h5, g//'sections', reshape([f%element_e, f%element_a, f%element_i], &
-                          [f%n_elements, 3]), error)
+                          [f%n_elements, 3]), error, units='kN/m^2, m^2, m^4')
             if (allocated(error)) return
             call h5_write_attr(h5, g//'sections', 'columns', 'E (kN/m2) A (m2) I (m4)', error)
             if (allocated(error)) return
-            if (s%p_delta) call h5_write(h5, g//'gravity_axial_force', s%frame%gravity%axial, error)
+            if (s%p_delta) call h5_write(h5, g//'gravity_axial_force', s%frame%gravity%axial, error, units='kN')
             if (allocated(error)) return
             associate (ce => s%frame%column_element)
                call h5_write(h5, g//'columns', reshape([ce, f%element_group(ce), f%node_line(f%element_nodes(1, ce))], &
-                             [size(ce), 3]), error)
+                             [size(ce), 3]), error, units='1')
             end associate
             if (allocated(error)) return
             call h5_write_attr(h5, g//'columns', 'columns', 'element storey line of each column '// &
@@ -367,23 +375,23 @@ contains
          type(building_model), intent(in) :: s
 
          associate (f => s%frame%frame)
-            call h5_write(h5, g//'dofs', reshape([b%dof_node, b%dof_direction], [b%n, 2]), error)
+            call h5_write(h5, g//'dofs', reshape([b%dof_node, b%dof_direction], [b%n, 2]), error, units='1')
             if (allocated(error)) return
             call h5_write_attr(h5, g//'dofs', 'columns', 'node direction(1 horizontal, 2 vertical, 3 rotation)', &
                                error)
             if (allocated(error)) return
-            call h5_write(h5, g//'node_dofs', transpose(reshape(f%map_dof, [6, f%n_nodes])), error)
+            call h5_write(h5, g//'node_dofs', transpose(reshape(f%map_dof, [6, f%n_nodes])), error, units='1')
             if (allocated(error)) return
             call h5_write_attr(h5, g//'node_dofs', 'columns', node_map_columns, error)
             if (allocated(error)) return
-            call h5_write(h5, g//'node_coefficients', transpose(reshape(f%map_coef, [6, f%n_nodes])), error)
+            call h5_write(h5, g//'node_coefficients', transpose(reshape(f%map_coef, [6, f%n_nodes])), error, &
+                          units=node_coefficient_units)
             if (allocated(error)) return
             call h5_write_attr(h5, g//'node_coefficients', 'columns', node_map_columns, error)
          end associate
       end subroutine write_dof_layout
 
       subroutine write_contact()
-         character(len=:), allocatable :: labels
          character(len=*), parameter :: c = '/coupled/contact'
          character(len=16), allocatable :: laws(:)
          integer :: k, ne
@@ -391,90 +399,85 @@ contains
          real(dp), allocatable :: rv(:)
          integer, allocatable :: iv(:)
 
-         call h5_write(h5, c//'/force', cpl%joints%force, error)
+         call h5_write(h5, c//'/force', cpl%joints%force, error, units='kN')
          if (allocated(error)) return
-         call h5_write(h5, c//'/closing', cpl%joints%closing, error)
+         call h5_write(h5, c//'/closing', cpl%joints%closing, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, c//'/penetration', cpl%joints%penetration, error)
+         call h5_write(h5, c//'/penetration', cpl%joints%penetration, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, c//'/plastic', cpl%joints%plastic, error)
+         call h5_write(h5, c//'/plastic', cpl%joints%plastic, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, c//'/state', cpl%joints%state, error)
+         call h5_write(h5, c//'/state', cpl%joints%state, error, units='1')
          if (allocated(error)) return
          call h5_write_attr(h5, c//'/state', 'codes', '0 open, -1 closed elastic, -2 fractured, '// &
                             'k > 0 yielding on yield segment k of the law', error)
          if (allocated(error)) return
          iv = cs%joint(:)%impacts
-         call h5_write(h5, c//'/impacts', iv, error)
+         call h5_write(h5, c//'/impacts', iv, error, units='1')
          if (allocated(error)) return
          rv = cs%joint(:)%contact_time
-         call h5_write(h5, c//'/contact_time', rv, error)
+         call h5_write(h5, c//'/contact_time', rv, error, units='s')
          if (allocated(error)) return
          rv = cs%joint(:)%peak_force
-         call h5_write(h5, c//'/peak_force', rv, error)
+         call h5_write(h5, c//'/peak_force', rv, error, units='kN')
          if (allocated(error)) return
          rv = cs%joint(:)%peak_time
-         call h5_write(h5, c//'/peak_time', rv, error)
+         call h5_write(h5, c//'/peak_time', rv, error, units='s')
          if (allocated(error)) return
          rv = cs%pair(:)%gap
-         call h5_write(h5, c//'/gap', rv, error)
+         call h5_write(h5, c//'/gap', rv, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, c//'/stiffness', [(cs%pair(k)%law%stiffness, k=1, cs%m)], error)
+         call h5_write(h5, c//'/stiffness', [(cs%pair(k)%law%stiffness, k=1, cs%m)], error, units='kN/m')
          if (allocated(error)) return
          allocate (laws(cs%m))
          do k = 1, cs%m
             laws(k) = law_name(cs%pair(k)%law%kind)
          end do
-         call h5_write(h5, c//'/law', laws, error)
+         call h5_write(h5, c//'/law', laws, error, units='-')
          if (allocated(error)) return
          rv = cs%joint(:)%plastic
-         call h5_write(h5, c//'/plastic_final', rv, error)
+         call h5_write(h5, c//'/plastic_final', rv, error, units='m')
          if (allocated(error)) return
          rv = cs%joint(:)%peak_penetration
-         call h5_write(h5, c//'/peak_penetration', rv, error)
+         call h5_write(h5, c//'/peak_penetration', rv, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, c//'/fractured', [(merge(1, 0, cs%joint(k)%fractured), k=1, cs%m)], error)
+         call h5_write(h5, c//'/fractured', [(merge(1, 0, cs%joint(k)%fractured), k=1, cs%m)], error, units='1')
          if (allocated(error)) return
          rv = cs%joint(:)%fracture_time
-         call h5_write(h5, c//'/fracture_time', rv, error)
+         call h5_write(h5, c//'/fracture_time', rv, error, units='s')
          if (allocated(error)) return
          do k = 1, cs%m
             associate (law => cs%pair(k)%law)
                if (size(law%env_d) == 0) cycle
                call h5_write(h5, c//'/envelope/'//cs%pair(k)%label, &
                              reshape([0.0_dp, 0.0_dp, (law%env_d(ne), law%env_r(ne), ne=1, size(law%env_d))], &
-                                     [2, size(law%env_d) + 1]), error)
+                                     [2, size(law%env_d) + 1]), error, units='m, kN')
                if (allocated(error)) return
             end associate
          end do
          ne = cs%stats%n_events
          rv = cs%stats%events(1:ne)%time
-         call h5_write(h5, c//'/events/time', rv, error)
+         call h5_write(h5, c//'/events/time', rv, error, units='s')
          if (allocated(error)) return
          iv = cs%stats%events(1:ne)%step
-         call h5_write(h5, c//'/events/step', iv, error)
+         call h5_write(h5, c//'/events/step', iv, error, units='1')
          if (allocated(error)) return
          iv = cs%stats%events(1:ne)%status
-         call h5_write(h5, c//'/events/status', iv, error)
+         call h5_write(h5, c//'/events/status', iv, error, units='1')
          if (allocated(error)) return
          iv = cs%stats%events(1:ne)%rows
-         call h5_write(h5, c//'/events/rows', iv, error)
+         call h5_write(h5, c//'/events/rows', iv, error, units='1')
          if (allocated(error)) return
          iv = cs%stats%events(1:ne)%solutions
-         call h5_write(h5, c//'/events/solutions', iv, error)
+         call h5_write(h5, c//'/events/solutions', iv, error, units='1')
          if (allocated(error)) return
-         call h5_write(h5, c//'/events/pairs', [(event_pairs(k), k=1, ne)], error)
+         call h5_write(h5, c//'/events/pairs', [(event_pairs(k), k=1, ne)], error, units='-')
          if (allocated(error)) return
          call h5_write_attr(h5, c//'/events', 'description', 'steps on which Lemke ended on a ray '// &
                             '(status 2) or at its pivot cap (3); the LCP was solved by enumeration and '// &
                             'the solution nearest the previous state taken', error)
          if (allocated(error)) return
-         labels = ''
-         do k = 1, cs%m
-            if (k > 1) labels = labels//' '
-            labels = labels//cs%pair(k)%label
-         end do
-         call h5_write_attr(h5, c, 'pairs', labels, error)
+         call h5_write_attr(h5, c, 'pairs', pair_list(cs), error)
          if (allocated(error)) return
          call h5_write_attr(h5, c, 'lcp_solves', cs%stats%solves, error)
          if (allocated(error)) return
@@ -531,9 +534,9 @@ contains
       packed = .false.
       if (present(compress)) packed = compress
       n = res%n_out
-      call h5_write(h5, g//'/time', res%time, error)
+      call h5_write(h5, g//'/time', res%time, error, units='s')
       if (allocated(error)) return
-      call h5_write(h5, g//'/energy', res%energy, error)
+      call h5_write(h5, g//'/energy', res%energy, error, units='kJ')
       if (allocated(error)) return
       call h5_write_attr(h5, g//'/energy', 'components', 'input kinetic strain damping contact plastic', &
                          error)
@@ -548,28 +551,28 @@ contains
             if (.not. r%streamed) call write_histories(r)
             if (allocated(error)) return
             if (r%nodes) then
-               call write_history(h5, gb//'u_nodes', r%u_nodes(:, 1:n), packed, error)
+               call write_history(h5, gb//'u_nodes', r%u_nodes(:, 1:n), packed, error, 'm, rad')
                if (allocated(error)) return
                call h5_write_attr(h5, gb//'u_nodes', 'dofs', 'column i: DOF i, its node and direction in '// &
                                   '/model/'//models(i)%name//'/dofs', error)
                if (allocated(error)) return
             end if
             do q = 1, n_history_quantities
-               call h5_write(h5, gb//'peak/'//trim(history_names(q)), r%peak(:, q), error)
+               call h5_write(h5, gb//'peak/'//trim(history_names(q)), r%peak(:, q), error, units=quantity_units(q))
                if (allocated(error)) return
-               call h5_write(h5, gb//'peak_time/'//trim(history_names(q)), r%peak_time(:, q), error)
+               call h5_write(h5, gb//'peak_time/'//trim(history_names(q)), r%peak_time(:, q), error, units='s')
                if (allocated(error)) return
             end do
             if (allocated(r%member_peak)) call write_members(models(i), r)
             if (allocated(error)) return
             if (r%snapshots) then
-               call h5_write(h5, gb//'deformed', r%deformed, error)
+               call h5_write(h5, gb//'deformed', r%deformed, error, units='m, rad')
                if (allocated(error)) return
                call h5_write_attr(h5, gb//'deformed', 'description', 'row j: every DOF (as u_nodes, layout '// &
                                   'in /model/'//models(i)%name//'/dofs) at the step of the peak storey shear '// &
                                   'of storey j (time: deformed_time)', error)
                if (allocated(error)) return
-               call h5_write(h5, gb//'deformed_time', r%peak_time(:, q_shear), error)
+               call h5_write(h5, gb//'deformed_time', r%peak_time(:, q_shear), error, units='s')
                if (allocated(error)) return
             end if
          end associate
@@ -588,10 +591,11 @@ contains
          nq = size(b%member_names)
          do k = 1, nq
             rv = r%member_peak(k::nq)
-            call h5_write(h5, gb//b%member_group//'/'//trim(b%member_names(k)), rv, error)
+            call h5_write(h5, gb//b%member_group//'/'//trim(b%member_names(k)), rv, error, &
+                          units=member_units(b%member_names(k)))
             if (allocated(error)) return
             rv = r%member_time(k::nq)
-            call h5_write(h5, gb//b%member_group//'/'//trim(b%member_names(k))//'_time', rv, error)
+            call h5_write(h5, gb//b%member_group//'/'//trim(b%member_names(k))//'_time', rv, error, units='s')
             if (allocated(error)) return
          end do
       end subroutine write_members
@@ -600,21 +604,21 @@ contains
       subroutine write_histories(r)
          type(response_record), intent(in) :: r
 
-         if (r%store(q_u)) call write_history(h5, gb//'u', r%u(:, 1:n), packed, error)
+         if (r%store(q_u)) call write_history(h5, gb//'u', r%u(:, 1:n), packed, error, quantity_units(q_u))
          if (allocated(error)) return
-         if (r%store(q_v)) call write_history(h5, gb//'v', r%v(:, 1:n), packed, error)
+         if (r%store(q_v)) call write_history(h5, gb//'v', r%v(:, 1:n), packed, error, quantity_units(q_v))
          if (allocated(error)) return
-         if (r%store(q_a_abs)) call write_history(h5, gb//'a_abs', r%a_abs(:, 1:n), packed, error)
+         if (r%store(q_a_abs)) call write_history(h5, gb//'a_abs', r%a_abs(:, 1:n), packed, error, quantity_units(q_a_abs))
          if (allocated(error)) return
-         if (r%store(q_drift)) call write_history(h5, gb//'drift', r%drift(:, 1:n), packed, error)
+         if (r%store(q_drift)) call write_history(h5, gb//'drift', r%drift(:, 1:n), packed, error, quantity_units(q_drift))
          if (allocated(error)) return
-         if (r%store(q_shear)) call write_history(h5, gb//'storey_shear', r%shear(:, 1:n), packed, error)
+         if (r%store(q_shear)) call write_history(h5, gb//'storey_shear', r%shear(:, 1:n), packed, error, quantity_units(q_shear))
          if (allocated(error)) return
       end subroutine write_histories
    end subroutine write_analysis_h5
 
    !> One building history (n, n_out): contiguous, or chunked and compressed.
-   subroutine write_history(h5, path, values, compress, error)
+   subroutine write_history(h5, path, values, compress, error, units)
       !> Open file.
       type(h5_file), intent(inout) :: h5
       !> Dataset path.
@@ -625,12 +629,14 @@ contains
       logical, intent(in) :: compress
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Its `units` attribute.
+      character(len=*), intent(in) :: units
 
       if (compress) then
-         call h5_create_history(h5, path, size(values, 1), size(values, 2), .true., error)
+         call h5_create_history(h5, path, size(values, 1), size(values, 2), .true., error, units=units)
          if (.not. allocated(error)) call h5_write_columns(h5, path, 1, values, error)
       else
-         call h5_write(h5, path, values, error)
+         call h5_write(h5, path, values, error, units=units)
       end if
    end subroutine write_history
 
@@ -669,18 +675,65 @@ contains
          call failure_time_step(m(i), t(i), step(i))
       end do
       if (with_index) then
-         call h5_write(h5, path//'/case', idx, error)
+         call h5_write(h5, path//'/case', idx, error, units='1')
          if (allocated(error)) return
       end if
-      call h5_write(h5, path//'/gap', g, error)
+      call h5_write(h5, path//'/gap', g, error, units='m')
       if (allocated(error)) return
-      call h5_write(h5, path//'/time', t, error)
+      call h5_write(h5, path//'/time', t, error, units='s')
       if (allocated(error)) return
-      call h5_write(h5, path//'/step', step, error)
+      call h5_write(h5, path//'/step', step, error, units='1')
       if (allocated(error)) return
-      call h5_write(h5, path//'/message', m, error)
+      call h5_write(h5, path//'/message', m, error, units='-')
       if (allocated(error) .or. .not. with_index) return
       call h5_write_attr(h5, path, 'n_cases', size(failed), error)
    end subroutine write_failed_cases
+
+   !> Units of the response quantity q (`pound_response`: u, v, a_abs, drift, storey_shear),
+   !> as its datasets' `units` attribute.
+   pure function quantity_units(q) result(units)
+      !> Quantity index (q_u .. q_shear).
+      integer, intent(in) :: q
+      character(len=:), allocatable :: units
+
+      select case (q)
+      case (q_u, q_drift)
+         units = 'm'
+      case (q_v)
+         units = 'm/s'
+      case (q_a_abs)
+         units = 'm/s^2'
+      case default
+         units = 'kN'
+      end select
+   end function quantity_units
+
+   !> Units of a member row of a frame's column segments (shear, moment_bottom, moment_top,
+   !> axial): kN m for the moments, kN for the forces.
+   pure function member_units(name) result(units)
+      !> The member row's name.
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: units
+
+      if (index(name, 'moment') == 1) then
+         units = 'kN m'
+      else
+         units = 'kN'
+      end if
+   end function member_units
+
+   !> The labels of the pairs (`pair_label`), separated by one blank (a label has none).
+   function pair_list(cs) result(labels)
+      !> The contact system.
+      type(contact_system), intent(in) :: cs
+      character(len=:), allocatable :: labels
+      integer :: k
+
+      labels = ''
+      do k = 1, cs%m
+         if (k > 1) labels = labels//' '
+         labels = labels//cs%pair(k)%label
+      end do
+   end function pair_list
 
 end module pound_results_h5

@@ -1,7 +1,8 @@
 !> Outputs of a suite of ground motions (`pound_suite`): the listing sections and the HDF5
 !> group `/suite`, written only when the deck has more than one motion.
 !>
-!> HDF5 (appended to the results file):
+!> HDF5 (appended to the results file; shapes as h5py reads them, one row per motion; every
+!> dataset has a `units` attribute):
 !>
 !>     /suite/names, /suite/scale_factor, /suite/pga            (n_motions); m/s^2
 !>     /suite/source       (n_motions) record file as resolved, 'synthetic, seed N' or 'pulse'
@@ -32,18 +33,21 @@
 !>        motion's row 1 at every gap) and
 !>        /suite/sweep/gap_failed (n_gaps, 0/1)
 !>
-!> (the arrays are written in Fortran order, so h5py shows them transposed).
+!> (the per-motion arrays are held (n_motions, n) in Fortran and written transposed, so that
+!> h5py, C and NumPy read them as documented, with one row per motion like the histories' one
+!> row per output time).
 module pound_suite_output
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_config, only: history_names, n_history_quantities
-   use pound_strings, only: str
+   use pound_strings, only: str, left_cell, right_cell, fixed_cell
+   use pound_contact, only: contact_system
    use pound_structure, only: structure_model
    use pound_influence, only: building_influence
-   use pound_listing, only: write_section, write_influence_tables
+   use pound_listing, only: write_section, write_influence_tables, gap_cell, mm
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
-   use pound_results_h5, only: write_analysis_h5, write_failed_cases
+   use pound_results_h5, only: write_analysis_h5, write_failed_cases, pair_list
    use pound_cases, only: failure_time_step, case_message_len
    implicit none
    private
@@ -58,7 +62,11 @@ contains
 
    !> Listing sections of the suite: motions, per-motion largest |lambda|, mean influence
    !> tables, separation rules per pair.
-   subroutine write_suite_listing(u, models, suite, error)
+   !>
+   !> Every table has one heading per column (names separated by at least two blanks) and one
+   !> cell per column in every row (no blank inside a cell): the motion and building columns
+   !> are as wide as the longest name, gaps are in mm ('n/a': not computed, or none).
+   subroutine write_suite_listing(u, models, suite, error, cs)
       !> Open listing unit.
       integer, intent(in) :: u
       !> The buildings.
@@ -67,11 +75,13 @@ contains
       type(suite_result), intent(in) :: suite
       !> Set when a write fails.
       type(error_type), allocatable, intent(out) :: error
+      !> The contact system of the deck (its pairs' labels name the separation tables).
+      type(contact_system), intent(in), optional :: cs
       type(building_influence), allocatable :: infl(:)
-      integer :: ios, k, ib, q, ip, nm, nb
+      integer :: ios, k, ib, q, ip, nm, nb, wm, wb
       integer, allocatable :: used(:)
       character(len=256) :: msg
-      character(len=:), allocatable :: over
+      character(len=:), allocatable :: over, line
 
       nm = size(suite%names)
       nb = size(models)
@@ -80,29 +90,54 @@ contains
       if (suite%n_used < nm) over = ' ('//str(suite%n_used)//' of '//str(nm)//' motions used, '// &
                                     str(nm - suite%n_used)//' FAILED and left out)'
       ios = 0
+      wm = len('mean_of_'//str(nm)//'/'//str(nm))
+      do k = 1, nm
+         wm = max(wm, len_trim(suite%names(k)))
+      end do
+      wb = len('building')
+      do ib = 1, nb
+         wb = max(wb, len(models(ib)%name))
+      end do
       call write_section(u, 'Ground-motion suite ('//str(nm)//' motions)')
       write (u, '(a)', iostat=ios, iomsg=msg) '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
-         'period of each building (m/s^2)'
-      write (u, '(2x,a20,a14,a14,*(a14))', iostat=ios, iomsg=msg) 'motion', 'scale factor', 'PGA m/s^2', &
-         ('Sa '//trim(models(ib)%name), ib=1, nb)
+         'period of each building (m/s^2); row T1: that period (s)'
+      line = '  '//left_cell('motion', wm)//'  scale_factor  PGA [m/s^2]'
+      do ib = 1, nb
+         line = line//right_cell('Sa '//models(ib)%name, sa_width(ib))
+      end do
+      write (u, '(a)', iostat=ios, iomsg=msg) line
       do k = 1, nm
-         write (u, '(2x,a20,*(es14.6))', iostat=ios, iomsg=msg) trim(suite%names(k)), &
-            suite%scale_factor(k), suite%pga(k), suite%sa_building(k, :)
-         if (suite%motion_failed(k)) write (u, '(2x,a20,a)', iostat=ios, iomsg=msg) '', &
+         line = '  '//left_cell(trim(suite%names(k)), wm)//es_cell(suite%scale_factor(k), 14)// &
+                es_cell(suite%pga(k), 13)
+         do ib = 1, nb
+            line = line//es_cell(suite%sa_building(k, ib), sa_width(ib))
+         end do
+         write (u, '(a)', iostat=ios, iomsg=msg) line
+         if (suite%motion_failed(k)) write (u, '(a)', iostat=ios, iomsg=msg) '  '//repeat(' ', wm)// &
             '   FAILED (see the failed cases below): left out of every suite statistic'
       end do
       if (suite%n_used == nm) then
-         write (u, '(2x,a20,14x,es14.6,*(es14.6))', iostat=ios, iomsg=msg) 'mean', sum(suite%pga)/nm, &
-            sum(suite%sa_building, dim=1)/nm
+         line = '  '//left_cell('mean', wm)//right_cell('-', 14)//es_cell(sum(suite%pga)/nm, 13)
+         do ib = 1, nb
+            line = line//es_cell(sum(suite%sa_building(:, ib))/nm, sa_width(ib))
+         end do
       else
-         write (u, '(2x,a20,14x,es14.6,*(es14.6))', iostat=ios, iomsg=msg) 'mean of '//str(suite%n_used)// &
-            ' of '//str(nm), sum(suite%pga, mask=.not. suite%motion_failed)/suite%n_used, &
-            sum(suite%sa_building(used, :), dim=1)/suite%n_used
+         line = '  '//left_cell('mean_of_'//str(suite%n_used)//'/'//str(nm), wm)//right_cell('-', 14)// &
+                es_cell(sum(suite%pga, mask=.not. suite%motion_failed)/suite%n_used, 13)
+         do ib = 1, nb
+            line = line//es_cell(sum(suite%sa_building(used, ib))/suite%n_used, sa_width(ib))
+         end do
       end if
-      write (u, '(2x,a20,28x,*(f14.4))', iostat=ios, iomsg=msg) 'period T1 (s)', suite%building_period
-      write (u, '(/,2x,a20,2x,a)', iostat=ios, iomsg=msg) 'motion', 'source'
+      write (u, '(a)', iostat=ios, iomsg=msg) line
+      line = '  '//left_cell('T1', wm)//right_cell('-', 14)//right_cell('-', 13)
+      do ib = 1, nb
+         line = line//repeat(' ', sa_width(ib) - 14)//fixed_cell(suite%building_period(ib), 14, 4)
+      end do
+      write (u, '(a)', iostat=ios, iomsg=msg) line
+      write (u, '(/,a)', iostat=ios, iomsg=msg) '  '//left_cell('motion', wm)//'  source'
       do k = 1, nm
-         write (u, '(2x,a20,2x,a)', iostat=ios, iomsg=msg) trim(suite%names(k)), trim(suite%source(k))
+         write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(trim(suite%names(k)), wm)//'  '// &
+            trim(suite%source(k))
       end do
       if (ios /= 0) then
          call fatal_error(error, 'listing: '//trim(msg))
@@ -114,17 +149,22 @@ contains
       end if
 
       call write_section(u, 'Suite: largest |lambda| per motion, building and quantity [%]')
-      write (u, '(2x,a20,a10,*(a14))', iostat=ios, iomsg=msg) 'motion', 'building', &
-         (trim(history_names(q)), q=1, n_history_quantities)
+      line = '  '//left_cell('motion', wm)//'  '//left_cell('building', wb)
+      do q = 1, n_history_quantities
+         line = line//right_cell(trim(history_names(q)), 14)
+      end do
+      write (u, '(a)', iostat=ios, iomsg=msg) line
       do k = 1, nm
          if (suite%motion_failed(k)) then
-            write (u, '(2x,a20,a)', iostat=ios, iomsg=msg) trim(suite%names(k)), '   FAILED'
+            write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(trim(suite%names(k)), wm)//'   FAILED'
             cycle
          end if
          do ib = 1, nb
-            write (u, '(2x,a20,a10,*(es14.4))', iostat=ios, iomsg=msg) trim(suite%names(k)), &
-               trim(models(ib)%name), (maxval(abs(suite%building(ib)%lambda(k, :, q))), &
-                                       q=1, n_history_quantities)
+            line = '  '//left_cell(trim(suite%names(k)), wm)//'  '//left_cell(models(ib)%name, wb)
+            do q = 1, n_history_quantities
+               line = line//es_cell(maxval(abs(suite%building(ib)%lambda(k, :, q))), 14)
+            end do
+            write (u, '(a)', iostat=ios, iomsg=msg) line
          end do
       end do
 
@@ -142,28 +182,33 @@ contains
       end do
       call write_influence_tables(u, models, infl)
 
-      call write_section(u, 'Separation rules per contact pair (m)')
+      call write_section(u, 'Separation rules per contact pair [mm]')
       write (u, '(a)', iostat=ios, iomsg=msg) '  Applied to the elastic time-history peaks of the '// &
          'uncoupled runs, without displacement amplification factors.', &
          '  ABS = u1 + u2, SRSS, EC8 4.4.2.7 (SRSS x 0.7 where floor levels coincide), DDC (CQC rho), ', &
-         '  no-contact gap = max_t (u1(t) - u2(t)) of the stored uncoupled histories (-1: u not stored).', &
+         '  no-contact gap = max_t (u1(t) - u2(t)) of the stored uncoupled histories (n/a: u not stored).', &
          '  time_history = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
          '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
-         '  (-1: not computed: no &sweep, no target_lambda, or no gap of the range meets it).', &
+         '  (n/a: not computed: no &sweep, no target_lambda, or no gap of the range meets it).', &
          '  The suite row: rules on the mean peaks; no-contact gap: mean over the motions'//over//'.'
       do ip = 1, size(suite%separation, 2)
-         write (u, '(/,a,i0)', iostat=ios, iomsg=msg) '  pair ', ip
-         write (u, '(2x,a20,*(a14))', iostat=ios, iomsg=msg) 'motion', (trim(rule_names(q)), q=1, size(rule_names))
+         write (u, '(/,a)', iostat=ios, iomsg=msg) '  pair '//pair_name(ip)
+         line = '  '//left_cell('motion', wm)
+         do q = 1, size(rule_names)
+            line = line//right_cell(trim(rule_names(q)), 14)
+         end do
+         write (u, '(a)', iostat=ios, iomsg=msg) line
          do k = 1, nm + 1
             if (k <= nm) then
                if (suite%motion_failed(k)) then
-                  write (u, '(2x,a20,a)', iostat=ios, iomsg=msg) trim(row_name(k)), '   FAILED'
+                  write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(row_name(k), wm)//'   FAILED'
                   cycle
                end if
             end if
             associate (s => suite%separation(k, ip))
-               write (u, '(2x,a20,*(es14.6))', iostat=ios, iomsg=msg) trim(row_name(k)), s%abs, &
-                  s%srss, s%ec8, s%ddc, s%no_contact, s%time_history
+               write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(row_name(k), wm)//gap_cell(s%abs, 14)// &
+                  gap_cell(s%srss, 14)//gap_cell(s%ec8, 14)//gap_cell(s%ddc, 14)//gap_cell(s%no_contact, 14)// &
+                  gap_cell(s%time_history, 14)
             end associate
          end do
       end do
@@ -173,22 +218,23 @@ contains
             'building''s largest |lambda|, then the largest; max: the largest over the motions'//over
          if (any(suite%gap_failed)) write (u, '(a)', iostat=ios, iomsg=msg) '  FAILED: a motion''s run '// &
             'failed at the gap (see the failed cases below): not averaged over the others, never meeting the target'
-         write (u, '(2x,a14,2a14)', iostat=ios, iomsg=msg) 'gap (m)', 'mean', 'max'
+         write (u, '(a)', iostat=ios, iomsg=msg) '      gap [mm]          mean           max'
          do k = 1, size(suite%sweep_gap)
             if (suite%gap_failed(k)) then
-               write (u, '(2x,es14.6,a)', iostat=ios, iomsg=msg) suite%sweep_gap(k), '        FAILED'
+               write (u, '(a)', iostat=ios, iomsg=msg) '  '//gap_cell(suite%sweep_gap(k), 12)//'        FAILED'
                cycle
             end if
-            write (u, '(2x,es14.6,2es14.4)', iostat=ios, iomsg=msg) suite%sweep_gap(k), &
-               suite%sweep_mean(k), suite%sweep_max(k)
+            write (u, '(a)', iostat=ios, iomsg=msg) '  '//gap_cell(suite%sweep_gap(k), 12)// &
+               es_cell(suite%sweep_mean(k), 14)//es_cell(suite%sweep_max(k), 14)
          end do
-         write (u, '(a,es14.6,a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on the mean: ', &
-            suite%safe_gap_mean, ' m (-1: none in the range, or no target)'
-         write (u, '(a,es14.6,a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on every motion: ', &
-            suite%safe_gap_every, ' m'
-         write (u, '(a,2es14.6,a,es10.3,a)', iostat=ios, iomsg=msg) '  refined by bisection (mean, every '// &
-            'motion): ', suite%refined_gap_mean, suite%refined_gap_every, ' m (tolerance ', suite%refine_tolerance, &
-            ' m; -1: not refined)'
+         write (u, '(a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on the mean: '// &
+            trim(adjustl(gap_cell(suite%safe_gap_mean, 14)))//' mm (n/a: none in the range, or no target)'
+         write (u, '(a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on every motion: '// &
+            trim(adjustl(gap_cell(suite%safe_gap_every, 14)))//' mm'
+         write (u, '(a)', iostat=ios, iomsg=msg) '  refined by bisection (mean, every motion): '// &
+            trim(adjustl(gap_cell(suite%refined_gap_mean, 14)))//' mm, '// &
+            trim(adjustl(gap_cell(suite%refined_gap_every, 14)))//' mm (tolerance '// &
+            trim(adjustl(fixed_cell(mm*suite%refine_tolerance, 14, 4, .true.)))//' mm; n/a: not refined)'
          write (u, '(a,2(1x,i0),a)', iostat=ios, iomsg=msg) '  non-monotone: grid gaps below the safe gap '// &
             'that pass nevertheless (mean, every motion):', suite%non_monotone_mean, suite%non_monotone_every, &
             '  (0: monotone on the grid)'
@@ -197,14 +243,16 @@ contains
             'yet the thresholds above are the gaps from which on every larger gap passes'
          write (u, '(/,a)', iostat=ios, iomsg=msg) '  Per motion: the threshold on its own largest |lambda| '// &
             '(the time_history rule)'
-         write (u, '(2x,a20,3a14)', iostat=ios, iomsg=msg) 'motion', 'grid (m)', 'refined (m)', 'non-monotone'
+         write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell('motion', wm)// &
+            '     grid [mm]  refined [mm]  non-monotone'
          do k = 1, nm
             if (suite%motion_failed(k)) then
-               write (u, '(2x,a20,a)', iostat=ios, iomsg=msg) trim(suite%names(k)), '        FAILED'
+               write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(trim(suite%names(k)), wm)//'        FAILED'
                cycle
             end if
-            write (u, '(2x,a20,2es14.6,i14)', iostat=ios, iomsg=msg) trim(suite%names(k)), &
-               suite%safe_gap_motion(k), suite%refined_gap_motion(k), suite%non_monotone_motion(k)
+            write (u, '(a,i14)', iostat=ios, iomsg=msg) '  '//left_cell(trim(suite%names(k)), wm)// &
+               gap_cell(suite%safe_gap_motion(k), 14)//gap_cell(suite%refined_gap_motion(k), 14), &
+               suite%non_monotone_motion(k)
          end do
       end if
       if (ios /= 0) then
@@ -220,27 +268,54 @@ contains
       subroutine write_failures()
          real(dp) :: t
          integer :: i, step
-         character(len=12) :: gap
+         character(len=14) :: gap
 
          if (size(suite%failures) == 0) return
          call write_section(u, 'Failed cases of the suite ('//str(size(suite%failures))//')')
          write (u, '(a)', iostat=ios, iomsg=msg) '  gap -: the motion''s run at the deck''s gaps failed, or '// &
             'every gap of its sweep did (the motion is left out of every suite statistic);', &
             '  a gap: its run at that gap of the sweep or of a refinement failed (the gap never meets the target).'
-         if (ios == 0) write (u, '(2x,a20,a12,a12,a10,2x,a)', iostat=ios, iomsg=msg) 'motion', 'gap [mm]', 't [s]', &
-            'step', 'message'
+         if (ios == 0) write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell('motion', wm)// &
+            '      gap [mm]       t [s]      step  message'
          do i = 1, size(suite%failures)
             if (ios /= 0) exit
             associate (f => suite%failures(i))
                call failure_time_step(f%message, t, step)
-               gap = '           -'
-               if (f%gap >= 0.0_dp) write (gap, '(f12.4)') 1000.0_dp*f%gap
-               write (u, '(2x,a20,a12,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) trim(suite%names(f%motion)), &
-                  gap, t, step, trim(f%message)
+               gap = '             -'
+               if (f%gap >= 0.0_dp) gap = fixed_cell(mm*f%gap, 14, 4)
+               write (u, '(a,a14,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) '  '// &
+                  left_cell(trim(suite%names(f%motion)), wm), gap, t, step, trim(f%message)
             end associate
          end do
          if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
       end subroutine write_failures
+
+      !> Width of the Sa column of building ib: its heading and a blank.
+      pure integer function sa_width(ib)
+         integer, intent(in) :: ib
+
+         sa_width = max(14, len(models(ib)%name) + 5)
+      end function sa_width
+
+      !> x in scientific notation (6 significant digits) in a field of width w (>= 13).
+      pure function es_cell(x, w) result(cell)
+         real(dp), intent(in) :: x
+         integer, intent(in) :: w
+         character(len=w) :: cell
+
+         write (cell, '(es'//str(w)//'.'//str(min(5, w - 8))//')') x
+      end function es_cell
+
+      !> The label of pair ip (`pair_label`), or 'ip' without the contact system.
+      function pair_name(ip) result(name)
+         integer, intent(in) :: ip
+         character(len=:), allocatable :: name
+
+         name = str(ip)
+         if (.not. present(cs)) return
+         if (.not. allocated(cs%pair)) return
+         if (ip <= size(cs%pair)) name = cs%pair(ip)%label
+      end function pair_name
 
       function row_name(k) result(name)
          integer, intent(in) :: k
@@ -256,7 +331,7 @@ contains
    end subroutine write_suite_listing
 
    !> Append `/suite` to the results file at `path`.
-   subroutine write_suite_h5(path, models, suite, error)
+   subroutine write_suite_h5(path, models, suite, error, cs)
       !> Results file (written and closed).
       character(len=*), intent(in) :: path
       !> The buildings.
@@ -265,6 +340,9 @@ contains
       type(suite_result), intent(in) :: suite
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> The contact system of the deck: its pairs' labels become the attribute `pairs` of
+      !> /suite/separation (blank-separated, in the order of the columns).
+      type(contact_system), intent(in), optional :: cs
       type(error_type), allocatable :: close_error
       type(h5_file) :: h5
 
@@ -282,29 +360,30 @@ contains
          integer :: ib, q, r
          character(len=:), allocatable :: b, qn
 
-         call h5_write(h5, '/suite/names', suite%names, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/source', suite%source, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/scale_factor', suite%scale_factor, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/pga', suite%pga, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/building_period', suite%building_period, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/target', suite%target, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/target_period', suite%target_period, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/period', suite%period, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/sa', suite%sa, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/mean_sa', suite%mean_sa, error)
+         call h5_write(h5, '/suite/names', suite%names, error, units='-')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/source', suite%source, error, units='-')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/scale_factor', suite%scale_factor, error, units='1')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/pga', suite%pga, error, units='m/s^2')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/building_period', suite%building_period, error, units='s')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/target', suite%target, error, units='m/s^2')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/target_period', suite%target_period, error, units='s')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/period', suite%period, error, units='s')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/sa', transpose(suite%sa), error, units='m/s^2')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/spectrum/mean_sa', suite%mean_sa, error, units='m/s^2')
          if (.not. allocated(error)) call write_failures()
          if (allocated(error) .or. .not. suite%has_coupled) return
          do ib = 1, size(models)
             b = models(ib)%name
             do q = 1, n_history_quantities
                qn = trim(history_names(q))
-               call h5_write(h5, '/suite/influence/'//b//'/'//qn, suite%building(ib)%lambda(:, :, q), error)
+               call h5_write(h5, '/suite/influence/'//b//'/'//qn, transpose(suite%building(ib)%lambda(:, :, q)), &
+                            error, units='%')
                if (.not. allocated(error)) call h5_write(h5, '/suite/mean/influence/'//b//'/'//qn, &
-                                                         suite%building(ib)%mean_lambda(:, q), error)
+                                                         suite%building(ib)%mean_lambda(:, q), error, units='%')
                if (.not. allocated(error)) call h5_write(h5, '/suite/max/influence/'//b//'/'//qn, &
-                                                         suite%building(ib)%max_lambda(:, q), error)
+                                                         suite%building(ib)%max_lambda(:, q), error, units='%')
                if (.not. allocated(error)) call h5_write(h5, '/suite/lambda_of_means/'//b//'/'//qn, &
-                                                         suite%building(ib)%lambda_of_means(:, q), error)
+                                                         suite%building(ib)%lambda_of_means(:, q), error, units='%')
                if (allocated(error)) return
             end do
          end do
@@ -323,24 +402,31 @@ contains
             case default
                rule = suite%separation%time_history
             end select
-            call h5_write(h5, '/suite/separation/'//trim(rule_names(r)), rule, error)
+            call h5_write(h5, '/suite/separation/'//trim(rule_names(r)), transpose(rule), error, units='m')
             if (allocated(error)) return
          end do
+         if (present(cs)) then
+            if (cs%m > 0 .and. cs%m == size(suite%separation, 2)) then
+               call h5_write_attr(h5, '/suite/separation', 'pairs', pair_list(cs), error)
+               if (allocated(error)) return
+            end if
+         end if
          call write_histories()
          if (allocated(error) .or. .not. suite%has_sweep) return
-         call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max_abs_lambda', suite%sweep_lambda, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/mean', suite%sweep_mean, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max', suite%sweep_max, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_mean', suite%safe_gap_mean, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_every', suite%safe_gap_every, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_mean', suite%refined_gap_mean, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_every', suite%refined_gap_every, error)
-         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_motion', suite%safe_gap_motion, error)
+         call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max_abs_lambda', transpose(suite%sweep_lambda), error, &
+                                                   units='%')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/mean', suite%sweep_mean, error, units='%')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/max', suite%sweep_max, error, units='%')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_mean', suite%safe_gap_mean, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_every', suite%safe_gap_every, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_mean', suite%refined_gap_mean, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_every', suite%refined_gap_every, error, units='m')
+         if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/safe_gap_motion', suite%safe_gap_motion, error, units='m')
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/refined_gap_motion', suite%refined_gap_motion, &
-                                                   error)
+                                                   error, units='m')
          if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/non_monotone_motion', &
-                                                   suite%non_monotone_motion, error)
+                                                   suite%non_monotone_motion, error, units='1')
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'non_monotone_mean', &
                                                         suite%non_monotone_mean, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'non_monotone_every', &
@@ -348,13 +434,14 @@ contains
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'refine_tolerance', &
                                                         suite%refine_tolerance, error)
          if (.not. allocated(error) .and. size(suite%failures) > 0) then
-            call h5_write(h5, '/suite/sweep/failed', merge(1, 0, suite%sweep_failed), error)
+            call h5_write(h5, '/suite/sweep/failed', transpose(merge(1, 0, suite%sweep_failed)), error, &
+                                units='1')
             if (.not. allocated(error)) call h5_write(h5, '/suite/sweep/gap_failed', merge(1, 0, suite%gap_failed), &
-                                                      error)
+                                                      error, units='1')
          end if
          ! /sweep (the first motion's own sweep, per quantity) gets the suite statistics beside it.
-         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_mean', suite%sweep_mean, error)
-         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_max', suite%sweep_max, error)
+         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_mean', suite%sweep_mean, error, units='%')
+         if (.not. allocated(error)) call h5_write(h5, '/sweep/suite_max', suite%sweep_max, error, units='%')
          if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'motion', trim(suite%names(suite%first)), &
                                                         error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/sweep', 'suite_safe_gap_mean', suite%safe_gap_mean, &
@@ -383,7 +470,7 @@ contains
             motion(i) = suite%names(suite%failures(i)%motion)
             message(i) = suite%failures(i)%message
          end do
-         call h5_write(h5, '/suite/failed/motion', motion, error)
+         call h5_write(h5, '/suite/failed/motion', motion, error, units='-')
          if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, spread(.true., 1, n), message, &
                                                              error, indexed=.false.)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
@@ -391,7 +478,7 @@ contains
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'single_motion', &
                                                         trim(suite%names(suite%first)), error)
          if (.not. allocated(error)) call h5_write(h5, '/suite/motion_failed', merge(1, 0, suite%motion_failed), &
-                                                   error)
+                                                   error, units='1')
       end subroutine write_failures
 
       !> /suite/<motion>/... for the motions whose histories were kept.
@@ -403,15 +490,15 @@ contains
             if (.not. suite%histories(k)%stored) cycle
             associate (h => suite%histories(k))
                g = '/suite/'//trim(suite%names(k))
-               call h5_write(h5, g//'/ground/time', h%unc%time, error)
-               if (.not. allocated(error)) call h5_write(h5, g//'/ground/acceleration', h%ag_out, error)
+               call h5_write(h5, g//'/ground/time', h%unc%time, error, units='s')
+               if (.not. allocated(error)) call h5_write(h5, g//'/ground/acceleration', h%ag_out, error, units='m/s^2')
                if (.not. allocated(error)) call write_analysis_h5(h5, g//'/uncoupled', models, h%unc, error)
                if (allocated(error)) return
                if (.not. h%has_coupled) cycle
                call write_analysis_h5(h5, g//'/coupled', models, h%cpl, error)
-               if (.not. allocated(error)) call h5_write(h5, g//'/coupled/contact/force', h%cpl%joints%force, error)
+               if (.not. allocated(error)) call h5_write(h5, g//'/coupled/contact/force', h%cpl%joints%force, error, units='kN')
                if (.not. allocated(error)) call h5_write(h5, g//'/coupled/contact/closing', &
-                                                         h%cpl%joints%closing, error)
+                                                         h%cpl%joints%closing, error, units='m')
                if (allocated(error)) return
             end associate
          end do

@@ -18,10 +18,14 @@ execute_process(COMMAND ${PY} -c "
 import h5py, numpy as np
 f = h5py.File('${WORK_DIR}/small_suite.h5', 'r')
 th = f['suite/separation/time_history'][...]
-assert th.shape == (2, 3), th.shape   # h5py: (n_pairs, n_motions + 1)
+assert th.shape == (3, 2), th.shape   # h5py: (n_motions + 1, n_pairs), one row per motion
+assert f['suite/spectrum/sa'].shape == (2, f['suite/spectrum/period'].shape[0])
+assert f['suite/influence/A/u'].shape == (2, f['suite/mean/influence/A/u'].shape[0])
+assert f['suite/sweep/max_abs_lambda'].shape == (2, f['suite/sweep/gap'].shape[0])
+assert f['suite/separation/time_history'].attrs['units'] == 'm' and f['suite/influence/A/u'].attrs['units'] == '%'
 ref, safe = f['suite/sweep/refined_gap_motion'][...], f['suite/sweep/safe_gap_motion'][...]
-assert (th[:, :2] == np.where(ref >= 0, ref, safe)[None, :]).all(), th
-assert (th[:, 2] == f['suite/sweep/refined_gap_mean'][()]).all() and (th > 0).all()
+assert (th[:2, :] == np.where(ref >= 0, ref, safe)[:, None]).all(), th
+assert (th[2, :] == f['suite/sweep/refined_gap_mean'][()]).all() and (th > 0).all()
 assert 'p' in f['suite'] and 's1' not in f['suite']
 assert f['suite/p/uncoupled/A/u'].shape == f['uncoupled/A/u'].shape
 assert (f['suite/p/coupled/B/u'][...] == f['coupled/B/u'][...]).all()

@@ -12,7 +12,7 @@ expect_contains("stdout" "${r_out}" "suite: 3 motions, statistics over 2, 1 fail
 expect_contains("stdout" "${r_out}" "wrote failed/suite_failed.out and failed/suite_failed.h5")
 file(READ ${WORK_DIR}/failed/suite_failed.out listing)
 expect_contains("listing" "${listing}" "Failed cases of the suite (1)")
-expect_contains("listing" "${listing}" "                   big           -  5.0000E-03         1  ")
+expect_contains("listing" "${listing}" "  big                     -  5.0000E-03         1  ")
 expect_contains("listing" "${listing}" "(2 of 3 motions used, 1 FAILED and left out)")
 # One line on stderr: the status-3 message, no crash report nor a Debug build's runtime warning.
 string(REGEX MATCHALL "\n" lines "${r_err}")
