@@ -6,15 +6,16 @@
 !> `influence_of` gives lambda per building, floor/storey and history quantity from the
 !> peaks of two analyses; the run driver keeps them in its results, the listing and the
 !> HDF5 writer print them as they are, and the gap sweep reduces them with
-!> `max_abs_influence`.
+!> `max_abs_influence`, or with `max_abs_target`, which adds a frame's column segments.
 module pound_influence
    use pound_kinds, only: dp
-   use pound_config, only: n_history_quantities
+   use pound_config, only: n_history_quantities, n_target_quantities, q_column_shear, q_column_moment
    use pound_analysis, only: analysis_result
+   use pound_structure, only: structure_model
    implicit none
    private
 
-   public :: influence_coefficient, building_influence, influence_of, max_abs_influence
+   public :: influence_coefficient, building_influence, influence_of, max_abs_influence, max_abs_target
 
    !> Influence coefficients of one building.
    type :: building_influence
@@ -78,5 +79,46 @@ contains
          end do
       end do
    end function max_abs_influence
+
+   !> Largest |lambda| per target quantity (`target_names`) and building, (n_target_quantities,
+   !> n_buildings): the history quantities' over the floors/storeys (`max_abs_influence`), then
+   !> over a frame's column segments the shear's (`q_column_shear`) and the end moments'
+   !> (bottom and top, `q_column_moment`); 0 for a building without column segments.
+   pure function max_abs_target(infl, models) result(m)
+      !> Influence coefficients of every building.
+      type(building_influence), intent(in) :: infl(:)
+      !> The buildings (their member rows' group and names), in the same order.
+      type(structure_model), intent(in) :: models(:)
+      real(dp) :: m(n_target_quantities, size(infl))
+      integer :: ib
+
+      m(1:n_history_quantities, :) = max_abs_influence(infl)
+      do ib = 1, size(infl)
+         m(q_column_shear, ib) = max_abs_member(infl(ib), models(ib), 'shear', 'shear')
+         m(q_column_moment, ib) = max_abs_member(infl(ib), models(ib), 'moment_bottom', 'moment_top')
+      end do
+   end function max_abs_target
+
+   !> Largest |lambda| of the column segments' member rows named `name1` or `name2` (0 without
+   !> column rows).
+   pure real(dp) function max_abs_member(infl, model, name1, name2) result(m)
+      !> Influence coefficients of the building.
+      type(building_influence), intent(in) :: infl
+      !> The building.
+      type(structure_model), intent(in) :: model
+      !> Names of the member quantities (`structure_model%member_names`).
+      character(len=*), intent(in) :: name1, name2
+      integer :: k, nq
+
+      m = 0.0_dp
+      if (.not. allocated(infl%member_lambda) .or. .not. allocated(model%member_names)) return
+      if (.not. allocated(model%member_group)) return
+      if (model%member_group /= 'columns') return
+      nq = size(model%member_names)
+      do k = 1, nq
+         if (model%member_names(k) == name1 .or. model%member_names(k) == name2) &
+            m = max(m, maxval(abs(infl%member_lambda(k::nq))))
+      end do
+   end function max_abs_member
 
 end module pound_influence

@@ -36,7 +36,7 @@ module pound_suite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str, fit_with_suffix
-   use pound_config, only: deck_type, ground_config, n_history_quantities
+   use pound_config, only: deck_type, ground_config, n_history_quantities, n_target_quantities
    use pound_deck_variables, only: word_len, path_len
    use pound_ground_motion, only: ground_motion_t, sample_ground
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
@@ -44,7 +44,7 @@ module pound_suite
    use pound_building, only: building_model, build_building
    use pound_spectrum, only: response_spectrum, period_grid, peak_ground_acceleration, &
                              scale_to_pga, scale_to_sa
-   use pound_influence, only: influence_coefficient, max_abs_influence
+   use pound_influence, only: influence_coefficient, max_abs_target
    use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
                                separation_ddc, cqc_correlation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion, label_prefix
@@ -190,8 +190,8 @@ module pound_suite
       type(deck_type) :: plain
       !> The buildings (periods for `scale_to = 'sa'`).
       type(structure_model), pointer :: models(:) => null()
-      !> Quantities the target applies to.
-      logical :: targeted(n_history_quantities) = .true.
+      !> Quantities the target applies to (`target_names`).
+      logical :: targeted(n_target_quantities) = .true.
       !> The sweep's gaps (m).
       real(dp), allocatable :: gap(:)
       !> Put before the messages (may be empty).
@@ -230,7 +230,7 @@ module pound_suite
    end type suite_cases
 
    !> The motions at one trial gap as cases: column = the largest |lambda| of motion
-   !> `motions(i)` per targeted quantity and building (n_history_quantities x n_buildings; 0
+   !> `motions(i)` per targeted quantity and building (n_target_quantities x n_buildings; 0
    !> where not targeted).
    type, extends(case_work) :: motion_cases
       !> The refinement's data.
@@ -635,7 +635,7 @@ contains
       real(dp), intent(out) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: lam(n_history_quantities, size(work%ctx%models))
+      real(dp) :: lam(n_target_quantities, size(work%ctx%models))
 
       call motion_lambda(work%ctx, work%motions(i), work%gap, lam, error)
       if (allocated(error)) return
@@ -678,7 +678,7 @@ contains
       integer, intent(in) :: m
       !> Gap of every joint (m).
       real(dp), intent(in) :: gap
-      !> Largest |lambda| (%), (n_history_quantities, n_buildings).
+      !> Largest |lambda| (%), (n_target_quantities, n_buildings).
       real(dp), intent(out) :: lam(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
@@ -697,8 +697,8 @@ contains
       end if
       call run_case(ctx%plain, r, error, opt)
       if (allocated(error)) return
-      lam = max_abs_influence(r%influence)
-      do iq = 1, n_history_quantities
+      lam = max_abs_target(r%influence, r%models)
+      do iq = 1, n_target_quantities
          if (.not. ctx%targeted(iq)) lam(iq, :) = 0.0_dp
       end do
    end subroutine motion_lambda
@@ -763,7 +763,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(motion_cases) :: cases
       type(case_table) :: table
-      real(dp) :: lam(n_history_quantities, size(ctx%models)), total(n_history_quantities, size(ctx%models))
+      real(dp) :: lam(n_target_quantities, size(ctx%models)), total(n_target_quantities, size(ctx%models))
       integer :: m, nm
 
       worst = huge(1.0_dp)
@@ -1049,7 +1049,7 @@ contains
    pure subroutine suite_sweep_statistics(suite, sweep_all, targeted, target)
       !> The suite.
       type(suite_result), intent(inout) :: suite
-      !> Every motion's largest |lambda| (%), (n_history_quantities, n_buildings, n_gaps, n_motions).
+      !> Every motion's largest |lambda| (%), (n_target_quantities, n_buildings, n_gaps, n_motions).
       real(dp), intent(in) :: sweep_all(:, :, :, :)
       !> Quantities the target applies to.
       logical, intent(in) :: targeted(:)
@@ -1185,7 +1185,7 @@ contains
       real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :)
       real(dp), allocatable :: z(:), sweep_all(:, :, :, :)
       character(len=:), allocatable :: text
-      logical :: targeted(n_history_quantities)
+      logical :: targeted(n_target_quantities)
       integer :: nm, nb, k, ib, np, ip, nmax, ig, iq
       integer, allocatable :: start(:), ms(:)
       type(analysis_result), allocatable, target :: batched(:)
@@ -1225,7 +1225,7 @@ contains
       end do
       suite%refine_tolerance = deck%sweep%refine_tolerance
       targeted = deck%sweep%target_quantities
-      if (.not. (deck%sweep%target > 0.0_dp)) targeted = .true.
+      if (.not. (deck%sweep%target > 0.0_dp)) targeted(1:n_history_quantities) = .true.
 
       do k = 1, nm
          suite%names(k) = deck%motions(k)%name
@@ -1507,7 +1507,7 @@ contains
             suite%has_sweep = .true.
             suite%sweep_gap = sweep%gap
             allocate (suite%sweep_lambda(nm, size(sweep%gap)), suite%sweep_failed(nm, size(sweep%gap)))
-            allocate (sweep_all(n_history_quantities, nb, size(sweep%gap), nm))
+            allocate (sweep_all(n_target_quantities, nb, size(sweep%gap), nm))
             suite%sweep_lambda = 0.0_dp
             suite%sweep_failed = .false.
             sweep_all = 0.0_dp
@@ -1518,7 +1518,7 @@ contains
             if (sweep%failed(ig)) call add_failure(suite%failures, &
                                                        suite_failure(k, sweep%gap(ig), sweep%messages(ig)))
             suite%sweep_lambda(k, ig) = 0.0_dp
-            do iq = 1, n_history_quantities
+            do iq = 1, n_target_quantities
                if (targeted(iq)) suite%sweep_lambda(k, ig) = max(suite%sweep_lambda(k, ig), &
                                                                  maxval(sweep%max_abs_lambda(iq, :, ig)))
             end do

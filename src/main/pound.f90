@@ -31,6 +31,7 @@ program pound
    use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
                             write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
+                            write_sweep_column_table, &
                             open_listing, close_listing
    use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
    use pound_h5, only: h5_file
@@ -273,6 +274,7 @@ contains
          call write_influence_tables(u, res%models, res%influence)
          call write_column_tables(u, res%models, res%buildings, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
+         if (res%has_sweep) call write_sweep_column_table(u, res%models, deck%sweep, res%sweep)
       end if
       if (size(deck%motions) > 1) then
          call write_suite_listing(u, res%models, suite, err)
