@@ -15,7 +15,8 @@ module pound_influence
    implicit none
    private
 
-   public :: influence_coefficient, building_influence, influence_of, max_abs_influence, max_abs_target
+   public :: influence_coefficient, building_influence, influence_of, max_abs_influence, max_abs_target, &
+             column_maxima
 
    !> Influence coefficients of one building.
    type :: building_influence
@@ -83,7 +84,8 @@ contains
    !> Largest |lambda| per target quantity (`target_names`) and building, (n_target_quantities,
    !> n_buildings): the history quantities' over the floors/storeys (`max_abs_influence`), then
    !> over a frame's column segments the shear's (`q_column_shear`) and the end moments'
-   !> (bottom and top, `q_column_moment`); 0 for a building without column segments.
+   !> (bottom and top, `q_column_moment`, `column_maxima`); 0 for a building without column
+   !> segments.
    pure function max_abs_target(infl, models) result(m)
       !> Influence coefficients of every building.
       type(building_influence), intent(in) :: infl(:)
@@ -93,32 +95,36 @@ contains
       integer :: ib
 
       m(1:n_history_quantities, :) = max_abs_influence(infl)
+      m(q_column_shear:q_column_moment, :) = 0.0_dp
       do ib = 1, size(infl)
-         m(q_column_shear, ib) = max_abs_member(infl(ib), models(ib), 'shear', 'shear')
-         m(q_column_moment, ib) = max_abs_member(infl(ib), models(ib), 'moment_bottom', 'moment_top')
+         if (allocated(infl(ib)%member_lambda)) &
+            m(q_column_shear:q_column_moment, ib) = column_maxima(infl(ib)%member_lambda, models(ib))
       end do
    end function max_abs_target
 
-   !> Largest |lambda| of the column segments' member rows named `name1` or `name2` (0 without
-   !> column rows).
-   pure real(dp) function max_abs_member(infl, model, name1, name2) result(m)
-      !> Influence coefficients of the building.
-      type(building_influence), intent(in) :: infl
+   !> Largest |lambda| over a frame's column segments of their shear (1) and of their end
+   !> moments, bottom and top (2), from the lambdas of its member rows (`member_lambda`, in the
+   !> layout of `structure_model%member`); 0 without column rows (`member_group` 'columns').
+   pure function column_maxima(member_lambda, model) result(m)
+      !> lambda (%) of each member row.
+      real(dp), intent(in) :: member_lambda(:)
       !> The building.
       type(structure_model), intent(in) :: model
-      !> Names of the member quantities (`structure_model%member_names`).
-      character(len=*), intent(in) :: name1, name2
+      real(dp) :: m(2)
       integer :: k, nq
 
       m = 0.0_dp
-      if (.not. allocated(infl%member_lambda) .or. .not. allocated(model%member_names)) return
-      if (.not. allocated(model%member_group)) return
+      if (.not. allocated(model%member_names) .or. .not. allocated(model%member_group)) return
       if (model%member_group /= 'columns') return
       nq = size(model%member_names)
       do k = 1, nq
-         if (model%member_names(k) == name1 .or. model%member_names(k) == name2) &
-            m = max(m, maxval(abs(infl%member_lambda(k::nq))))
+         select case (trim(model%member_names(k)))
+         case ('shear')
+            m(1) = max(m(1), maxval(abs(member_lambda(k::nq))))
+         case ('moment_bottom', 'moment_top')
+            m(2) = max(m(2), maxval(abs(member_lambda(k::nq))))
+         end select
       end do
-   end function max_abs_member
+   end function column_maxima
 
 end module pound_influence

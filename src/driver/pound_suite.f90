@@ -57,6 +57,8 @@ module pound_suite
    use pound_cases, only: case_work, case_table, run_cases, first_failure, cases_ranks, case_message_len, &
                           text_to_column, column_to_text
    use pound_sort, only: sort_ascending
+   use pound_suite_columns, only: column_suite, column_block_width, columns_to_block, columns_init, &
+                                  columns_gather, columns_finish, member_peaks_from_block
    implicit none
    private
 
@@ -136,6 +138,8 @@ module pound_suite
       logical :: has_coupled = .false.
       !> Per building.
       type(building_suite), allocatable :: building(:)
+      !> Per building: its column segments' lambdas over the suite (frames; `pound_suite_columns`).
+      type(column_suite), allocatable :: columns(:)
       !> Separation rules (n_motions + 1, n_pairs; the last row: the suite), over every pair of
       !> every `&contact` in deck order.
       type(separation_t), allocatable :: separation(:, :)
@@ -350,6 +354,8 @@ contains
 
       width = failure_slot(ctx) + 1 + failure_width
       if (ctx%sweep) width = probe_slot(ctx) + probe_width(ctx)
+      ! Last, the frames' member lambdas (`columns_to_block`).
+      width = width + column_block_width(ctx%models)
    end function motion_width
 
    !> Offset in a motion's column of its sweep's probe (with `ctx%sweep`): 1 when the probe
@@ -520,6 +526,7 @@ contains
          o = motion_offset(ctx, 3, ib)
          col(o + 1:o + w) = reshape(res%cpl%building(ib)%peak, [w])
       end do
+      call columns_to_block(ctx%models, res%influence, res%unc, col(size(col) - column_block_width(ctx%models) + 1:))
       o = motion_offset(ctx, 4, 1)
       do ip = 1, size(ctx%left)
          col(o + ip) = -1.0_dp
@@ -531,7 +538,8 @@ contains
             end associate
          end if
       end do
-      if (ctx%sweep) call motion_probe(ctx, res, ag, options%ground, col(probe_slot(ctx) + 1:))
+      if (ctx%sweep) call motion_probe(ctx, res, ag, options%ground, &
+                                       col(probe_slot(ctx) + 1:probe_slot(ctx) + probe_width(ctx)))
    end subroutine motion_run
 
    !> The probe of motion k's sweep (`gap_cases_probe`) into its block of the column
@@ -583,6 +591,7 @@ contains
          o = motion_offset(ctx, 2, ib)
          unc%building(ib)%peak = reshape(col(o + 1:o + n*n_history_quantities), [n, n_history_quantities])
       end do
+      call member_peaks_from_block(ctx%models, col(size(col) - column_block_width(ctx%models) + 1:), unc)
    end subroutine peaks_from_column
 
    !> Gap case i of the motions' sweeps (a case of `suite_gap_cases`).
@@ -1213,6 +1222,7 @@ contains
       mean_unc = 0.0_dp
       mean_cpl = 0.0_dp
       allocate (suite%building(nb), suite%separation(nm + 1, np), suite%histories(nm))
+      call columns_init(models, nm, suite%columns)
       do ib = 1, nb
          associate (n => deck%buildings(ib)%n_storeys, s => suite%building(ib))
             allocate (s%lambda(nm, n, n_history_quantities), s%mean_lambda(n, n_history_quantities), &
@@ -1365,6 +1375,7 @@ contains
             s%lambda_of_means = influence_coefficient(mean_cpl(1:n, :, ib), mean_unc(1:n, :, ib))
          end associate
       end do
+      call columns_finish(ctx%used, suite%columns)
       do ip = 1, np
          call rules(mean_unc(fl(ip), 1, left(ip)), mean_unc(fr(ip), 1, right(ip)), ip, &
                     suite%separation(nm + 1, ip))
@@ -1538,6 +1549,7 @@ contains
          o = o + size(suite%period)
          suite%sa_building(k, :) = col(o + 1:o + nb)
          if (col(3) == 0.0_dp) return
+         call columns_gather(models, k, col(size(col) - column_block_width(models) + 1:), suite%columns)
          do ib = 1, nb
             n = deck%buildings(ib)%n_storeys
             w = n*n_history_quantities
