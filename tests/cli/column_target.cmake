@@ -79,3 +79,10 @@ print('ok', s_col, s_q)
 " RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 expect_equal("HDF5 checks (${out} ${err})" 0 "${rc}")
 expect_contains("HDF5 checks" "${out}" "ok 0.008 0.007")
+# The plots: the sweep with the targeted column quantity, the column segments' lambdas.
+execute_process(COMMAND /usr/bin/python3 ${SOURCE_DIR}/scripts/plot_results.py ${WORK_DIR}/col.h5
+                --only sweep,columns --format png
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+expect_equal("plot exit (${err})" 0 "${rc}")
+expect_png("plot sweep (${out} ${err})" ${WORK_DIR}/col_sweep.png)
+expect_png("plot columns (${out} ${err})" ${WORK_DIR}/col_columns.png)
