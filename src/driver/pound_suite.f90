@@ -354,7 +354,7 @@ contains
 
       width = failure_slot(ctx) + 1 + failure_width
       if (ctx%sweep) width = probe_slot(ctx) + probe_width(ctx)
-      ! Last, the frames' member lambdas (`columns_to_block`).
+      ! Last, the frames' member lambdas and uncoupled member peaks (`columns_to_block`).
       width = width + column_block_width(ctx%models)
    end function motion_width
 
