@@ -602,7 +602,7 @@ def plot_influence(plt, r, args, written, notes):
         ax.grid(False, axis="y")
         lo = min(0.0, min(float(np.min(r.influence[b][q])) for b in names))
         hi = max(0.0, max(float(np.max(r.influence[b][q])) for b in names))
-        span = max(hi - lo, 1e-9)
+        span = hi - lo if hi > lo else 5.0 * vmax   # all zero: labels inside the axes
         ax.set_xlim(lo - (0.22 * span if lo < 0 else 0.02 * span), hi + (0.22 * span if hi > 0 else 0.02 * span))
         ax.set_xlabel("influence coefficient lambda [%]")
         ax.set_ylabel(axis)

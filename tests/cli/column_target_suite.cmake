@@ -74,3 +74,12 @@ print('ok', se, sq)
 " RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 expect_equal("HDF5 checks (${out} ${err})" 0 "${rc}")
 expect_contains("HDF5 checks" "${out}" "ok 0.009 0.006")
+# Every plot of the suite's file (frames, a sweep with column_shear, the suite group): among
+# them the influence plot, whose quantity with every lambda 0 (v) once made an image of
+# 259588823 pixels' width.
+execute_process(COMMAND /usr/bin/python3 ${SOURCE_DIR}/scripts/plot_results.py ${WORK_DIR}/col.h5 --format png
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+expect_equal("plot exit (${err})" 0 "${rc}")
+foreach(p influence sweep columns suite_sweep)
+  expect_png("plot ${p} (${out} ${err})" ${WORK_DIR}/col_${p}.png)
+endforeach()
