@@ -12,7 +12,10 @@ frame (the buildings' geometry side by side, frames with their nodes and element
 contact points: only when the file holds a frame model), deformed (each frame's deformed shape,
 scaled, at the peak storey shear of its most affected storey (largest |lambda| of the storey
 shear), uncoupled and coupled side by side: only for frames with /<analysis>/<b>/deformed and a
-coupled analysis). Files are named <stem>_<plot>.png / .pdf.
+coupled analysis), columns (influence coefficients of the column segments of each frame, shear
+and end moment, against the segment's mid-height, one line per column line facing a neighbour,
+the contact elevations marked: only for frames with /influence/<b>/columns). Files are named
+<stem>_<plot>.png / .pdf.
 
 Any problem with the file (missing, not HDF5, not a pound results file) gives one line
 "plot: error: ..." on stderr and exit status 1; usage errors exit 2. POUND_DEBUG=1 shows
@@ -25,7 +28,9 @@ import sys
 import tempfile
 
 PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite", "frame",
-         "deformed")
+         "deformed", "columns")
+# The sweep's column-segment target quantities of frames (/sweep/max_abs_lambda/<b>/<q>, where targeted).
+COLUMN_TARGETS = {"column_shear": "column segment shear V", "column_moment": "column segment end moment M"}
 CONTACT_PLOTS = ("displacement", "force", "loops")
 QUANTITY_LABEL = {
     "storey_shear": ("storey shear Q", "storey"),
@@ -65,6 +70,7 @@ class Results:
         self.ground = {}
         self.contact = None          # dict or None
         self.influence = {}          # name -> {q: array}
+        self.columns = {}            # frame name -> {'line', 'z_mid', 'z_bottom', 'z_top', member q: lambda}
         self.sweep = None            # gap study: {'gap', 'lambda': name -> {q: array}, 'target', 'safe_gap'}
 
 
@@ -262,7 +268,8 @@ def read_results(path):
         if "/sweep/gap" in f:
             sw = {"gap": arr("/sweep/gap", 1), "lambda": {}}
             for b in r.buildings:
-                sw["lambda"][b] = {q: arr(f"/sweep/max_abs_lambda/{b}/{q}", 1) for q in QUANTITY_LABEL
+                sw["lambda"][b] = {q: arr(f"/sweep/max_abs_lambda/{b}/{q}", 1)
+                                   for q in list(QUANTITY_LABEL) + list(COLUMN_TARGETS)
                                    if f"/sweep/max_abs_lambda/{b}/{q}" in f}
             sw["target"] = float(f["/sweep"].attrs.get("target_lambda", -1.0))
             sw["safe_gap"] = float(f["/sweep"].attrs.get("safe_gap", -1.0))
@@ -275,6 +282,24 @@ def read_results(path):
                 if f"/influence/{b}" in f:
                     r.influence[b] = {q: arr(f"/influence/{b}/{q}", 1) for q in QUANTITY_LABEL
                                       if f"/influence/{b}/{q}" in f}
+            for b in r.buildings:
+                m = r.model[b]
+                if f"/influence/{b}/columns/shear" not in f or "elements" not in m or f"/model/{b}/columns" not in f:
+                    continue
+                seg = arr(f"/model/{b}/columns", 2).astype(int)     # element, storey, line (1-based)
+                z = m["nodes"][1]
+                ends = m["elements"][:2, seg[0] - 1].astype(int) - 1
+                c = {"line": seg[2], "z_bottom": np.minimum(z[ends[0]], z[ends[1]]),
+                     "z_top": np.maximum(z[ends[0]], z[ends[1]])}
+                c["z_mid"] = 0.5 * (c["z_bottom"] + c["z_top"])
+                for q in ("shear", "moment_bottom", "moment_top"):
+                    name = f"/influence/{b}/columns/{q}"
+                    if name in f:
+                        c[q] = arr(name, 1)
+                        if len(c[q]) != seg.shape[1]:
+                            raise PlotError(f"{path}: {name} has {len(c[q])} values, /model/{b}/columns "
+                                            f"names {seg.shape[1]} segments")
+                r.columns[b] = c
     return r
 
 
@@ -601,7 +626,7 @@ def plot_influence(plt, r, args, written, notes):
         ax.grid(False, axis="y")
         lo = min(0.0, min(float(np.min(r.influence[b][q])) for b in names))
         hi = max(0.0, max(float(np.max(r.influence[b][q])) for b in names))
-        span = max(hi - lo, 1e-9)
+        span = hi - lo if hi > lo else 5.0 * vmax   # all zero: labels inside the axes
         ax.set_xlim(lo - (0.22 * span if lo < 0 else 0.02 * span), hi + (0.22 * span if hi > 0 else 0.02 * span))
         ax.set_xlabel("influence coefficient lambda [%]")
         ax.set_ylabel(axis)
@@ -648,8 +673,9 @@ def plot_sweep(plt, r, args, written, notes):
     fig, axes = plt.subplots(1, len(names), figsize=(3.6 * len(names) + 0.6, 4.2), squeeze=False, sharey=True)
     fig.subplots_adjust(top=0.80, wspace=0.08)
     # Storey drift has the same lambda as storey shear (Q = k drift, k constant): not drawn twice.
-    order = [q for q in ("storey_shear", "u", "a_abs") if any(q in sw["lambda"][b] for b in names)]
-    labels = {"storey_shear": "storey shear Q (= storey drift)"}
+    order = [q for q in ("storey_shear", "u", "a_abs") + tuple(COLUMN_TARGETS)
+             if any(q in sw["lambda"][b] for b in names)]
+    labels = {"storey_shear": "storey shear Q (= storey drift)", **COLUMN_TARGETS}
     for i, b in enumerate(names):
         ax = axes[0, i]
         for j, q in enumerate(order):
@@ -659,7 +685,7 @@ def plot_sweep(plt, r, args, written, notes):
             y[sw["failed"]] = np.nan
             ax.plot(1e3 * sw["gap"], y, color=COLOURS[j], linestyle=LINESTYLES[j], marker=MARKERS[j],
                     markersize=3, markevery=max(1, len(y) // 12), linewidth=1.0,
-                    label=labels.get(q, QUANTITY_LABEL[q][0]))
+                    label=labels[q] if q in labels else QUANTITY_LABEL[q][0])
         if sw["target"] > 0:
             ax.axhline(sw["target"], color="black", linestyle=":", linewidth=0.9,
                        label=f"target {sw['target']:.4g} %")
@@ -673,7 +699,7 @@ def plot_sweep(plt, r, args, written, notes):
         ax.set_title(f"building {b}", loc="left", fontsize=9)
         ax.set_xlabel("joint gap [mm]")
         if i == 0:
-            ax.set_ylabel("largest |lambda| over the storeys [%]")
+            ax.set_ylabel("largest |lambda| over the storeys (segments) [%]")
         ax.grid(True, color="0.85", linewidth=0.5)
     axes[0, -1].legend(loc="center right", fontsize=7)
     suptitle(fig, r, "Gap study: largest influence coefficient against the seismic joint gap")
@@ -872,6 +898,75 @@ def plot_deformed(plt, r, args, written, notes):
 PLOTTERS["deformed"] = plot_deformed
 
 
+def facing_lines(r, b):
+    """The column lines of frame b that face a neighbour: its rightmost where it stands on the
+    left of a contact pair, its leftmost (line 1) where on the right; without contact pairs, by
+    the order of the buildings (left to right)."""
+    lines = r.columns[b]["line"]
+    left, right = False, False
+    pairs = [pe for pe in (r.contact or {}).get("elevations", []) if pe is not None]
+    if pairs:
+        left = any(pe[0] == b for pe in pairs)
+        right = any(pe[2] == b for pe in pairs)
+    else:
+        k = r.buildings.index(b)
+        left, right = k < len(r.buildings) - 1, k > 0
+    out = []
+    if right:
+        out.append(int(lines.min()))
+    if left and int(lines.max()) not in out:
+        out.append(int(lines.max()))
+    return out or [int(lines.min())]
+
+
+def plot_columns(plt, r, args, written, notes):
+    """Influence coefficients of the column segments of every frame against the segment's
+    mid-height: the shear's and the end moment's (of the two ends, the one with the larger
+    |lambda|: the sweep's column_moment), one line per facing column line; the contact
+    elevations of the frame dotted."""
+    import numpy as np
+
+    names = list(r.columns)
+    fig, axes = plt.subplots(len(names), 2, figsize=(7.6, 0.6 + 3.6 * len(names)), squeeze=False)
+    fig.subplots_adjust(hspace=0.45, wspace=0.3)
+    for i, b in enumerate(names):
+        c = r.columns[b]
+        mom = None
+        if "moment_bottom" in c and "moment_top" in c:
+            mom = np.where(np.abs(c["moment_top"]) > np.abs(c["moment_bottom"]), c["moment_top"], c["moment_bottom"])
+        contact_z = sorted({pe[1] if pe[0] == b else pe[3] for pe in (r.contact or {}).get("elevations", [])
+                            if pe is not None and b in (pe[0], pe[2])})
+        for j, (q, title) in enumerate((("shear", "segment shear V"),
+                                         ("moment", "segment end moment M (end of larger |lambda|)"))):
+            ax = axes[i, j]
+            lam = c.get("shear") if q == "shear" else mom
+            if lam is None:
+                ax.set_visible(False)
+                continue
+            for k, line in enumerate(facing_lines(r, b)):
+                sel = np.nonzero(c["line"] == line)[0]
+                sel = sel[np.argsort(c["z_mid"][sel])]
+                y = np.array(lam[sel], dtype=float)
+                y[np.abs(y) >= 1e300] = np.nan       # +huge: a response from nothing, not drawn
+                ax.plot(y, c["z_mid"][sel], marker=MARKERS[k], markersize=4, **style(k),
+                        label=f"column line {line}")
+            for n, zc in enumerate(contact_z):
+                ax.axhline(zc, color=COLOURS[2], linestyle=":", linewidth=0.9,
+                           label="contact elevation" if n == 0 else None)
+            ax.axvline(0.0, color="black", linewidth=0.8)
+            ax.set_title(f"building {b}: {title}", loc="left", fontsize=8.5)
+            ax.set_xlabel("influence coefficient lambda [%]")
+            ax.set_ylabel("segment mid-height z [m]")
+            ax.set_ylim(0.0, float(np.max(c["z_top"])) * 1.02)
+            ax.legend(loc="best", fontsize=7)
+    suptitle(fig, r, "Column segments: influence coefficients along the facing column lines")
+    save(fig, r, "columns", args, written)
+    plt.close(fig)
+
+
+PLOTTERS["columns"] = plot_columns
+
+
 def parse_args(argv):
     ap = argparse.ArgumentParser(prog="plot", description="Plots of a pound results file (PNG and PDF).")
     ap.add_argument("h5file", help="results file written by pound (DECK.h5)")
@@ -925,6 +1020,10 @@ def run(argv):
         if name == "deformed" and not deformed_buildings(r):
             if "deformed" in args.explicit:
                 notes.append("deformed: skipped (no frame with deformed shapes in both analyses)")
+            continue
+        if name == "columns" and not r.columns:
+            if "columns" in args.explicit:
+                notes.append("columns: skipped (no frame with column-segment influence in this file)")
             continue
         if name == "sweep" and r.sweep is None:
             if "sweep" in args.explicit:

@@ -6,15 +6,17 @@
 !> `influence_of` gives lambda per building, floor/storey and history quantity from the
 !> peaks of two analyses; the run driver keeps them in its results, the listing and the
 !> HDF5 writer print them as they are, and the gap sweep reduces them with
-!> `max_abs_influence`.
+!> `max_abs_influence`, or with `max_abs_target`, which adds a frame's column segments.
 module pound_influence
    use pound_kinds, only: dp
-   use pound_config, only: n_history_quantities
+   use pound_config, only: n_history_quantities, n_target_quantities, q_column_shear, q_column_moment
    use pound_analysis, only: analysis_result
+   use pound_structure, only: structure_model
    implicit none
    private
 
-   public :: influence_coefficient, building_influence, influence_of, max_abs_influence
+   public :: influence_coefficient, building_influence, influence_of, max_abs_influence, max_abs_target, &
+             column_maxima
 
    !> Influence coefficients of one building.
    type :: building_influence
@@ -78,5 +80,51 @@ contains
          end do
       end do
    end function max_abs_influence
+
+   !> Largest |lambda| per target quantity (`target_names`) and building, (n_target_quantities,
+   !> n_buildings): the history quantities' over the floors/storeys (`max_abs_influence`), then
+   !> over a frame's column segments the shear's (`q_column_shear`) and the end moments'
+   !> (bottom and top, `q_column_moment`, `column_maxima`); 0 for a building without column
+   !> segments.
+   pure function max_abs_target(infl, models) result(m)
+      !> Influence coefficients of every building.
+      type(building_influence), intent(in) :: infl(:)
+      !> The buildings (their member rows' group and names), in the same order.
+      type(structure_model), intent(in) :: models(:)
+      real(dp) :: m(n_target_quantities, size(infl))
+      integer :: ib
+
+      m(1:n_history_quantities, :) = max_abs_influence(infl)
+      m(q_column_shear:q_column_moment, :) = 0.0_dp
+      do ib = 1, size(infl)
+         if (allocated(infl(ib)%member_lambda)) &
+            m(q_column_shear:q_column_moment, ib) = column_maxima(infl(ib)%member_lambda, models(ib))
+      end do
+   end function max_abs_target
+
+   !> Largest |lambda| over a frame's column segments of their shear (1) and of their end
+   !> moments, bottom and top (2), from the lambdas of its member rows (`member_lambda`, in the
+   !> layout of `structure_model%member`); 0 without column rows (`member_group` 'columns').
+   pure function column_maxima(member_lambda, model) result(m)
+      !> lambda (%) of each member row.
+      real(dp), intent(in) :: member_lambda(:)
+      !> The building.
+      type(structure_model), intent(in) :: model
+      real(dp) :: m(2)
+      integer :: k, nq
+
+      m = 0.0_dp
+      if (.not. allocated(model%member_names) .or. .not. allocated(model%member_group)) return
+      if (model%member_group /= 'columns') return
+      nq = size(model%member_names)
+      do k = 1, nq
+         select case (trim(model%member_names(k)))
+         case ('shear')
+            m(1) = max(m(1), maxval(abs(member_lambda(k::nq))))
+         case ('moment_bottom', 'moment_top')
+            m(2) = max(m(2), maxval(abs(member_lambda(k::nq))))
+         end select
+      end do
+   end function column_maxima
 
 end module pound_influence

@@ -4,8 +4,9 @@
 !> coupled analysis that does not depend on the gap — the factored Khat of every building and
 !> the condensed constraints Khat^{-1} B and F — is prepared once and reused for every gap.
 !> Each gap is applied to every constraint. For every gap the largest |lambda| over the
-!> floors (storeys) is kept per building and quantity, and the smallest gap from which on every
-!> targeted |lambda| stays within the target is reported.
+!> floors (storeys) is kept per building and quantity (and, for frames, over the column
+!> segments: `max_abs_target`), and the smallest gap from which on every targeted |lambda|
+!> stays within the target is reported.
 !>
 !> The gaps are independent cases (`pound_cases`): one after the other in the serial build,
 !> shared over the ranks with MPI; each gap's coupled run gives a column (the largest
@@ -23,13 +24,13 @@ module pound_sweep
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str
-   use pound_config, only: analysis_config, sweep_config, n_history_quantities
+   use pound_config, only: analysis_config, sweep_config, n_target_quantities
    use pound_structure, only: structure_model
    use pound_ground_motion, only: ground_motion_t
    use pound_analysis, only: analysis_result, coupled_model, coupled_prepare, coupled_integrate, &
                              add_warning, audit_warning_limit, beyond_closing, probe_gap
    use pound_contact, only: contact_pair, contact_system
-   use pound_influence, only: influence_of, max_abs_influence
+   use pound_influence, only: influence_of, max_abs_target
    use pound_progress, only: progress_run_done
    use pound_cases, only: case_work, case_table, run_cases, first_failure, text_to_column, column_to_text, &
                           case_message_len
@@ -46,7 +47,9 @@ module pound_sweep
    type :: sweep_result
       !> Gaps (m).
       real(dp), allocatable :: gap(:)
-      !> Largest |lambda| (%) over floors/storeys, (n_history_quantities, n_buildings, n_gaps).
+      !> Largest |lambda| (%) over floors/storeys (the history quantities) and over a frame's
+      !> column segments (column_shear, column_moment; 0 for a shear building), in the order of
+      !> `target_names`, (n_target_quantities, n_buildings, n_gaps).
       real(dp), allocatable :: max_abs_lambda(:, :, :)
       !> Total number of impacts at each gap.
       integer, allocatable :: impacts(:)
@@ -76,7 +79,7 @@ module pound_sweep
 
    !> The gaps of a sweep as cases: gap i's coupled run, against the uncoupled result
    !> (`gap_cases_init`, then `gap_cases_probe` or `gap_cases_set_probe`).
-   !> Column (`sweep_column_width` reals): max |lambda| (n_history_quantities x n_buildings),
+   !> Column (`sweep_column_width` reals): max |lambda| (n_target_quantities x n_buildings),
    !> impacts, energy residual, number of warnings, 1 when the gap is beyond the joints'
    !> closing (the probe's column), the first warning (`text_to_column`).
    type, extends(case_work) :: gap_cases
@@ -142,8 +145,8 @@ contains
       real(dp), intent(out) :: values(:)
       integer :: nl
 
-      nl = n_history_quantities*size(work%models)
-      values(1:nl) = reshape(max_abs_influence(influence_of(work%unc, cpl)), [nl])
+      nl = n_target_quantities*size(work%models)
+      values(1:nl) = reshape(max_abs_target(influence_of(work%unc, cpl), work%models), [nl])
       values(nl + 1) = real(impacts, dp)
       values(nl + 2) = cpl%energy_error
       values(nl + 3) = real(size(cpl%warnings), dp)
@@ -208,7 +211,7 @@ contains
       !> Number of buildings.
       integer, intent(in) :: nb
 
-      width = n_history_quantities*nb + 5 + warning_len
+      width = n_target_quantities*nb + 5 + warning_len
    end function sweep_column_width
 
    !> The gaps of `sweep` as cases against the uncoupled result `unc`: what the coupled runs
@@ -264,7 +267,7 @@ contains
       cases%closing_max = probe_cs%closing_max
       allocate (cases%probe(sweep_column_width(size(cases%models))))
       call result_column(cases, probe, 0, cases%probe)
-      cases%probe(n_history_quantities*size(cases%models) + 4) = 1.0_dp
+      cases%probe(n_target_quantities*size(cases%models) + 4) = 1.0_dp
    end subroutine gap_cases_probe
 
    !> Take a probe made elsewhere (`gap_cases_probe` of the same motion and models: its
@@ -301,9 +304,9 @@ contains
       real(dp) :: worst
       integer :: i, q, n_bad, nl
 
-      nl = n_history_quantities*nb
+      nl = n_target_quantities*nb
       res%gap = sweep_gaps(sweep)
-      allocate (res%max_abs_lambda(n_history_quantities, nb, sweep%n_gaps), &
+      allocate (res%max_abs_lambda(n_target_quantities, nb, sweep%n_gaps), &
                 res%impacts(sweep%n_gaps), res%meets(sweep%n_gaps))
       allocate (character(len=1) :: res%warnings(0))
       n_bad = 0
@@ -328,10 +331,10 @@ contains
                end if
             end if
             res%impacts(i) = nint(col(nl + 1))
-            res%max_abs_lambda(:, :, i) = reshape(col(1:nl), [n_history_quantities, nb])
+            res%max_abs_lambda(:, :, i) = reshape(col(1:nl), [n_target_quantities, nb])
          end associate
          res%meets(i) = .not. res%failed(i)
-         do q = 1, n_history_quantities
+         do q = 1, n_target_quantities
             if (sweep%target_quantities(q)) then
                if (any(res%max_abs_lambda(q, :, i) > sweep%target)) res%meets(i) = .false.
             end if

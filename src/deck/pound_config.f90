@@ -11,6 +11,7 @@ module pound_config
 
    public :: analysis_config, ground_config, building_config, contact_config, sweep_config, deck_type
    public :: n_history_quantities, history_names, g_accel, is_frame
+   public :: n_target_quantities, target_names, q_column_shear, q_column_moment
 
    !> Standard gravity used to turn floor loads into masses (m/s^2).
    real(dp), parameter :: g_accel = 9.81_dp
@@ -20,6 +21,17 @@ module pound_config
    !> Names of the history quantities, as written in `&analysis history=` and in HDF5.
    character(len=*), parameter :: history_names(n_history_quantities) = &
       [character(len=12) :: 'u', 'v', 'a_abs', 'drift', 'storey_shear']
+
+   !> Number of quantities a sweep's target can apply to: the history quantities, then the
+   !> column-segment quantities of frames (`q_column_shear`, `q_column_moment`).
+   integer, parameter :: n_target_quantities = n_history_quantities + 2
+   !> Index of the largest |lambda| of a column segment's shear among the target quantities.
+   integer, parameter :: q_column_shear = n_history_quantities + 1
+   !> Index of the largest |lambda| of a column segment's end moments (bottom and top).
+   integer, parameter :: q_column_moment = n_history_quantities + 2
+   !> Names of the target quantities, as written in `&sweep target_quantities` and in HDF5.
+   character(len=*), parameter :: target_names(n_target_quantities) = &
+      [character(len=13) :: history_names, 'column_shear', 'column_moment']
 
    !> `&analysis`: title, time stepping and history output.
    type :: analysis_config
@@ -199,8 +211,10 @@ module pound_config
       integer :: n_gaps = 0
       !> Target for the largest |lambda| (%); negative when none is given.
       real(dp) :: target = -1.0_dp
-      !> Quantities the target applies to (same order as `history_names`).
-      logical :: target_quantities(n_history_quantities) = .true.
+      !> Quantities the target applies to (same order as `target_names`: the history quantities,
+      !> then the frames' column-segment shear and moment, off unless the deck names them).
+      logical :: target_quantities(n_target_quantities) = &
+         [spread(.true., 1, n_history_quantities), .false., .false.]
       !> Tolerance (m) of the bisection refinement of a suite's threshold gaps (pound_suite).
       real(dp) :: refine_tolerance = 1.0e-5_dp
    end type sweep_config

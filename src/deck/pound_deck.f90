@@ -181,7 +181,8 @@ contains
       if (k == 0) return
       call find_single(path, groups(1:n_groups), 'sweep', 'gap_from, gap_to, n_gaps', i, error)
       if (allocated(error)) return
-      call read_sweep(path, text, groups(i), size(d%contacts), d%sweep, error)
+      call read_sweep(path, text, groups(i), size(d%contacts), &
+                      any([(is_frame(d%buildings(k)), k=1, size(d%buildings))]), d%sweep, error)
    end subroutine parse_deck
 
    !> The pairs of `c` between floors (by elevation) become column nodes of the frames: the

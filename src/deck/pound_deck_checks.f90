@@ -394,23 +394,32 @@ contains
       end if
    end function values_text
 
-   !> `history`: blank/comma separated quantities, 'all' or 'none'; blank means all.
-   pure subroutine parse_history(at, spec, store, error, var)
+   !> `history`: blank/comma separated quantities, 'all' or 'none'; blank means all. With
+   !> `names`, the words are those names (`store` as long) instead of `history_names`.
+   pure subroutine parse_history(at, spec, store, error, var, names)
       !> Where messages point.
       type(site), intent(in) :: at
       !> The `history` string.
       character(len=*), intent(in) :: spec
-      !> Which quantities are stored.
-      logical, intent(out) :: store(n_history_quantities)
+      !> Which quantities are stored (as many as the names).
+      logical, intent(out) :: store(:)
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
       !> Variable name in messages (default 'history').
       character(len=*), intent(in), optional :: var
+      !> The quantities' names (default `history_names`).
+      character(len=*), intent(in), optional :: names(:)
       character(len=:), allocatable :: s, word, v
+      character(len=16), allocatable :: known(:)
       integer :: i, j, k
 
       v = 'history'
       if (present(var)) v = var
+      if (present(names)) then
+         known = names
+      else
+         known = history_names
+      end if
       store = .true.
       s = lower(spec)
       do i = 1, len(s)
@@ -442,10 +451,10 @@ contains
             store = (word == 'all')
             return
          end if
-         k = findloc_name(history_names, word)
+         k = findloc_name(known, word)
          if (k == 0) then
             call fail(at, v, v//": unknown quantity '"//word//"', must be one of "// &
-                      join(history_names)//", 'all' or 'none'", error)
+                      join(known)//", 'all' or 'none'", error)
             return
          end if
          store(k) = .true.

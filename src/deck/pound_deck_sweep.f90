@@ -1,9 +1,9 @@
 !> Reader of `&sweep`: the range of seismic-joint gaps and the optional target for |lambda|.
 module pound_deck_sweep
-   use pound_config, only: sweep_config
+   use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment
    use pound_deck_checks, only: check_real, fail, is_set, parse_history, read_failed, require_real, &
                                 site, site_of, unset_int, unset_real
-   use pound_deck_lexer, only: group_ref, group_text
+   use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_deck_variables, only: path_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
@@ -16,7 +16,7 @@ module pound_deck_sweep
 contains
 
    !> `&sweep`: range of seismic-joint gaps and the optional target for |lambda|.
-   subroutine read_sweep(path, text, g, n_contacts, cfg, error)
+   subroutine read_sweep(path, text, g, n_contacts, has_frame, cfg, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
@@ -25,6 +25,8 @@ contains
       type(group_ref), intent(in) :: g
       !> Number of `&contact` groups in the deck.
       integer, intent(in) :: n_contacts
+      !> Whether any building of the deck is a frame (has column segments).
+      logical, intent(in) :: has_frame
       !> Resolved sweep.
       type(sweep_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
@@ -80,8 +82,18 @@ contains
          if (allocated(error)) return
          cfg%refine_tolerance = refine_tolerance
       end if
-      call parse_history(at, target_quantities, cfg%target_quantities, error, 'target_quantities')
+      call parse_history(at, target_quantities, cfg%target_quantities, error, 'target_quantities', target_names)
       if (allocated(error)) return
+      if (.not. has_frame .and. any(cfg%target_quantities([q_column_shear, q_column_moment]))) then
+         ! 'all' (or blank) names every quantity that exists: no column segments without a frame.
+         if (index(lower(target_quantities), 'column_') > 0) then
+            call fail(at, 'target_quantities', "target_quantities = '"//trim(adjustl(target_quantities))// &
+                      "': column_shear and column_moment are the column segments' lambdas of frames, "// &
+                      "and no building of the deck is a frame (model = 'frame')", error)
+            return
+         end if
+         cfg%target_quantities([q_column_shear, q_column_moment]) = .false.
+      end if
       if (.not. any(cfg%target_quantities)) then
          call fail(at, 'target_quantities', "target_quantities = 'none' leaves nothing to check", error)
          return

@@ -36,7 +36,7 @@ module pound_suite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str, fit_with_suffix
-   use pound_config, only: deck_type, ground_config, n_history_quantities
+   use pound_config, only: deck_type, ground_config, n_history_quantities, n_target_quantities
    use pound_deck_variables, only: word_len, path_len
    use pound_ground_motion, only: ground_motion_t, sample_ground
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
@@ -44,7 +44,7 @@ module pound_suite
    use pound_building, only: building_model, build_building
    use pound_spectrum, only: response_spectrum, period_grid, peak_ground_acceleration, &
                              scale_to_pga, scale_to_sa
-   use pound_influence, only: influence_coefficient, max_abs_influence
+   use pound_influence, only: influence_coefficient, max_abs_target
    use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
                                separation_ddc, cqc_correlation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion, label_prefix
@@ -57,6 +57,8 @@ module pound_suite
    use pound_cases, only: case_work, case_table, run_cases, first_failure, cases_ranks, case_message_len, &
                           text_to_column, column_to_text
    use pound_sort, only: sort_ascending
+   use pound_suite_columns, only: column_suite, column_block_width, columns_to_block, columns_init, &
+                                  columns_gather, columns_finish, member_peaks_from_block
    implicit none
    private
 
@@ -136,6 +138,8 @@ module pound_suite
       logical :: has_coupled = .false.
       !> Per building.
       type(building_suite), allocatable :: building(:)
+      !> Per building: its column segments' lambdas over the suite (frames; `pound_suite_columns`).
+      type(column_suite), allocatable :: columns(:)
       !> Separation rules (n_motions + 1, n_pairs; the last row: the suite), over every pair of
       !> every `&contact` in deck order.
       type(separation_t), allocatable :: separation(:, :)
@@ -190,8 +194,8 @@ module pound_suite
       type(deck_type) :: plain
       !> The buildings (periods for `scale_to = 'sa'`).
       type(structure_model), pointer :: models(:) => null()
-      !> Quantities the target applies to.
-      logical :: targeted(n_history_quantities) = .true.
+      !> Quantities the target applies to (`target_names`).
+      logical :: targeted(n_target_quantities) = .true.
       !> The sweep's gaps (m).
       real(dp), allocatable :: gap(:)
       !> Put before the messages (may be empty).
@@ -230,7 +234,7 @@ module pound_suite
    end type suite_cases
 
    !> The motions at one trial gap as cases: column = the largest |lambda| of motion
-   !> `motions(i)` per targeted quantity and building (n_history_quantities x n_buildings; 0
+   !> `motions(i)` per targeted quantity and building (n_target_quantities x n_buildings; 0
    !> where not targeted).
    type, extends(case_work) :: motion_cases
       !> The refinement's data.
@@ -350,6 +354,8 @@ contains
 
       width = failure_slot(ctx) + 1 + failure_width
       if (ctx%sweep) width = probe_slot(ctx) + probe_width(ctx)
+      ! Last, the frames' member lambdas and uncoupled member peaks (`columns_to_block`).
+      width = width + column_block_width(ctx%models)
    end function motion_width
 
    !> Offset in a motion's column of its sweep's probe (with `ctx%sweep`): 1 when the probe
@@ -520,6 +526,7 @@ contains
          o = motion_offset(ctx, 3, ib)
          col(o + 1:o + w) = reshape(res%cpl%building(ib)%peak, [w])
       end do
+      call columns_to_block(ctx%models, res%influence, res%unc, col(size(col) - column_block_width(ctx%models) + 1:))
       o = motion_offset(ctx, 4, 1)
       do ip = 1, size(ctx%left)
          col(o + ip) = -1.0_dp
@@ -531,7 +538,8 @@ contains
             end associate
          end if
       end do
-      if (ctx%sweep) call motion_probe(ctx, res, ag, options%ground, col(probe_slot(ctx) + 1:))
+      if (ctx%sweep) call motion_probe(ctx, res, ag, options%ground, &
+                                       col(probe_slot(ctx) + 1:probe_slot(ctx) + probe_width(ctx)))
    end subroutine motion_run
 
    !> The probe of motion k's sweep (`gap_cases_probe`) into its block of the column
@@ -583,6 +591,7 @@ contains
          o = motion_offset(ctx, 2, ib)
          unc%building(ib)%peak = reshape(col(o + 1:o + n*n_history_quantities), [n, n_history_quantities])
       end do
+      call member_peaks_from_block(ctx%models, col(size(col) - column_block_width(ctx%models) + 1:), unc)
    end subroutine peaks_from_column
 
    !> Gap case i of the motions' sweeps (a case of `suite_gap_cases`).
@@ -635,7 +644,7 @@ contains
       real(dp), intent(out) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: lam(n_history_quantities, size(work%ctx%models))
+      real(dp) :: lam(n_target_quantities, size(work%ctx%models))
 
       call motion_lambda(work%ctx, work%motions(i), work%gap, lam, error)
       if (allocated(error)) return
@@ -678,7 +687,7 @@ contains
       integer, intent(in) :: m
       !> Gap of every joint (m).
       real(dp), intent(in) :: gap
-      !> Largest |lambda| (%), (n_history_quantities, n_buildings).
+      !> Largest |lambda| (%), (n_target_quantities, n_buildings).
       real(dp), intent(out) :: lam(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
@@ -697,8 +706,8 @@ contains
       end if
       call run_case(ctx%plain, r, error, opt)
       if (allocated(error)) return
-      lam = max_abs_influence(r%influence)
-      do iq = 1, n_history_quantities
+      lam = max_abs_target(r%influence, r%models)
+      do iq = 1, n_target_quantities
          if (.not. ctx%targeted(iq)) lam(iq, :) = 0.0_dp
       end do
    end subroutine motion_lambda
@@ -763,7 +772,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(motion_cases) :: cases
       type(case_table) :: table
-      real(dp) :: lam(n_history_quantities, size(ctx%models)), total(n_history_quantities, size(ctx%models))
+      real(dp) :: lam(n_target_quantities, size(ctx%models)), total(n_target_quantities, size(ctx%models))
       integer :: m, nm
 
       worst = huge(1.0_dp)
@@ -1049,7 +1058,7 @@ contains
    pure subroutine suite_sweep_statistics(suite, sweep_all, targeted, target)
       !> The suite.
       type(suite_result), intent(inout) :: suite
-      !> Every motion's largest |lambda| (%), (n_history_quantities, n_buildings, n_gaps, n_motions).
+      !> Every motion's largest |lambda| (%), (n_target_quantities, n_buildings, n_gaps, n_motions).
       real(dp), intent(in) :: sweep_all(:, :, :, :)
       !> Quantities the target applies to.
       logical, intent(in) :: targeted(:)
@@ -1185,7 +1194,7 @@ contains
       real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :)
       real(dp), allocatable :: z(:), sweep_all(:, :, :, :)
       character(len=:), allocatable :: text
-      logical :: targeted(n_history_quantities)
+      logical :: targeted(n_target_quantities)
       integer :: nm, nb, k, ib, np, ip, nmax, ig, iq
       integer, allocatable :: start(:), ms(:)
       type(analysis_result), allocatable, target :: batched(:)
@@ -1213,6 +1222,7 @@ contains
       mean_unc = 0.0_dp
       mean_cpl = 0.0_dp
       allocate (suite%building(nb), suite%separation(nm + 1, np), suite%histories(nm))
+      call columns_init(models, nm, suite%columns)
       do ib = 1, nb
          associate (n => deck%buildings(ib)%n_storeys, s => suite%building(ib))
             allocate (s%lambda(nm, n, n_history_quantities), s%mean_lambda(n, n_history_quantities), &
@@ -1225,7 +1235,7 @@ contains
       end do
       suite%refine_tolerance = deck%sweep%refine_tolerance
       targeted = deck%sweep%target_quantities
-      if (.not. (deck%sweep%target > 0.0_dp)) targeted = .true.
+      if (.not. (deck%sweep%target > 0.0_dp)) targeted(1:n_history_quantities) = .true.
 
       do k = 1, nm
          suite%names(k) = deck%motions(k)%name
@@ -1365,6 +1375,7 @@ contains
             s%lambda_of_means = influence_coefficient(mean_cpl(1:n, :, ib), mean_unc(1:n, :, ib))
          end associate
       end do
+      call columns_finish(ctx%used, suite%columns)
       do ip = 1, np
          call rules(mean_unc(fl(ip), 1, left(ip)), mean_unc(fr(ip), 1, right(ip)), ip, &
                     suite%separation(nm + 1, ip))
@@ -1507,7 +1518,7 @@ contains
             suite%has_sweep = .true.
             suite%sweep_gap = sweep%gap
             allocate (suite%sweep_lambda(nm, size(sweep%gap)), suite%sweep_failed(nm, size(sweep%gap)))
-            allocate (sweep_all(n_history_quantities, nb, size(sweep%gap), nm))
+            allocate (sweep_all(n_target_quantities, nb, size(sweep%gap), nm))
             suite%sweep_lambda = 0.0_dp
             suite%sweep_failed = .false.
             sweep_all = 0.0_dp
@@ -1518,7 +1529,7 @@ contains
             if (sweep%failed(ig)) call add_failure(suite%failures, &
                                                        suite_failure(k, sweep%gap(ig), sweep%messages(ig)))
             suite%sweep_lambda(k, ig) = 0.0_dp
-            do iq = 1, n_history_quantities
+            do iq = 1, n_target_quantities
                if (targeted(iq)) suite%sweep_lambda(k, ig) = max(suite%sweep_lambda(k, ig), &
                                                                  maxval(sweep%max_abs_lambda(iq, :, ig)))
             end do
@@ -1538,6 +1549,7 @@ contains
          o = o + size(suite%period)
          suite%sa_building(k, :) = col(o + 1:o + nb)
          if (col(3) == 0.0_dp) return
+         call columns_gather(models, k, col(size(col) - column_block_width(models) + 1:), suite%columns)
          do ib = 1, nb
             n = deck%buildings(ib)%n_storeys
             w = n*n_history_quantities

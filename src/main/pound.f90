@@ -32,6 +32,7 @@ program pound
    use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
                             write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
+                            write_sweep_column_table, &
                             open_listing, close_listing, write_section
    use pound_summary, only: summary_item, build_summary, summary_lines, motion_heading, summary_text_len
    use pound_summary_output, only: write_summary_csv, write_summary_attributes
@@ -313,6 +314,7 @@ contains
          call write_influence_tables(u, res%models, res%influence)
          call write_column_tables(u, res%models, res%buildings, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
+         if (res%has_sweep) call write_sweep_column_table(u, res%models, deck%sweep, res%sweep)
       end if
       if (size(deck%motions) > 1) then
          call write_suite_listing(u, res%models, suite, err, res%cs)

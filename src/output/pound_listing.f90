@@ -19,7 +19,7 @@ module pound_listing
                                 law_bilinear, law_piecewise, law_parabola_cubic
    use pound_lemke, only: lemke_status_name
    use pound_influence, only: building_influence
-   use pound_config, only: sweep_config
+   use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment
    use pound_sweep, only: sweep_result
    use pound_cases, only: failure_time_step
    implicit none
@@ -27,6 +27,7 @@ module pound_listing
 
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
    public :: write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables
+   public :: write_sweep_column_table
    public :: listing_io_error, open_listing, close_listing, gap_cell, mm
 
    !> Millimetres per metre: gaps, displacements, drifts and penetrations are listed in mm.
@@ -825,5 +826,70 @@ contains
          cell = fixed_cell(mm*x, w, 3)
       end if
    end function gap_cell
+
+   !> Gap study of the column segments (only where `&sweep target_quantities` names
+   !> column_shear or column_moment and a building is a frame): per frame and targeted column
+   !> quantity the largest |lambda| over its column segments against the gap, and whether the
+   !> gap meets the target on every targeted quantity (`sweep_result%meets`).
+   subroutine write_sweep_column_table(u, models, cfg, res)
+      !> Open unit.
+      integer, intent(in) :: u
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> `&sweep`.
+      type(sweep_config), intent(in) :: cfg
+      !> The sweep result.
+      type(sweep_result), intent(in) :: res
+      character(len=:), allocatable :: line, head
+      character(len=12) :: cell
+      integer :: i, ib, q, w
+
+      if (.not. any(cfg%target_quantities(q_column_shear:q_column_moment))) return
+      if (all(models%member%n == 0)) return
+      call write_section(u, 'Gap study: largest |lambda| [%] over the column segments of the frames '// &
+                         'against the gap')
+      write (u, '(a)', iostat=ios, iomsg=msg) '  one column per frame and targeted column quantity: '// &
+         '<building>:column_shear (segment shear V), <building>:column_moment (end moments M1, M2)'
+      call note_io()
+      line = '    gap [mm]  impacts'
+      do ib = 1, size(models)
+         if (models(ib)%member%n == 0) cycle
+         do q = q_column_shear, q_column_moment
+            if (.not. cfg%target_quantities(q)) cycle
+            head = trim(models(ib)%name)//':'//trim(target_names(q))
+            w = max(12, len(head) + 2)
+            line = line//repeat(' ', w - len(head))//head
+         end do
+      end do
+      if (cfg%target > 0.0_dp) line = line//'  target'
+      write (u, '(a)', iostat=ios, iomsg=msg) line
+      call note_io()
+      do i = 1, size(res%gap)
+         write (cell, '(f12.4)') 1000.0_dp*res%gap(i)
+         line = cell
+         if (res%failed(i)) then
+            write (u, '(a)', iostat=ios, iomsg=msg) line//'   FAILED (see the failed gaps above)'
+            call note_io()
+            cycle
+         end if
+         write (cell, '(i9)') res%impacts(i)
+         line = line//cell(1:9)
+         do ib = 1, size(models)
+            if (models(ib)%member%n == 0) cycle
+            do q = q_column_shear, q_column_moment
+               if (.not. cfg%target_quantities(q)) cycle
+               w = max(12, len_trim(models(ib)%name) + len_trim(target_names(q)) + 3)
+               if (res%max_abs_lambda(q, ib, i) >= huge(1.0_dp)) then
+                  line = line//repeat(' ', w - 3)//'inf'
+               else
+                  line = line//fixed_cell(res%max_abs_lambda(q, ib, i), w, 2)
+               end if
+            end do
+         end do
+         if (cfg%target > 0.0_dp) line = line//merge('     met', '        ', res%meets(i))
+         write (u, '(a)', iostat=ios, iomsg=msg) line
+         call note_io()
+      end do
+   end subroutine write_sweep_column_table
 
 end module pound_listing

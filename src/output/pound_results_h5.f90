@@ -47,12 +47,16 @@
 !>                                               attributes target_lambda, safe_gap (-1: none),
 !>                                               and, when some gaps failed, failed_gaps (count)
 !>                                               and safe_gap_note
+!>     /sweep/max_abs_lambda/<b>/column_shear, column_moment   (n_gaps) of a frame, where targeted:
+!>                                               largest |lambda| over its column segments, percent
+!>                                               (attribute units = '%')
 !>     /sweep/failed/case, gap, time, step, message   (n_failed) the gaps whose run failed
 module pound_results_h5
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_version, only: program_name, program_version
-   use pound_config, only: deck_type, history_names, n_history_quantities
+   use pound_config, only: deck_type, history_names, n_history_quantities, target_names, q_column_shear, &
+                           q_column_moment
    use pound_building, only: building_model
    use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result, history_sink, output_steps
@@ -285,6 +289,17 @@ contains
                row = sweep%max_abs_lambda(q, ib, :)
                call h5_write(h5, '/sweep/max_abs_lambda/'//models(ib)%name//'/'//trim(history_names(q)), &
                              row, error, units='%')
+               if (allocated(error)) return
+            end do
+            ! The column segments' quantities of a frame, where the deck targets them.
+            if (models(ib)%member%n == 0) cycle
+            do q = q_column_shear, q_column_moment
+               if (.not. deck%sweep%target_quantities(q)) cycle
+               row = sweep%max_abs_lambda(q, ib, :)
+               call h5_write(h5, '/sweep/max_abs_lambda/'//models(ib)%name//'/'//trim(target_names(q)), &
+                             row, error)
+               if (.not. allocated(error)) call h5_write_attr(h5, '/sweep/max_abs_lambda/'//models(ib)%name// &
+                                                              '/'//trim(target_names(q)), 'units', '%', error)
                if (allocated(error)) return
             end do
          end do

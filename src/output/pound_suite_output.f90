@@ -13,6 +13,8 @@
 !>     /suite/spectrum/mean_sa                                  (n_periods)
 !>     /suite/influence/<b>/<q>                                 (n_motions, n), %
 !>     /suite/mean/influence/<b>/<q>, /suite/max/influence/<b>/<q>, /suite/lambda_of_means/<b>/<q>  (n)
+!>     /suite/influence/<b>/columns/<c>, /suite/mean/..., /suite/max/...   frames: the column
+!>        segments' lambdas (pound_suite_columns_output)
 !>     /suite/separation/<rule>                                 (n_motions + 1, n_pairs), m;
 !>        rule: abs, srss, ec8, ddc, no_contact, time_history; the last row is the suite value
 !>        (time_history: the threshold gap of the sweep, -1 when not computed)
@@ -49,6 +51,7 @@ module pound_suite_output
    use pound_suite, only: suite_result
    use pound_results_h5, only: write_analysis_h5, write_failed_cases, pair_list
    use pound_cases, only: failure_time_step, case_message_len
+   use pound_suite_columns_output, only: write_suite_columns_listing, write_suite_columns_h5
    implicit none
    private
 
@@ -181,6 +184,8 @@ contains
          infl(ib)%lambda = suite%building(ib)%lambda_of_means
       end do
       call write_influence_tables(u, models, infl)
+      call write_suite_columns_listing(u, models, suite%names, suite%motion_failed, suite%columns, error)
+      if (allocated(error)) return
 
       call write_section(u, 'Separation rules per contact pair [mm]')
       write (u, '(a)', iostat=ios, iomsg=msg) '  Applied to the elastic time-history peaks of the '// &
@@ -387,6 +392,8 @@ contains
                if (allocated(error)) return
             end do
          end do
+         call write_suite_columns_h5(h5, models, suite%columns, error)
+         if (allocated(error)) return
          do r = 1, size(rule_names)
             select case (r)
             case (1)

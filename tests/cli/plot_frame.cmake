@@ -2,7 +2,8 @@
 # with the six contact points (floors facing columns between floors); the listing names the
 # column ends by elevation and has the column-segment table. The results file holds the
 # column segments' peaks and lambdas and each frame's deformed shapes at the storey-shear
-# peaks; the `deformed` plot (most affected storey, uncoupled and coupled side by side) runs.
+# peaks; the `deformed` plot (most affected storey, uncoupled and coupled side by side) runs, and
+# the `columns` plot (column-segment lambdas along the facing column lines) too.
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
 set(PY /usr/bin/python3)
 set(PLOT ${SOURCE_DIR}/scripts/plot_results.py)
@@ -38,3 +39,7 @@ execute_process(COMMAND ${PY} ${PLOT} ${WORK_DIR}/frame_to_column.h5 --only defo
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 expect_equal("plot exit (${err})" 0 "${rc}")
 expect_png("plot deformed (${out} ${err})" ${WORK_DIR}/frame_to_column_deformed.png)
+execute_process(COMMAND ${PY} ${PLOT} ${WORK_DIR}/frame_to_column.h5 --only columns --format png
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+expect_equal("plot exit (${err})" 0 "${rc}")
+expect_png("plot columns (${out} ${err})" ${WORK_DIR}/frame_to_column_columns.png)
