@@ -29,7 +29,8 @@ program pound
    use pound_run_case, only: case_options, case_result, run_case, deck_ground_motion
    use pound_suite, only: suite_result, run_suite
    use pound_suite_output, only: write_suite_listing, write_suite_h5
-   use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
+   use pound_separation_output, only: write_run_separation, pair_labels
+   use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, write_warning_lines, &
                             write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
                             open_listing, close_listing
    use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
@@ -139,7 +140,7 @@ program pound
       call write_h5()
    end if
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
-      call write_suite_h5(outputs%h5_tmp, res%models, suite, error)
+      call write_suite_h5(outputs%h5_tmp, res%models, suite, error, pair_labels(deck))
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
    call publish_outputs(outputs, error)
@@ -170,12 +171,14 @@ contains
    subroutine write_h5(file)
       type(h5_file), intent(inout), optional :: file
 
+      if (.not. allocated(res%separation)) allocate (res%separation(0))
       if (res%has_sweep) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file)
+                               res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file, &
+                               separation=res%separation)
       else if (res%has_coupled) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, res%cpl, res%cs, res%influence, file=file)
+                               res%unc, error, res%cpl, res%cs, res%influence, file=file, separation=res%separation)
       else
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
                                res%unc, error, file=file)
@@ -260,11 +263,16 @@ contains
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: err
       integer :: u, ios
+      character(len=:), allocatable :: input_warnings(:)
 
       call open_listing(path, u, err)
       if (allocated(err)) return
       call write_listing_header(u, deck, ground_text)
       call write_model_summary(u, res%models, res%buildings)
+      if (res%n_input_warnings > 0) then
+         input_warnings = res%warnings(1:res%n_input_warnings)
+         call write_warning_lines(u, input_warnings)
+      end if
       call write_peak_tables(u, 'Uncoupled', res%models, res%unc)
       if (.not. res%has_coupled) call write_column_tables(u, res%models, res%buildings, res%unc)
       if (res%has_coupled) then
@@ -273,9 +281,11 @@ contains
          call write_influence_tables(u, res%models, res%influence)
          call write_column_tables(u, res%models, res%buildings, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
+         if (size(deck%motions) == 1 .and. allocated(res%separation)) &
+            call write_run_separation(u, pair_labels(deck), res%separation)
       end if
       if (size(deck%motions) > 1) then
-         call write_suite_listing(u, res%models, suite, err)
+         call write_suite_listing(u, res%models, suite, err, pair_labels(deck))
          if (allocated(err)) return
       end if
       write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', res%unc%seconds, ' s'

@@ -27,7 +27,7 @@ module pound_listing
 
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
    public :: write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables
-   public :: listing_io_error, open_listing, close_listing
+   public :: listing_io_error, open_listing, close_listing, write_warning_lines
 
    !> Modes listed in the model summary (the HDF5 file has every mode the builder computed).
    integer, parameter :: max_listed_modes = modes_listed

@@ -45,6 +45,8 @@ module pound_suite_output
    use pound_suite, only: suite_result
    use pound_results_h5, only: write_analysis_h5, write_failed_cases
    use pound_cases, only: failure_time_step, case_message_len
+   use pound_separation_output, only: write_separation_h5, write_separation_head, write_separation_rows, &
+                                      write_separation_legend
    implicit none
    private
 
@@ -58,7 +60,7 @@ contains
 
    !> Listing sections of the suite: motions, per-motion largest |lambda|, mean influence
    !> tables, separation rules per pair.
-   subroutine write_suite_listing(u, models, suite, error)
+   subroutine write_suite_listing(u, models, suite, error, labels)
       !> Open listing unit.
       integer, intent(in) :: u
       !> The buildings.
@@ -67,6 +69,8 @@ contains
       type(suite_result), intent(in) :: suite
       !> Set when a write fails.
       type(error_type), allocatable, intent(out) :: error
+      !> Labels of the contact pairs (`pair_labels`; absent: numbered).
+      character(len=*), intent(in), optional :: labels(:)
       type(building_influence), allocatable :: infl(:)
       integer :: ios, k, ib, q, ip, nm, nb
       integer, allocatable :: used(:)
@@ -142,18 +146,16 @@ contains
       end do
       call write_influence_tables(u, models, infl)
 
-      call write_section(u, 'Separation rules per contact pair (m)')
-      write (u, '(a)', iostat=ios, iomsg=msg) '  Applied to the elastic time-history peaks of the '// &
-         'uncoupled runs, without displacement amplification factors.', &
-         '  ABS = u1 + u2, SRSS, EC8 4.4.2.7 (SRSS x 0.7 where floor levels coincide), DDC (CQC rho), ', &
-         '  no-contact gap = max_t (u1(t) - u2(t)) of the stored uncoupled histories (-1: u not stored).', &
-         '  time_history = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
-         '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
-         '  (-1: not computed: no &sweep, no target_lambda, or no gap of the range meets it).', &
-         '  The suite row: rules on the mean peaks; no-contact gap: mean over the motions'//over//'.'
+      call write_section(u, 'Separation rules per contact pair (mm)')
+      call write_separation_legend(u, .true.)
+      write (u, '(a)', iostat=ios, iomsg=msg) '  The suite row: rules on the mean peaks; no-contact gap: '// &
+         'mean over the motions'//over//'.'
       do ip = 1, size(suite%separation, 2)
-         write (u, '(/,a,i0)', iostat=ios, iomsg=msg) '  pair ', ip
-         write (u, '(2x,a20,*(a14))', iostat=ios, iomsg=msg) 'motion', (trim(rule_names(q)), q=1, size(rule_names))
+         if (present(labels)) then
+            call write_separation_head(u, trim(labels(ip)), 'motion')
+         else
+            call write_separation_head(u, str(ip), 'motion')
+         end if
          do k = 1, nm + 1
             if (k <= nm) then
                if (suite%motion_failed(k)) then
@@ -161,10 +163,7 @@ contains
                   cycle
                end if
             end if
-            associate (s => suite%separation(k, ip))
-               write (u, '(2x,a20,*(es14.6))', iostat=ios, iomsg=msg) trim(row_name(k)), s%abs, &
-                  s%srss, s%ec8, s%ddc, s%no_contact, s%time_history
-            end associate
+            call write_separation_rows(u, trim(row_name(k)), suite%separation(k, ip), .true.)
          end do
       end do
       if (suite%has_sweep) then
@@ -256,7 +255,7 @@ contains
    end subroutine write_suite_listing
 
    !> Append `/suite` to the results file at `path`.
-   subroutine write_suite_h5(path, models, suite, error)
+   subroutine write_suite_h5(path, models, suite, error, labels)
       !> Results file (written and closed).
       character(len=*), intent(in) :: path
       !> The buildings.
@@ -265,6 +264,8 @@ contains
       type(suite_result), intent(in) :: suite
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> Labels of the contact pairs (`pair_labels`; absent: '1', '2', ...).
+      character(len=*), intent(in), optional :: labels(:)
       type(error_type), allocatable :: close_error
       type(h5_file) :: h5
 
@@ -326,6 +327,13 @@ contains
             call h5_write(h5, '/suite/separation/'//trim(rule_names(r)), rule, error)
             if (allocated(error)) return
          end do
+         if (present(labels)) then
+            call write_separation_h5(h5, '/suite/separation', suite%separation, labels, .true., error)
+         else
+            call write_separation_h5(h5, '/suite/separation', suite%separation, &
+                                     [(str(r), r=1, size(suite%separation, 2))], .true., error)
+         end if
+         if (allocated(error)) return
          call write_histories()
          if (allocated(error) .or. .not. suite%has_sweep) return
          call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error)

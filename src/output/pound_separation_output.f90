@@ -1,0 +1,290 @@
+!> Outputs of the separation rules (`pound_separation`): the listing table of one pair (rows:
+!> the run, or a suite's motions and the suite) and the HDF5 datasets of the rules.
+!>
+!> HDF5, under a group `g` ('/separation' for a run, '/suite/separation' for a suite), one
+!> dataset per rule, (n_pairs) for a run or (n_motions + 1, n_pairs) for a suite:
+!>
+!>     g/abs, g/srss, g/ddc              m, combinations of the elastic peaks
+!>     g/ec8                             m, SRSS x 0.7 (coinciding floors) of the elastic peaks,
+!>                                       without q_d (legacy; the EN 1998 rule is g/en1998)
+!>     g/rho                             1, CQC correlation of the DDC
+!>     g/asce7, g/en1998, g/is1893       m, design-code rules, NaN where n/a (factor not given)
+!>     g/no_contact                      m (suite only)
+!>     g/time_history                    m; a run: NaN where n/a; a suite: -1 where n/a (the
+!>                                       layout of earlier files), with g/time_history_valid (0/1)
+!>     g/pair                            (n_pairs) labels 'A:3-B:3'
+!>
+!> every dataset with the attribute `units` and, where a value can be n/a, `na` saying how it
+!> is marked.
+module pound_separation_output
+   use pound_kinds, only: dp
+   use pound_error, only: error_type
+   use pound_strings, only: str
+   use pound_config, only: deck_type
+   use pound_h5, only: h5_file, h5_write, h5_write_attr
+   use pound_separation, only: separation_t, not_computed
+   use pound_listing, only: write_section
+   implicit none
+   private
+
+   public :: write_separation_h5, write_separation_rows, write_separation_head, pair_labels, &
+             write_separation_legend, write_run_separation
+
+   !> Width of a value column of the listing table.
+   integer, parameter :: cw = 12
+   !> NaN marks of the new datasets.
+   character(len=*), parameter :: na_nan = 'NaN where not computed (n/a: a factor of either '// &
+                                           'building not given, or the pair is not between floors)'
+
+contains
+
+   !> 'A:3-B:3' for each pair of the deck's `&contact` groups in order (floor numbers; a
+   !> point between floors by its elevation, 'A:z=4.5').
+   pure function pair_labels(deck) result(labels)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      character(len=:), allocatable :: labels(:)
+      character(len=:), allocatable :: text
+      integer :: ic, k, n, np, length
+
+      np = 0
+      length = 1
+      do ic = 1, size(deck%contacts)
+         do k = 1, size(deck%contacts(ic)%floor_left)
+            length = max(length, len(one(ic, k)))
+            np = np + 1
+         end do
+      end do
+      allocate (character(len=length) :: labels(np))
+      n = 0
+      do ic = 1, size(deck%contacts)
+         do k = 1, size(deck%contacts(ic)%floor_left)
+            n = n + 1
+            text = one(ic, k)
+            labels(n) = text
+         end do
+      end do
+
+   contains
+
+      pure function one(ic, k) result(s)
+         integer, intent(in) :: ic, k
+         character(len=:), allocatable :: s
+
+         associate (c => deck%contacts(ic))
+            s = c%left//':'//side(c%floor_left, k)//'-'//c%right//':'//side(c%floor_right, k)
+         end associate
+      end function one
+
+      pure function side(floors, k) result(s)
+         integer, intent(in) :: floors(:), k
+         character(len=:), allocatable :: s
+
+         if (floors(k) > 0) then
+            s = str(floors(k))
+         else
+            s = 'z='//str(deck%contacts(ic)%elevation(k))
+         end if
+      end function side
+
+   end function pair_labels
+
+   !> The legend of the separation tables (`suite`: the time-history gap of a suite's sweep).
+   subroutine write_separation_legend(u, suite)
+      !> Open listing unit.
+      integer, intent(in) :: u
+      !> The suite's table (else a run's).
+      logical, intent(in) :: suite
+      integer :: ios
+
+      write (u, '(a)', iostat=ios) '  From the elastic peaks u1, u2 of the uncoupled run(s) at the '// &
+         'facing floors; n/a: not computed.', &
+         '  ABS = u1 + u2; SRSS = sqrt(u1^2 + u2^2); DDC = sqrt(u1^2 + u2^2 - 2 rho u1 u2), rho: CQC '// &
+         'correlation of the two buildings'' first modes;', &
+         '  ASCE7 = ASCE 7-16 12.12.3: sqrt(dM1^2 + dM2^2), dM = Cd u / Ie (n/a without &building cd);', &
+         '  EN1998 = EN 1998-1 4.4.2.7: SRSS of q u, x 0.7 where floor levels coincide (n/a without '// &
+         'behaviour_factor);', &
+         '  IS1893 = IS 1893-1:2016 7.11.3: R1 u1 + R2 u2, x 0.5 where floor levels coincide (n/a '// &
+         'without response_reduction);'
+      if (suite) then
+         write (u, '(a)', iostat=ios) '  no-contact = max_t (u1(t) - u2(t)) of the uncoupled histories;', &
+            '  time-hist. = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
+            '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
+            '  (n/a: no &sweep, no target_lambda, or no gap of the range meets it).'
+      else
+         write (u, '(a)', iostat=ios) '  no-contact: n/a for a single run (see the suite tables and '// &
+            'the sweep''s largest closing displacement);', &
+            '  time-hist. = the smallest gap of the sweep meeting target_lambda (n/a: no &sweep, no '// &
+            'target_lambda, or no gap of the range meets it).'
+      end if
+   end subroutine write_separation_legend
+
+   !> The listing section of a run's separation rules: one table row per pair.
+   subroutine write_run_separation(u, labels, sep)
+      !> Open listing unit.
+      integer, intent(in) :: u
+      !> Pair labels (`pair_labels`).
+      character(len=*), intent(in) :: labels(:)
+      !> The rules per pair.
+      type(separation_t), intent(in) :: sep(:)
+      integer :: ip
+
+      if (size(sep) == 0) return
+      call write_section(u, 'Separation rules per contact pair (mm)')
+      call write_separation_legend(u, .false.)
+      do ip = 1, size(sep)
+         call write_separation_head(u, trim(labels(ip)), 'run')
+         call write_separation_rows(u, 'run', sep(ip), .false.)
+      end do
+   end subroutine write_run_separation
+
+   !> The head of the listing table of one pair: its label and the column names.
+   subroutine write_separation_head(u, label, row_title)
+      !> Open listing unit.
+      integer, intent(in) :: u
+      !> The pair's label.
+      character(len=*), intent(in) :: label
+      !> Title of the row column ('motion' or 'run').
+      character(len=*), intent(in) :: row_title
+      integer :: ios
+
+      write (u, '(/,a)', iostat=ios) '  pair '//label//'  (gaps in mm)'
+      write (u, '(2x,a20,10a12)', iostat=ios) row_title, 'ABS', 'SRSS', 'DDC', 'rho', 'ASCE7', 'EN1998', &
+         'IS1893', 'no-contact', 'time-hist.'
+   end subroutine write_separation_head
+
+   !> One row of the table: the rules of `sep` in mm (rho dimensionless), 'n/a' for a rule not
+   !> computed; `with_no_contact` false: the no-contact gap is n/a (not computed for a run).
+   subroutine write_separation_rows(u, name, sep, with_no_contact)
+      !> Open listing unit.
+      integer, intent(in) :: u
+      !> Row name (motion, 'suite' or 'run').
+      character(len=*), intent(in) :: name
+      !> The rules.
+      type(separation_t), intent(in) :: sep
+      !> Whether `sep%no_contact` holds the no-contact gap.
+      logical, intent(in) :: with_no_contact
+      integer :: ios
+
+      write (u, '(2x,a20,10a12)', iostat=ios) name, mm(sep%abs, sep%computed), mm(sep%srss, sep%computed), &
+         mm(sep%ddc, sep%computed), ratio(sep%rho, sep%computed), mm(sep%asce7, sep%asce7_valid), &
+         mm(sep%en1998, sep%en1998_valid), mm(sep%is1893, sep%is1893_valid), &
+         mm(sep%no_contact, with_no_contact .and. sep%computed), mm(sep%time_history, sep%time_history_valid)
+
+   contains
+
+      pure function mm(x, valid) result(cell)
+         real(dp), intent(in) :: x
+         logical, intent(in) :: valid
+         character(len=cw) :: cell
+
+         if (.not. valid) then
+            cell = repeat(' ', cw - 3)//'n/a'
+         else if (1000.0_dp*x < 1.0e7_dp) then
+            write (cell, '(f12.2)') 1000.0_dp*x
+         else
+            write (cell, '(es12.4)') 1000.0_dp*x
+         end if
+      end function mm
+
+      pure function ratio(x, valid) result(cell)
+         real(dp), intent(in) :: x
+         logical, intent(in) :: valid
+         character(len=cw) :: cell
+
+         if (valid) then
+            write (cell, '(f12.4)') x
+         else
+            cell = repeat(' ', cw - 3)//'n/a'
+         end if
+      end function ratio
+
+   end subroutine write_separation_rows
+
+   !> The new datasets of the rules under `g` (rho, asce7, en1998, is1893, pair; for a run
+   !> also abs, srss, ec8, ddc and time_history), with their attributes. `sep` is
+   !> (n_rows, n_pairs): one row for a run, n_motions + 1 for a suite (`suite` true: the suite
+   !> writes abs, srss, ec8, ddc, no_contact and time_history itself, in their earlier layout;
+   !> here their attributes and time_history_valid).
+   subroutine write_separation_h5(h5, g, sep, labels, suite, error)
+      !> Open file.
+      type(h5_file), intent(inout) :: h5
+      !> Group path ('/separation' or '/suite/separation').
+      character(len=*), intent(in) :: g
+      !> The rules (n_rows, n_pairs).
+      type(separation_t), intent(in) :: sep(:, :)
+      !> Pair labels (n_pairs).
+      character(len=*), intent(in) :: labels(:)
+      !> The suite's group (see above).
+      logical, intent(in) :: suite
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. suite) then
+         call put('abs', nan_where(sep%abs, sep%computed), 'm', 'ABS = u1 + u2 of the elastic peaks')
+         call put('srss', nan_where(sep%srss, sep%computed), 'm', 'SRSS = sqrt(u1^2 + u2^2) of the elastic peaks')
+         call put('ec8', nan_where(sep%ec8, sep%computed), 'm', 'SRSS x 0.7 where floor levels coincide, of '// &
+                  'the elastic peaks without q_d (legacy; the EN 1998-1 4.4.2.7 rule is en1998)')
+         call put('ddc', nan_where(sep%ddc, sep%computed), 'm', 'DDC = sqrt(u1^2 + u2^2 - 2 rho u1 u2)')
+         call put('time_history', nan_where(sep%time_history, sep%time_history_valid), 'm', &
+                  'smallest gap of the sweep meeting target_lambda')
+      else
+         call attrs('abs', 'm', 'ABS = u1 + u2 of the elastic peaks', '')
+         call attrs('srss', 'm', 'SRSS = sqrt(u1^2 + u2^2) of the elastic peaks', '')
+         call attrs('ec8', 'm', 'SRSS x 0.7 where floor levels coincide, of the elastic peaks without q_d '// &
+                    '(legacy; the EN 1998-1 4.4.2.7 rule is en1998)', '')
+         call attrs('ddc', 'm', 'DDC = sqrt(u1^2 + u2^2 - 2 rho u1 u2)', '')
+         call attrs('no_contact', 'm', 'max_t (u1(t) - u2(t)) of the uncoupled histories', '')
+         call attrs('time_history', 'm', 'threshold gap of the gap sweep', '-1 where not computed '// &
+                    '(time_history_valid = 0)')
+         if (.not. allocated(error)) call h5_write(h5, g//'/time_history_valid', &
+                                                   merge(1, 0, sep%time_history_valid), error)
+      end if
+      call put('rho', nan_where(sep%rho, sep%computed), '1', 'CQC correlation coefficient used by the DDC')
+      call put('asce7', nan_where(sep%asce7, sep%asce7_valid), 'm', 'ASCE 7-16 12.12.3: sqrt(dM1^2 + dM2^2), '// &
+               'dM = Cd delta / Ie')
+      call put('en1998', nan_where(sep%en1998, sep%en1998_valid), 'm', 'EN 1998-1 4.4.2.7: SRSS of q_d d_e, '// &
+               'x 0.7 where floor levels coincide')
+      call put('is1893', nan_where(sep%is1893, sep%is1893_valid), 'm', 'IS 1893-1:2016 7.11.3: R1 D1 + R2 D2, '// &
+               'x 0.5 where floor levels coincide')
+      if (.not. allocated(error)) call h5_write(h5, g//'/pair', labels, error)
+
+   contains
+
+      !> A new dataset with its attributes (its NaN marks n/a).
+      subroutine put(name, values, units, rule)
+         character(len=*), intent(in) :: name, units, rule
+         real(dp), intent(in) :: values(:, :)
+
+         if (allocated(error)) return
+         if (suite) then
+            call h5_write(h5, g//'/'//name, values, error)
+         else
+            call h5_write(h5, g//'/'//name, values(1, :), error)
+         end if
+         call attrs(name, units, rule, na_nan)
+      end subroutine put
+
+      subroutine attrs(name, units, rule, na)
+         character(len=*), intent(in) :: name, units, rule, na
+
+         if (allocated(error)) return
+         call h5_write_attr(h5, g//'/'//name, 'units', units, error)
+         if (.not. allocated(error)) call h5_write_attr(h5, g//'/'//name, 'rule', rule, error)
+         if (.not. allocated(error) .and. len(na) > 0) call h5_write_attr(h5, g//'/'//name, 'na', na, error)
+      end subroutine attrs
+
+   end subroutine write_separation_h5
+
+   !> `x` where `valid`, NaN elsewhere.
+   elemental real(dp) function nan_where(x, valid) result(y)
+      !> Value.
+      real(dp), intent(in) :: x
+      !> Whether it is computed.
+      logical, intent(in) :: valid
+
+      y = x
+      if (.not. valid) y = not_computed(x)
+   end function nan_where
+
+end module pound_separation_output
