@@ -1364,7 +1364,8 @@ contains
          end associate
       end do
       do ip = 1, np
-         call rules(mean_unc(fl(ip), 1, left(ip)), mean_unc(fr(ip), 1, right(ip)), ip, &
+         ! (A point between floors, floor 0, has no peak here: its rules are n/a, `pair_separation`.)
+         call rules(mean_unc(max(fl(ip), 1), 1, left(ip)), mean_unc(max(fr(ip), 1), 1, right(ip)), ip, &
                     suite%separation(nm + 1, ip))
       end do
       if (suite%has_sweep) then
@@ -1553,7 +1554,7 @@ contains
          do ip = 1, np
             o2 = motion_offset(ctx, 2, left(ip))
             w = motion_offset(ctx, 2, right(ip))
-            call rules(col(o2 + fl(ip)), col(w + fr(ip)), ip, suite%separation(k, ip))
+            call rules(col(o2 + max(fl(ip), 1)), col(w + max(fr(ip), 1)), ip, suite%separation(k, ip))
             suite%separation(k, ip)%no_contact = col(o + ip)
             suite%separation(nm + 1, ip)%no_contact = suite%separation(nm + 1, ip)%no_contact + &
                                                       suite%separation(k, ip)%no_contact/suite%n_used

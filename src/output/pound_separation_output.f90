@@ -12,14 +12,14 @@
 !>     g/no_contact                      m (suite only)
 !>     g/time_history                    m; a run: NaN where n/a; a suite: -1 where n/a (the
 !>                                       layout of earlier files), with g/time_history_valid (0/1)
-!>     g/pair                            (n_pairs) labels 'A:3-B:3'
+!>     g/pair                            (n_pairs) labels 'A:3-B:3', 'A:z4.5m-B:2'
 !>
 !> every dataset with the attribute `units` and, where a value can be n/a, `na` saying how it
 !> is marked.
 module pound_separation_output
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_strings, only: str
+   use pound_strings, only: str, plain_real
    use pound_config, only: deck_type
    use pound_h5, only: h5_file, h5_write, h5_write_attr
    use pound_separation, only: separation_t, not_computed
@@ -39,7 +39,7 @@ module pound_separation_output
 contains
 
    !> 'A:3-B:3' for each pair of the deck's `&contact` groups in order (floor numbers; a
-   !> point between floors by its elevation, 'A:z=4.5').
+   !> point between floors by its elevation, 'A:z4.5m-B:2', as the contact tables name it).
    pure function pair_labels(deck) result(labels)
       !> A validated configuration.
       type(deck_type), intent(in) :: deck
@@ -83,7 +83,7 @@ contains
          if (floors(k) > 0) then
             s = str(floors(k))
          else
-            s = 'z='//str(deck%contacts(ic)%elevation(k))
+            s = 'z'//plain_real(deck%contacts(ic)%elevation(k))//'m'
          end if
       end function side
 
