@@ -105,7 +105,9 @@ contains
          '  EN1998 = EN 1998-1 4.4.2.7: SRSS of q u, x 0.7 where floor levels coincide (n/a without '// &
          'behaviour_factor);', &
          '  IS1893 = IS 1893-1:2016 7.11.3: R1 u1 + R2 u2, x 0.5 where floor levels coincide (n/a '// &
-         'without response_reduction);'
+         'without response_reduction);', &
+         '  the factors take u as the codes'' elastic displacement under the design action reduced by q, '// &
+         'R or R/Ie: with unreduced records the peak itself is the codes'' estimate (equal displacements).'
       if (suite) then
          write (u, '(a)', iostat=ios) '  no-contact = max_t (u1(t) - u2(t)) of the uncoupled histories;', &
             '  time-hist. = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
