@@ -63,8 +63,10 @@ module pound_separation
       real(dp) :: asce7 = 0.0_dp, en1998 = 0.0_dp, is1893 = 0.0_dp
       !> Whether each design-code rule was computed (its factors given for both buildings).
       logical :: asce7_valid = .false., en1998_valid = .false., is1893_valid = .false.
-      !> Exact no-contact gap from the histories.
+      !> Exact no-contact gap from the histories (a run: the sweep probe's largest closing).
       real(dp) :: no_contact = 0.0_dp
+      !> Whether `no_contact` was computed.
+      logical :: no_contact_valid = .false.
       !> Time-history threshold gap of a suite's gap sweep (pound_suite): the smallest gap
       !> meeting the sweep's target, the same for every pair (a sweep gives every pair the same
       !> gap); -1 when not computed (no `&sweep`, no target, or no gap of the range meets it:
@@ -343,6 +345,7 @@ contains
       if (present(factors)) f = factors
       sep = code_separation(u1, u2, f(1), f(2), t1, t2, z1, z2, floors_coincide)
       sep%no_contact = no_contact_gap(history1, history2)
+      sep%no_contact_valid = .true.
    end subroutine separation_rules
 
    pure subroutine check_nonnegative(x, name, error)

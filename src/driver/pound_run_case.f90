@@ -78,8 +78,9 @@ module pound_run_case
       !> Gap study.
       type(sweep_result) :: sweep
       !> Separation rules per contact pair (the deck's `&contact` pairs in order), from the
-      !> uncoupled peaks (`pair_separation`; allocated when both analyses ran). The no-contact
-      !> gap is not computed here; the time-history gap is the sweep's safe gap when found.
+      !> uncoupled peaks (`pair_separation`; allocated when both analyses ran). With a sweep, the
+      !> no-contact gap is its probe's largest closing displacement of each joint and the
+      !> time-history gap its safe gap when found; without, both are n/a.
       type(separation_t), allocatable :: separation(:)
       !> Warnings of the deck (plausibility), of the models (period against the code estimate),
       !> of the uncoupled run, the coupled run and the sweep, in that order, one line each (size
@@ -292,6 +293,14 @@ contains
          if (res%has_sweep) then
             res%separation%time_history_valid = res%sweep%found
             if (res%sweep%found) res%separation%time_history = res%sweep%safe_gap
+            ! The sweep's probe (the uncoupled motion run as a coupled one no joint closes) gives
+            ! each joint's largest closing displacement: the no-contact gap (0 if it never closes).
+            if (allocated(res%sweep%closing_max)) then
+               if (size(res%sweep%closing_max) == np) then
+                  res%separation%no_contact = max(0.0_dp, res%sweep%closing_max)
+                  res%separation%no_contact_valid = .true.
+               end if
+            end if
          end if
       end subroutine separations
 

@@ -1573,6 +1573,7 @@ contains
          sep = pair_separation(deck, left(ip), right(ip), fl(ip), fr(ip), p1, p2, &
                                suite%building_period(left(ip)), suite%building_period(right(ip)))
          sep%no_contact = no_contact
+         sep%no_contact_valid = .true.
       end subroutine rules
 
    end subroutine run_suite

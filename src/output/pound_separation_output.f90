@@ -9,7 +9,7 @@
 !>                                       without q_d (legacy; the EN 1998 rule is g/en1998)
 !>     g/rho                             1, CQC correlation of the DDC
 !>     g/asce7, g/en1998, g/is1893       m, design-code rules, NaN where n/a (factor not given)
-!>     g/no_contact                      m (suite only)
+!>     g/no_contact                      m; a run: NaN without &sweep (its probe gives it)
 !>     g/time_history                    m; a run: NaN where n/a; a suite: -1 where n/a (the
 !>                                       layout of earlier files), with g/time_history_valid (0/1)
 !>     g/pair                            (n_pairs) labels 'A:3-B:3', 'A:z4.5m-B:2'
@@ -114,8 +114,8 @@ contains
             '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
             '  (n/a: no &sweep, no target_lambda, or no gap of the range meets it).'
       else
-         write (u, '(a)', iostat=ios) '  no-contact: n/a for a single run (see the suite tables and '// &
-            'the sweep''s largest closing displacement);', &
+         write (u, '(a)', iostat=ios) '  no-contact = the largest closing displacement u1 - u2 of the '// &
+            'uncoupled motion, from the sweep''s probe (n/a without &sweep);', &
             '  time-hist. = the smallest gap of the sweep meeting target_lambda (n/a: no &sweep, no '// &
             'target_lambda, or no gap of the range meets it).'
       end if
@@ -136,7 +136,7 @@ contains
       call write_separation_legend(u, .false.)
       do ip = 1, size(sep)
          call write_separation_head(u, trim(labels(ip)), 'run')
-         call write_separation_rows(u, 'run', sep(ip), .false.)
+         call write_separation_rows(u, 'run', sep(ip))
       end do
    end subroutine write_run_separation
 
@@ -156,22 +156,20 @@ contains
    end subroutine write_separation_head
 
    !> One row of the table: the rules of `sep` in mm (rho dimensionless), 'n/a' for a rule not
-   !> computed; `with_no_contact` false: the no-contact gap is n/a (not computed for a run).
-   subroutine write_separation_rows(u, name, sep, with_no_contact)
+   !> computed.
+   subroutine write_separation_rows(u, name, sep)
       !> Open listing unit.
       integer, intent(in) :: u
       !> Row name (motion, 'suite' or 'run').
       character(len=*), intent(in) :: name
       !> The rules.
       type(separation_t), intent(in) :: sep
-      !> Whether `sep%no_contact` holds the no-contact gap.
-      logical, intent(in) :: with_no_contact
       integer :: ios
 
       write (u, '(2x,a20,10a12)', iostat=ios) name, mm(sep%abs, sep%computed), mm(sep%srss, sep%computed), &
          mm(sep%ddc, sep%computed), ratio(sep%rho, sep%computed), mm(sep%asce7, sep%asce7_valid), &
          mm(sep%en1998, sep%en1998_valid), mm(sep%is1893, sep%is1893_valid), &
-         mm(sep%no_contact, with_no_contact .and. sep%computed), mm(sep%time_history, sep%time_history_valid)
+         mm(sep%no_contact, sep%no_contact_valid), mm(sep%time_history, sep%time_history_valid)
 
    contains
 
@@ -228,6 +226,8 @@ contains
          call put('ec8', nan_where(sep%ec8, sep%computed), 'm', 'SRSS x 0.7 where floor levels coincide, of '// &
                   'the elastic peaks without q_d (legacy; the EN 1998-1 4.4.2.7 rule is en1998)')
          call put('ddc', nan_where(sep%ddc, sep%computed), 'm', 'DDC = sqrt(u1^2 + u2^2 - 2 rho u1 u2)')
+         call put('no_contact', nan_where(sep%no_contact, sep%no_contact_valid), 'm', &
+                  'largest closing displacement of the uncoupled motion (the sweep probe)')
          call put('time_history', nan_where(sep%time_history, sep%time_history_valid), 'm', &
                   'smallest gap of the sweep meeting target_lambda')
       else

@@ -163,7 +163,7 @@ contains
                   cycle
                end if
             end if
-            call write_separation_rows(u, trim(row_name(k)), suite%separation(k, ip), .true.)
+            call write_separation_rows(u, trim(row_name(k)), suite%separation(k, ip))
          end do
       end do
       if (suite%has_sweep) then
