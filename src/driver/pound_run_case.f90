@@ -279,7 +279,7 @@ contains
          np = 0
          allocate (res%separation(sum([(size(deck%contacts(ic)%floor_left), ic=1, size(deck%contacts))])))
          do ic = 1, size(deck%contacts)
-            associate (c => deck%contacts(ic), b => res%unc%building)
+            associate (c => deck%contacts(ic))
                do k = 1, size(c%floor_left)
                   np = np + 1
                   res%separation(np) = pair_separation(deck, c%left_index, c%right_index, c%floor_left(k), &
