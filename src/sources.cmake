@@ -23,6 +23,8 @@ set(POUND_SOURCES
   # models: band storage, shear building, ground motion
   model/pound_band.f90 model/pound_structure.f90 model/pound_storey_properties.f90
   model/pound_shear_building.f90 model/pound_ground_motion.f90
+  # models: plausibility (period against the code estimate for the height, buckling hint)
+  model/pound_plausibility.f90
   # models: synthetic ground motions (filtered white noise)
   model/pound_synthetic_motion.f90
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)
@@ -53,6 +55,8 @@ set(POUND_SOURCES
   driver/pound_suite_columns.f90 driver/pound_suite.f90
   # outputs: files, HDF5 layer, results file, listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
+  # outputs: the separation rules' listing table and datasets (a run and a suite)
+  output/pound_separation_output.f90
   # outputs: the suite's listing sections and /suite
   output/pound_suite_output.f90 output/pound_suite_columns_output.f90
   # outputs: the engineering summary (terminal, top of the listing, <stem>_summary.csv, root attributes)

@@ -23,7 +23,7 @@ module pound_analysis
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str
+   use pound_strings, only: str, add_warning
    use pound_config, only: analysis_config
    use pound_structure, only: structure_model, building_label => structure_label
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
@@ -845,29 +845,6 @@ contains
          err = 0.0_dp
       end if
    end function audit_error
-
-   !> Append a warning to a list of warnings (e.g. `res%warnings`).
-   pure subroutine add_warning(warnings, text)
-      !> The list (unallocated: empty).
-      character(len=:), allocatable, intent(inout) :: warnings(:)
-      !> One line of text.
-      character(len=*), intent(in) :: text
-      character(len=:), allocatable :: grown(:)
-      integer :: i, n, length
-
-      n = 0
-      length = len(text)
-      if (allocated(warnings)) then
-         n = size(warnings)
-         length = max(length, len(warnings))
-      end if
-      allocate (character(len=length) :: grown(n + 1))
-      do i = 1, n
-         grown(i) = warnings(i)
-      end do
-      grown(n + 1) = text
-      call move_alloc(grown, warnings)
-   end subroutine add_warning
 
    !> Write each warning of a list (e.g. `res%warnings`, `sweep%warnings`) as one line, `prefix`
    !> first (e.g. 'pound: warning: '); nothing for an empty or unallocated list.

@@ -141,7 +141,7 @@ contains
       do i = 1, n_groups
          if (groups(i)%name /= 'ground') cycle
          k = k + 1
-         call read_ground(path, text, groups(i), ng, d%motions(k), error)
+         call read_ground(path, text, groups(i), ng, d%motions(k), error, d%warnings)
          if (allocated(error)) return
          do j = 1, k - 1
             if (d%motions(j)%name == d%motions(k)%name) then
@@ -158,7 +158,7 @@ contains
       do i = 1, n_groups
          if (groups(i)%name /= 'building') cycle
          k = k + 1
-         call read_building(path, text, groups(i), d%buildings(1:k - 1), d%buildings(k), error)
+         call read_building(path, text, groups(i), d%buildings(1:k - 1), d%buildings(k), error, d%warnings)
          if (allocated(error)) return
          if (d%analysis%free_steps == 'exact' .and. is_frame(d%buildings(k))) then
             call fatal_error(error, path//':'//str(groups(i)%line1)//': &building #'//str(k)//' ('// &

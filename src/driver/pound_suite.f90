@@ -45,8 +45,7 @@ module pound_suite
    use pound_spectrum, only: response_spectrum, period_grid, peak_ground_acceleration, &
                              scale_to_pga, scale_to_sa
    use pound_influence, only: influence_coefficient, max_abs_target
-   use pound_separation, only: separation_t, separation_abs, separation_srss, separation_ec8, &
-                               separation_ddc, cqc_correlation, no_contact_gap
+   use pound_separation, only: separation_t, pair_separation, no_contact_gap
    use pound_run_case, only: case_options, case_result, run_case, configured_motion, label_prefix
    use pound_analysis, only: analysis_result, n_energy, analysis_copy, add_warning
    use pound_contact, only: contact_pair, pairs_from_config
@@ -1192,7 +1191,7 @@ contains
       type(case_result) :: res
       integer, allocatable :: left(:), right(:), fl(:), fr(:)
       real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :)
-      real(dp), allocatable :: z(:), sweep_all(:, :, :, :)
+      real(dp), allocatable :: sweep_all(:, :, :, :)
       character(len=:), allocatable :: text
       logical :: targeted(n_target_quantities)
       integer :: nm, nb, k, ib, np, ip, nmax, ig, iq
@@ -1202,12 +1201,11 @@ contains
 
       nm = size(deck%motions)
       nb = size(deck%buildings)
-      allocate (models(nb), kinds(nb), suite%building_period(nb), z(nb))
+      allocate (models(nb), kinds(nb), suite%building_period(nb))
       do ib = 1, nb
          call build_building(deck%buildings(ib), models(ib), kinds(ib), error)
          if (allocated(error)) return
          suite%building_period(ib) = models(ib)%period(1)
-         z(ib) = deck%buildings(ib)%damping_ratio
       end do
       call period_grid(n_spectrum, suite%building_period, suite%period, error)
       if (allocated(error)) return
@@ -1377,7 +1375,8 @@ contains
       end do
       call columns_finish(ctx%used, suite%columns)
       do ip = 1, np
-         call rules(mean_unc(fl(ip), 1, left(ip)), mean_unc(fr(ip), 1, right(ip)), ip, &
+         ! (A point between floors, floor 0, has no peak here: its rules are n/a, `pair_separation`.)
+         call rules(mean_unc(max(fl(ip), 1), 1, left(ip)), mean_unc(max(fr(ip), 1), 1, right(ip)), ip, &
                     suite%separation(nm + 1, ip))
       end do
       if (suite%has_sweep) then
@@ -1404,6 +1403,7 @@ contains
                                                                    suite%refined_gap_motion(k))
          end do
          suite%separation(nm + 1, :)%time_history = time_history_gap(suite%safe_gap_mean, suite%refined_gap_mean)
+         suite%separation%time_history_valid = suite%separation%time_history >= 0.0_dp
       end if
       call sort_failures(suite%failures)
 
@@ -1566,29 +1566,26 @@ contains
          do ip = 1, np
             o2 = motion_offset(ctx, 2, left(ip))
             w = motion_offset(ctx, 2, right(ip))
-            call rules(col(o2 + fl(ip)), col(w + fr(ip)), ip, suite%separation(k, ip))
+            call rules(col(o2 + max(fl(ip), 1)), col(w + max(fr(ip), 1)), ip, suite%separation(k, ip))
             suite%separation(k, ip)%no_contact = col(o + ip)
             suite%separation(nm + 1, ip)%no_contact = suite%separation(nm + 1, ip)%no_contact + &
                                                       suite%separation(k, ip)%no_contact/suite%n_used
          end do
       end subroutine gather
 
-      !> ABS, SRSS, EC8 and DDC of pair ip from the peaks p1, p2 (m).
+      !> The rules of pair ip from the peaks p1, p2 (m) (`pair_separation`), keeping the
+      !> no-contact and time-history gaps already in `sep`.
       subroutine rules(p1, p2, ip, sep)
          real(dp), intent(in) :: p1, p2
          integer, intent(in) :: ip
          type(separation_t), intent(inout) :: sep
-         logical :: coincide
+         real(dp) :: no_contact
 
-         coincide = abs(sum(deck%buildings(left(ip))%height(1:fl(ip))) - &
-                        sum(deck%buildings(right(ip))%height(1:fr(ip)))) <= 1.0e-9_dp
-         sep%abs = separation_abs(p1, p2)
-         sep%srss = separation_srss(p1, p2)
-         sep%ec8 = separation_ec8(p1, p2, coincide)
-         sep%rho = cqc_correlation(suite%building_period(left(ip)), suite%building_period(right(ip)), &
-                                   z(left(ip)), z(right(ip)))
-         sep%ddc = separation_ddc(p1, p2, suite%building_period(left(ip)), &
-                                  suite%building_period(right(ip)), z(left(ip)), z(right(ip)))
+         no_contact = sep%no_contact
+         sep = pair_separation(deck, left(ip), right(ip), fl(ip), fr(ip), p1, p2, &
+                               suite%building_period(left(ip)), suite%building_period(right(ip)))
+         sep%no_contact = no_contact
+         sep%no_contact_valid = .true.
       end subroutine rules
 
    end subroutine run_suite

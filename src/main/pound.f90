@@ -30,7 +30,8 @@ program pound
    use pound_run_case, only: case_options, case_result, run_case, deck_ground_motion
    use pound_suite, only: suite_result, run_suite
    use pound_suite_output, only: write_suite_listing, write_suite_h5
-   use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
+   use pound_separation_output, only: write_run_separation, pair_labels
+   use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, write_warning_lines, &
                             write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
                             write_sweep_column_table, &
                             open_listing, close_listing, write_section
@@ -203,12 +204,14 @@ contains
    subroutine write_h5(file)
       type(h5_file), intent(inout), optional :: file
 
+      if (.not. allocated(res%separation)) allocate (res%separation(0))
       if (res%has_sweep) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file)
+                               res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file, &
+                               separation=res%separation)
       else if (res%has_coupled) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, res%cpl, res%cs, res%influence, file=file)
+                               res%unc, error, res%cpl, res%cs, res%influence, file=file, separation=res%separation)
       else
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
                                res%unc, error, file=file)
@@ -293,18 +296,25 @@ contains
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: err
       integer :: u, ios
+      character(len=:), allocatable :: input_warnings(:)
+      character(len=len(ground_text)) :: suite_ground(1)
 
       call open_listing(path, u, err)
       if (allocated(err)) return
       if (size(deck%motions) > 1) then
-         call write_listing_header(u, deck, [character(len=len(ground_text)) :: motion_heading(suite)//': '// &
-                                             ground_text(1)], summary_text)
-         call write_model_summary(u, res%models, res%buildings)
-         call write_section(u, motion_heading(suite)//': the single-motion results of this motion alone '// &
-                            '(the suite''s answer: Summary above and Ground-motion suite below)')
+         suite_ground(1) = motion_heading(suite)//': '//trim(ground_text(1))
+         call write_listing_header(u, deck, suite_ground, summary_text)
       else
          call write_listing_header(u, deck, ground_text, summary_text)
-         call write_model_summary(u, res%models, res%buildings)
+      end if
+      call write_model_summary(u, res%models, res%buildings)
+      if (res%n_input_warnings > 0) then
+         input_warnings = res%warnings(1:res%n_input_warnings)
+         call write_warning_lines(u, input_warnings)
+      end if
+      if (size(deck%motions) > 1) then
+         call write_section(u, motion_heading(suite)//': the single-motion results of this motion alone '// &
+                            '(the suite''s answer: Summary above and Ground-motion suite below)')
       end if
       call write_peak_tables(u, 'Uncoupled', res%models, res%unc)
       if (.not. res%has_coupled) call write_column_tables(u, res%models, res%buildings, res%unc)
@@ -315,6 +325,8 @@ contains
          call write_column_tables(u, res%models, res%buildings, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
          if (res%has_sweep) call write_sweep_column_table(u, res%models, deck%sweep, res%sweep)
+         if (size(deck%motions) == 1 .and. allocated(res%separation)) &
+            call write_run_separation(u, pair_labels(res%cs), res%separation)
       end if
       if (size(deck%motions) > 1) then
          call write_suite_listing(u, res%models, suite, err, res%cs)

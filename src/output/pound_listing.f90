@@ -28,7 +28,7 @@ module pound_listing
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
    public :: write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables
    public :: write_sweep_column_table
-   public :: listing_io_error, open_listing, close_listing, gap_cell, mm
+   public :: listing_io_error, open_listing, close_listing, gap_cell, mm, write_warning_lines
 
    !> Millimetres per metre: gaps, displacements, drifts and penetrations are listed in mm.
    real(dp), parameter :: mm = 1000.0_dp

@@ -66,6 +66,8 @@ module pound_results_h5
    use pound_influence, only: building_influence
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
+   use pound_separation, only: separation_t
+   use pound_separation_output, only: write_separation_h5, pair_labels
    use pound_cases, only: failure_time_step
    use pound_config, only: sweep_config
    implicit none
@@ -161,7 +163,7 @@ contains
 
    !> Write the whole results file at `path`.
    subroutine write_results_h5(path, deck, models, buildings, ground_text, ag_out, unc, error, cpl, cs, influence, sweep, &
-                               file)
+                               file, separation)
       !> File to create (truncated).
       character(len=*), intent(in) :: path
       !> The deck.
@@ -189,6 +191,9 @@ contains
       !> The file already open (created at `path` before the analyses, holding the streamed
       !> histories): written into and closed.
       type(h5_file), intent(inout), optional :: file
+      !> Separation rules per contact pair (`pound_separation`), written to /separation
+      !> (`write_separation_h5`) for a deck with one motion; none when absent or empty.
+      type(separation_t), intent(in), optional :: separation(:)
       type(h5_file) :: h5
       type(error_type), allocatable :: close_error
       integer :: ib, q
@@ -250,6 +255,11 @@ contains
             end do
          end if
          if (present(sweep)) call write_sweep()
+         if (allocated(error) .or. .not. present(separation)) return
+         if (.not. present(cs)) return
+         if (size(separation) > 0 .and. size(deck%motions) == 1) &
+            call write_separation_h5(h5, '/separation', reshape(separation, [1, size(separation)]), &
+                                     pair_labels(cs), .false., error)
       end subroutine write_all
 
       !> lambda of the member rows by quantity: /influence/<b>/<group>/<name> (n_members).

@@ -52,6 +52,8 @@ module pound_suite_output
    use pound_results_h5, only: write_analysis_h5, write_failed_cases, pair_list
    use pound_cases, only: failure_time_step, case_message_len
    use pound_suite_columns_output, only: write_suite_columns_listing, write_suite_columns_h5
+   use pound_separation_output, only: write_separation_h5, write_separation_head, write_separation_rows, &
+                                      write_separation_legend
    implicit none
    private
 
@@ -188,21 +190,11 @@ contains
       if (allocated(error)) return
 
       call write_section(u, 'Separation rules per contact pair [mm]')
-      write (u, '(a)', iostat=ios, iomsg=msg) '  Applied to the elastic time-history peaks of the '// &
-         'uncoupled runs, without displacement amplification factors.', &
-         '  ABS = u1 + u2, SRSS, EC8 4.4.2.7 (SRSS x 0.7 where floor levels coincide), DDC (CQC rho), ', &
-         '  no-contact gap = max_t (u1(t) - u2(t)) of the stored uncoupled histories (n/a: u not stored).', &
-         '  time_history = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
-         '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
-         '  (n/a: not computed: no &sweep, no target_lambda, or no gap of the range meets it).', &
-         '  The suite row: rules on the mean peaks; no-contact gap: mean over the motions'//over//'.'
+      call write_separation_legend(u, .true.)
+      write (u, '(a)', iostat=ios, iomsg=msg) '  The suite row: rules on the mean peaks; no-contact gap: '// &
+         'mean over the motions'//over//'.'
       do ip = 1, size(suite%separation, 2)
-         write (u, '(/,a)', iostat=ios, iomsg=msg) '  pair '//pair_name(ip)
-         line = '  '//left_cell('motion', wm)
-         do q = 1, size(rule_names)
-            line = line//right_cell(trim(rule_names(q)), 14)
-         end do
-         write (u, '(a)', iostat=ios, iomsg=msg) line
+         call write_separation_head(u, suite_pair_name(ip, cs), 'motion', wm)
          do k = 1, nm + 1
             if (k <= nm) then
                if (suite%motion_failed(k)) then
@@ -210,11 +202,7 @@ contains
                   cycle
                end if
             end if
-            associate (s => suite%separation(k, ip))
-               write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(row_name(k), wm)//gap_cell(s%abs, 14)// &
-                  gap_cell(s%srss, 14)//gap_cell(s%ec8, 14)//gap_cell(s%ddc, 14)//gap_cell(s%no_contact, 14)// &
-                  gap_cell(s%time_history, 14)
-            end associate
+            call write_separation_rows(u, row_name(k), suite%separation(k, ip), wm)
          end do
       end do
       if (suite%has_sweep) then
@@ -312,16 +300,6 @@ contains
       end function es_cell
 
       !> The label of pair ip (`pair_label`), or 'ip' without the contact system.
-      function pair_name(ip) result(name)
-         integer, intent(in) :: ip
-         character(len=:), allocatable :: name
-
-         name = str(ip)
-         if (.not. present(cs)) return
-         if (.not. allocated(cs%pair)) return
-         if (ip <= size(cs%pair)) name = cs%pair(ip)%label
-      end function pair_name
-
       function row_name(k) result(name)
          integer, intent(in) :: k
          character(len=:), allocatable :: name
@@ -418,6 +396,21 @@ contains
                if (allocated(error)) return
             end if
          end if
+         block
+            character(len=:), allocatable :: labels(:)
+            integer :: length, ip
+
+            length = 1
+            do ip = 1, size(suite%separation, 2)
+               length = max(length, len(suite_pair_name(ip, cs)))
+            end do
+            allocate (character(len=length) :: labels(size(suite%separation, 2)))
+            do ip = 1, size(labels)
+               labels(ip) = suite_pair_name(ip, cs)
+            end do
+            call write_separation_h5(h5, '/suite/separation', suite%separation, labels, .true., error)
+         end block
+         if (allocated(error)) return
          call write_histories()
          if (allocated(error) .or. .not. suite%has_sweep) return
          call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error, units='m')
@@ -511,6 +504,22 @@ contains
          end do
       end subroutine write_histories
 
+
    end subroutine write_suite_h5
+
+   !> The label of pair `ip` ('A:3-B:z=7.50m', `pair_label`), or its number without a contact
+   !> system: the separation tables and /suite/separation name the pairs by it.
+   function suite_pair_name(ip, cs) result(name)
+      !> Index of the pair (a column of `suite%separation`).
+      integer, intent(in) :: ip
+      !> The contact system of the deck.
+      type(contact_system), intent(in), optional :: cs
+      character(len=:), allocatable :: name
+
+      name = str(ip)
+      if (.not. present(cs)) return
+      if (.not. allocated(cs%pair)) return
+      if (ip <= size(cs%pair)) name = cs%pair(ip)%label
+   end function suite_pair_name
 
 end module pound_suite_output

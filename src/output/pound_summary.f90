@@ -30,7 +30,7 @@ module pound_summary
    use pound_response, only: q_u, q_shear
    use pound_run_case, only: case_result
    use pound_suite, only: suite_result
-   use pound_separation, only: separation_t, separation_rules, no_contact_gap
+   use pound_separation, only: separation_t, no_contact_gap
    implicit none
    private
 
@@ -305,7 +305,15 @@ contains
          end if
          if (gap >= 0.0_dp) where = 'sweep threshold (one gap for every joint)'
          call th_item(p, gap, where)
-         call pair_rules(res, ip, sep, have, why)
+         have = .false.
+         why = 'the separation rules were not computed'
+         if (allocated(res%separation)) then
+            if (ip <= size(res%separation)) then
+               sep = res%separation(ip)
+               have = sep%computed
+               why = 'the pair is between floors: its peak displacement is not kept'
+            end if
+         end if
          if (have) then
             call rule_items(p, sep, .true., 'uncoupled peaks of the facing floors')
          else
@@ -327,24 +335,36 @@ contains
          end if
       end subroutine th_item
 
-      !> ABS, SRSS, EC8, DDC (mm) and rho of pair p (`have` false: n/a, `where` says why).
+      !> The code separations of pair p in mm (ABS, SRSS, DDC of the elastic peaks; ASCE 7, EN 1998
+      !> and IS 1893 with the buildings' factors, n/a where a factor is not given) and the DDC's
+      !> rho (`have` false: all n/a, `where` says why).
       subroutine rule_items(p, sep, have, where)
          character(len=*), intent(in) :: p
          type(separation_t), intent(in) :: sep
          logical, intent(in) :: have
          character(len=*), intent(in) :: where
-         character(len=*), parameter :: quantity(4) = [character(len=13) :: 'code_gap_abs', 'code_gap_srss', &
-                                                       'code_gap_ec8', 'code_gap_ddc']
-         character(len=*), parameter :: rule(4) = [character(len=40) :: 'ABS = u1 + u2', 'SRSS', &
-                                                   'EC8 4.4.2.7 (x0.7 where floors coincide)', 'DDC (CQC rho)']
-         real(dp) :: v(4)
+         character(len=*), parameter :: quantity(6) = [character(len=15) :: 'code_gap_abs', 'code_gap_srss', &
+                                                       'code_gap_ddc', 'code_gap_asce7', 'code_gap_en1998', &
+                                                       'code_gap_is1893']
+         character(len=*), parameter :: rule(6) = [character(len=48) :: 'ABS = u1 + u2', 'SRSS', 'DDC (CQC rho)', &
+                                                   'ASCE 7-16 12.12.3 (Cd/Ie)', 'EN 1998-1 4.4.2.7 (q)', &
+                                                   'IS 1893-1 7.11.3 (R)']
+         character(len=*), parameter :: factor(6) = [character(len=20) :: '', '', '', 'cd', 'behaviour_factor', &
+                                                     'response_reduction']
+         real(dp) :: v(6)
+         logical :: valid(6)
          integer :: r
 
-         v = [sep%abs, sep%srss, sep%ec8, sep%ddc]
-         do r = 1, 4
-            if (have) then
+         v = [sep%abs, sep%srss, sep%ddc, sep%asce7, sep%en1998, sep%is1893]
+         valid = [.true., .true., .true., sep%asce7_valid, sep%en1998_valid, sep%is1893_valid]
+         do r = 1, 6
+            if (have .and. valid(r)) then
                call add(item('pair', p, trim(quantity(r)), p//': code gap '//trim(rule(r)), 1000.0_dp*v(r), 'mm', &
-                             where//', elastic, no amplification'))
+                             where))
+            else if (have) then
+               call add(item('pair', p, trim(quantity(r)), p//': code gap '//trim(rule(r)), unit='mm', &
+                             location='&building '//trim(factor(r))//' not given for both buildings', &
+                             available=.false.))
             else
                call add(item('pair', p, trim(quantity(r)), p//': code gap '//trim(rule(r)), unit='mm', &
                              location=where, available=.false.))
@@ -437,55 +457,6 @@ contains
       end associate
       gap = no_contact_gap(h(:, 1), h(:, 2))
    end subroutine pair_no_contact
-
-   !> The code separation rules of pair ip of a single-motion case on the uncoupled peak
-   !> displacements of its facing floors (a rigid neighbour: 0, its period and damping those of
-   !> the building); the one place where the summary calls `pound_separation`'s rules (the
-   !> no-contact gap is `pair_no_contact`'s). `have` is false (and `why` says why) for a pair
-   !> between floors, whose peak the uncoupled run does not keep.
-   subroutine pair_rules(res, ip, sep, have, why)
-      type(case_result), intent(in) :: res
-      integer, intent(in) :: ip
-      type(separation_t), intent(out) :: sep
-      logical, intent(out) :: have
-      character(len=:), allocatable, intent(out) :: why
-      type(error_type), allocatable :: error
-      real(dp) :: u(2), t(2), z(2), level(2)
-      integer :: e, b, other
-
-      have = .false.
-      why = ''
-      associate (pair => res%cs%pair(ip))
-         do e = 1, 2
-            b = pair%building(e)
-            other = pair%building(3 - e)
-            if (b == 0) b = other
-            if (b == 0) then
-               why = 'no building at either end'
-               return
-            end if
-            u(e) = 0.0_dp
-            level(e) = -1.0_dp
-            t(e) = res%models(b)%period(1)
-            z(e) = res%models(b)%damping_ratio
-            if (pair%building(e) == 0) cycle
-            if (pair%floor(e) == 0) then
-               why = 'the pair is between floors: its peak displacement is not kept'
-               return
-            end if
-            u(e) = res%unc%building(b)%peak(pair%floor(e), q_u)
-            level(e) = sum(res%buildings(b)%height(1:pair%floor(e)))
-         end do
-         call separation_rules(u(1), u(2), t(1), t(2), z(1), z(2), &
-                               all(level >= 0.0_dp) .and. abs(level(1) - level(2)) <= 1.0e-9_dp, &
-                               [0.0_dp], [0.0_dp], sep, error)
-      end associate
-      if (allocated(error)) then
-         why = error%message
-         return
-      end if
-      have = .true.
-   end subroutine pair_rules
 
    !> The heading of a suite's single-motion results: 'motion k of n: NAME'.
    pure function motion_heading(suite) result(text)
@@ -661,8 +632,12 @@ contains
             name = 'ABS'
          case ('code_gap_srss')
             name = 'SRSS'
-         case ('code_gap_ec8')
-            name = 'EC8'
+         case ('code_gap_asce7')
+            name = 'ASCE7'
+         case ('code_gap_en1998')
+            name = 'EN1998'
+         case ('code_gap_is1893')
+            name = 'IS1893'
          case ('code_gap_ddc')
             name = 'DDC'
          case ('ddc_rho')
