@@ -101,6 +101,10 @@ module pound_newmark
       !> the terms of the step's energies in the ground acceleration alone, summed over the
       !> modes (6) (`modal_step_coefficients`).
       real(dp), allocatable :: phi(:, :), lam(:), cm(:), coef(:, :)
+      !> Exact free steps of a model with DOFs without mass: the rows giving the coordinates
+      !> (condensed modes and relaxation coordinates) of a state, q = psi^T u (n, n;
+      !> unallocated when every DOF has a mass: q = phi^T M u).
+      real(dp), allocatable :: psi(:, :)
       real(dp) :: ground_terms(6) = 0.0_dp
       !> Exact free steps: modal coordinates and rates now and at the end of the predicted
       !> step, the modal accelerations without the ground term at its end; v and a at its end

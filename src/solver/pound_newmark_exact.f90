@@ -16,19 +16,46 @@ submodule(pound_newmark) pound_newmark_exact
    use pound_band_lapack, only: dsygv
    implicit none
 
+   interface
+      subroutine dpotrf(uplo, n, a, lda, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, lda
+         real(dp), intent(inout) :: a(lda, *)
+         integer, intent(out) :: info
+      end subroutine dpotrf
+      subroutine dtrtrs(uplo, trans, diag, n, nrhs, a, lda, b, ldb, info)
+         import :: dp
+         character, intent(in) :: uplo, trans, diag
+         integer, intent(in) :: n, nrhs, lda, ldb
+         real(dp), intent(in) :: a(lda, *)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dtrtrs
+      subroutine dgemv(trans, m, n, alpha, a, lda, x, incx, beta, y, incy)
+         import :: dp
+         character, intent(in) :: trans
+         integer, intent(in) :: m, n, lda, incx, incy
+         real(dp), intent(in) :: alpha, a(lda, *), x(*), beta
+         real(dp), intent(inout) :: y(*)
+      end subroutine dgemv
+   end interface
+
 contains
 
-   !> The modes of (K+G, M) (dense `dsygv`, mass-normalised) and each mode's step at dt.
+   !> The modes of (K+G, M) (dense `dsygv`, mass-normalised) and each mode's step at dt; with
+   !> DOFs without mass, the modes of the condensed system and the relaxation of the massless
+   !> DOFs' elastic forces (`condensed_modes`).
    module subroutine exact_init(st, b, error)
       !> Integrator state (initialised by `newmark_init`).
       type(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
-      !> Error state: a DOF without mass, too many DOFs, the eigenproblem failed.
+      !> Error state: too many DOFs, no DOF with mass, the eigenproblem failed.
       type(error_type), allocatable, intent(out) :: error
       real(dp), allocatable :: a(:, :), m(:, :), w(:), work(:)
-      real(dp) :: gamma, wi(4, 4), wd(4, 4)
-      integer :: n, i, j, info, stat
+      real(dp) :: gamma, wi(4, 4), wd(4, 4), decay
+      integer :: n, nm, i, j, info, stat
 
       n = st%n
       if (n > exact_max_dofs) then
@@ -37,39 +64,44 @@ contains
                           'the model has '//str(n)//": use free_steps = 'newmark'")
          return
       end if
-      do i = 1, n
-         if (.not. (b%mass(i) > 0.0_dp)) then
-            call fatal_error(error, structure_label(b)//': DOF '//str(i)//' has no mass ('//str(b%mass(i))// &
-                             " t): free_steps = 'exact' needs a mass at every DOF (a frame's rotations have "// &
-                             "none); use free_steps = 'newmark'")
-            return
-         end if
-      end do
-      allocate (a(n, n), m(n, n), w(n), work(max(1, 64*n)), st%phi(n, n), st%lam(n), st%cm(n), st%coef(22, n), &
+      nm = count(b%mass > 0.0_dp)
+      if (nm == 0) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': no DOF has a mass; "// &
+                          "use free_steps = 'newmark'")
+         return
+      end if
+      allocate (w(n), st%phi(n, n), st%lam(n), st%cm(n), st%coef(22, n), &
                 st%q(n), st%qd(n), st%xq(n), st%xqd(n), st%xw(n), st%xv(n), st%xa(n), stat=stat)
+      if (stat == 0 .and. nm < n) allocate (st%psi(n, n), stat=stat)
       if (stat /= 0) then
          call fatal_error(error, structure_label(b)//": free_steps = 'exact': cannot allocate the modes ("// &
                           str(n)//' x '//str(n)//')')
          return
       end if
-      a = 0.0_dp
-      m = 0.0_dp
-      do j = 1, n
-         do i = max(1, j - b%kd), j
-            a(i, j) = b%kt(b%kd + 1 + i - j, j)
+      if (nm == n) then
+         allocate (a(n, n), m(n, n), work(max(1, 64*n)))
+         a = 0.0_dp
+         m = 0.0_dp
+         do j = 1, n
+            do i = max(1, j - b%kd), j
+               a(i, j) = b%kt(b%kd + 1 + i - j, j)
+            end do
+            m(j, j) = b%mass(j)
          end do
-         m(j, j) = b%mass(j)
-      end do
-      call dsygv(1, 'V', 'U', n, a, n, m, n, w, work, size(work), info)
-      if (info /= 0) then
-         call fatal_error(error, structure_label(b)//": free_steps = 'exact': the eigenproblem of (K+G, M) "// &
-                          'failed (dsygv info = '//str(info)//')')
-         return
+         call dsygv(1, 'V', 'U', n, a, n, m, n, w, work, size(work), info)
+         if (info /= 0) then
+            call fatal_error(error, structure_label(b)//": free_steps = 'exact': the eigenproblem of (K+G, M) "// &
+                             'failed (dsygv info = '//str(info)//')')
+            return
+         end if
+         st%phi = a
+      else
+         call condensed_modes(b, nm, st%phi, st%psi, w, error)
+         if (allocated(error)) return
       end if
-      st%phi = a
       st%lam = w
       st%ground_terms = 0.0_dp
-      do i = 1, n
+      do i = 1, nm
          st%cm(i) = b%a0 + b%a1*w(i)
          gamma = sum(st%phi(:, i)*b%mass*b%ground)
          call modal_step_coefficients(w(i), st%cm(i), gamma, st%dt, st%coef(1:8, i), wi, wd)
@@ -83,6 +115,22 @@ contains
                              str(st%dt)//' s')
             return
          end if
+      end do
+      ! The massless DOFs' relaxation coordinates z (g = L z, K_ss = L L^T): z' = -z/a1, so
+      ! z(h) = exp(-h/a1) z(0), z' = -z/a1, z'' = z/a1^2 (lam = 0, cm = 1/a1 give
+      ! xw = -(lam z + cm z') = z/a1^2), and the damping energy of the step is the strain
+      ! energy z^2/2 lost, (1 - exp(-2h/a1)) z(0)^2/2. Without stiffness-proportional damping
+      ! (a1 = 0) the massless rows read g = 0: z drops to 0 and its energy counts as damped.
+      decay = 0.0_dp
+      if (b%a1 > 0.0_dp) decay = exp(-st%dt/b%a1)
+      do i = nm + 1, n
+         st%lam(i) = 0.0_dp
+         st%cm(i) = 0.0_dp
+         if (b%a1 > 0.0_dp) st%cm(i) = 1.0_dp/b%a1
+         st%coef(:, i) = 0.0_dp
+         st%coef(1, i) = decay
+         st%coef(5, i) = -decay*st%cm(i)
+         st%coef(16, i) = 0.5_dp*(1.0_dp - decay*decay)
       end do
       if (.not. all(ieee_is_finite(st%ground_terms))) then
          call fatal_error(error, structure_label(b)//": free_steps = 'exact': the step's energy terms are "// &
@@ -104,6 +152,90 @@ contains
       end function form_terms
    end subroutine exact_init
 
+   !> The exact free step of a model with DOFs without mass (index sets m: mass > 0, s: mass =
+   !> 0; K meaning K+G). With C = a0 M + a1 K and no force at the s DOFs, their rows read
+   !> a1 g' + g = 0, g = K_sm u_m + K_ss u_s their elastic forces, and the m rows reduce
+   !> exactly to M_m u_m'' + (a0 M_m + a1 K_c) u_m' + K_c u_m = -M_m r_m a_g with
+   !> K_c = K_mm - K_ms K_ss^-1 K_sm (the g terms enter as K_ms K_ss^-1 (a1 g' + g) = 0):
+   !> classical damping again. So u = Phi q + S z with n columns: the nm modes of (K_c, M_m)
+   !> (`phi(m, i)` mass-normalised, `phi(s, i)` = -K_ss^-1 K_sm phi(m, i)) and, with
+   !> K_ss = L L^T and g = L z, the ns relaxation coordinates z (`phi(s, nm+k)` = L^-T e_k,
+   !> `phi(m, nm+k)` = 0), which decay as exp(-t/a1). The coordinates of a state are
+   !> psi^T u: `psi(:, i)` = M phi(:, i) for a mode, and for z = L^-1 K_sm u_m + L^T u_s,
+   !> `psi(m, nm+k)` = (L^-1 K_sm)^T e_k, `psi(s, nm+k)` = L e_k. The strain energy is
+   !> u_m^T K_c u_m/2 + z^T z/2 and the damping power v_m^T C_c v_m + a1 g'^T K_ss^-1 g'.
+   subroutine condensed_modes(b, nm, phi, psi, lam, error)
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Number of DOFs with mass (0 < nm < n).
+      integer, intent(in) :: nm
+      !> Shapes and coordinate rows (n, n), see above.
+      real(dp), intent(out) :: phi(:, :), psi(:, :)
+      !> omega^2 of the nm modes (1:nm; the rest 0).
+      real(dp), intent(out) :: lam(:)
+      !> Error state: K_ss not positive definite, the eigenproblem failed.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: k(:, :), kss(:, :), wsm(:, :), tsm(:, :), kc(:, :), mm(:, :), work(:)
+      integer, allocatable :: im(:), is(:)
+      integer :: n, ns, i, j, info
+
+      n = b%n
+      ns = n - nm
+      im = pack([(i, i=1, n)], b%mass > 0.0_dp)
+      is = pack([(i, i=1, n)], .not. (b%mass > 0.0_dp))
+      allocate (k(n, n), mm(nm, nm), work(max(1, 64*nm)))
+      k = 0.0_dp
+      do j = 1, n
+         do i = max(1, j - b%kd), j
+            k(i, j) = b%kt(b%kd + 1 + i - j, j)
+            k(j, i) = k(i, j)
+         end do
+      end do
+      kss = k(is, is)
+      wsm = k(is, im)
+      call dpotrf('L', ns, kss, ns, info)
+      if (info /= 0) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': the stiffness of the "// &
+                          str(ns)//' DOFs without mass is not positive definite (dpotrf info = '//str(info)//')')
+         return
+      end if
+      do j = 1, ns
+         kss(1:j - 1, j) = 0.0_dp
+      end do
+      ! W = L^-1 K_sm, T = K_ss^-1 K_sm = L^-T W, K_c = K_mm - W^T W.
+      call dtrtrs('L', 'N', 'N', ns, nm, kss, ns, wsm, ns, info)
+      tsm = wsm
+      call dtrtrs('L', 'T', 'N', ns, nm, kss, ns, tsm, ns, info)
+      kc = k(im, im) - matmul(transpose(wsm), wsm)
+      mm = 0.0_dp
+      do i = 1, nm
+         mm(i, i) = b%mass(im(i))
+      end do
+      call dsygv(1, 'V', 'U', nm, kc, nm, mm, nm, lam, work, size(work), info)
+      if (info /= 0) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': the eigenproblem of the "// &
+                          'condensed (K+G, M) failed (dsygv info = '//str(info)//')')
+         return
+      end if
+      lam(nm + 1:) = 0.0_dp
+      phi = 0.0_dp
+      psi = 0.0_dp
+      phi(im, 1:nm) = kc
+      phi(is, 1:nm) = -matmul(tsm, kc)
+      do i = 1, nm
+         psi(im, i) = b%mass(im)*kc(:, i)
+      end do
+      ! L^-T: the shapes of the relaxation coordinates.
+      k = 0.0_dp
+      do i = 1, ns
+         k(i, i) = 1.0_dp
+      end do
+      call dtrtrs('L', 'T', 'N', ns, ns, kss, ns, k, n, info)
+      phi(is, nm + 1:n) = k(1:ns, 1:ns)
+      psi(im, nm + 1:n) = transpose(wsm)
+      psi(is, nm + 1:n) = kss
+   end subroutine condensed_modes
+
    !> Predict the step exactly: the modal coordinates at its end, du, v and a at its end, and
    !> its input work and damping energy (committed by `newmark_commit`).
    module subroutine newmark_predict_exact(st, b, ag_old, ag_new)
@@ -120,7 +252,15 @@ contains
          return
       end if
       n = st%n
-      if (.not. st%modal_valid) call modal_state(n, st%phi, b%mass, st%u, st%v, st%q, st%qd)
+      if (.not. st%modal_valid) then
+         if (allocated(st%psi)) then
+            ! With DOFs without mass: q = psi^T u, q' = psi^T v (`condensed_modes`).
+            call dgemv('T', n, n, 1.0_dp, st%psi, n, st%u, 1, 0.0_dp, st%q, 1)
+            call dgemv('T', n, n, 1.0_dp, st%psi, n, st%v, 1, 0.0_dp, st%qd, 1)
+         else
+            call modal_state(n, st%phi, b%mass, st%u, st%v, st%q, st%qd)
+         end if
+      end if
       associate (g => st%ground_terms)
          st%x_input = (g(1)*ag_old + g(2)*ag_new)*ag_old + g(3)*ag_new*ag_new
          st%x_damping = (g(4)*ag_old + g(5)*ag_new)*ag_old + g(6)*ag_new*ag_new
