@@ -39,6 +39,7 @@ module pound_analysis
                             joint_history, joint_history_init, joint_history_record, contact_swap_step, &
                             contact_may_act, lcp_solver_lemke, contact_track_closing, contact_track_paths
    use pound_deck_variables, only: max_substeps
+   use pound_contact_period, only: joint_half_period
    implicit none
    private
 
@@ -257,7 +258,8 @@ contains
    end subroutine coupled_prepare
 
    !> Substeps per impact step: `impact_substeps` when given, else the least m for which
-   !> dt/m is at most the shortest contact half-period of the joints divided by
+   !> dt/m is at most the shortest contact half-period of the joints (`joint_half_period`: the
+   !> facing masses, or for an end without mass its condensed mass and point stiffness) divided by
    !> `substeps_per_half_period` (`substeps_per_half_period_exact` with exact free steps; at
    !> least 2, at most `max_substeps`).
    integer function impact_substeps_of(cfg, models, cs) result(m)
@@ -276,7 +278,7 @@ contains
       end if
       half = huge(1.0_dp)
       do k = 1, cs%m
-         half = min(half, contact_half_period(cs%pair(k), models))
+         half = min(half, joint_half_period(cs%pair(k), models))
       end do
       per_half = substeps_per_half_period
       if (cfg%free_steps == 'exact') per_half = substeps_per_half_period_exact

@@ -16,6 +16,10 @@ submodule(pound_newmark) pound_newmark_exact
    use pound_band_lapack, only: dsygv
    implicit none
 
+   !> Modal coordinates (sqrt(kJ)-like: q^2/2 is an energy in kJ), rates and accelerations
+   !> below this are set to zero with DOFs without mass (`flush_negligible`).
+   real(dp), parameter :: negligible = 1.0e-100_dp
+
    interface
       subroutine dpotrf(uplo, n, a, lda, info)
          import :: dp
@@ -267,9 +271,27 @@ contains
       end associate
       call modal_kernel(n, st%coef, st%lam, st%cm, st%q, st%qd, ag_old, ag_new, st%xq, st%xqd, st%xw, &
                         st%x_input, st%x_damping)
+      ! With DOFs without mass the relaxation coordinates (and, where the ground is still, the
+      ! over-damped stiff modes) decay by exp(-h/a1) a step and would go subnormal, which
+      ! slows every product with them many times: below `negligible` they are zero.
+      if (allocated(st%psi)) call flush_negligible(n, st%xq, st%xqd, st%xw)
       call shape_kernel(n, st%phi, st%xq, st%xqd, st%xw, st%u, b%ground, ag_new, st%du, st%xv, st%xa)
       st%pending = .true.
    end subroutine newmark_predict_exact
+
+   !> Coordinates below `negligible` in magnitude (and their rates and accelerations when
+   !> they are too) set to zero.
+   pure subroutine flush_negligible(n, xq, xqd, xw)
+      integer, intent(in) :: n
+      real(dp), intent(inout) :: xq(n), xqd(n), xw(n)
+      integer :: i
+
+      do i = 1, n
+         if (abs(xq(i)) < negligible) xq(i) = 0.0_dp
+         if (abs(xqd(i)) < negligible) xqd(i) = 0.0_dp
+         if (abs(xw(i)) < negligible) xw(i) = 0.0_dp
+      end do
+   end subroutine flush_negligible
 
    !> q = Phi^T M u, q' = Phi^T M v (mass-normalised modes).
    pure subroutine modal_state(n, phi, mass, u, v, q, qd)
