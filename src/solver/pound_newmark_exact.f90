@@ -104,6 +104,7 @@ contains
          if (allocated(error)) return
       end if
       st%lam = w
+      st%nm = nm
       st%ground_terms = 0.0_dp
       do i = 1, nm
          st%cm(i) = b%a0 + b%a1*w(i)
@@ -344,6 +345,7 @@ contains
          xa(j) = -ground(j)*ag1
       end do
       do i = 1, n
+         !GCC$ vector
          do j = 1, n
             du(j) = du(j) + phi(j, i)*xq(i)
             xv(j) = xv(j) + phi(j, i)*xqd(i)
@@ -366,6 +368,27 @@ contains
       st%u = st%u + st%du
       st%v = st%xv
       st%a = st%xa
+      if (allocated(st%psi)) then
+         ! DOFs without mass: the energies from the coordinates (kinetic q'^T q'/2 of the
+         ! modes, strain (sum omega^2 q^2 + z^T z)/2), and C v, (K+G) u, (K+G) v only when
+         ! a Newmark step needs them (`band_stale`): no band product in a run of exact steps.
+         associate (nm => st%nm, n => st%n)
+            st%kinetic = 0.5_dp*sum(st%xqd(1:nm)**2)
+            st%strain = 0.5_dp*(sum(st%lam(1:nm)*st%xq(1:nm)**2) + sum(st%xq(nm + 1:n)**2))
+         end associate
+         st%band_stale = .true.
+         st%pending = .false.
+         st%q = st%xq
+         st%qd = st%xqd
+         st%modal_valid = .true.
+         st%input_work = st%input_work + st%x_input
+         st%damping_energy = st%damping_energy + st%x_damping
+         if (present(w_in) .and. present(e_out)) then
+            w_in = w_in + st%input_work
+            e_out = e_out + ((st%kinetic + st%strain) + st%damping_energy)
+         end if
+         return
+      end if
       ! C v, (K+G) u and v, the kinetic and strain energy of the new state, as for any state
       ! put in (then the modal coordinates are the step's).
       call newmark_set_state(st, b)
