@@ -378,20 +378,11 @@ contains
          end associate
          st%band_stale = .true.
          st%pending = .false.
-         st%q = st%xq
-         st%qd = st%xqd
-         st%modal_valid = .true.
-         st%input_work = st%input_work + st%x_input
-         st%damping_energy = st%damping_energy + st%x_damping
-         if (present(w_in) .and. present(e_out)) then
-            w_in = w_in + st%input_work
-            e_out = e_out + ((st%kinetic + st%strain) + st%damping_energy)
-         end if
-         return
+      else
+         ! C v, (K+G) u and v, the kinetic and strain energy of the new state, as for any state
+         ! put in (then the modal coordinates are the step's).
+         call newmark_set_state(st, b)
       end if
-      ! C v, (K+G) u and v, the kinetic and strain energy of the new state, as for any state
-      ! put in (then the modal coordinates are the step's).
-      call newmark_set_state(st, b)
       st%q = st%xq
       st%qd = st%xqd
       st%modal_valid = .true.
