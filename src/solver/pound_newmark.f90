@@ -25,7 +25,9 @@
 !> acceleration linear over the step (`pound_modal_step`). `newmark_predict_exact` predicts the
 !> step exactly (du, and the v and a at its end) instead of by average acceleration; the next
 !> `newmark_commit` completes it, unless the caller drops it (`newmark_drop_exact`, a step in
-!> which a joint acts) and predicts by Newmark instead. Submodule pound_newmark_exact.
+!> which a joint acts) and predicts by Newmark instead. DOFs without mass are condensed
+!> statically, their elastic forces relaxing as exp(-t/a1) (exact as well). Submodule
+!> pound_newmark_exact.
 module pound_newmark
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp

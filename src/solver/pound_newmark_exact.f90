@@ -6,6 +6,11 @@
 !> from u, v again after steps that were not exact. A step costs O(n^2) (the modes' shapes),
 !> hence `exact_max_dofs`.
 !>
+!> DOFs without mass (a frame's rotations, split column nodes) are condensed statically and
+!> their elastic forces relax as exp(-t/a1) (`condensed_modes`): the same kernels then step
+!> the nm modes of the condensed system and the ns relaxation coordinates, the coordinates of
+!> a state are psi^T u, and a run of exact steps forms no band product (`band_stale`).
+!>
 !> Per mode, `coef(:, i)` holds: 1:4 and 5:8 the end q and q' against x = (q0, q0', a_g0, a_g1);
 !> 9:15 the input work and 16:22 the damping energy against the products (q0^2, q0 q0',
 !> q0'^2, q0 a_g0, q0 a_g1, q0' a_g0, q0' a_g1) (the forms' off-diagonal terms doubled); the
