@@ -37,7 +37,8 @@ module pound_analysis
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record, contact_swap_step, &
-                            contact_may_act, lcp_solver_lemke, contact_track_closing, contact_track_paths
+                            contact_may_act, contact_carries_force, lcp_solver_lemke, contact_track_closing, &
+                            contact_track_paths
    use pound_deck_variables, only: max_substeps
    use pound_contact_period, only: joint_half_period
    implicit none
@@ -425,7 +426,7 @@ contains
       integer(int64) :: c0, c1, rate, write_ticks
       real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, track, exact, plain
+      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded
       integer :: newmark_steps
 
       nb = size(models)
@@ -479,10 +480,16 @@ contains
          t = real(step, dp)*cfg%dt
          ag_old = ag(step - 1)
          ag_new = ag(step)
+         ! A joint carrying force at the start makes the step Newmark's (below): its exact
+         ! prediction, which would be dropped, is not made.
+         loaded = .false.
+         if (exact .and. coupled .and. .not. track) loaded = contact_carries_force(cs)
          if (exact) then
-            do ib = 1, nb
-               call newmark_predict_exact(st(ib), models(ib), ag_old, ag_new)
-            end do
+            if (.not. loaded) then
+               do ib = 1, nb
+                  call newmark_predict_exact(st(ib), models(ib), ag_old, ag_new)
+               end do
+            end if
          else if (.not. plain) then
             do ib = 1, nb
                call newmark_predict(st(ib), models(ib), ag_new - ag_old)
@@ -499,7 +506,7 @@ contains
          n_sub = 1
          if (impact .or. (exact .and. coupled)) then
             if (track) call contact_track_paths(cs, st)
-            if (contact_may_act(cs, st)) then
+            if (loaded .or. contact_may_act(cs, st)) then
                newmark_steps = newmark_steps + 1
                if (impact) then
                   n_sub = sub%m

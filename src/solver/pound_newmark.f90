@@ -109,9 +109,9 @@ module pound_newmark
       !> formed again, `band_state`, before a Newmark step needs them).
       integer :: nm = 0
       logical :: band_stale = .false.
-      !> Exact free steps of a model with DOFs without mass: the rows giving the coordinates
-      !> (condensed modes and relaxation coordinates) of a state, q = psi^T u (n, n;
-      !> unallocated when every DOF has a mass: q = phi^T M u).
+      !> Exact free steps of a model with DOFs without mass: psi^T, whose rows give the
+      !> coordinates (condensed modes and relaxation coordinates) of a state, q = psi^T u
+      !> (n, n; unallocated when every DOF has a mass: q = phi^T M u).
       real(dp), allocatable :: psi(:, :)
       real(dp) :: ground_terms(6) = 0.0_dp
       !> Exact free steps: modal coordinates and rates now and at the end of the predicted

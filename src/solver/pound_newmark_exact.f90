@@ -41,13 +41,6 @@ submodule(pound_newmark) pound_newmark_exact
          real(dp), intent(inout) :: b(ldb, *)
          integer, intent(out) :: info
       end subroutine dtrtrs
-      subroutine dgemv(trans, m, n, alpha, a, lda, x, incx, beta, y, incy)
-         import :: dp
-         character, intent(in) :: trans
-         integer, intent(in) :: m, n, lda, incx, incy
-         real(dp), intent(in) :: alpha, a(lda, *), x(*), beta
-         real(dp), intent(inout) :: y(*)
-      end subroutine dgemv
    end interface
 
 contains
@@ -107,6 +100,8 @@ contains
       else
          call condensed_modes(b, nm, st%phi, st%psi, w, error)
          if (allocated(error)) return
+         ! Held transposed: q = psi^T u is then a sum of columns (`coordinate_kernel`).
+         st%psi = transpose(st%psi)
       end if
       st%lam = w
       st%nm = nm
@@ -265,8 +260,7 @@ contains
       if (.not. st%modal_valid) then
          if (allocated(st%psi)) then
             ! With DOFs without mass: q = psi^T u, q' = psi^T v (`condensed_modes`).
-            call dgemv('T', n, n, 1.0_dp, st%psi, n, st%u, 1, 0.0_dp, st%q, 1)
-            call dgemv('T', n, n, 1.0_dp, st%psi, n, st%v, 1, 0.0_dp, st%qd, 1)
+            call coordinate_kernel(n, st%psi, st%u, st%v, st%q, st%qd)
          else
             call modal_state(n, st%phi, b%mass, st%u, st%v, st%q, st%qd)
          end if
@@ -298,6 +292,24 @@ contains
          if (abs(xw(i)) < negligible) xw(i) = 0.0_dp
       end do
    end subroutine flush_negligible
+
+   !> q = psi^T u, q' = psi^T v from psi^T held as `psit` (n, n), column by column.
+   pure subroutine coordinate_kernel(n, psit, u, v, q, qd)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: psit(n, n), u(n), v(n)
+      real(dp), intent(out) :: q(n), qd(n)
+      integer :: i, j
+
+      q = 0.0_dp
+      qd = 0.0_dp
+      do j = 1, n
+         !GCC$ vector
+         do i = 1, n
+            q(i) = q(i) + psit(i, j)*u(j)
+            qd(i) = qd(i) + psit(i, j)*v(j)
+         end do
+      end do
+   end subroutine coordinate_kernel
 
    !> q = Phi^T M u, q' = Phi^T M v (mass-normalised modes).
    pure subroutine modal_state(n, phi, mass, u, v, q, qd)
