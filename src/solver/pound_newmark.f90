@@ -113,6 +113,8 @@ module pound_newmark
       !> coordinates (condensed modes and relaxation coordinates) of a state, q = psi^T u
       !> (n, n; unallocated when every DOF has a mass: q = phi^T M u).
       real(dp), allocatable :: psi(:, :)
+      !> The largest entry of each relaxation coordinate's column of phi (n - nm).
+      real(dp), allocatable :: zscale(:)
       real(dp) :: ground_terms(6) = 0.0_dp
       !> Exact free steps: modal coordinates and rates now and at the end of the predicted
       !> step, the modal accelerations without the ground term at its end; v and a at its end

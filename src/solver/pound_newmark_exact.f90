@@ -24,6 +24,9 @@ submodule(pound_newmark) pound_newmark_exact
    !> Modal coordinates (sqrt(kJ)-like: q^2/2 is an energy in kJ), rates and accelerations
    !> below this are set to zero with DOFs without mass (`flush_negligible`).
    real(dp), parameter :: negligible = 1.0e-100_dp
+   !> Relaxation coordinates adding less than this fraction of the largest |u|, |v|, |a| to
+   !> the state are set to zero (`relaxed`; below the round-off of the state).
+   real(dp), parameter :: relaxed_below = 1.0e-18_dp
 
    interface
       subroutine dpotrf(uplo, n, a, lda, info)
@@ -102,6 +105,7 @@ contains
          if (allocated(error)) return
          ! Held transposed: q = psi^T u is then a sum of columns (`coordinate_kernel`).
          st%psi = transpose(st%psi)
+         st%zscale = [(maxval(abs(st%phi(:, i))), i=nm + 1, n)]
       end if
       st%lam = w
       st%nm = nm
@@ -250,7 +254,7 @@ contains
       type(structure_model), intent(in) :: b
       !> Ground acceleration at the start and the end of the step (m/s^2).
       real(dp), intent(in), value :: ag_old, ag_new
-      integer :: n
+      integer :: n, ncol
 
       if (.not. st%exact) then
          call newmark_predict(st, b, ag_new - ag_old)
@@ -274,10 +278,39 @@ contains
       ! With DOFs without mass the relaxation coordinates (and, where the ground is still, the
       ! over-damped stiff modes) decay by exp(-h/a1) a step and would go subnormal, which
       ! slows every product with them many times: below `negligible` they are zero.
-      if (allocated(st%psi)) call flush_negligible(n, st%xq, st%xqd, st%xw)
-      call shape_kernel(n, st%phi, st%xq, st%xqd, st%xw, st%u, b%ground, ag_new, st%du, st%xv, st%xa)
+      ! Once the relaxation coordinates add less than `relaxed_below` of the largest u, v, a
+      ! (or are 0, as in a run without joints acting) they are 0 and their columns are left out.
+      ncol = n
+      if (allocated(st%psi)) then
+         call flush_negligible(n, st%xq, st%xqd, st%xw)
+         if (relaxed(st)) then
+            st%xq(st%nm + 1:n) = 0.0_dp
+            st%xqd(st%nm + 1:n) = 0.0_dp
+            st%xw(st%nm + 1:n) = 0.0_dp
+            ncol = st%nm
+         end if
+      end if
+      call shape_kernel(n, ncol, st%phi, st%xq, st%xqd, st%xw, st%u, b%ground, ag_new, st%du, st%xv, st%xa)
       st%pending = .true.
    end subroutine newmark_predict_exact
+
+   !> Whether every relaxation coordinate at the end of the predicted step, z, z' and z'', times
+   !> its column's largest entry, is below `relaxed_below` of the largest |u|, |v|, |a| now.
+   pure logical function relaxed(st)
+      type(newmark_state), intent(in) :: st
+      real(dp) :: umax, vmax, amax, s
+      integer :: k
+
+      relaxed = .false.
+      umax = relaxed_below*maxval(abs(st%u))
+      vmax = relaxed_below*maxval(abs(st%v))
+      amax = relaxed_below*maxval(abs(st%a))
+      do k = st%nm + 1, st%n
+         s = st%zscale(k - st%nm)
+         if (abs(st%xq(k))*s > umax .or. abs(st%xqd(k))*s > vmax .or. abs(st%xw(k))*s > amax) return
+      end do
+      relaxed = .true.
+   end function relaxed
 
    !> Coordinates below `negligible` in magnitude (and their rates and accelerations when
    !> they are too) set to zero.
@@ -349,9 +382,10 @@ contains
       end do
    end subroutine modal_kernel
 
-   !> u, v, a at the end from the modes: du = Phi q - u, v = Phi q', a = Phi w - r a_g.
-   pure subroutine shape_kernel(n, phi, xq, xqd, xw, u, ground, ag1, du, xv, xa)
-      integer, intent(in) :: n
+   !> u, v, a at the end from the modes: du = Phi q - u, v = Phi q', a = Phi w - r a_g (the first
+   !> `ncol` columns; the others' coordinates are 0).
+   pure subroutine shape_kernel(n, ncol, phi, xq, xqd, xw, u, ground, ag1, du, xv, xa)
+      integer, intent(in) :: n, ncol
       real(dp), intent(in) :: phi(n, n), xq(n), xqd(n), xw(n), u(n), ground(n), ag1
       real(dp), intent(out) :: du(n), xv(n), xa(n)
       integer :: i, j
@@ -361,7 +395,7 @@ contains
          xv(j) = 0.0_dp
          xa(j) = -ground(j)*ag1
       end do
-      do i = 1, n
+      do i = 1, ncol
          !GCC$ vector
          do j = 1, n
             du(j) = du(j) + phi(j, i)*xq(i)
