@@ -40,6 +40,8 @@ set(POUND_SOURCES
   contact/pound_contact_law.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
   contact/pound_joint_state.f90 contact/pound_lcp_statistics.f90 contact/pound_contact_lcp.f90
   contact/pound_contact.f90
+  # contact: the contact half-period of a joint (substep count), ends without mass condensed
+  contact/pound_contact_period.f90
   contact/pound_lcp_enumerate.f90
   contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep

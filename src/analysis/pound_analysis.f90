@@ -37,8 +37,10 @@ module pound_analysis
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record, contact_swap_step, &
-                            contact_may_act, lcp_solver_lemke, contact_track_closing, contact_track_paths
+                            contact_may_act, contact_carries_force, lcp_solver_lemke, contact_track_closing, &
+                            contact_track_paths
    use pound_deck_variables, only: max_substeps
+   use pound_contact_period, only: joint_half_period
    implicit none
    private
 
@@ -257,7 +259,8 @@ contains
    end subroutine coupled_prepare
 
    !> Substeps per impact step: `impact_substeps` when given, else the least m for which
-   !> dt/m is at most the shortest contact half-period of the joints divided by
+   !> dt/m is at most the shortest contact half-period of the joints (`joint_half_period`: the
+   !> facing masses, or for an end without mass its condensed mass and point stiffness) divided by
    !> `substeps_per_half_period` (`substeps_per_half_period_exact` with exact free steps; at
    !> least 2, at most `max_substeps`).
    integer function impact_substeps_of(cfg, models, cs) result(m)
@@ -276,7 +279,7 @@ contains
       end if
       half = huge(1.0_dp)
       do k = 1, cs%m
-         half = min(half, contact_half_period(cs%pair(k), models))
+         half = min(half, joint_half_period(cs%pair(k), models))
       end do
       per_half = substeps_per_half_period
       if (cfg%free_steps == 'exact') per_half = substeps_per_half_period_exact
@@ -423,7 +426,7 @@ contains
       integer(int64) :: c0, c1, rate, write_ticks
       real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, track, exact, plain
+      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded
       integer :: newmark_steps
 
       nb = size(models)
@@ -477,10 +480,16 @@ contains
          t = real(step, dp)*cfg%dt
          ag_old = ag(step - 1)
          ag_new = ag(step)
+         ! A joint carrying force at the start makes the step Newmark's (below): its exact
+         ! prediction, which would be dropped, is not made.
+         loaded = .false.
+         if (exact .and. coupled .and. .not. track) loaded = contact_carries_force(cs)
          if (exact) then
-            do ib = 1, nb
-               call newmark_predict_exact(st(ib), models(ib), ag_old, ag_new)
-            end do
+            if (.not. loaded) then
+               do ib = 1, nb
+                  call newmark_predict_exact(st(ib), models(ib), ag_old, ag_new)
+               end do
+            end if
          else if (.not. plain) then
             do ib = 1, nb
                call newmark_predict(st(ib), models(ib), ag_new - ag_old)
@@ -497,7 +506,7 @@ contains
          n_sub = 1
          if (impact .or. (exact .and. coupled)) then
             if (track) call contact_track_paths(cs, st)
-            if (contact_may_act(cs, st)) then
+            if (loaded .or. contact_may_act(cs, st)) then
                newmark_steps = newmark_steps + 1
                if (impact) then
                   n_sub = sub%m

@@ -77,6 +77,7 @@ module pound_contact
    public :: contact_system, contact_init, contact_init_flexibility
    public :: contact_step, contact_solve, contact_commit, contact_update
    public :: contact_swap_step, contact_may_act, contact_track_closing, contact_track_paths
+   public :: contact_carries_force
    public :: residual_limit, fallback_max_rows, initial_hinges
    public :: lcp_solver_auto, lcp_solver_lemke
    ! Re-exported: the constraint definitions, the joints' state and the LCP statistics.
@@ -405,6 +406,23 @@ contains
       call move_alloc(other%as, cs%as)
       call move_alloc(ta, other%as)
    end subroutine contact_swap_step
+
+   !> Whether a joint (not fractured) carries force at the start of the step: then it can act
+   !> in the step (`contact_may_act` is true) whatever the step's prediction.
+   pure logical function contact_carries_force(cs) result(carries)
+      !> The contact system.
+      type(contact_system), intent(in) :: cs
+      integer :: k
+
+      carries = .false.
+      do k = 1, cs%m
+         if (cs%joint(k)%fractured) cycle
+         if (cs%joint(k)%r > 0.0_dp) then
+            carries = .true.
+            return
+         end if
+      end do
+   end function contact_carries_force
 
    !> Whether a joint can act in the step predicted in `states` (after `newmark_predict`,
    !> before `contact_step`): one carries force at the start, or one would close with every

@@ -60,7 +60,7 @@
 !> `deck.nml:14: &building #2 (B): n_columns(5) = 0, must be >= 1`
 !> (line of the variable's assignment, or of the group start when the variable is missing).
 module pound_deck
-   use pound_config, only: building_config, contact_config, deck_type, is_frame
+   use pound_config, only: building_config, contact_config, deck_type
    use pound_kinds, only: dp
    use pound_deck_analysis, only: read_analysis
    use pound_deck_building, only: read_building
@@ -160,13 +160,6 @@ contains
          k = k + 1
          call read_building(path, text, groups(i), d%buildings(1:k - 1), d%buildings(k), error, d%warnings)
          if (allocated(error)) return
-         if (d%analysis%free_steps == 'exact' .and. is_frame(d%buildings(k))) then
-            call fatal_error(error, path//':'//str(groups(i)%line1)//': &building #'//str(k)//' ('// &
-                             d%buildings(k)%name//"): model = 'frame' has DOFs without mass (the "// &
-                             "rotations), and &analysis free_steps = 'exact' needs a mass at every DOF; "// &
-                             "use free_steps = 'newmark' or shear buildings")
-            return
-         end if
       end do
       allocate (d%contacts(count([(groups(i)%name == 'contact', i=1, n_groups)])))
       k = 0
