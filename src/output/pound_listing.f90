@@ -448,7 +448,7 @@ contains
             call note_io()
             if (p%law%restitution > 0.0_dp) then
                write (u, '(4x,a,f6.3,a)', iostat=ios, iomsg=msg) 'c calibrated to the restitution e =', &
-                  p%law%restitution, ' (exact relation of the joint, README)'
+                  p%law%restitution, ' (exact relation of the joint: docs/verification.md)'
                call note_io()
             end if
             call law_parameters(p%law)
@@ -886,7 +886,7 @@ contains
                end if
             end do
          end do
-         if (cfg%target > 0.0_dp) line = line//merge('     met', '        ', res%meets(i))
+         if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
       end do
