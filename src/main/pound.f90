@@ -357,9 +357,8 @@ contains
       text = program_name//' '//program_version//': '//deck%analysis%title//new_line('a')
       associate (models => res%models, unc => res%unc, cpl => res%cpl, cs => res%cs, sweep => res%sweep)
          do ib = 1, size(models)
-            write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', size(models(ib)%floor_dof), &
-               ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
-            text = text//trim(line)//new_line('a')
+            text = text//'  building '//models(ib)%name//': '//counted(size(models(ib)%floor_dof), 'storey')// &
+                   ', T1 = '//trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.)))//' s'//new_line('a')
          end do
          do i = 1, size(summary_text)
             text = text//'  '//trim(summary_text(i))//new_line('a')
@@ -368,10 +367,10 @@ contains
             ' s, energy balance error ', unc%energy_error
          text = text//trim(line)//new_line('a')
          if (res%has_coupled) then
-            write (line, '(a,es10.3,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
-               ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%joint(:)%impacts), ' impacts, ', &
-               cs%stats%pivots_total, ' LCP pivots'
-            text = text//trim(line)//new_line('a')
+            write (line, '(a,es10.3,a,es9.2,a)') '  coupled integration:   ', cpl%seconds, &
+               ' s, energy balance error ', cpl%energy_error, ', '
+            text = text//trim(line)//' '//counted(sum(cs%joint(:)%impacts), 'impact')//', '// &
+                   counted(cs%stats%pivots_total, 'LCP pivot')//new_line('a')
             write (line, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
                ' s, LCP solves ', cs%stats%solves + cs%stats%active_solves - cs%stats%active_fallbacks, &
                ', pivots max ', cs%stats%pivots_max, ', steps ', cpl%n_steps

@@ -4,7 +4,7 @@
 !> and reported by `listing_io_error`, which the caller asks after the last write.
 module pound_listing
    use pound_kinds, only: dp
-   use pound_strings, only: fixed_cell, left_cell, right_cell
+   use pound_strings, only: counted, fixed_cell, left_cell, right_cell
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_error, only: error_type, fatal_error
    use pound_posix, only: posix_set_errno, posix_storage_error
@@ -224,8 +224,8 @@ contains
             if (allocated(s%frame)) then
                call write_frame_summary(u, b, s)
             else
-               write (u, '(/,a,i0,a,a)', iostat=ios, iomsg=msg) &
-                  '  Building '//b%name//': ', b%n, ' storeys, P-Delta ', trim(pd)
+               write (u, '(/,a)', iostat=ios, iomsg=msg) &
+                  '  Building '//b%name//': '//counted(b%n, 'storey')//', P-Delta '//trim(pd)
                call note_io()
                write (u, '(a)', iostat=ios, iomsg=msg) &
                   '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
