@@ -595,7 +595,7 @@ contains
       !> gaps in mm, then a line of notes: what each is based on, or why it is n/a.
       pure subroutine pair_line(first)
          integer, intent(in) :: first
-         character(len=:), allocatable :: text, notes
+         character(len=:), allocatable :: text, notes, factor
          integer :: k
 
          text = 'pair '//trim(items(first)%subject)//', gaps [mm]:'
@@ -606,6 +606,11 @@ contains
             associate (p => items(k))
                if (k > first .and. p%quantity /= 'ddc_rho') text = text//','
                text = text//' '//short_name(p%quantity)//' '//value_text(p, decimals(p%unit))
+               ! A code rule that is n/a for want of a factor names it: 'IS1893 n/a (needs response_reduction)'.
+               if (.not. p%available .and. index(p%location, '&building ') == 1) then
+                  factor = p%location(len('&building ') + 1:)
+                  text = text//' (needs '//factor(1:index(factor, ' ') - 1)//')'
+               end if
                if (p%quantity == 'ddc_rho') text = text//')'
                if (p%quantity == 'no_contact_gap' .or. p%quantity == 'time_history_gap') then
                   if (len(notes) > 0) notes = notes//'; '

@@ -6,6 +6,7 @@
 # - a suite's sweep lines give a gap in mm, or `n/a (why)` only when there is none
 #   (tests/data/small_suite.nml, and the same with a range whose every gap misses the target);
 # - a suite's no-contact gap in the summary is labelled as the suite mean over the motions;
+# - a code rule that is n/a for want of a factor names it on the summary's pair line;
 # - a warning names the sweep's worst gap in mm (small_suite: 10 mm, not 1.0000000E-2 m).
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
 
@@ -34,6 +35,8 @@ expect_contains("suite listing" "${listing}" "  smallest gap meeting the target 
 expect_contains("suite listing" "${listing}" "  smallest gap meeting the target on every motion: 70.000 mm\n")
 expect_contains("suite listing" "${listing}" "  refined by bisection (mean, every motion): 68.164 mm, 68.252 mm (tolerance 0.0100 mm)\n")
 expect_contains("suite summary" "${s_out}" "(no-contact: suite mean over the motions of each motion's max_t (u1 - u2) of its uncoupled histories;")
+# A code rule that is n/a for want of a factor names the factor on the pair line.
+expect_contains("suite summary" "${s_out}" "DDC 28.4628, ASCE7 n/a (needs cd), EN1998 n/a (needs behaviour_factor), IS1893 n/a (needs response_reduction) (DDC rho 0.007)")
 expect_contains("suite warning" "${s_out}" "at 3 of 9 gaps; the worst, gap = 10 mm: energy audit")
 string(FIND "${s_out}" "E-2 m" pos)
 expect_equal("a gap in metres on the terminal" -1 "${pos}")
