@@ -32,6 +32,8 @@ run_pound(s small_suite.nml -o met)
 expect_equal("small_suite exit (${s_err})" 0 "${s_rc}")
 file(READ ${WORK_DIR}/met/small_suite.out listing)
 expect_contains("suite listing" "${listing}" "  smallest gap meeting the target on the mean: 70.000 mm\n")
+# The separation legend says which factors to enter with unreduced records.
+expect_contains("suite listing" "${listing}" "(equal displacements): then enter factors 1 (docs/manual.md, Design-code separation rules).")
 expect_contains("suite listing" "${listing}" "  smallest gap meeting the target on every motion: 70.000 mm\n")
 expect_contains("suite listing" "${listing}" "  refined by bisection (mean, every motion): 68.164 mm, 68.252 mm (tolerance 0.0100 mm)\n")
 expect_contains("suite summary" "${s_out}" "(no-contact: suite mean over the motions of each motion's max_t (u1 - u2) of its uncoupled histories;")
