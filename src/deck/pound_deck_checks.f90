@@ -9,7 +9,7 @@ module pound_deck_checks
    use pound_deck_variables, only: findloc_name, join, max_columns
    use pound_error, only: error_type, fatal_error
    use pound_kinds, only: dp
-   use pound_strings, only: short_real, str
+   use pound_strings, only: counted, short_real, str
    implicit none
    private
 
@@ -294,7 +294,7 @@ contains
 
       if (k == n) return
       if (k == 0) then
-         call fail(at, var, var//' is missing; give n_storeys = '//str(n)//' values', error)
+         call fail(at, var, var//' is missing; give '//values_text(n)//' (n_storeys = '//str(n)//')', error)
       else if (k == 1) then
          call fail(at, var, var//' has 1 value, must have n_storeys = '//str(n)// &
                    ' (repeat equal values: '//str(n)//'*value)', error)
@@ -430,11 +430,7 @@ contains
       integer, intent(in) :: k
       character(len=:), allocatable :: s
 
-      if (k == 1) then
-         s = '1 value'
-      else
-         s = str(k)//' values'
-      end if
+      s = counted(k, 'value')
    end function values_text
 
    !> `history`: blank/comma separated quantities, 'all' or 'none'; blank means all. With
