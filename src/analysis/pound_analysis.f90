@@ -23,7 +23,7 @@ module pound_analysis
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str, add_warning
+   use pound_strings, only: str, add_warning, mm_text
    use pound_config, only: analysis_config
    use pound_structure, only: structure_model, building_label => structure_label
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
@@ -943,7 +943,7 @@ contains
             if (ieee_is_finite(e(i))) cycle
             call fatal_error(error, building_label(models(ib))//': the '//trim(energy_names(i))// &
                              ' energy is not finite at t = '//str(t)//' s (step '//str(step)//') ('// &
-                             str(e(i))//' kJ, largest |u| '//str(maxval(abs(newmark_u(st(ib)))))//' m)'//hint)
+                             str(e(i))//' kJ, largest |u| '//mm_text(maxval(abs(newmark_u(st(ib)))))//')'//hint)
             return
          end do
       end do

@@ -23,7 +23,7 @@ module pound_sweep
    use iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_strings, only: str
+   use pound_strings, only: mm_text, str
    use pound_config, only: analysis_config, sweep_config, n_target_quantities
    use pound_structure, only: structure_model
    use pound_ground_motion, only: ground_motion_t
@@ -312,7 +312,7 @@ contains
       n_bad = 0
       worst = 0.0_dp
       do i = 1, sweep%n_gaps
-         names(i) = 'gap sweep, gap = '//str(res%gap(i))//' m'
+         names(i) = 'gap sweep, gap = '//mm_text(res%gap(i))
       end do
       if (all(table%failed)) then
          call first_failure(table, names, error)
@@ -327,7 +327,7 @@ contains
                n_bad = n_bad + 1
                if (col(nl + 2) > worst) then
                   worst = col(nl + 2)
-                  worst_text = 'gap = '//str(res%gap(i))//' m: '//column_to_text(col(nl + 5:))
+                  worst_text = 'gap = '//mm_text(res%gap(i))//': '//column_to_text(col(nl + 5:))
                end if
             end if
             res%impacts(i) = nint(col(nl + 1))

@@ -54,7 +54,7 @@ module pound_contact
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str
+   use pound_strings, only: mm_text, str
    use pound_newmark, only: newmark_state, newmark_solve, newmark_n, newmark_dt, newmark_predicted, &
                             newmark_u_at, newmark_add_response, newmark_path
    use pound_structure, only: structure_model, structure_end_dof
@@ -649,8 +649,8 @@ contains
          if (cs%joint(k)%fractured .or. ieee_is_finite(cs%q(k))) cycle
          call fatal_error(error, 'contact '//cs%pair(k)%label//': the step''s LCP data is not finite at t = '// &
                           str(t)//' s (step '//str(step)//'): predicted closing displacement '// &
-                          str(v_pred(k))//' m, joint compression '//str(cs%joint(k)%d)//' m, rate '// &
-                          str(cs%joint(k)%ddot)//' m/s, plastic penetration '//str(cs%joint(k)%plastic)//' m')
+                          mm_text(v_pred(k))//', joint compression '//mm_text(cs%joint(k)%d)//', rate '// &
+                          str(cs%joint(k)%ddot)//' m/s, plastic penetration '//mm_text(cs%joint(k)%plastic))
          return
       end do
       qnorm = max(qnorm, tiny(1.0_dp))

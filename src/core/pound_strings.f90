@@ -7,7 +7,7 @@ module pound_strings
    private
 
    public :: str, number_end, decimal_exponent, is_digit, shorten, short_real, fixed_cell, fit_with_suffix, left_cell, right_cell
-   public :: add_warning, plain_real
+   public :: add_warning, plain_real, counted, mm_text
 
    !> Shortest readable text of a number.
    interface str
@@ -284,6 +284,34 @@ contains
 
       cell = repeat(' ', max(1, w - len(text)))//text
    end function right_cell
+
+   !> A count with its noun, singular for 1: counted(1, 'motion') = '1 motion', counted(3,
+   !> 'failed case') = '3 failed cases' (the plural adds 's').
+   pure function counted(n, noun) result(s)
+      !> The count.
+      integer, intent(in) :: n
+      !> The noun in the singular.
+      character(len=*), intent(in) :: noun
+      character(len=:), allocatable :: s
+
+      s = str_int(n)//' '//noun
+      if (n /= 1) s = s//'s'
+   end function counted
+
+   !> A length given in m, for messages in mm (as the listing shows gaps, displacements and
+   !> penetrations): `plain_real(1000 x)//' mm'`, e.g. mm_text(0.01) = '10 mm'; a value that is
+   !> not finite as `str` gives it ('NaN mm', 'Infinity mm').
+   pure function mm_text(x) result(s)
+      !> The length (m).
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: s
+
+      if (ieee_is_nan(x) .or. abs(x) > huge(x)) then
+         s = str_real(x)//' mm'
+      else
+         s = plain_real(1000.0_dp*x)//' mm'
+      end if
+   end function mm_text
 
    !> `x` for messages in plain decimals: 7 significant digits, trailing zeros dropped ('12',
    !> '0.04', '1.25') when 1e-4 <= |x| < 1e7; otherwise as `str` ('1.000000E-5').

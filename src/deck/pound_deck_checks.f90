@@ -1,5 +1,5 @@
 !> Checks of the values a group's reader got from its namelist: required, types, lengths,
-!> rules (> 0, >= ...), the plausible ranges of `bounds` (README: Input bounds), and the
+!> rules (> 0, >= ...), the plausible ranges of `bounds` (docs/manual.md: Input bounds), and the
 !> message format `deck.nml:LINE: &group #k (name): text` (`site`, `fail`).
 module pound_deck_checks
    use, intrinsic :: iso_fortran_env, only: int64
@@ -9,7 +9,7 @@ module pound_deck_checks
    use pound_deck_variables, only: findloc_name, join, max_columns
    use pound_error, only: error_type, fatal_error
    use pound_kinds, only: dp
-   use pound_strings, only: short_real, str
+   use pound_strings, only: counted, short_real, str
    implicit none
    private
 
@@ -27,6 +27,10 @@ module pound_deck_checks
    !> Marks namelist integers the deck did not give.
    integer, parameter :: unset_int = -huge(1)
 
+   !> Where a refusal for a value outside its plausible range sends the user: the file that
+   !> holds the whole table of bounds (the README only summarises it).
+   character(len=*), parameter :: bounds_where = ' (see the input bounds in docs/manual.md, "Input bounds")'
+
    !> Where a message points: deck, group occurrence and its label.
    type :: site
       !> Deck path as given.
@@ -37,7 +41,7 @@ module pound_deck_checks
       type(group_ref) :: group
    end type site
 
-   !> Plausible engineering range of a deck variable (README: Input bounds).
+   !> Plausible engineering range of a deck variable (docs/manual.md: Input bounds).
    type :: bound_t
       !> 'group:variable'.
       character(len=28) :: key
@@ -270,7 +274,7 @@ contains
          end if
          if (raw(i) > max_columns) then
             call fail(at, var, var//'('//str(i)//') = '//str(raw(i))//', outside the plausible '// &
-                      'range: must be <= '//str(max_columns)//' (see the input bounds in the README)', error)
+                      'range: must be <= '//str(max_columns)//bounds_where, error)
             return
          end if
       end do
@@ -290,7 +294,7 @@ contains
 
       if (k == n) return
       if (k == 0) then
-         call fail(at, var, var//' is missing; give n_storeys = '//str(n)//' values', error)
+         call fail(at, var, var//' is missing; give '//values_text(n)//' (n_storeys = '//str(n)//')', error)
       else if (k == 1) then
          call fail(at, var, var//' has 1 value, must have n_storeys = '//str(n)// &
                    ' (repeat equal values: '//str(n)//'*value)', error)
@@ -405,11 +409,11 @@ contains
       what = what//' must be in '//short_real(lo)//'..'//short_real(hi)//unit
       if (present(line_of)) then
          call fail(at, line_of, shown//' = '//str(x)//unit//', outside the plausible range: '// &
-                   what//' (see the input bounds in the README)', error)
+                   what//bounds_where, error)
          return
       end if
       call fail(at, var, shown//' = '//str(x)//unit//', outside the plausible range: '//what// &
-                ' (see the input bounds in the README)', error)
+                bounds_where, error)
    end subroutine check_plausible
 
    !> Whether the deck gave `x` (it is not the `unset_real` marker; safe for NaN).
@@ -426,11 +430,7 @@ contains
       integer, intent(in) :: k
       character(len=:), allocatable :: s
 
-      if (k == 1) then
-         s = '1 value'
-      else
-         s = str(k)//' values'
-      end if
+      s = counted(k, 'value')
    end function values_text
 
    !> `history`: blank/comma separated quantities, 'all' or 'none'; blank means all. With

@@ -44,7 +44,7 @@ program pound
    use pound_memory, only: estimate_memory, memory_available, memory_refusal
    use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror, &
                           posix_sleep
-   use pound_strings, only: fixed_cell, str
+   use pound_strings, only: counted, fixed_cell, str
    use pound_analysis, only: substep_text, exact_text
    use pound_response, only: discard_sink
    use pound_progress, only: progress_setup, progress_start, progress_finish, progress_auto, progress_on, &
@@ -161,7 +161,7 @@ program pound
    ! (A suite of one motion writes no /suite: its failed gaps are those of its own sweep.)
    if (size(deck%motions) > 1) then
       if (size(suite%failures) > 0) then
-         call stop_with(str(size(suite%failures))//' cases of the suite failed ('// &
+         call stop_with(counted(size(suite%failures), 'case')//' of the suite failed ('// &
                         str(count(suite%motion_failed))//' of '//str(size(suite%names))// &
                         ' motions left out of the suite statistics; named in '//outputs%listing//' and '// &
                         outputs%h5//' /suite/failed); the other results were written', failed_cases_status)
@@ -357,9 +357,8 @@ contains
       text = program_name//' '//program_version//': '//deck%analysis%title//new_line('a')
       associate (models => res%models, unc => res%unc, cpl => res%cpl, cs => res%cs, sweep => res%sweep)
          do ib = 1, size(models)
-            write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', size(models(ib)%floor_dof), &
-               ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
-            text = text//trim(line)//new_line('a')
+            text = text//'  building '//models(ib)%name//': '//counted(size(models(ib)%floor_dof), 'storey')// &
+                   ', T1 = '//trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.)))//' s'//new_line('a')
          end do
          do i = 1, size(summary_text)
             text = text//'  '//trim(summary_text(i))//new_line('a')
@@ -368,10 +367,10 @@ contains
             ' s, energy balance error ', unc%energy_error
          text = text//trim(line)//new_line('a')
          if (res%has_coupled) then
-            write (line, '(a,es10.3,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
-               ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%joint(:)%impacts), ' impacts, ', &
-               cs%stats%pivots_total, ' LCP pivots'
-            text = text//trim(line)//new_line('a')
+            write (line, '(a,es10.3,a,es9.2,a)') '  coupled integration:   ', cpl%seconds, &
+               ' s, energy balance error ', cpl%energy_error, ', '
+            text = text//trim(line)//' '//counted(sum(cs%joint(:)%impacts), 'impact')//', '// &
+                   counted(cs%stats%pivots_total, 'LCP pivot')//new_line('a')
             write (line, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
                ' s, LCP solves ', cs%stats%solves + cs%stats%active_solves - cs%stats%active_fallbacks, &
                ', pivots max ', cs%stats%pivots_max, ', steps ', cpl%n_steps
@@ -402,9 +401,9 @@ contains
       end associate
       if (size(deck%motions) > 1) then
          if (size(suite%failures) > 0) then
-            write (line, '(a,i0,a,i0,a,i0,a)') '  suite: ', size(suite%names), ' motions, statistics over ', &
-               suite%n_used, ', ', size(suite%failures), ' failed cases (FAILED in the listing)'
-            text = text//trim(line)//new_line('a')
+            text = text//'  suite: '//counted(size(suite%names), 'motion')//', statistics over '// &
+                   str(suite%n_used)//', '//counted(size(suite%failures), 'failed case')// &
+                   ' (FAILED in the listing)'//new_line('a')
          end if
          if (suite%first > 1) text = text//'  the single-motion results are those of &ground '''// &
                                      trim(suite%names(suite%first))//''' (the first motion run whole that '// &

@@ -4,7 +4,7 @@
 !> and reported by `listing_io_error`, which the caller asks after the last write.
 module pound_listing
    use pound_kinds, only: dp
-   use pound_strings, only: fixed_cell, left_cell, right_cell
+   use pound_strings, only: counted, fixed_cell, left_cell, right_cell
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_error, only: error_type, fatal_error
    use pound_posix, only: posix_set_errno, posix_storage_error
@@ -224,8 +224,8 @@ contains
             if (allocated(s%frame)) then
                call write_frame_summary(u, b, s)
             else
-               write (u, '(/,a,i0,a,a)', iostat=ios, iomsg=msg) &
-                  '  Building '//b%name//': ', b%n, ' storeys, P-Delta ', trim(pd)
+               write (u, '(/,a)', iostat=ios, iomsg=msg) &
+                  '  Building '//b%name//': '//counted(b%n, 'storey')//', P-Delta '//trim(pd)
                call note_io()
                write (u, '(a)', iostat=ios, iomsg=msg) &
                   '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
@@ -448,7 +448,7 @@ contains
             call note_io()
             if (p%law%restitution > 0.0_dp) then
                write (u, '(4x,a,f6.3,a)', iostat=ios, iomsg=msg) 'c calibrated to the restitution e =', &
-                  p%law%restitution, ' (exact relation of the joint, README)'
+                  p%law%restitution, ' (exact relation of the joint: docs/verification.md)'
                call note_io()
             end if
             call law_parameters(p%law)
@@ -886,7 +886,7 @@ contains
                end if
             end do
          end do
-         if (cfg%target > 0.0_dp) line = line//merge('     met', '        ', res%meets(i))
+         if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
          write (u, '(a)', iostat=ios, iomsg=msg) line
          call note_io()
       end do

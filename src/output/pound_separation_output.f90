@@ -74,7 +74,8 @@ contains
          '  IS1893 = IS 1893-1:2016 7.11.3: R1 u1 + R2 u2, x 0.5 where floor levels coincide (n/a '// &
          'without response_reduction);', &
          '  the factors take u as the codes'' elastic displacement under the design action reduced by q, '// &
-         'R or R/Ie: with unreduced records the peak itself is the codes'' estimate (equal displacements).'
+         'R or R/Ie: with unreduced records the peak itself is the codes'' estimate (equal displacements): '// &
+         'then enter factors 1 (docs/manual.md, Design-code separation rules).'
       if (suite) then
          write (u, '(a)', iostat=ios) '  no-contact = max_t (u1(t) - u2(t)) of the uncoupled histories;', &
             '  time-hist. = the threshold gap of the gap sweep (the same gap at every pair): per motion', &

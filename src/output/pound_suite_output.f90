@@ -42,7 +42,7 @@ module pound_suite_output
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_config, only: history_names, n_history_quantities
-   use pound_strings, only: str, left_cell, right_cell, fixed_cell
+   use pound_strings, only: counted, str, left_cell, right_cell, fixed_cell
    use pound_contact, only: contact_system
    use pound_structure, only: structure_model
    use pound_influence, only: building_influence
@@ -87,6 +87,8 @@ contains
       integer, allocatable :: used(:)
       character(len=256) :: msg
       character(len=:), allocatable :: over, line
+      !> Why a safe gap of the suite sweep is n/a.
+      character(len=*), parameter :: none_met = 'no gap of the range meets the target, or no target'
 
       nm = size(suite%names)
       nb = size(models)
@@ -103,7 +105,7 @@ contains
       do ib = 1, nb
          wb = max(wb, len(models(ib)%name))
       end do
-      call write_section(u, 'Ground-motion suite ('//str(nm)//' motions)')
+      call write_section(u, 'Ground-motion suite ('//counted(nm, 'motion')//')')
       write (u, '(a)', iostat=ios, iomsg=msg) '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
          'period of each building (m/s^2); row T1: that period (s)'
       line = '  '//left_cell('motion', wm)//'  scale_factor  PGA [m/s^2]'
@@ -221,13 +223,13 @@ contains
                es_cell(suite%sweep_mean(k), 14)//es_cell(suite%sweep_max(k), 14)
          end do
          write (u, '(a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on the mean: '// &
-            trim(adjustl(gap_cell(suite%safe_gap_mean, 14)))//' mm (n/a: none in the range, or no target)'
+            gap_or_why(suite%safe_gap_mean, none_met)
          write (u, '(a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on every motion: '// &
-            trim(adjustl(gap_cell(suite%safe_gap_every, 14)))//' mm'
+            gap_or_why(suite%safe_gap_every, none_met)
          write (u, '(a)', iostat=ios, iomsg=msg) '  refined by bisection (mean, every motion): '// &
-            trim(adjustl(gap_cell(suite%refined_gap_mean, 14)))//' mm, '// &
-            trim(adjustl(gap_cell(suite%refined_gap_every, 14)))//' mm (tolerance '// &
-            trim(adjustl(fixed_cell(mm*suite%refine_tolerance, 14, 4, .true.)))//' mm; n/a: not refined)'
+            gap_or_why(suite%refined_gap_mean, 'not refined')//', '// &
+            gap_or_why(suite%refined_gap_every, 'not refined')//' (tolerance '// &
+            trim(adjustl(fixed_cell(mm*suite%refine_tolerance, 14, 4, .true.)))//' mm)'
          write (u, '(a,2(1x,i0),a)', iostat=ios, iomsg=msg) '  non-monotone: grid gaps below the safe gap '// &
             'that pass nevertheless (mean, every motion):', suite%non_monotone_mean, suite%non_monotone_every, &
             '  (0: monotone on the grid)'
@@ -282,6 +284,19 @@ contains
          end do
          if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
       end subroutine write_failures
+
+      !> A gap of the suite sweep in mm, or, only when there is none (negative), 'n/a' and why.
+      pure function gap_or_why(gap, why) result(text)
+         real(dp), intent(in) :: gap
+         character(len=*), intent(in) :: why
+         character(len=:), allocatable :: text
+
+         if (gap >= 0.0_dp) then
+            text = trim(adjustl(gap_cell(gap, 14)))//' mm'
+         else
+            text = 'n/a ('//why//')'
+         end if
+      end function gap_or_why
 
       !> Width of the Sa column of building ib: its heading and a blank.
       pure integer function sa_width(ib)

@@ -25,7 +25,7 @@ module pound_summary
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_strings, only: str
+   use pound_strings, only: counted, str
    use pound_config, only: deck_type
    use pound_response, only: q_u, q_shear
    use pound_run_case, only: case_result
@@ -101,7 +101,7 @@ contains
          if (any(res%sweep%failed)) call add(item('failed', 'run', 'failed_sweep_gaps', &
                                                   'failed gaps of the sweep'//motion, &
                                                   real(count(res%sweep%failed), dp), '-', &
-                                                  'of '//str(size(res%sweep%failed))//' gaps'))
+                                                  'of '//counted(size(res%sweep%failed), 'gap')))
       end if
       if (allocated(res%warnings)) then
          do i = 1, size(res%warnings)
@@ -147,7 +147,7 @@ contains
                        'statistics over '//str(s%n_used)))
          if (size(s%failures) > 0) then
             call add(item('suite', 'suite', 'failed_cases', 'failed cases of the suite', real(size(s%failures), dp), &
-                          '-', str(nm - s%n_used)//' motions left out; named in the listing and /suite/failed'))
+                          '-', counted(nm - s%n_used, 'motion')//' left out; named in the listing and /suite/failed'))
          else
             call add(item('suite', 'suite', 'failed_cases', 'failed cases of the suite', 0.0_dp, '-', 'none'))
          end if
@@ -279,7 +279,8 @@ contains
             associate (s => suite%separation(size(suite%names) + 1, ip))
                if (s%no_contact >= 0.0_dp) then
                   call add(item('pair', p, 'no_contact_gap', p//': no-contact gap, mean over the motions', &
-                                1000.0_dp*s%no_contact, 'mm', 'max_t (u1 - u2) of the uncoupled histories'))
+                                1000.0_dp*s%no_contact, 'mm', &
+                                'suite mean over the motions of each motion''s max_t (u1 - u2) of its uncoupled histories'))
                else
                   call add(item('pair', p, 'no_contact_gap', p//': no-contact gap', unit='mm', &
                                 location='the deck''s history stores no u', available=.false.))
@@ -478,14 +479,14 @@ contains
       type(suite_result), intent(in) :: suite
       character(len=:), allocatable :: text
 
-      text = 'suite of '//str(size(suite%names))//' motions'
+      text = 'suite of '//counted(size(suite%names), 'motion')
       if (.not. suite%has_sweep) then
          text = text//': no sweep threshold (no &sweep)'
       else
          text = text//': gap '//gap_text(suite%refined_gap_mean, suite%safe_gap_mean)//' on the mean, '// &
                 gap_text(suite%refined_gap_every, suite%safe_gap_every)//' on every motion'
       end if
-      if (size(suite%failures) > 0) text = text//'; '//str(size(suite%failures))//' failed cases'
+      if (size(suite%failures) > 0) text = text//'; '//counted(size(suite%failures), 'failed case')
 
    contains
 
@@ -594,7 +595,7 @@ contains
       !> gaps in mm, then a line of notes: what each is based on, or why it is n/a.
       pure subroutine pair_line(first)
          integer, intent(in) :: first
-         character(len=:), allocatable :: text, notes
+         character(len=:), allocatable :: text, notes, factor
          integer :: k
 
          text = 'pair '//trim(items(first)%subject)//', gaps [mm]:'
@@ -605,6 +606,11 @@ contains
             associate (p => items(k))
                if (k > first .and. p%quantity /= 'ddc_rho') text = text//','
                text = text//' '//short_name(p%quantity)//' '//value_text(p, decimals(p%unit))
+               ! A code rule that is n/a for want of a factor names it: 'IS1893 n/a (needs response_reduction)'.
+               if (.not. p%available .and. index(p%location, '&building ') == 1) then
+                  factor = p%location(len('&building ') + 1:)
+                  text = text//' (needs '//factor(1:index(factor, ' ') - 1)//')'
+               end if
                if (p%quantity == 'ddc_rho') text = text//')'
                if (p%quantity == 'no_contact_gap' .or. p%quantity == 'time_history_gap') then
                   if (len(notes) > 0) notes = notes//'; '
