@@ -60,7 +60,7 @@
 !> `deck.nml:14: &building #2 (B): n_columns(5) = 0, must be >= 1`
 !> (line of the variable's assignment, or of the group start when the variable is missing).
 module pound_deck
-   use pound_config, only: building_config, contact_config, deck_type
+   use pound_config, only: building_config, contact_config, deck_type, is_frame
    use pound_kinds, only: dp
    use pound_deck_analysis, only: read_analysis
    use pound_deck_building, only: read_building
