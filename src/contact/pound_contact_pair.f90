@@ -10,8 +10,8 @@ module pound_contact_pair
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str
-   use pound_contact_law, only: contact_law, make_elastic, make_elastic_plastic, make_bilinear, &
-                                make_piecewise, make_parabola_cubic, rate_trapezoidal, rate_backward_euler
+   use pound_contact_law, only: contact_law, rate_trapezoidal, rate_backward_euler
+   use pound_law_registry, only: law_from_config
    use pound_config, only: contact_config
    implicit none
    private
@@ -59,19 +59,7 @@ contains
       n = 0
       do i = 1, size(contacts)
          associate (c => contacts(i))
-            select case (c%law)
-            case ('elastic_plastic')
-               call make_elastic_plastic(law, c%stiffness, c%yield_force, c%dashpot, error)
-            case ('bilinear')
-               call make_bilinear(law, c%stiffness, c%yield_force, c%second_slope, c%dashpot, error)
-            case ('piecewise')
-               call make_piecewise(law, c%envelope_d, c%envelope_r, c%dashpot, error)
-            case ('parabola_cubic')
-               call make_parabola_cubic(law, c%stiffness, c%peak_penetration, c%fracture_penetration, &
-                                        c%n_segments, c%dashpot, error)
-            case default
-               call make_elastic(law, c%stiffness, c%dashpot, error)
-            end select
+            call law_from_config(c, law, error)
             if (allocated(error)) then
                error%message = '&contact #'//str(i)//': '//error%message
                return

@@ -6,7 +6,8 @@ module pound_deck_contact
    use pound_deck_checks, only: check_plausible, check_real, fail, given_count, is_set, read_failed, &
                                 require_real, site, site_of, unset_int, unset_real, values_text
    use pound_deck_lexer, only: group_ref, group_text, lower
-   use pound_deck_variables, only: law_names, max_envelope_points, max_pairs, max_segments, word_len
+   use pound_law_registry, only: registered_law_names, law_is_registered, law_reads, law_restitution
+   use pound_deck_variables, only: max_envelope_points, max_pairs, max_segments, word_len
    use pound_envelope_rules, only: check_piecewise_envelope
    use pound_error, only: error_type
    use pound_kinds, only: dp
@@ -151,35 +152,33 @@ contains
       end if
 
       cfg%law = lower(trim(adjustl(law)))
-      select case (cfg%law)
-      case ('elastic', 'elastic_plastic', 'bilinear', 'piecewise', 'parabola_cubic')
-      case ('')
-         call fail(at, 'law', 'law is missing, must be '//law_names, error)
+      if (cfg%law == '') then
+         call fail(at, 'law', 'law is missing, must be '//registered_law_names(), error)
          return
-      case default
-         call fail(at, 'law', "law = '"//trim(adjustl(law))//"', must be "//law_names, error)
+      else if (.not. law_is_registered(cfg%law)) then
+         call fail(at, 'law', "law = '"//trim(adjustl(law))//"', must be "//registered_law_names(), error)
          return
-      end select
+      end if
 
       ! Variables of other laws are an error, not silently ignored.
-      call unused('stiffness', is_set(stiffness), cfg%law == 'piecewise', error)
+      ! Variables of other laws (pound_law_registry: what each law reads) are an error.
+      call unused('stiffness', is_set(stiffness), error)
       if (allocated(error)) return
-      call unused('yield_force', is_set(yield_force), &
-                  cfg%law /= 'elastic_plastic' .and. cfg%law /= 'bilinear', error)
+      call unused('yield_force', is_set(yield_force), error)
       if (allocated(error)) return
-      call unused('second_slope', is_set(second_slope), cfg%law /= 'bilinear', error)
+      call unused('second_slope', is_set(second_slope), error)
       if (allocated(error)) return
-      call unused('envelope_d', given_count(envelope_d) > 0, cfg%law /= 'piecewise', error)
+      call unused('envelope_d', given_count(envelope_d) > 0, error)
       if (allocated(error)) return
-      call unused('envelope_r', given_count(envelope_r) > 0, cfg%law /= 'piecewise', error)
+      call unused('envelope_r', given_count(envelope_r) > 0, error)
       if (allocated(error)) return
-      call unused('peak_force', is_set(peak_force), cfg%law /= 'parabola_cubic', error)
+      call unused('peak_force', is_set(peak_force), error)
       if (allocated(error)) return
-      call unused('peak_penetration', is_set(peak_penetration), cfg%law /= 'parabola_cubic', error)
+      call unused('peak_penetration', is_set(peak_penetration), error)
       if (allocated(error)) return
-      call unused('fracture_penetration', is_set(fracture_penetration), cfg%law /= 'parabola_cubic', error)
+      call unused('fracture_penetration', is_set(fracture_penetration), error)
       if (allocated(error)) return
-      call unused('n_segments', n_segments /= unset_int, cfg%law /= 'parabola_cubic', error)
+      call unused('n_segments', n_segments /= unset_int, error)
       if (allocated(error)) return
 
       select case (cfg%law)
@@ -218,7 +217,7 @@ contains
       end select
 
       if (is_set(restitution)) then
-         if (cfg%law /= 'elastic') then
+         if (.not. law_restitution(cfg%law)) then
             call fail(at, 'restitution', "restitution is only for law = 'elastic' (law = '"//cfg%law// &
                       "'; give the dashpot instead)", error)
             return
@@ -288,13 +287,13 @@ contains
          end do
       end subroutine take_elevations
 
-      !> `var` was given (`given`) although the law does not use it (`not_used`).
-      pure subroutine unused(var, given, not_used, error)
+      !> `var` was given (`given`) although the law does not read it (pound_law_registry).
+      subroutine unused(var, given, error)
          character(len=*), intent(in) :: var
-         logical, intent(in) :: given, not_used
+         logical, intent(in) :: given
          type(error_type), allocatable, intent(out) :: error
 
-         if (given .and. not_used) then
+         if (given .and. .not. law_reads(cfg%law, var)) then
             if (var == 'stiffness') then
                call fail(at, var, "stiffness is not used by law = 'piecewise' (k0 is the slope of "// &
                          'its first segment, envelope_r(1)/envelope_d(1))', error)

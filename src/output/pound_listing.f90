@@ -15,8 +15,8 @@ module pound_listing
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
-   use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic_plastic, &
-                                law_bilinear, law_piecewise, law_parabola_cubic
+   use pound_contact_law, only: contact_law, rate_name
+   use pound_joint_law, only: law_text
    use pound_lemke, only: lemke_status_name
    use pound_influence, only: building_influence
    use pound_config, only: sweep_config
@@ -415,7 +415,7 @@ contains
       do k = 1, cs%m
          associate (p => cs%pair(k))
             write (u, '(2x,a12,es10.3,2x,a16,es13.3,es12.3,2x,a)', iostat=ios, iomsg=msg) &
-               p%label, p%gap, law_name(p%law%kind), &
+               p%label, p%gap, p%law%title(), &
                p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
             call note_io()
             if (p%law%restitution > 0.0_dp) then
@@ -498,35 +498,14 @@ contains
 
       subroutine law_parameters(law)
          type(contact_law), intent(in) :: law
+         type(law_text), allocatable :: lines(:)
          integer :: i
 
-         select case (law%kind)
-         case (law_elastic_plastic)
-            write (u, '(16x,a,es11.4,a)', iostat=ios, iomsg=msg) 'yield force ', law%yield_force, ' kN'
+         lines = law%lines()
+         do i = 1, size(lines)
+            write (u, '(16x,a)', iostat=ios, iomsg=msg) lines(i)%line
             call note_io()
-         case (law_bilinear)
-            write (u, '(16x,a,es11.4,a,es11.4,a)', iostat=ios, iomsg=msg) &
-               'yield force ', law%yield_force, ' kN, second slope ', &
-               law%second_slope, ' kN/m'
-            call note_io()
-         case (law_piecewise)
-            write (u, '(16x,a,i0,a)', iostat=ios, iomsg=msg) &
-               'envelope through ', size(law%env_d), ' points (d [m], r [kN]):'
-            call note_io()
-            write (u, '(16x,4(a,es10.3,a,es10.3,a))', iostat=ios, iomsg=msg) &
-               ('(', law%env_d(i), ', ', law%env_r(i), ') ', &
-               i=1, size(law%env_d))
-            call note_io()
-         case (law_parabola_cubic)
-            write (u, '(16x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)', iostat=ios, iomsg=msg) &
-               'rB = ', law%peak_force, ' kN, dB = ', &
-               law%peak_penetration, ' m, dF = ', law%fracture_penetration, ' m, ', law%n_segments, &
-               ' chords per curved branch'
-            call note_io()
-         end select
-         if (is_plastic(law) .and. law%fractures) write (u, '(16x,a,es11.4,a)', iostat=ios, iomsg=msg) &
-            'fractures at d = ', law%env_d(size(law%env_d)), ' m'
-         call note_io()
+         end do
       end subroutine law_parameters
 
    end subroutine write_contact_summary
