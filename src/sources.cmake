@@ -39,7 +39,7 @@ set(POUND_SOURCES
   contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90
   contact/pound_law_registry.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
   contact/pound_joint_state.f90 contact/pound_lcp_statistics.f90 contact/pound_contact_lcp.f90
-  contact/pound_contact.f90
+  contact/pound_contact_system.f90 contact/pound_contact.f90
   contact/pound_lcp_enumerate.f90
   contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep

@@ -238,10 +238,11 @@ contains
    end function law_title
 
    !> The listing lines of the law's parameters, and the fracture point of a fracturing law.
-   pure function law_lines(law) result(lines)
+   pure subroutine law_lines(law, lines)
       !> The rows.
       class(contact_law), intent(in) :: law
-      type(law_text), allocatable :: lines(:)
+      !> The lines, without the listing's indentation.
+      type(law_text), allocatable, intent(out) :: lines(:)
       character(len=64) :: buf
 
       if (allocated(law%given)) then
@@ -253,7 +254,7 @@ contains
          write (buf, '(a,es11.4,a)') 'fractures at d = ', law%env_d(size(law%env_d)), ' m'
          call add_line(lines, trim(buf))
       end if
-   end function law_lines
+   end subroutine law_lines
 
    !> The envelope as used, (2, n+1) points (d, r) from the origin; (2, 0) without nodes.
    pure function law_envelope_points(law) result(pts)

@@ -501,7 +501,7 @@ contains
          type(law_text), allocatable :: lines(:)
          integer :: i
 
-         lines = law%lines()
+         call law%lines(lines)
          do i = 1, size(lines)
             write (u, '(16x,a)', iostat=ios, iomsg=msg) lines(i)%line
             call note_io()
