@@ -65,10 +65,11 @@ module pound_contact
    use pound_contact_lcp, only: lcp_layout, lcp_assemble, released_opening, lcp_residual
    use pound_lemke, only: lemke_solve, lemke_report, lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
    use pound_lcp_enumerate, only: lcp_enumerate
-   use pound_lcp_active_set, only: active_set_report, active_set_solve, active_set_solved
+   use pound_lcp_active_set, only: active_set_report, active_set_solve, active_set_solved, active_set_init
+   use pound_joint_law, only: max_law_iterations
    use pound_contact_system, only: contact_system, contact_init, contact_init_flexibility, contact_swap_step, &
                                    lcp_workspace, residual_limit, fallback_max_rows, initial_hinges, &
-                                   lcp_solver_auto, lcp_solver_lemke
+                                   lcp_solver_auto, lcp_solver_lemke, joint_constants
    implicit none
    private
 
@@ -280,7 +281,63 @@ contains
 
    !> Solve the step's LCP for the closing displacements `v_pred` (forces released): sets
    !> `cs%r_new` and `cs%x_new`. `v_pred` may be `cs%vp` (not `cs%q`).
+   !>
+   !> Joints whose law iterates (`cs%iterating`, pound_joint_law: none of the piecewise-linear
+   !> family, so the loop below runs once) are re-linearised around each solution and the
+   !> LCP solved again until no law moves its stiffness (at most `max_law_iterations`).
    subroutine contact_solve(cs, v_pred, t, step, error)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+      !> Closing displacement of each constraint if all forces were released (m).
+      real(dp), intent(in) :: v_pred(:)
+      !> Time at the end of the step (s), for messages.
+      real(dp), intent(in) :: t
+      !> Step number, for messages.
+      integer, intent(in) :: step
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: it, i
+
+      ! The constants of an iterating joint follow its current stiffness (after a step swap).
+      do i = 1, size(cs%iterating)
+         call joint_constants(cs, cs%iterating(i))
+      end do
+      do it = 1, max_law_iterations
+         call solve_lcp(cs, v_pred, t, step, error)
+         if (allocated(error)) return
+         if (.not. laws_relinearised(cs)) return
+      end do
+      call fatal_error(error, 'contact at t = '//str(t)//' s (step '//str(step)//'): the linearisation of '// &
+                       'the laws of '//labels(cs, cs%iterating)//' did not settle in '//str(max_law_iterations)// &
+                       ' solves (reduce dt)')
+   end subroutine contact_solve
+
+   !> Re-linearise every iterating joint around the step's last solution (`joint_law%relinearise`,
+   !> with the joint compression the update would give); true when one moved its stiffness
+   !> (then its step constants are rebuilt and the active set's factor is started again).
+   logical function laws_relinearised(cs) result(changed)
+      type(contact_system), intent(inout) :: cs
+      integer :: i, k
+      real(dp) :: d
+      logical :: moved
+
+      changed = .false.
+      do i = 1, size(cs%iterating)
+         k = cs%iterating(i)
+         associate (j => cs%joint(k), law => cs%pair(k)%law)
+            d = (cs%r_new(k) + law%dashpot*(cs%rate_a(k)*j%d + cs%rate_b(k)*j%ddot) + &
+                 law%stiffness*(j%plastic + cs%x_new(k)))/cs%phat(k)
+            call law%given%relinearise(d, cs%r_new(k), law%stiffness, moved)
+         end associate
+         if (.not. moved) cycle
+         call joint_constants(cs, k)
+         changed = .true.
+      end do
+      if (changed) call active_set_init(cs%as, cs%m)
+   end function laws_relinearised
+
+   !> One LCP solve of the step (`contact_solve`).
+   subroutine solve_lcp(cs, v_pred, t, step, error)
       !> The contact system.
       type(contact_system), intent(inout) :: cs
       !> Closing displacement of each constraint if all forces were released (m).
@@ -427,7 +484,7 @@ contains
                           '; constraints '//labels(cs, cs%act(1:na)))
          return
       end if
-   end subroutine contact_solve
+   end subroutine solve_lcp
 
    !> The step's LCP by the active-set method (`pound_lcp_active_set`) when every joint that
    !> can act in it is elastic (a plastic joint carrying force or predicted to close: not

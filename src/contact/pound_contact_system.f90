@@ -20,7 +20,8 @@ module pound_contact_system
    implicit none
    private
 
-   public :: contact_system, column, contact_init, contact_init_flexibility, contact_swap_step, lcp_workspace
+   public :: contact_system, column, contact_init, contact_init_flexibility, contact_swap_step, lcp_workspace, &
+             joint_constants
    public :: residual_limit, fallback_max_rows, initial_hinges, lcp_solver_auto, lcp_solver_lemke
 
 
@@ -95,6 +96,9 @@ module pound_contact_system
       logical :: idle = .false.
       !> Whether each joint's law is a `plain_law` (elastic, no dashpot, not fracturing).
       logical, allocatable :: plain(:)
+      !> The joints whose law iterates (`joint_law%iterates`; none for piecewise-linear laws):
+      !> `contact_solve` re-linearises them and solves again until none moves.
+      integer, allocatable :: iterating(:)
       !> When allocated (`contact_track_closing`): per joint, the largest closing displacement
       !> released of every force that the steps have predicted so far, at the steps' ends
       !> (`contact_step`) and, where `contact_track_paths` is called, inside them (m).
@@ -262,9 +266,7 @@ contains
                cs%rate_a(k) = 1.0_dp/dt
                cs%rate_b(k) = 0.0_dp
             end if
-            cs%phat(k) = law%stiffness + cs%rate_a(k)*law%dashpot
-            cs%beta(k) = law%stiffness/cs%phat(k)
-            cs%phat_inv(k) = 1.0_dp/cs%phat(k)
+            call joint_constants(cs, k)
             if (.not. (ieee_is_finite(cs%phat(k)) .and. ieee_is_finite(1.0_dp/cs%phat(k)))) then
                call fatal_error(error, 'contact '//p%label//': joint stiffness with its dashpot, stiffness + '// &
                                 str(cs%rate_a(k))//' dashpot = '//str(cs%phat(k))//' kN/m from stiffness = '// &
@@ -282,9 +284,11 @@ contains
       cs%yrow = 0
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
-      allocate (cs%ends(4, m), cs%plain(m))
+      allocate (cs%ends(4, m), cs%plain(m), cs%iterating(0))
       do k = 1, m
          cs%plain(k) = plain_law(cs%pair(k)%law)
+         if (.not. allocated(cs%pair(k)%law%given)) cycle
+         if (cs%pair(k)%law%given%iterates()) cs%iterating = [cs%iterating, k]
       end do
       do k = 1, m
          cs%ends(:, k) = [cs%pair(k)%building(1), cs%pair(k)%dof(1), cs%pair(k)%building(2), cs%pair(k)%dof(2)]
@@ -293,6 +297,21 @@ contains
       call active_set_init(cs%as, m)
       call lcp_workspace(cs, cs%n_max, error)
    end subroutine contact_init_flexibility
+
+   !> The step constants of joint k from its law's stiffness k0 and dashpot c and the dashpot
+   !> rate coefficient a: phat = k0 + a c, beta = k0/phat, 1/phat.
+   pure subroutine joint_constants(cs, k)
+      !> The contact system (`rate_a` set).
+      type(contact_system), intent(inout) :: cs
+      !> Joint.
+      integer, intent(in) :: k
+
+      associate (law => cs%pair(k)%law)
+         cs%phat(k) = law%stiffness + cs%rate_a(k)*law%dashpot
+         cs%beta(k) = law%stiffness/cs%phat(k)
+         cs%phat_inv(k) = 1.0_dp/cs%phat(k)
+      end associate
+   end subroutine joint_constants
 
    !> (Re)allocate the LCP work arrays and Lemke's workspace for `n` rows.
    subroutine lcp_workspace(cs, n, error)
