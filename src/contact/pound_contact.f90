@@ -55,7 +55,9 @@ module pound_contact
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_newmark, only: newmark_state, newmark_predicted, newmark_u_at, newmark_add_response, newmark_path
+   use pound_newmark, only: newmark_state, newmark_predicted, newmark_u_at, newmark_add_response, newmark_path, &
+                            newmark_add_response_rows
+   use pound_structure, only: recovery_rows
    use pound_contact_law, only: is_plastic, yield_segment
    use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
    use pound_joint_state, only: joint_state, joints_advance, joints_advance_idle, state_open, &
@@ -138,7 +140,11 @@ contains
       do e = 1, 2
          b = cs%pair(k)%building(e)
          if (b == 0) cycle
-         call newmark_path(states(b), cs%pair(k)%dof(e), u0, v0, am)
+         if (cs%pair(k)%dof(e) > 0) then
+            call newmark_path(states(b), cs%pair(k)%dof(e), u0, v0, am)
+         else
+            call row_path(cs%pair(k)%end_row(e), states(b), u0, v0, am)
+         end if
          c0 = c0 + end_sign(e)*u0
          cv = cv + end_sign(e)*v0
          ca = ca + end_sign(e)*am
@@ -149,6 +155,29 @@ contains
          if (s < h) vmax = max(vmax, c0 + 0.5_dp*cv*s)
       end if
    end function path_closing_max
+
+   !> `newmark_path` of an end that is a row of several DOFs: the row's values of u, v and
+   !> the average acceleration.
+   pure subroutine row_path(row, st, u0, v0, am)
+      type(recovery_rows), intent(in) :: row
+      type(newmark_state), intent(in) :: st
+      real(dp), intent(out) :: u0, v0, am
+      real(dp) :: u, v, a
+      integer :: i
+
+      u0 = 0.0_dp
+      v0 = 0.0_dp
+      am = 0.0_dp
+      do i = row%start(1), row%start(2) - 1
+         call newmark_path(st, row%dof(i), u, v, a)
+         u0 = u0 + row%coef(i)*u
+         v0 = v0 + row%coef(i)*v
+         am = am + row%coef(i)*a
+      end do
+      u0 = row%scale(1)*u0
+      v0 = row%scale(1)*v0
+      am = row%scale(1)*am
+   end subroutine row_path
 
    !> Start recording, per joint, the largest closing displacement the steps predict with
    !> every force released (`closing_max`): at the steps' ends in `contact_step`, inside the
@@ -220,7 +249,14 @@ contains
          do e = 1, 2
             b = cs%pair(k)%building(e)
             if (b == 0) cycle
-            call newmark_add_response(states(b), -(end_sign(e)*dr), cs%pair(k)%dof(e), cs%y(e, k)%x)
+            if (cs%pair(k)%dof(e) > 0) then
+               call newmark_add_response(states(b), -(end_sign(e)*dr), cs%pair(k)%dof(e), cs%y(e, k)%x)
+            else
+               associate (row => cs%pair(k)%end_row(e))
+                  call newmark_add_response_rows(states(b), -(end_sign(e)*dr), row%dof(row%start(1):row%start(2) - 1), &
+                                                 row%scale(1)*row%coef(row%start(1):row%start(2) - 1), cs%y(e, k)%x)
+               end associate
+            end if
          end do
       end do
    end subroutine contact_step
@@ -635,6 +671,15 @@ contains
       integer :: k, b
       real(dp) :: v
 
+      if (cs%general_ends) then
+         do k = 1, cs%m
+            v = 0.0_dp
+            if (cs%ends(1, k) > 0) v = v + row_u(1)
+            if (cs%ends(3, k) > 0) v = v - row_u(2)
+            cs%vp(k) = v
+         end do
+         return
+      end if
       do k = 1, cs%m
          v = 0.0_dp
          b = cs%ends(1, k)
@@ -645,6 +690,25 @@ contains
       end do
 
    contains
+
+      !> The displacement of end e of pair k (its DOF or its row).
+      real(dp) function row_u(e)
+         integer, intent(in) :: e
+         integer :: i, b
+
+         b = cs%ends(2*e - 1, k)
+         if (cs%ends(2*e, k) > 0) then
+            row_u = end_u(states(b), cs%ends(2*e, k))
+            return
+         end if
+         row_u = 0.0_dp
+         associate (row => cs%pair(k)%end_row(e))
+            do i = row%start(1), row%start(2) - 1
+               row_u = row_u + row%coef(i)*end_u(states(b), row%dof(i))
+            end do
+            row_u = row%scale(1)*row_u
+         end associate
+      end function row_u
 
       real(dp) function end_u(st, i)
          type(newmark_state), intent(in) :: st

@@ -71,6 +71,9 @@ module pound_contact_law
       !> The envelope as used, (2, n+1) points (d, r) from the origin; (2, 0) for a law
       !> without yield nodes (the HDF5 writer's `envelope/` datasets).
       procedure :: envelope_points => law_envelope_points
+      !> Set the dashpot from the coefficient of restitution (when one is given) and the
+      !> masses of the two ends (`dashpot_of_restitution`).
+      procedure :: calibrate => law_calibrate
    end type contact_law
 
 contains
@@ -255,6 +258,17 @@ contains
          call add_line(lines, trim(buf))
       end if
    end subroutine law_lines
+
+   !> Set the dashpot from `restitution` (when > 0) and the end masses m1, m2 (t; <= 0: a
+   !> rigid fixed end), by the exact relation of the joint (`dashpot_of_restitution`).
+   pure subroutine law_calibrate(law, m1, m2)
+      !> The rows.
+      class(contact_law), intent(inout) :: law
+      !> Masses of the two ends (t).
+      real(dp), intent(in) :: m1, m2
+
+      if (law%restitution > 0.0_dp) law%dashpot = dashpot_of_restitution(law%restitution, law%stiffness, m1, m2)
+   end subroutine law_calibrate
 
    !> The envelope as used, (2, n+1) points (d, r) from the origin; (2, 0) without nodes.
    pure function law_envelope_points(law) result(pts)

@@ -9,9 +9,9 @@ module pound_contact_system
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_newmark, only: newmark_state, newmark_solve, newmark_n, newmark_dt
-   use pound_structure, only: structure_model, structure_end_dof
-   use pound_contact_law, only: is_plastic, rate_trapezoidal, dashpot_of_restitution
-   use pound_contact_pair, only: contact_pair, end_sign
+   use pound_structure, only: structure_model, structure_end_row
+   use pound_contact_law, only: is_plastic, rate_trapezoidal
+   use pound_contact_pair, only: contact_pair, end_sign, end_value, end_load, end_mass, end_single_dof
    use pound_joint_state, only: joint_state, plain_law
    use pound_lcp_statistics, only: lcp_statistics
    use pound_lemke, only: lemke_workspace, lemke_init
@@ -67,6 +67,9 @@ module pound_contact_system
       !> Each constraint's ends packed for the per-step loops: building and DOF of the left
       !> end (rows 1, 2) and of the right end (rows 3, 4); building 0: rigid (4, m).
       integer, allocatable :: ends(:, :)
+      !> Some end is a row of several DOFs (its `ends` DOF is 0): the per-step loops take
+      !> the rows (`contact_pair%end_row`) instead of the packed DOFs.
+      logical :: general_ends = .false.
       !> Row bookkeeping: constraint of each contact row, row of each joint's yield variable,
       !> modelled segment ends per joint.
       integer, allocatable :: act(:), yrow(:), nh(:)
@@ -131,12 +134,23 @@ contains
          do e = 1, 2
             b = pairs(k)%building(e)
             if (b == 0) cycle
-            located(k)%dof(e) = structure_end_dof(models(b), e, pairs(k)%floor(e), pairs(k)%elevation)
-            if (located(k)%dof(e) == 0) then
-               call fatal_error(error, 'contact '//pairs(k)%label//': building '//models(b)%name// &
-                                ' has no node at the contact point')
-               return
-            end if
+            ! An end given as a row is kept; else the model locates the floor or elevation.
+            if (pairs(k)%end_row(e)%n == 0) located(k)%end_row(e) = structure_end_row(models(b), e, &
+                                                                                     pairs(k)%floor(e), pairs(k)%elevation)
+            associate (row => located(k)%end_row(e))
+               if (row%n /= 1) then
+                  call fatal_error(error, 'contact '//pairs(k)%label//': building '//models(b)%name// &
+                                   ' has no node at the contact point')
+                  return
+               end if
+               if (any(row%dof(row%start(1):row%start(2) - 1) < 1 .or. &
+                       row%dof(row%start(1):row%start(2) - 1) > newmark_n(states(b)))) then
+                  call fatal_error(error, 'contact '//pairs(k)%label//': an end row names a DOF outside '// &
+                                   'building '//models(b)%name//' (1..'//str(newmark_n(states(b)))//')')
+                  return
+               end if
+               located(k)%dof(e) = end_single_dof(row)
+            end associate
          end do
          if (pairs(k)%law%restitution > 0.0_dp) then
             call calibrate_dashpot(located(k), models, error)
@@ -161,7 +175,7 @@ contains
                return
             end if
             y(e, k)%x = 0.0_dp
-            y(e, k)%x(located(k)%dof(e)) = 1.0_dp
+            call end_load(located(k), e, y(e, k)%x)
             call newmark_solve(states(b), y(e, k)%x)
             if (.not. all(ieee_is_finite(y(e, k)%x))) then
                call fatal_error(error, 'contact '//pairs(k)%label//': Khat^{-1} B (the response of the '// &
@@ -171,7 +185,7 @@ contains
             end if
          end do
       end do
-      ! F_kl = sum over ends e of k and g of l on the same building of s_e s_g y(g,l)(floor_e).
+      ! F_kl = sum over ends e of k and g of l on the same building of s_e s_g B_e^T y(g,l).
       do l = 1, m
          do k = 1, m
             f(k, l) = 0.0_dp
@@ -180,7 +194,7 @@ contains
                if (b == 0) cycle
                do g = 1, 2
                   if (pairs(l)%building(g) /= b) cycle
-                  f(k, l) = f(k, l) + end_sign(e)*end_sign(g)*y(g, l)%x(located(k)%dof(e))
+                  f(k, l) = f(k, l) + end_sign(e)*end_sign(g)*end_value(located(k), e, y(g, l)%x)
                end do
             end do
          end do
@@ -214,14 +228,14 @@ contains
       do e = 1, 2
          b = p%building(e)
          if (b == 0) cycle
-         mass(e) = models(b)%mass(p%dof(e))
+         mass(e) = end_mass(p, e, models(b)%mass)
          if (.not. (mass(e) > 0.0_dp)) then
             call fatal_error(error, 'contact '//p%label//': restitution needs the mass of floor '// &
                              str(p%floor(e))//' of '//models(b)%name//', which is '//str(mass(e))//' t')
             return
          end if
       end do
-      p%law%dashpot = dashpot_of_restitution(p%law%restitution, p%law%stiffness, mass(1), mass(2))
+      call p%law%calibrate(mass(1), mass(2))
    end subroutine calibrate_dashpot
 
    !> Set up the joints for a given condensed flexibility F (the structure enters only
@@ -237,7 +251,7 @@ contains
       real(dp), intent(in) :: dt
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: k, m, ns
+      integer :: k, m, ns, e
 
       m = size(pairs)
       cs%m = m
@@ -292,6 +306,10 @@ contains
       end do
       do k = 1, m
          cs%ends(:, k) = [cs%pair(k)%building(1), cs%pair(k)%dof(1), cs%pair(k)%building(2), cs%pair(k)%dof(2)]
+         do e = 1, 2
+            if (cs%ends(2*e - 1, k) > 0 .and. cs%ends(2*e, k) == 0 .and. cs%pair(k)%end_row(e)%n > 0) &
+               cs%general_ends = .true.
+         end do
       end do
       allocate (cs%as)
       call active_set_init(cs%as, m)
