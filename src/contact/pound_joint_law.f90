@@ -37,7 +37,7 @@ module pound_joint_law
    implicit none
    private
 
-   public :: joint_law, law_text, add_line, max_law_iterations
+   public :: joint_law, law_text, law_input, add_line, max_law_iterations
 
    !> Largest number of LCP solves of one step while iterating laws ask for another.
    integer, parameter :: max_law_iterations = 50
@@ -47,6 +47,20 @@ module pound_joint_law
       !> The line, without the listing's indentation.
       character(len=:), allocatable :: line
    end type law_text
+
+   !> The `&contact` variables of the laws as the deck read them (unset values: the deck's
+   !> sentinels, pound_deck_checks `is_set`), handed to the law's deck reader
+   !> (`pound_law_registry`: `law_take_deck`), which checks those it reads.
+   type :: law_input
+      !> Scalars: stiffness k0 (kN/m), yield force (kN), second slope (kN/m), peak force rB
+      !> (kN), peak and fracture penetrations dB, dF (m).
+      real(dp) :: stiffness = 0.0_dp, yield_force = 0.0_dp, second_slope = 0.0_dp, peak_force = 0.0_dp, &
+                  peak_penetration = 0.0_dp, fracture_penetration = 0.0_dp
+      !> Chords per curved branch.
+      integer :: n_segments = 0
+      !> Envelope points as read (the namelist's whole arrays: unset beyond those given).
+      real(dp), allocatable :: envelope_d(:), envelope_r(:)
+   end type law_input
 
    !> A joint law, as described to the listing, the HDF5 writer and the step.
    type, abstract :: joint_law

@@ -6,14 +6,17 @@ module pound_law_bilinear
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_envelope_rules, only: check_law_constants
-   use pound_joint_law, only: joint_law, law_text, add_line
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use pound_joint_law, only: joint_law, law_text, law_input, add_line
    use pound_contact_law, only: contact_law, compile_envelope
    use pound_config, only: contact_config
+   use pound_deck_checks, only: site, require_real, check_real, check_plausible, fail
+   use pound_law_elastic, only: take_stiffness
    implicit none
    private
 
    public :: bilinear_law, make_bilinear, make_elastic_plastic, bilinear_from_config, &
-             elastic_plastic_from_config
+             elastic_plastic_from_config, bilinear_take, elastic_plastic_take
 
    !> Bilinear law: its yield force and second slope as given.
    type, extends(joint_law) :: bilinear_law
@@ -104,6 +107,53 @@ contains
 
       call make_elastic_plastic(law, c%stiffness, c%yield_force, c%dashpot, error)
    end subroutine elastic_plastic_from_config
+
+   !> The deck's variables of law = 'elastic_plastic' (`stiffness`, `yield_force` > 0).
+   pure subroutine elastic_plastic_take(at, raw, cfg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> The law variables as read.
+      type(law_input), intent(in) :: raw
+      !> The group's configuration.
+      type(contact_config), intent(inout) :: cfg
+      !> Error state (the deck's message).
+      type(error_type), allocatable, intent(out) :: error
+
+      call take_stiffness(at, raw, cfg, error)
+      if (allocated(error)) return
+      call require_real(at, 'yield_force', raw%yield_force, 'yield force in kN', error)
+      if (allocated(error)) return
+      call check_real(at, 'yield_force', raw%yield_force, '>', 0.0_dp, error)
+      if (allocated(error)) return
+      cfg%yield_force = raw%yield_force
+   end subroutine elastic_plastic_take
+
+   !> The deck's variables of law = 'bilinear' (those of `elastic_plastic` and
+   !> `second_slope` < stiffness).
+   pure subroutine bilinear_take(at, raw, cfg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> The law variables as read.
+      type(law_input), intent(in) :: raw
+      !> The group's configuration.
+      type(contact_config), intent(inout) :: cfg
+      !> Error state (the deck's message).
+      type(error_type), allocatable, intent(out) :: error
+
+      call elastic_plastic_take(at, raw, cfg, error)
+      if (allocated(error)) return
+      call require_real(at, 'second_slope', raw%second_slope, 'slope after yielding in kN/m, '// &
+                        '< stiffness, negative for softening', error)
+      if (allocated(error)) return
+      if (.not. (raw%second_slope < raw%stiffness .and. ieee_is_finite(raw%second_slope))) then
+         call fail(at, 'second_slope', 'second_slope = '//str(raw%second_slope)//', must be < '// &
+                   'stiffness = '//str(raw%stiffness), error)
+         return
+      end if
+      call check_plausible(at, 'second_slope', raw%second_slope, 'second_slope', error)
+      if (allocated(error)) return
+      cfg%second_slope = raw%second_slope
+   end subroutine bilinear_take
 
    pure function bilinear_name(law) result(name)
       class(bilinear_law), intent(in) :: law

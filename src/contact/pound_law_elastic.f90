@@ -4,13 +4,14 @@ module pound_law_elastic
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_envelope_rules, only: check_law_constants
-   use pound_joint_law, only: joint_law, law_text
+   use pound_joint_law, only: joint_law, law_text, law_input
    use pound_contact_law, only: contact_law
    use pound_config, only: contact_config
+   use pound_deck_checks, only: site, require_real, check_real
    implicit none
    private
 
-   public :: elastic_law, make_elastic, elastic_from_config
+   public :: elastic_law, make_elastic, elastic_from_config, elastic_take, take_stiffness
 
    !> The elastic law (k0 alone: nothing of its own to list).
    type, extends(joint_law) :: elastic_law
@@ -58,6 +59,38 @@ contains
 
       call make_elastic(law, c%stiffness, c%dashpot, error)
    end subroutine elastic_from_config
+
+   !> The deck's `stiffness` (required, > 0) into the group's configuration.
+   pure subroutine take_stiffness(at, raw, cfg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> The law variables as read.
+      type(law_input), intent(in) :: raw
+      !> The group's configuration.
+      type(contact_config), intent(inout) :: cfg
+      !> Error state (the deck's message).
+      type(error_type), allocatable, intent(out) :: error
+
+      call require_real(at, 'stiffness', raw%stiffness, 'joint stiffness k0 in kN/m', error)
+      if (allocated(error)) return
+      call check_real(at, 'stiffness', raw%stiffness, '>', 0.0_dp, error)
+      if (allocated(error)) return
+      cfg%stiffness = raw%stiffness
+   end subroutine take_stiffness
+
+   !> The deck's variables of law = 'elastic' (`stiffness`).
+   pure subroutine elastic_take(at, raw, cfg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> The law variables as read.
+      type(law_input), intent(in) :: raw
+      !> The group's configuration.
+      type(contact_config), intent(inout) :: cfg
+      !> Error state (the deck's message).
+      type(error_type), allocatable, intent(out) :: error
+
+      call take_stiffness(at, raw, cfg, error)
+   end subroutine elastic_take
 
    pure function elastic_name(law) result(name)
       class(elastic_law), intent(in) :: law

@@ -8,13 +8,16 @@ module pound_law_parabola_cubic
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_envelope_rules, only: check_law_constants
-   use pound_joint_law, only: joint_law, law_text, add_line
+   use pound_joint_law, only: joint_law, law_text, law_input, add_line
    use pound_contact_law, only: contact_law, compile_envelope
    use pound_config, only: contact_config
+   use pound_deck_checks, only: site, require_real, check_real, check_plausible, fail, is_set, unset_int
+   use pound_deck_variables, only: max_segments
    implicit none
    private
 
-   public :: parabola_cubic_law, make_parabola_cubic, parabola_cubic_force, parabola_cubic_from_config
+   public :: parabola_cubic_law, make_parabola_cubic, parabola_cubic_force, parabola_cubic_from_config, &
+             parabola_cubic_take
 
    !> The Fig. 1b law: its parameters as given.
    type, extends(joint_law) :: parabola_cubic_law
@@ -115,6 +118,69 @@ contains
          r = 0.0_dp
       end if
    end function parabola_cubic_force
+
+   !> The deck's variables of law = 'parabola_cubic': dB, dF, and k0 or rB (k0 = 2 rB/dB),
+   !> chords per branch.
+   pure subroutine parabola_cubic_take(at, raw, cfg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> The law variables as read.
+      type(law_input), intent(in) :: raw
+      !> The group's configuration.
+      type(contact_config), intent(inout) :: cfg
+      !> Error state (the deck's message).
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: k0
+      integer :: n_segments
+
+      call require_real(at, 'peak_penetration', raw%peak_penetration, 'penetration dB at the peak force, m', &
+                        error)
+      if (allocated(error)) return
+      call check_real(at, 'peak_penetration', raw%peak_penetration, '>', 0.0_dp, error)
+      if (allocated(error)) return
+      call require_real(at, 'fracture_penetration', raw%fracture_penetration, &
+                        'penetration dF at fracture, m', error)
+      if (allocated(error)) return
+      call check_real(at, 'fracture_penetration', raw%fracture_penetration, '>', raw%peak_penetration, error, &
+                      bound_text='peak_penetration = '//str(raw%peak_penetration))
+      if (allocated(error)) return
+      if (is_set(raw%stiffness)) then
+         call check_real(at, 'stiffness', raw%stiffness, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         k0 = raw%stiffness
+         if (is_set(raw%peak_force)) then
+            if (abs(raw%peak_force - 0.5_dp*k0*raw%peak_penetration) > 1.0e-9_dp*raw%peak_force) then
+               call fail(at, 'peak_force', 'peak_force = '//str(raw%peak_force)//' contradicts stiffness = '// &
+                         str(raw%stiffness)//' and peak_penetration = '//str(raw%peak_penetration)// &
+                         ' (the parabola needs stiffness = 2 peak_force/peak_penetration); give one '// &
+                         'of stiffness and peak_force', error)
+               return
+            end if
+         end if
+      else
+         call require_real(at, 'peak_force', raw%peak_force, 'peak force rB in kN, or give stiffness '// &
+                           'k0 = 2 rB/dB', error)
+         if (allocated(error)) return
+         call check_real(at, 'peak_force', raw%peak_force, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         k0 = 2.0_dp*raw%peak_force/raw%peak_penetration
+         call check_plausible(at, 'stiffness', k0, 'k0 = 2 peak_force/peak_penetration', error, &
+                              line_of='peak_force')
+         if (allocated(error)) return
+      end if
+      n_segments = raw%n_segments
+      if (n_segments == unset_int) n_segments = 8
+      if (n_segments < 1 .or. n_segments > max_segments) then
+         call fail(at, 'n_segments', 'n_segments = '//str(n_segments)//', must be 1..'//str(max_segments)// &
+                   ' (chords per curved branch)', error)
+         return
+      end if
+      cfg%stiffness = k0
+      cfg%peak_force = 0.5_dp*k0*raw%peak_penetration
+      cfg%peak_penetration = raw%peak_penetration
+      cfg%fracture_penetration = raw%fracture_penetration
+      cfg%n_segments = n_segments
+   end subroutine parabola_cubic_take
 
    pure function parabola_cubic_name(law) result(name)
       class(parabola_cubic_law), intent(in) :: law

@@ -4,13 +4,16 @@ module pound_law_piecewise
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_envelope_rules, only: check_piecewise_envelope, check_law_constants
-   use pound_joint_law, only: joint_law, law_text, add_line
+   use pound_strings, only: str
+   use pound_joint_law, only: joint_law, law_text, law_input, add_line
    use pound_contact_law, only: contact_law, compile_envelope
    use pound_config, only: contact_config
+   use pound_deck_checks, only: site, check_real, check_plausible, fail, given_count, is_set, values_text
+   use pound_deck_variables, only: max_envelope_points
    implicit none
    private
 
-   public :: piecewise_law, make_piecewise, piecewise_from_config
+   public :: piecewise_law, make_piecewise, piecewise_from_config, piecewise_take
 
    !> Piecewise law: its points as given.
    type, extends(joint_law) :: piecewise_law
@@ -68,6 +71,68 @@ contains
 
       call make_piecewise(law, c%envelope_d, c%envelope_r, c%dashpot, error)
    end subroutine piecewise_from_config
+
+   !> The deck's variables of law = 'piecewise': the envelope points, checked by the law's own
+   !> rules (pound_envelope_rules).
+   pure subroutine piecewise_take(at, raw, cfg, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> The law variables as read.
+      type(law_input), intent(in) :: raw
+      !> The group's configuration.
+      type(contact_config), intent(inout) :: cfg
+      !> Error state (the deck's message).
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: why
+      real(dp) :: k0
+      integer :: nd, nr, j
+
+      nd = given_count(raw%envelope_d)
+      nr = given_count(raw%envelope_r)
+      if (nd < 2) then
+         call fail(at, 'envelope_d', 'envelope_d has '//values_text(nd)//', needs at least 2 '// &
+                   'penetrations (m) of the envelope points after the origin', error)
+         return
+      end if
+      if (nd > max_envelope_points) then
+         call fail(at, 'envelope_d', 'envelope_d has '//values_text(nd)//', must have at most '// &
+                   str(max_envelope_points), error)
+         return
+      end if
+      if (nr /= nd) then
+         call fail(at, 'envelope_r', 'envelope_r has '//values_text(nr)//', envelope_d has '// &
+                   values_text(nd)//'; both need one value per point', error)
+         return
+      end if
+      do j = 1, nd
+         if (.not. is_set(raw%envelope_d(j))) then
+            call fail(at, 'envelope_d', 'envelope_d('//str(j)//') is missing', error)
+            return
+         end if
+         if (.not. is_set(raw%envelope_r(j))) then
+            call fail(at, 'envelope_r', 'envelope_r('//str(j)//') is missing', error)
+            return
+         end if
+         call check_real(at, 'envelope_d', raw%envelope_d(j), '>', 0.0_dp, error, &
+                         name='envelope_d('//str(j)//')')
+         if (allocated(error)) return
+         call check_real(at, 'envelope_r', raw%envelope_r(j), '>=', 0.0_dp, error, &
+                         name='envelope_r('//str(j)//')')
+         if (allocated(error)) return
+      end do
+      call check_piecewise_envelope(raw%envelope_d(1:nd), raw%envelope_r(1:nd), k0, error)
+      if (allocated(error)) then
+         why = error%message
+         call fail(at, 'envelope_r', 'envelope points: '//why, error)
+         return
+      end if
+      cfg%envelope_d = raw%envelope_d(1:nd)
+      cfg%envelope_r = raw%envelope_r(1:nd)
+      call check_plausible(at, 'stiffness', k0, &
+                           'k0 = envelope_r(1)/envelope_d(1)', error, line_of='envelope_r')
+      if (allocated(error)) return
+      cfg%stiffness = k0
+   end subroutine piecewise_take
 
    pure function piecewise_name(law) result(name)
       class(piecewise_law), intent(in) :: law

@@ -8,15 +8,17 @@ module pound_law_registry
    use pound_error, only: error_type, fatal_error
    use pound_config, only: contact_config
    use pound_contact_law, only: contact_law
-   use pound_law_elastic, only: elastic_from_config
-   use pound_law_bilinear, only: bilinear_from_config, elastic_plastic_from_config
-   use pound_law_piecewise, only: piecewise_from_config
-   use pound_law_parabola_cubic, only: parabola_cubic_from_config
+   use pound_joint_law, only: law_input
+   use pound_deck_checks, only: site
+   use pound_law_elastic, only: elastic_from_config, elastic_take
+   use pound_law_bilinear, only: bilinear_from_config, elastic_plastic_from_config, bilinear_take, elastic_plastic_take
+   use pound_law_piecewise, only: piecewise_from_config, piecewise_take
+   use pound_law_parabola_cubic, only: parabola_cubic_from_config, parabola_cubic_take
    implicit none
    private
 
    public :: law_entry, registered_laws, law_from_config, law_is_registered, law_reads, law_restitution, &
-             registered_law_names
+             registered_law_names, law_take_deck
 
    abstract interface
       !> Build the law of a `&contact` group (its parameters already checked by the deck).
@@ -29,6 +31,20 @@ module pound_law_registry
          !> Error state.
          type(error_type), allocatable, intent(out) :: error
       end subroutine law_constructor
+
+      !> Check the law's own `&contact` variables as read and put them into the group's
+      !> configuration (messages name the deck line, group and variable).
+      pure subroutine law_deck_reader(at, raw, cfg, error)
+         import :: site, law_input, contact_config, error_type
+         !> Where messages point.
+         type(site), intent(in) :: at
+         !> The law variables as read.
+         type(law_input), intent(in) :: raw
+         !> The group's configuration.
+         type(contact_config), intent(inout) :: cfg
+         !> Error state.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine law_deck_reader
    end interface
 
    !> One registered law.
@@ -37,6 +53,8 @@ module pound_law_registry
       character(len=24) :: name = ''
       !> Its constructor from the deck's group.
       procedure(law_constructor), pointer, nopass :: make => null()
+      !> Its reader of the deck's variables.
+      procedure(law_deck_reader), pointer, nopass :: take => null()
       !> The `&contact` variables of its own (beside the common ones: left, right, floors,
       !> elevations, gap, law, dashpot, dashpot_rate), blank separated.
       character(len=120) :: reads = ''
@@ -51,11 +69,12 @@ contains
       !> The table.
       type(law_entry), allocatable, intent(out) :: laws(:)
 
-      laws = [law_entry('elastic', elastic_from_config, 'stiffness', .true.), &
-              law_entry('elastic_plastic', elastic_plastic_from_config, 'stiffness yield_force', .false.), &
-              law_entry('bilinear', bilinear_from_config, 'stiffness yield_force second_slope', .false.), &
-              law_entry('piecewise', piecewise_from_config, 'envelope_d envelope_r', .false.), &
-              law_entry('parabola_cubic', parabola_cubic_from_config, &
+      laws = [law_entry('elastic', elastic_from_config, elastic_take, 'stiffness', .true.), &
+              law_entry('elastic_plastic', elastic_plastic_from_config, elastic_plastic_take, &
+                        'stiffness yield_force', .false.), &
+              law_entry('bilinear', bilinear_from_config, bilinear_take, 'stiffness yield_force second_slope', .false.), &
+              law_entry('piecewise', piecewise_from_config, piecewise_take, 'envelope_d envelope_r', .false.), &
+              law_entry('parabola_cubic', parabola_cubic_from_config, parabola_cubic_take, &
                         'stiffness peak_force peak_penetration fracture_penetration n_segments', .false.)]
    end subroutine registered_laws
 
@@ -128,6 +147,29 @@ contains
          s = s//"'"//trim(laws(i)%name)//"'"
       end do
    end function registered_law_names
+
+   !> Check the `&contact` variables of law `name` (registered) as read and put them into the
+   !> group's configuration, by the law's own reader.
+   subroutine law_take_deck(name, at, raw, cfg, error)
+      !> Deck name of the law.
+      character(len=*), intent(in) :: name
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> The law variables as read.
+      type(law_input), intent(in) :: raw
+      !> The group's configuration.
+      type(contact_config), intent(inout) :: cfg
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(law_entry) :: e
+
+      e = law_entry_of(name)
+      if (.not. associated(e%take)) then
+         call fatal_error(error, "unknown law '"//name//"', must be "//registered_law_names())
+         return
+      end if
+      call e%take(at, raw, cfg, error)
+   end subroutine law_take_deck
 
    !> The law of a `&contact` group, by its `law` name.
    subroutine law_from_config(c, law, error)
