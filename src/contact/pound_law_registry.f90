@@ -79,7 +79,7 @@ contains
    end subroutine registered_laws
 
    !> The table's entry of law `name` (0: none).
-   integer function law_index(name) result(i)
+   pure integer function law_index(name) result(i)
       character(len=*), intent(in) :: name
       type(law_entry), allocatable :: laws(:)
 
@@ -91,7 +91,7 @@ contains
    end function law_index
 
    !> The table's entry of law `name` (a blank entry for an unknown law).
-   function law_entry_of(name) result(e)
+   pure function law_entry_of(name) result(e)
       character(len=*), intent(in) :: name
       type(law_entry) :: e
       type(law_entry), allocatable :: laws(:)
@@ -104,7 +104,7 @@ contains
    end function law_entry_of
 
    !> `name` is a registered law.
-   logical function law_is_registered(name)
+   pure logical function law_is_registered(name)
       !> Deck name.
       character(len=*), intent(in) :: name
 
@@ -112,7 +112,7 @@ contains
    end function law_is_registered
 
    !> Registered law `name` reads the `&contact` variable `var` (false for an unknown law).
-   logical function law_reads(name, var)
+   pure logical function law_reads(name, var)
       !> Deck name of the law.
       character(len=*), intent(in) :: name
       !> Variable name.
@@ -124,7 +124,7 @@ contains
    end function law_reads
 
    !> Registered law `name` may calibrate its dashpot to a coefficient of restitution.
-   logical function law_restitution(name)
+   pure logical function law_restitution(name)
       !> Deck name of the law.
       character(len=*), intent(in) :: name
       type(law_entry) :: e
@@ -134,7 +134,7 @@ contains
    end function law_restitution
 
    !> The registered names for messages: "'a', 'b' or 'c'".
-   function registered_law_names() result(s)
+   pure function registered_law_names() result(s)
       character(len=:), allocatable :: s
       type(law_entry), allocatable :: laws(:)
       integer :: i
@@ -150,7 +150,7 @@ contains
 
    !> Check the `&contact` variables of law `name` (registered) as read and put them into the
    !> group's configuration, by the law's own reader.
-   subroutine law_take_deck(name, at, raw, cfg, error)
+   pure subroutine law_take_deck(name, at, raw, cfg, error)
       !> Deck name of the law.
       character(len=*), intent(in) :: name
       !> Where messages point.
@@ -172,7 +172,7 @@ contains
    end subroutine law_take_deck
 
    !> The law of a `&contact` group, by its `law` name.
-   subroutine law_from_config(c, law, error)
+   pure subroutine law_from_config(c, law, error)
       !> The deck's group.
       type(contact_config), intent(in) :: c
       !> The compiled law.

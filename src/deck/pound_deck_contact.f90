@@ -261,7 +261,7 @@ contains
       end subroutine take_elevations
 
       !> `var` was given (`given`) although the law does not read it (pound_law_registry).
-      subroutine unused(var, given, error)
+      pure subroutine unused(var, given, error)
          character(len=*), intent(in) :: var
          logical, intent(in) :: given
          type(error_type), allocatable, intent(out) :: error
