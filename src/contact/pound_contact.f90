@@ -253,8 +253,9 @@ contains
                call newmark_add_response(states(b), -(end_sign(e)*dr), cs%pair(k)%dof(e), cs%y(e, k)%x)
             else
                associate (row => cs%pair(k)%end_row(e))
+                  ! (`contact_init` folded the row's scale into its weights.)
                   call newmark_add_response_rows(states(b), -(end_sign(e)*dr), row%dof(row%start(1):row%start(2) - 1), &
-                                                 row%scale(1)*row%coef(row%start(1):row%start(2) - 1), cs%y(e, k)%x)
+                                                 row%coef(row%start(1):row%start(2) - 1), cs%y(e, k)%x)
                end associate
             end if
          end do

@@ -149,6 +149,10 @@ contains
                                    'building '//models(b)%name//' (1..'//str(newmark_n(states(b)))//')')
                   return
                end if
+               ! The scale folded into the weights (scale 1: the step passes the weights to the
+               ! integrator as they are stored, no temporary).
+               row%coef = row%scale(1)*row%coef
+               row%scale(1) = 1.0_dp
                located(k)%dof(e) = end_single_dof(row)
             end associate
          end do
