@@ -37,9 +37,11 @@ set(POUND_SOURCES
   # solver: several ground motions of one shear building at once (motion-fastest lanes)
   solver/pound_newmark_batch.f90
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
-  contact/pound_contact_law.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
+  contact/pound_joint_law.f90 contact/pound_contact_law.f90 contact/pound_law_elastic.f90
+  contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90
+  contact/pound_law_registry.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
   contact/pound_joint_state.f90 contact/pound_lcp_statistics.f90 contact/pound_contact_lcp.f90
-  contact/pound_contact.f90
+  contact/pound_contact_system.f90 contact/pound_contact.f90
   # contact: the contact half-period of a joint (substep count), ends without mass condensed
   contact/pound_contact_period.f90
   contact/pound_lcp_enumerate.f90

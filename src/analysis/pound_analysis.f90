@@ -27,6 +27,7 @@ module pound_analysis
    use pound_config, only: analysis_config
    use pound_structure, only: structure_model, building_label => structure_label
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
+   use pound_contact_pair, only: end_mass
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
                             newmark_predict_exact, newmark_drop_exact, newmark_advance, &
@@ -310,7 +311,7 @@ contains
 
       do e = 1, 2
          m(e) = 0.0_dp
-         if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%dof(e))
+         if (p%building(e) > 0) m(e) = end_mass(p, e, models(p%building(e))%mass)
       end do
       if (m(1) > 0.0_dp .and. m(2) > 0.0_dp) then
          meff = m(1)*m(2)/(m(1) + m(2))

@@ -12,7 +12,7 @@ module pound_deck_variables
    public :: var_spec, variables, known_groups, known_variable, variable_index, variable_type, &
              variable_list, group_variable_count, group_max_size, findloc_name, join
    public :: max_storeys, max_name_length, max_pairs, max_columns, max_steps, title_len, path_len, &
-             word_len, max_substeps, law_names, max_envelope_points, max_segments, max_bays, max_column_elements, &
+             word_len, max_substeps, max_envelope_points, max_segments, max_bays, max_column_elements, &
              frame_variables
 
    !> Largest number of storeys a `&building` may have.
@@ -37,9 +37,6 @@ module pound_deck_variables
    integer, parameter :: max_substeps = 1000
    !> Lengths of the character buffers the namelist reads into.
    integer, parameter :: title_len = 1024, path_len = 4096, word_len = 256
-   !> Constraint laws, as written in the deck.
-   character(len=*), parameter :: law_names = &
-      "'elastic', 'elastic_plastic', 'bilinear', 'piecewise' or 'parabola_cubic'"
    !> Largest number of envelope points of a `piecewise` law (the contact law's own limit).
    integer, parameter :: max_envelope_points = max_law_points
    !> Largest number of chords per curved branch of `parabola_cubic`.

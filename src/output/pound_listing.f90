@@ -15,8 +15,8 @@ module pound_listing
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
-   use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic, law_elastic_plastic, &
-                                law_bilinear, law_piecewise, law_parabola_cubic
+   use pound_contact_law, only: contact_law, rate_name
+   use pound_joint_law, only: law_text
    use pound_lemke, only: lemke_status_name
    use pound_influence, only: building_influence
    use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment
@@ -423,6 +423,7 @@ contains
       integer :: k, w
       real(dp) :: mean_pivots
       character(len=12) :: fractured
+      type(law_text), allocatable :: lines(:)
 
       call write_section(u, 'Contact (unilateral constraints between facing floors)')
       w = 4
@@ -435,7 +436,7 @@ contains
       do k = 1, cs%m
          associate (p => cs%pair(k))
             write (u, '(2x,a,a12,2x,a16,es12.3,es12.3,2x,a)', iostat=ios, iomsg=msg) &
-               left_cell(p%label, w), fixed_cell(mm*p%gap, 12, 3), left_cell(law_name(p%law%kind), 16), &
+               left_cell(p%label, w), fixed_cell(mm*p%gap, 12, 3), left_cell(p%law%title(), 16), &
                p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
             call note_io()
          end associate
@@ -443,7 +444,8 @@ contains
       ! The parameters of the laws beyond k0 and c, after the table (not between its rows).
       do k = 1, cs%m
          associate (p => cs%pair(k))
-            if (p%law%restitution <= 0.0_dp .and. p%law%kind == law_elastic) cycle
+            call p%law%lines(lines)
+            if (p%law%restitution <= 0.0_dp .and. size(lines) == 0) cycle
             write (u, '(a)', iostat=ios, iomsg=msg) '  '//p%label//':'
             call note_io()
             if (p%law%restitution > 0.0_dp) then
@@ -526,35 +528,14 @@ contains
 
       subroutine law_parameters(law)
          type(contact_law), intent(in) :: law
+         type(law_text), allocatable :: lines(:)
          integer :: i
 
-         select case (law%kind)
-         case (law_elastic_plastic)
-            write (u, '(4x,a,es11.4,a)', iostat=ios, iomsg=msg) 'yield force ', law%yield_force, ' kN'
+         call law%lines(lines)
+         do i = 1, size(lines)
+            write (u, '(4x,a)', iostat=ios, iomsg=msg) lines(i)%line
             call note_io()
-         case (law_bilinear)
-            write (u, '(4x,a,es11.4,a,es11.4,a)', iostat=ios, iomsg=msg) &
-               'yield force ', law%yield_force, ' kN, second slope ', &
-               law%second_slope, ' kN/m'
-            call note_io()
-         case (law_piecewise)
-            write (u, '(4x,a,i0,a)', iostat=ios, iomsg=msg) &
-               'envelope through ', size(law%env_d), ' points (d [mm], r [kN]):'
-            call note_io()
-            write (u, '(4x,4(a,es10.3,a,es10.3,a))', iostat=ios, iomsg=msg) &
-               ('(', mm*law%env_d(i), ', ', law%env_r(i), ') ', &
-               i=1, size(law%env_d))
-            call note_io()
-         case (law_parabola_cubic)
-            write (u, '(4x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)', iostat=ios, iomsg=msg) &
-               'rB = ', law%peak_force, ' kN, dB = ', &
-               mm*law%peak_penetration, ' mm, dF = ', mm*law%fracture_penetration, ' mm, ', law%n_segments, &
-               ' chords per curved branch'
-            call note_io()
-         end select
-         if (is_plastic(law) .and. law%fractures) write (u, '(4x,a,es11.4,a)', iostat=ios, iomsg=msg) &
-            'fractures at d = ', mm*law%env_d(size(law%env_d)), ' mm'
-         call note_io()
+         end do
       end subroutine law_parameters
 
    end subroutine write_contact_summary

@@ -61,7 +61,6 @@ module pound_results_h5
    use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result, history_sink, output_steps
    use pound_contact, only: contact_system
-   use pound_contact_law, only: law_name
    use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
@@ -421,7 +420,7 @@ contains
          character(len=16), allocatable :: laws(:)
          integer :: k, ne
          ! Contiguous copies of component sections (no array temporaries at the calls).
-         real(dp), allocatable :: rv(:)
+         real(dp), allocatable :: rv(:), envelope(:, :)
          integer, allocatable :: iv(:)
 
          call h5_write(h5, c//'/force', cpl%joints%force, error, units='kN')
@@ -456,7 +455,7 @@ contains
          if (allocated(error)) return
          allocate (laws(cs%m))
          do k = 1, cs%m
-            laws(k) = law_name(cs%pair(k)%law%kind)
+            laws(k) = cs%pair(k)%law%title()
          end do
          call h5_write(h5, c//'/law', laws, error, units='-')
          if (allocated(error)) return
@@ -472,13 +471,10 @@ contains
          call h5_write(h5, c//'/fracture_time', rv, error, units='s')
          if (allocated(error)) return
          do k = 1, cs%m
-            associate (law => cs%pair(k)%law)
-               if (size(law%env_d) == 0) cycle
-               call h5_write(h5, c//'/envelope/'//cs%pair(k)%label, &
-                             reshape([0.0_dp, 0.0_dp, (law%env_d(ne), law%env_r(ne), ne=1, size(law%env_d))], &
-                                     [2, size(law%env_d) + 1]), error, units='m, kN')
-               if (allocated(error)) return
-            end associate
+            envelope = cs%pair(k)%law%envelope_points()
+            if (size(envelope, 2) == 0) cycle
+            call h5_write(h5, c//'/envelope/'//cs%pair(k)%label, envelope, error, units='m, kN')
+            if (allocated(error)) return
          end do
          ne = cs%stats%n_events
          rv = cs%stats%events(1:ne)%time

@@ -41,7 +41,7 @@ module pound_newmark
    private
 
    public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_advance, newmark_solve
-   public :: newmark_add_response, newmark_set_state, newmark_dt, newmark_n, newmark_swap_step
+   public :: newmark_add_response, newmark_add_response_rows, newmark_set_state, newmark_dt, newmark_n, newmark_swap_step
    public :: newmark_u, newmark_v, newmark_a, newmark_du, newmark_u_at, newmark_v_at, newmark_predicted, newmark_energies
    public :: newmark_path, newmark_tridiagonal_factors
    public :: kinetic_energy, strain_energy
@@ -444,6 +444,29 @@ contains
          st%loaded = .true.
       end if
    end subroutine newmark_add_response
+
+   !> du = du + s x: the response to a load increment s along the weights w of the DOFs `dof`
+   !> (a contact end that is a sparse row), x = Khat^{-1} sum_i w_i e_dof(i) (computed once).
+   pure subroutine newmark_add_response_rows(st, s, dof, w, x)
+      !> Integrator state with the predicted `du`.
+      type(newmark_state), intent(inout) :: st
+      !> The load increment (kN).
+      real(dp), intent(in) :: s
+      !> The DOFs it acts on and their weights.
+      integer, intent(in) :: dof(:)
+      real(dp), intent(in) :: w(:)
+      !> Khat^{-1} sum_i w_i e_dof(i) (n).
+      real(dp), intent(in) :: x(:)
+      integer :: i
+
+      st%du = st%du + s*x
+      if (.not. st%tridiagonal) then
+         do i = 1, size(dof)
+            st%fc(dof(i)) = st%fc(dof(i)) + s*w(i)
+         end do
+         st%loaded = .true.
+      end if
+   end subroutine newmark_add_response_rows
 
    !> The fused tridiagonal path's data, for kernels that advance several motions of the same
    !> model at once (`pound_newmark_batch`): whether the path is taken, the sub-diagonal e of
