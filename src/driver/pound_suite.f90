@@ -104,7 +104,7 @@ contains
       class(suite_cases), intent(inout) :: work
       !> Case index.
       integer, intent(in) :: i
-      !> The motions' columns one after the other (`motion_run`).
+      !> The motions' packed outcomes one after the other (`outcome_pack`).
       real(dp), intent(out) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
@@ -490,7 +490,7 @@ contains
 
       ! The motions are the cases, and those the writers need whole (the first, and those
       ! whose histories are kept) run on every rank beside them; the statistics take the
-      ! motions' columns in motion order. The uncoupled runs are batched in groups of
+      ! motions' outcomes in motion order. The uncoupled runs are batched in groups of
       ! consecutive motions (`batch_groups`): the whole motions' groups on every rank, the
       ! other motions' groups as the cases (at most as many motions a group as give every rank
       ! a case); a batched run is bit for bit its run alone, so the grouping and the ranks do
@@ -629,7 +629,7 @@ contains
    contains
 
       !> Motion k run on every rank (its uncoupled run from the batch when it took it): its
-      !> column, and unless it failed its sweep and its histories; the first that does not
+      !> outcome, and unless it failed its histories; the first that does not
       !> fail is the run's single-motion case.
       subroutine whole_run(r, j)
          type(case_result), intent(out) :: r
@@ -649,7 +649,7 @@ contains
       !> The sweeps of the motions whose run did not fail, as one loop of cases
       !> (`suite_gap_cases`), against their uncoupled peaks (kept in `ctx%unc` for the
       !> refinements too); each motion's sweep result from its gaps (`sweep_from_table`). A
-      !> motion whose every gap fails fails as its run would (its column marked, its histories
+      !> motion whose every gap fails fails as its run would (its outcome marked, its histories
       !> dropped). The first motion that does not fail is the run's single-motion case: run
       !> whole again if the one run whole failed here; it takes its sweep (result, warnings).
       subroutine motion_sweeps()
