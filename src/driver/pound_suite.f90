@@ -19,7 +19,6 @@
 module pound_suite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str
    use pound_config, only: deck_type, n_history_quantities, n_target_quantities
    use pound_ground_motion, only: ground_motion_t
    use pound_structure, only: structure_model, structure_names
@@ -39,10 +38,11 @@ module pound_suite
    use pound_suite_outcome, only: suite_failure, motion_outcome, outcome_init, outcome_fail, outcome_width, &
                                   outcome_pack, outcome_unpack
    use pound_suite_context, only: suite_context, suite_pair, suite_pairs
-   use pound_suite_motions, only: suite_motion, suite_motion_samples, motion_names, n_spectrum, spectrum_damping
+   use pound_suite_motions, only: suite_motion, suite_motion_samples, motion_names, motion_sources, n_spectrum, &
+                                  spectrum_damping
    use pound_suite_statistics, only: suite_result, motion_histories, suite_sweep_statistics, &
                                      suite_building_statistics, suite_pair_rules, time_history_gap, &
-                                     add_failure, sort_failures
+                                     add_failure, sort_failures, suite_result_init
    use pound_suite_refine, only: bisection, bisection_step, bisection_update, refine, refine_motions
    implicit none
    private
@@ -443,50 +443,15 @@ contains
       np = size(ctx%pair)
       suite%has_coupled = np > 0
       nmax = maxval(deck%buildings%n_storeys)
-      allocate (suite%names(nm), suite%source(nm), suite%target(nm), suite%target_period(nm))
-      allocate (suite%scale_factor(nm), suite%pga(nm), suite%sa(nm, size(suite%period)), &
-                suite%sa_building(nm, nb), mean_unc(nmax, n_history_quantities, nb), &
-                mean_cpl(nmax, n_history_quantities, nb))
+      allocate (mean_unc(nmax, n_history_quantities, nb), mean_cpl(nmax, n_history_quantities, nb))
       mean_unc = 0.0_dp
       mean_cpl = 0.0_dp
-      allocate (suite%building(nb), suite%separation(nm + 1, np), suite%histories(nm))
+      call suite_result_init(suite, nm, deck%buildings%n_storeys, np)
       call columns_init(models, nm, suite%columns)
-      do ib = 1, nb
-         associate (n => deck%buildings(ib)%n_storeys, s => suite%building(ib))
-            allocate (s%lambda(nm, n, n_history_quantities), s%mean_lambda(n, n_history_quantities), &
-                      s%max_lambda(n, n_history_quantities), s%lambda_of_means(n, n_history_quantities))
-            s%lambda = 0.0_dp
-            s%mean_lambda = 0.0_dp
-            s%max_lambda = 0.0_dp
-            s%lambda_of_means = 0.0_dp
-         end associate
-      end do
       suite%refine_tolerance = deck%sweep%refine_tolerance
       targeted = deck%sweep%target_quantities
       if (.not. (deck%sweep%target > 0.0_dp)) targeted(1:n_history_quantities) = .true.
-
-      do k = 1, nm
-         suite%names(k) = deck%motions(k)%name
-         select case (deck%motions(k)%kind)
-         case ('record')
-            suite%source(k) = deck%motions(k)%file
-         case ('synthetic')
-            suite%source(k) = 'synthetic, seed '//str(deck%motions(k)%seed)
-         case default
-            suite%source(k) = deck%motions(k)%kind
-         end select
-         suite%target(k) = -1.0_dp
-         suite%target_period(k) = -1.0_dp
-         select case (deck%motions(k)%scale_to)
-         case ('pga')
-            suite%target(k) = deck%motions(k)%target
-            suite%target_period(k) = 0.0_dp
-         case ('sa')
-            suite%target(k) = deck%motions(k)%target
-            suite%target_period(k) = deck%motions(k)%period
-            if (.not. (suite%target_period(k) > 0.0_dp)) suite%target_period(k) = maxval(suite%building_period)
-         end select
-      end do
+      call motion_sources(deck, suite%building_period, suite%names, suite%source, suite%target, suite%target_period)
 
       ! The motions are the cases, and those the writers need whole (the first, and those
       ! whose histories are kept) run on every rank beside them; the statistics take the

@@ -15,6 +15,7 @@ module pound_suite_motions
    use pound_error, only: error_type
    use pound_config, only: deck_type, ground_config
    use pound_deck_variables, only: word_len
+   use pound_strings, only: str
    use pound_ground_motion, only: ground_motion_t, sample_ground
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
    use pound_structure, only: structure_model
@@ -23,7 +24,7 @@ module pound_suite_motions
    implicit none
    private
 
-   public :: suite_motion, suite_motion_samples, motion_names, n_spectrum, spectrum_damping
+   public :: suite_motion, suite_motion_samples, motion_names, motion_sources, n_spectrum, spectrum_damping
 
    !> Log-spaced periods of the suite spectra (before the buildings' periods are added).
    integer, parameter :: n_spectrum = 60
@@ -186,5 +187,45 @@ contains
          names(i) = "&ground '"//deck%motions(m(i))%name//"'"//suffix
       end do
    end function motion_names
+
+   !> Where each motion of the deck comes from and its scaling target, as the writers name them:
+   !> its name, its source (the record file as resolved, 'synthetic, seed N' or 'pulse'), the
+   !> target (m/s^2; -1: scaled by a factor) and its period (s: a Sa target's, by default the
+   !> longest of the buildings' fundamental periods; 0 for a PGA target, the rigid limit of the
+   !> spectrum; -1: none).
+   pure subroutine motion_sources(deck, building_period, names, source, target, target_period)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Fundamental period of every building (s).
+      real(dp), intent(in) :: building_period(:)
+      !> Per motion: name and source.
+      character(len=*), intent(out) :: names(:), source(:)
+      !> Per motion: target and its period.
+      real(dp), intent(out) :: target(:), target_period(:)
+      integer :: k
+
+      do k = 1, size(deck%motions)
+         names(k) = deck%motions(k)%name
+         select case (deck%motions(k)%kind)
+         case ('record')
+            source(k) = deck%motions(k)%file
+         case ('synthetic')
+            source(k) = 'synthetic, seed '//str(deck%motions(k)%seed)
+         case default
+            source(k) = deck%motions(k)%kind
+         end select
+         target(k) = -1.0_dp
+         target_period(k) = -1.0_dp
+         select case (deck%motions(k)%scale_to)
+         case ('pga')
+            target(k) = deck%motions(k)%target
+            target_period(k) = 0.0_dp
+         case ('sa')
+            target(k) = deck%motions(k)%target
+            target_period(k) = deck%motions(k)%period
+            if (.not. (target_period(k) > 0.0_dp)) target_period(k) = maxval(building_period)
+         end select
+      end do
+   end subroutine motion_sources
 
 end module pound_suite_motions

@@ -37,7 +37,7 @@ module pound_suite_statistics
 
    public :: suite_result, motion_histories, building_suite
    public :: suite_sweep_statistics, suite_building_statistics, suite_pair_rules, time_history_gap
-   public :: add_failure, sort_failures
+   public :: add_failure, sort_failures, suite_result_init
 
    !> The histories of one motion of the suite, kept when its `&ground` sets `histories`.
    type :: motion_histories
@@ -320,5 +320,36 @@ contains
       end where
       s%lambda_of_means = influence_coefficient(mean_cpl, mean_unc)
    end subroutine suite_building_statistics
+
+   !> The per-motion arrays of a suite of `nm` motions over buildings of `n_storeys` storeys
+   !> with `np` contact pairs, `period` set: names, sources, targets, scale factors, PGA, spectra,
+   !> per building lambdas and their statistics (zero), the separation rules (n_motions + 1,
+   !> n_pairs) and the histories.
+   pure subroutine suite_result_init(suite, nm, n_storeys, np)
+      !> The suite (`period` allocated).
+      type(suite_result), intent(inout) :: suite
+      !> Number of motions.
+      integer, intent(in) :: nm
+      !> Storeys of each building.
+      integer, intent(in) :: n_storeys(:)
+      !> Number of contact pairs.
+      integer, intent(in) :: np
+      integer :: ib, nb
+
+      nb = size(n_storeys)
+      allocate (suite%names(nm), suite%source(nm), suite%target(nm), suite%target_period(nm))
+      allocate (suite%scale_factor(nm), suite%pga(nm), suite%sa(nm, size(suite%period)), suite%sa_building(nm, nb))
+      allocate (suite%building(nb), suite%separation(nm + 1, np), suite%histories(nm))
+      do ib = 1, nb
+         associate (n => n_storeys(ib), s => suite%building(ib))
+            allocate (s%lambda(nm, n, n_history_quantities), s%mean_lambda(n, n_history_quantities), &
+                      s%max_lambda(n, n_history_quantities), s%lambda_of_means(n, n_history_quantities))
+            s%lambda = 0.0_dp
+            s%mean_lambda = 0.0_dp
+            s%max_lambda = 0.0_dp
+            s%lambda_of_means = 0.0_dp
+         end associate
+      end do
+   end subroutine suite_result_init
 
 end module pound_suite_statistics
