@@ -473,7 +473,8 @@ contains
       ctx%layout%n_periods = size(suite%period)
       ctx%layout%n_storeys = deck%buildings%n_storeys
       ctx%layout%n_pairs = np
-      if (ctx%sweep) ctx%layout%n_probe = 1 + np + sweep_column_width(nb)
+      ctx%layout%sweep = ctx%sweep
+      if (ctx%sweep) ctx%layout%n_probe = sweep_column_width(nb)
       ctx%layout%n_member = column_block_width(models)
       w = outcome_width(ctx%layout)
       allocate (outcomes(nm), whole(nm), suite%motion_failed(nm))
@@ -631,7 +632,7 @@ contains
          ng = deck%sweep%n_gaps
          ks = pack([(k, k=1, nm)], .not. outcomes%failed .and. outcomes%has_influence)
          allocate (gaps%has_probe(size(ks)), gaps%closing(np, size(ks)), &
-                   gaps%probe(ctx%layout%n_probe - 1 - np, size(ks)))
+                   gaps%probe(ctx%layout%n_probe, size(ks)))
          do j = 1, size(ks)
             call peaks_from_outcome(ctx, outcomes(ks(j)), ctx%unc(ks(j)))
             ctx%has_unc(ks(j)) = .true.

@@ -46,7 +46,9 @@ module pound_suite_outcome
       integer, allocatable :: n_storeys(:)
       !> Contact pairs.
       integer :: n_pairs = 0
-      !> Reals of the sweep's probe (0: no sweep of the motions) and of the member block.
+      !> Whether the motions' sweeps run (each outcome carries its sweep's probe), the reals of
+      !> the probe's column (`gap_cases_probe`) and of the member block.
+      logical :: sweep = .false.
       integer :: n_probe = 0, n_member = 0
    end type outcome_layout
 
@@ -103,7 +105,7 @@ contains
          o%building(ib)%cpl = 0.0_dp
       end do
       allocate (o%pair_peak(2, layout%n_pairs), o%no_contact(layout%n_pairs), o%closing_max(layout%n_pairs), &
-                o%probe(max(0, layout%n_probe - 1 - layout%n_pairs)), o%member(layout%n_member))
+                o%probe(layout%n_probe), o%member(layout%n_member))
       o%pair_peak = 0.0_dp
       o%no_contact = 0.0_dp
       o%closing_max = 0.0_dp
@@ -143,7 +145,8 @@ contains
       type(outcome_layout), intent(in) :: layout
 
       width = 3 + layout%n_periods + size(layout%n_storeys) + 3*n_history_quantities*sum(layout%n_storeys) + &
-              3*layout%n_pairs + 1 + failure_width + layout%n_probe + layout%n_member
+              3*layout%n_pairs + 1 + failure_width + layout%n_member
+      if (layout%sweep) width = width + 1 + layout%n_pairs + layout%n_probe
    end function outcome_width
 
    !> `o` into its column `col` (`outcome_width` reals).
@@ -218,7 +221,7 @@ contains
          o%failure = failure_unpack(col(at + 1:at + failure_width), 0)
       end if
       at = at + failure_width
-      if (layout%n_probe > 0) then
+      if (layout%sweep) then
          flag = merge(1.0_dp, 0.0_dp, o%has_probe)
          call move_scalar(col, at, put, flag)
          o%has_probe = flag > 0.0_dp
