@@ -56,7 +56,9 @@ set(POUND_SOURCES
   # driver: one case from a validated configuration to all results (program, tests, suites)
   driver/pound_run_case.f90
   # driver: a suite of ground motions (scaling, one case per motion, suite statistics, rules)
-  driver/pound_suite_columns.f90 driver/pound_suite.f90
+  driver/pound_suite_columns.f90 driver/pound_suite_outcome.f90 driver/pound_suite_context.f90
+  driver/pound_suite_motions.f90 driver/pound_suite_statistics.f90 driver/pound_suite_refine.f90
+  driver/pound_suite.f90
   # outputs: files, HDF5 layer, results file, listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
   # outputs: the separation rules' listing table and datasets (a run and a suite)

@@ -22,7 +22,7 @@ module pound_analysis
    use iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str, add_warning, mm_text
    use pound_config, only: analysis_config
    use pound_structure, only: structure_model, building_label => structure_label
@@ -541,6 +541,7 @@ contains
                if (allocated(error)) then
                   ! A state that is not finite is named as such, not as a failed LCP.
                   call locate_nonfinite(st, models, cs, t_sub, step, error, predicted=.true.)
+                  call error_at(error, t_sub, step)
                   return
                end if
             end if
@@ -945,6 +946,7 @@ contains
             call fatal_error(error, building_label(models(ib))//': the '//trim(energy_names(i))// &
                              ' energy is not finite at t = '//str(t)//' s (step '//str(step)//') ('// &
                              str(e(i))//' kJ, largest |u| '//mm_text(maxval(abs(newmark_u(st(ib)))))//')'//hint)
+            call error_at(error, t, step, building=ib)
             return
          end do
       end do
@@ -952,10 +954,12 @@ contains
          if (ieee_is_finite(sample(i))) cycle
          call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
                           trim(energy_names(i))//' energy is not finite ('//str(sample(i))//' kJ)'//hint)
+         call error_at(error, t, step)
          return
       end do
       call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
                        'energy total overflows'//hint)
+      call error_at(error, t, step)
    end subroutine state_failure
 
    !> Set `error` to the first value of the state that is not finite, if there is one: u, v,
@@ -1004,6 +1008,7 @@ contains
                call fatal_error(error, building_label(models(ib))//': floor '//str(i)//': '//trim(names(q))// &
                                 ' = '//str(x(1))//at//': the first value of the run that is not finite '// &
                                 '(check the size of the ground motion, masses, stiffnesses and joints)')
+               call error_at(error, t, step, building=ib)
                return
             end do
          end do
@@ -1017,6 +1022,7 @@ contains
                call fatal_error(error, 'contact '//cs%pair(k)%label//': joint '//trim(joint(q))//' = '//str(x(q))//at// &
                                 ': the first value of the run that is not finite (check the joint''s '// &
                                 'stiffness, dashpot and law)')
+               call error_at(error, t, step, joint=k)
                return
             end do
          end associate

@@ -66,6 +66,9 @@ module pound_sweep
       real(dp), allocatable :: closing_max(:)
       !> The message of each failed gap (blank otherwise).
       character(len=case_message_len), allocatable :: messages(:)
+      !> Time (s) and step at which each failed gap's run failed (-1: not known, or not failed).
+      real(dp), allocatable :: time(:)
+      integer, allocatable :: step(:)
       !> Smallest gap from which on every larger gap of the sweep meets the target (m).
       real(dp) :: safe_gap = -1.0_dp
       !> Whether such a gap exists in the range (only with a target).
@@ -320,6 +323,8 @@ contains
       end if
       res%failed = table%failed
       res%messages = table%message
+      res%time = table%time
+      res%step = table%step
       res%beyond = table%values(nl + 4, :) > 0.0_dp .and. .not. table%failed
       do i = 1, sweep%n_gaps
          associate (col => table%values(:, i))

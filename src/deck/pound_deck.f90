@@ -39,8 +39,8 @@
 !> count, 1..`max_pairs` pairs, each floor in 1..n_storeys of its building), `gap` (>= 0) and
 !> `law` are required. Instead of the floors, `elevations` (m above the common base, one per
 !> pair) joins the facing column lines at that elevation: a building's floor there, or a node
-!> added to a frame's facing column (refused between the floors of a shear building, above a
-!> roof, and in a suite). The same floor pair may appear more than once. Laws and their variables:
+!> added to a frame's facing column (refused between the floors of a shear building and above a
+!> roof). The same floor pair may appear more than once. Laws and their variables:
 !> 'elastic' (stiffness), 'elastic_plastic' (stiffness, yield_force), 'bilinear' (stiffness,
 !> yield_force, second_slope < stiffness), 'piecewise' (envelope_d, envelope_r: points after the
 !> origin), 'parabola_cubic' (peak_penetration, fracture_penetration, peak_force or stiffness,
@@ -166,7 +166,7 @@ contains
       do i = 1, n_groups
          if (groups(i)%name /= 'contact') cycle
          k = k + 1
-         call read_contact(path, text, groups(i), d%buildings, d%contacts(k), error, suite=ng > 1)
+         call read_contact(path, text, groups(i), d%buildings, d%contacts(k), error)
          if (allocated(error)) return
          call add_contact_points(d%contacts(k), d%buildings)
       end do

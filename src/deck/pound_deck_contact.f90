@@ -22,7 +22,7 @@ module pound_deck_contact
 contains
 
    !> `&contact`: unilateral constraints between facing floors of two buildings.
-   subroutine read_contact(path, text, g, buildings, cfg, error, suite)
+   subroutine read_contact(path, text, g, buildings, cfg, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
@@ -35,8 +35,6 @@ contains
       type(contact_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      !> The deck is a suite (several `&ground`): its separation rules need floors at both ends.
-      logical, intent(in), optional :: suite
       character(len=word_len) :: left, right, law, dashpot_rate
       integer, allocatable :: floors_left(:), floors_right(:)
       real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:), elevations(:)
@@ -233,10 +231,7 @@ contains
       subroutine take_elevations(error)
          type(error_type), allocatable, intent(out) :: error
          integer :: ne, j
-         logical :: in_suite
 
-         in_suite = .false.
-         if (present(suite)) in_suite = suite
          ne = given_count(elevations)
          if (ne > max_pairs) then
             call fail(at, 'elevations', 'elevations has '//values_text(ne)//', must have at most '// &
@@ -253,9 +248,9 @@ contains
             call check_real(at, 'elevations', elevations(j), '>', 0.0_dp, error, name='elevations('//str(j)//')')
             if (allocated(error)) return
             cfg%elevation(j) = elevations(j)
-            call point_at(at, j, elevations(j), buildings(cfg%left_index), in_suite, cfg%floor_left(j), error)
+            call point_at(at, j, elevations(j), buildings(cfg%left_index), cfg%floor_left(j), error)
             if (allocated(error)) return
-            call point_at(at, j, elevations(j), buildings(cfg%right_index), in_suite, cfg%floor_right(j), error)
+            call point_at(at, j, elevations(j), buildings(cfg%right_index), cfg%floor_right(j), error)
             if (allocated(error)) return
          end do
       end subroutine take_elevations
@@ -332,8 +327,8 @@ contains
 
    !> The floor of building `b` at elevation `z` of pair `k` (within `elevation_tol`), or 0 for a
    !> point between floors, which only a frame has (a node on its facing column); above the
-   !> roof, between the floors of a shear building, or between floors in a suite: an error.
-   pure subroutine point_at(at, k, z, b, suite, floor, error)
+   !> roof or between the floors of a shear building: an error.
+   pure subroutine point_at(at, k, z, b, floor, error)
       !> Where messages point.
       type(site), intent(in) :: at
       !> Pair (for messages).
@@ -342,8 +337,6 @@ contains
       real(dp), intent(in) :: z
       !> The building.
       type(building_config), intent(in) :: b
-      !> The deck is a suite.
-      logical, intent(in) :: suite
       !> The floor at z, or 0 between floors.
       integer, intent(out) :: floor
       !> Unallocated on success; otherwise the first problem found.
@@ -371,10 +364,6 @@ contains
                    ' m) and '//str(j)//' ('//str(zf)//' m) of building '//b%name//', a shear building '// &
                    "(DOFs only at its floors): give a floor's elevation, or model = 'frame' for "//b%name// &
                    ' (its facing column gets a node there)', error)
-      else if (suite) then
-         call fail(at, 'elevations', what//' lies between floors of building '//b%name//'; a suite '// &
-                   '(several &ground) needs the pairs at floors of both buildings (its separation rules '// &
-                   'take the floors'' peaks)', error)
       end if
    end subroutine point_at
 

@@ -21,7 +21,6 @@ module pound_listing
    use pound_influence, only: building_influence
    use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment
    use pound_sweep, only: sweep_result
-   use pound_cases, only: failure_time_step
    implicit none
    private
 
@@ -716,8 +715,7 @@ contains
       character(len=*), parameter :: heads(4) = [character(len=9) :: 'Q', 'drift', 'u', 'a_abs']
       character(len=:), allocatable :: line
       character(len=11) :: cell
-      integer :: i, ib, k, step
-      real(dp) :: t
+      integer :: i, ib, k
 
       call write_section(u, 'Gap study: largest |lambda| [%] over the storeys (floors) against the gap')
       write (u, '(a,i0,a,f10.4,a)', iostat=ios, iomsg=msg) &
@@ -783,8 +781,8 @@ contains
          call note_io()
          do i = 1, size(res%gap)
             if (.not. res%failed(i)) cycle
-            call failure_time_step(res%messages(i), t, step)
-            write (u, '(i8,a14,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) i, fixed_cell(mm*res%gap(i), 14, 4), t, step, &
+            write (u, '(i8,a14,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) i, fixed_cell(mm*res%gap(i), 14, 4), &
+               res%time(i), res%step(i), &
                trim(res%messages(i))
             call note_io()
          end do

@@ -67,7 +67,6 @@ module pound_results_h5
    use pound_sweep, only: sweep_result
    use pound_separation, only: separation_t
    use pound_separation_output, only: write_separation_h5, pair_labels
-   use pound_cases, only: failure_time_step
    use pound_config, only: sweep_config
    implicit none
    private
@@ -320,7 +319,8 @@ contains
          if (allocated(error)) return
          call h5_write_attr(h5, '/sweep', 'safe_gap_note', 'failed gaps counted as not meeting the target', error)
          if (allocated(error)) return
-         call write_failed_cases(h5, '/sweep/failed', sweep%gap, sweep%failed, sweep%messages, error)
+         call write_failed_cases(h5, '/sweep/failed', sweep%gap, sweep%failed, sweep%messages, sweep%time, &
+                                 sweep%step, error)
       end subroutine write_sweep
 
       subroutine write_model(b, s)
@@ -662,10 +662,10 @@ contains
    end subroutine write_history
 
    !> The failed cases of a set of cases (a sweep's gaps, a suite's motions) in group `path`:
-   !> `case` (1-based index), `gap` (m), `time` (s) and `step` of the failure (-1: not named
-   !> in the message) and `message`, one entry per failed case; attribute `n_cases` (all cases).
+   !> `case` (1-based index), `gap` (m), `time` (s) and `step` of the failure (-1: not known)
+   !> and `message`, one entry per failed case; attribute `n_cases` (all cases).
    !> Without `indexed` (.false.: the caller names the cases itself) neither `case` nor `n_cases`.
-   subroutine write_failed_cases(h5, path, gap, failed, messages, error, indexed)
+   subroutine write_failed_cases(h5, path, gap, failed, messages, times, steps, error, indexed)
       !> Open file.
       type(h5_file), intent(inout) :: h5
       !> Group path (e.g. '/sweep/failed').
@@ -676,6 +676,9 @@ contains
       logical, intent(in) :: failed(:)
       !> Message of each case.
       character(len=*), intent(in) :: messages(:)
+      !> Time (s) and step of each case's failure (`error_type`'s; -1: not known).
+      real(dp), intent(in) :: times(:)
+      integer, intent(in) :: steps(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> Whether to write `case` and `n_cases` (default .true.).
@@ -691,10 +694,8 @@ contains
       idx = pack([(i, i=1, size(failed))], failed)
       g = gap(idx)
       m = messages(idx)
-      allocate (t(size(idx)), step(size(idx)))
-      do i = 1, size(idx)
-         call failure_time_step(m(i), t(i), step(i))
-      end do
+      t = times(idx)
+      step = steps(idx)
       if (with_index) then
          call h5_write(h5, path//'/case', idx, error, units='1')
          if (allocated(error)) return

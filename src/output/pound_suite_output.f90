@@ -50,7 +50,7 @@ module pound_suite_output
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
    use pound_results_h5, only: write_analysis_h5, write_failed_cases, pair_list
-   use pound_cases, only: failure_time_step, case_message_len
+   use pound_cases, only: case_message_len
    use pound_suite_columns_output, only: write_suite_columns_listing, write_suite_columns_h5
    use pound_separation_output, only: write_separation_h5, write_separation_head, write_separation_rows, &
                                       write_separation_legend
@@ -261,8 +261,7 @@ contains
       !> The table of the failed cases: motion, gap (mm; '-': the deck's gaps), time, step, message;
       !> each write checked, the first that fails named (no later write tried).
       subroutine write_failures()
-         real(dp) :: t
-         integer :: i, step
+         integer :: i
          character(len=14) :: gap
 
          if (size(suite%failures) == 0) return
@@ -275,11 +274,10 @@ contains
          do i = 1, size(suite%failures)
             if (ios /= 0) exit
             associate (f => suite%failures(i))
-               call failure_time_step(f%message, t, step)
                gap = '             -'
                if (f%gap >= 0.0_dp) gap = fixed_cell(mm*f%gap, 14, 4)
                write (u, '(a,a14,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) '  '// &
-                  left_cell(trim(suite%names(f%motion)), wm), gap, t, step, trim(f%message)
+                  left_cell(trim(suite%names(f%motion)), wm), gap, f%time, f%step, trim(f%message)
             end associate
          end do
          if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
@@ -487,7 +485,8 @@ contains
          end do
          call h5_write(h5, '/suite/failed/motion', motion, error, units='-')
          if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, spread(.true., 1, n), message, &
-                                                             error, indexed=.false.)
+                                                             suite%failures%time, suite%failures%step, error, &
+                                                             indexed=.false.)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions_used', suite%n_used, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'single_motion', &

@@ -286,7 +286,11 @@ contains
                                 location='the deck''s history stores no u', available=.false.))
                end if
                call th_item(p, s%time_history, 'suite sweep threshold on the mean (one gap for every joint)')
-               call rule_items(p, s, .true., 'suite mean peaks')
+               if (s%abs >= 0.0_dp) then
+                  call rule_items(p, s, .true., 'suite mean peaks')
+               else
+                  call rule_items(p, s, .false., 'a pair end between floors: its peak needs &analysis node_histories')
+               end if
             end associate
             return
          end if
