@@ -424,7 +424,7 @@ contains
       character(len=:), allocatable :: text
       logical :: targeted(n_target_quantities)
       integer :: nm, nb, k, ib, np, ip, nmax, ig, w
-      integer, allocatable :: start(:), ms(:)
+      integer, allocatable :: start(:), ms(:), n_storeys(:)
       type(analysis_result), allocatable, target :: batched(:)
       logical, allocatable :: batched_ok(:)
 
@@ -446,7 +446,8 @@ contains
       allocate (mean_unc(nmax, n_history_quantities, nb), mean_cpl(nmax, n_history_quantities, nb))
       mean_unc = 0.0_dp
       mean_cpl = 0.0_dp
-      call suite_result_init(suite, nm, deck%buildings%n_storeys, np)
+      n_storeys = deck%buildings%n_storeys
+      call suite_result_init(suite, nm, n_storeys, np)
       call columns_init(models, nm, suite%columns)
       suite%refine_tolerance = deck%sweep%refine_tolerance
       targeted = deck%sweep%target_quantities

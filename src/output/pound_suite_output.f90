@@ -470,22 +470,26 @@ contains
       !> /suite/failed and /suite/motion_failed, when some case failed: `write_failed_cases`
       !> (every failure a case) with the motion of each in place of the case index.
       subroutine write_failures()
-         real(dp), allocatable :: gap(:)
+         real(dp), allocatable :: gap(:), time(:)
          character(len=len(suite%names)), allocatable :: motion(:)
          character(len=case_message_len), allocatable :: message(:)
+         integer, allocatable :: step(:)
+         logical, allocatable :: failed(:)
          integer :: i, n
 
          n = size(suite%failures)
          if (n == 0) return
-         allocate (gap(n), motion(n), message(n))
+         allocate (gap(n), motion(n), message(n), time(n), step(n), failed(n))
+         failed = .true.
          do i = 1, n
             gap(i) = suite%failures(i)%gap
+            time(i) = suite%failures(i)%time
+            step(i) = suite%failures(i)%step
             motion(i) = suite%names(suite%failures(i)%motion)
             message(i) = suite%failures(i)%message
          end do
          call h5_write(h5, '/suite/failed/motion', motion, error, units='-')
-         if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, spread(.true., 1, n), message, &
-                                                             suite%failures%time, suite%failures%step, error, &
+         if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, failed, message, time, step, error, &
                                                              indexed=.false.)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions_used', suite%n_used, error)
