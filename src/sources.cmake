@@ -1,7 +1,7 @@
 # The library's sources, by step (paths relative to src/). The program is src/main/pound.f90.
 set(POUND_SOURCES
-  # core: kinds, errors, strings, whole-file reading, version, POSIX calls, the progress line, sorting
-  core/pound_kinds.f90 core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
+  # core: kinds, physical constants, errors, strings, whole-file reading, version, POSIX calls, the progress line, sorting
+  core/pound_kinds.f90 core/pound_constants.f90 core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
   core/pound_version.f90 core/pound_posix.f90 core/pound_progress.f90
   core/pound_sort.f90
   # core: pound's own pseudo-random numbers

@@ -10,11 +10,8 @@ module pound_config
    private
 
    public :: analysis_config, ground_config, building_config, contact_config, sweep_config, deck_type
-   public :: n_history_quantities, history_names, g_accel, is_frame
+   public :: n_history_quantities, history_names, is_frame
    public :: n_target_quantities, target_names, q_column_shear, q_column_moment
-
-   !> Standard gravity used to turn floor loads into masses (m/s^2).
-   real(dp), parameter :: g_accel = 9.81_dp
 
    !> Number of history quantities that can be stored.
    integer, parameter :: n_history_quantities = 5

@@ -5,7 +5,8 @@
 !> dimensionless number, a count, an index or a code, '-' for text; a dataset whose columns
 !> differ lists them, e.g. '1/s, s'):
 !>
-!>     /                          attributes program, version, units, title, deck
+!>     /                          attributes program, version, units, g (the acceleration of
+!>                                gravity in m/s^2, `pound_constants::g_accel`), title, deck
 !>     /ground/time, /ground/acceleration        (n_out), m/s^2; attribute description
 !>     /model/<b>/height, mass, storey_stiffness, geometric_stiffness, axial_load,
 !>                periods, omega, rayleigh (a0, a1)
@@ -68,6 +69,7 @@ module pound_results_h5
    use pound_sweep, only: sweep_result
    use pound_cases, only: failure_time_step
    use pound_config, only: sweep_config
+   use pound_constants, only: g_accel
    implicit none
    private
 
@@ -212,6 +214,8 @@ contains
          call h5_write_attr(h5, '/', 'version', program_version, error)
          if (allocated(error)) return
          call h5_write_attr(h5, '/', 'units', units, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/', 'g', g_accel, error)
          if (allocated(error)) return
          call h5_write_attr(h5, '/', 'title', deck%analysis%title, error)
          if (allocated(error)) return
