@@ -293,12 +293,15 @@ contains
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: err
       type(listing_writer) :: lst
+      character(len=len(ground_text)) :: motion_text(1)
 
       call open_listing(path, lst, err)
       if (allocated(err)) return
       if (size(deck%motions) > 1) then
-         call write_listing_header(lst, deck, [character(len=len(ground_text)) :: motion_heading(suite)//': '// &
-                                             ground_text(1)], summary_text)
+         ! Assigned (cut to the length of ground_text) before the call: an array constructor
+         ! with a shorter type-spec length than its value was read past its end by gfortran.
+         motion_text(1) = motion_heading(suite)//': '//ground_text(1)
+         call write_listing_header(lst, deck, motion_text, summary_text)
          call write_model_summary(lst, res%models, res%buildings)
          call write_section(lst, motion_heading(suite)//': the single-motion results of this motion alone '// &
                             '(the suite''s answer: Summary above and Ground-motion suite below)')
