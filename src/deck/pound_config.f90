@@ -6,29 +6,15 @@
 !> Units throughout: kN, m, s, t (tonne).
 module pound_config
    use pound_kinds, only: dp
+   use pound_quantities, only: n_history_quantities, history_names, n_target_quantities, target_names, &
+                               q_column_shear, q_column_moment
    implicit none
    private
 
    public :: analysis_config, ground_config, building_config, contact_config, sweep_config, deck_type
-   public :: n_history_quantities, history_names, is_frame
-   public :: n_target_quantities, target_names, q_column_shear, q_column_moment
-
-   !> Number of history quantities that can be stored.
-   integer, parameter :: n_history_quantities = 5
-   !> Names of the history quantities, as written in `&analysis history=` and in HDF5.
-   character(len=*), parameter :: history_names(n_history_quantities) = &
-      [character(len=12) :: 'u', 'v', 'a_abs', 'drift', 'storey_shear']
-
-   !> Number of quantities a sweep's target can apply to: the history quantities, then the
-   !> column-segment quantities of frames (`q_column_shear`, `q_column_moment`).
-   integer, parameter :: n_target_quantities = n_history_quantities + 2
-   !> Index of the largest |lambda| of a column segment's shear among the target quantities.
-   integer, parameter :: q_column_shear = n_history_quantities + 1
-   !> Index of the largest |lambda| of a column segment's end moments (bottom and top).
-   integer, parameter :: q_column_moment = n_history_quantities + 2
-   !> Names of the target quantities, as written in `&sweep target_quantities` and in HDF5.
-   character(len=*), parameter :: target_names(n_target_quantities) = &
-      [character(len=13) :: history_names, 'column_shear', 'column_moment']
+   public :: is_frame
+   ! The quantities (pound_quantities), named here too for the deck's readers.
+   public :: n_history_quantities, history_names, n_target_quantities, target_names, q_column_shear, q_column_moment
 
    !> `&analysis`: title, time stepping and history output.
    type :: analysis_config

@@ -15,12 +15,14 @@ module pound_run_case
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_config, only: deck_type, ground_config
+   use pound_config, only: deck_type, ground_config, analysis_config
+   use pound_analysis_plan, only: analysis_plan, steps_of, stepping_uniform, stepping_impact, free_newmark, &
+                                  free_exact, lcp_auto, lcp_lemke
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_building, only: building_model, build_building
    use pound_structure, only: structure_model, structure_names
-   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning, history_sink, &
+   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, add_warning, history_sink, &
                              analysis_copy
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
@@ -29,6 +31,7 @@ module pound_run_case
    private
 
    public :: case_options, case_result, run_case, deck_ground_motion, configured_motion, label_prefix
+   public :: analysis_plan_of
 
    !> What distinguishes one case of a configuration from another; every component is
    !> optional (the defaults run the configuration as the deck states it).
@@ -81,6 +84,26 @@ module pound_run_case
    end type case_result
 
 contains
+
+   !> The analysis plan of `&analysis`: the number of steps, the output and the stepping,
+   !> free-step and LCP policies as enumerations (pound_analysis_plan), decided once here so
+   !> that no kernel reads the configuration.
+   pure function analysis_plan_of(cfg) result(plan)
+      !> `&analysis`, validated (dt > 0).
+      type(analysis_config), intent(in) :: cfg
+      type(analysis_plan) :: plan
+
+      plan%dt = cfg%dt
+      plan%t_end = cfg%t_end
+      if (cfg%dt > 0.0_dp) plan%n_steps = steps_of(cfg%t_end, cfg%dt)
+      plan%output_every = cfg%output_every
+      plan%store = cfg%store
+      plan%node_histories = cfg%node_histories
+      plan%stepping = merge(stepping_impact, stepping_uniform, cfg%stepping == 'impact')
+      plan%impact_substeps = cfg%impact_substeps
+      plan%free_steps = merge(free_exact, free_newmark, cfg%free_steps == 'exact')
+      plan%lcp_solver = merge(lcp_lemke, lcp_auto, cfg%lcp_solver == 'lemke')
+   end function analysis_plan_of
 
    !> The ground motion the configuration `&ground` describes: a pulse, or a record read
    !> whole from its file (its memory is proportional to the file).
@@ -138,6 +161,7 @@ contains
       type(case_options), intent(in), optional :: options
       type(ground_motion_t) :: deck_gm
       type(contact_pair), allocatable :: pairs(:)
+      type(analysis_plan) :: plan
       character(len=:), allocatable :: prefix
       real(dp), allocatable :: ag(:)
       logical :: coupled_only
@@ -155,8 +179,9 @@ contains
       end if
 
       ! Ground motion, sampled at every step and at the output steps.
-      n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
-      n_out = output_steps(n_steps, deck%analysis%output_every)
+      plan = analysis_plan_of(deck%analysis)
+      n_steps = plan%n_steps
+      n_out = plan%outputs()
       allocate (ag(0:n_steps), res%ag_out(n_out), stat=stat)
       if (stat /= 0) then
          call fatal_error(error, prefix//'&analysis: not enough memory for the ground motion at '// &
@@ -190,7 +215,7 @@ contains
          if (has_uncoupled()) then
             call analysis_copy(options%unc, res%unc)
          else
-            call run_uncoupled(deck%analysis, res%models, ag, res%unc, error, sink)
+            call run_uncoupled(plan, res%models, ag, res%unc, error, sink)
             if (allocated(error)) return
          end if
          res%has_uncoupled = .true.
@@ -205,9 +230,9 @@ contains
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
          if (has_ground()) then
-            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, options%ground, sink)
+            call run_coupled(plan, res%models, ag, pairs, res%cpl, res%cs, error, options%ground, sink)
          else
-            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, deck_gm, sink)
+            call run_coupled(plan, res%models, ag, pairs, res%cpl, res%cs, error, deck_gm, sink)
          end if
          if (allocated(error)) then
             error%message = prefix//error%message
@@ -218,10 +243,10 @@ contains
             res%influence = influence_of(res%unc, res%cpl)
             if (deck%sweep%active) then
                if (has_ground()) then
-                  call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, &
+                  call run_sweep(plan, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, &
                                  options%ground)
                else
-                  call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, deck_gm)
+                  call run_sweep(plan, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, deck_gm)
                end if
                if (allocated(error)) then
                   error%message = prefix//error%message

@@ -6,6 +6,7 @@ module pound_listing
    use pound_kinds, only: dp
    use pound_strings, only: fixed_cell, left_cell, right_cell
    use pound_listing_writer, only: listing_writer
+   use pound_analysis_plan, only: steps_of
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_building, only: building_model
@@ -106,7 +107,7 @@ contains
       call write_section(lst, 'Analysis and ground motion')
       write (lst%unit, '(a,es12.4,a,f10.4,a,i0,a,i0)', iostat=lst%ios, iomsg=lst%msg) &
          '  dt =', deck%analysis%dt, ' s   t_end =', &
-         deck%analysis%t_end, ' s   steps = ', nint(deck%analysis%t_end/deck%analysis%dt), &
+         deck%analysis%t_end, ' s   steps = ', steps_of(deck%analysis%t_end, deck%analysis%dt), &
          '   history every ', deck%analysis%output_every
       call lst%note()
       do i = 1, size(ground_text)

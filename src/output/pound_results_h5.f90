@@ -60,7 +60,8 @@ module pound_results_h5
                            q_column_moment
    use pound_building, only: building_model
    use pound_structure, only: structure_model
-   use pound_analysis, only: analysis_result, history_sink, output_steps
+   use pound_analysis, only: analysis_result, history_sink
+   use pound_analysis_plan, only: output_steps, steps_of
    use pound_contact, only: contact_system
    use pound_contact_law, only: law_name
    use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
@@ -127,7 +128,7 @@ contains
          error%message = 'cannot write '//label//': '//error%message
          return
       end if
-      sink%n_out = output_steps(nint(deck%analysis%t_end/deck%analysis%dt), deck%analysis%output_every)
+      sink%n_out = output_steps(steps_of(deck%analysis%t_end, deck%analysis%dt), deck%analysis%output_every)
       sink%compress = deck%analysis%compress
       allocate (sink%names(size(deck%buildings)))
       do ib = 1, size(deck%buildings)
