@@ -24,7 +24,7 @@ module pound_sweep
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str
-   use pound_config, only: sweep_config
+   use pound_sweep_settings, only: sweep_config
    use pound_quantities, only: n_target_quantities
    use pound_analysis_plan, only: analysis_plan
    use pound_structure, only: structure_model

@@ -8,6 +8,7 @@ module pound_config
    use pound_kinds, only: dp
    use pound_quantities, only: n_history_quantities, history_names, n_target_quantities, target_names, &
                                q_column_shear, q_column_moment
+   use pound_sweep_settings, only: sweep_config
    implicit none
    private
 
@@ -183,24 +184,6 @@ module pound_config
       real(dp) :: peak_force = 0.0_dp, peak_penetration = 0.0_dp, fracture_penetration = 0.0_dp
       integer :: n_segments = 8
    end type contact_config
-
-   !> `&sweep`: the coupled analysis repeated for a range of seismic-joint gaps.
-   type :: sweep_config
-      !> Whether the deck asks for a sweep.
-      logical :: active = .false.
-      !> First and last gap (m), applied to every contact pair.
-      real(dp) :: gap_from = 0.0_dp, gap_to = 0.0_dp
-      !> Number of gaps, evenly spaced from gap_from to gap_to.
-      integer :: n_gaps = 0
-      !> Target for the largest |lambda| (%); negative when none is given.
-      real(dp) :: target = -1.0_dp
-      !> Quantities the target applies to (same order as `target_names`: the history quantities,
-      !> then the frames' column-segment shear and moment, off unless the deck names them).
-      logical :: target_quantities(n_target_quantities) = &
-         [spread(.true., 1, n_history_quantities), .false., .false.]
-      !> Tolerance (m) of the bisection refinement of a suite's threshold gaps (pound_suite).
-      real(dp) :: refine_tolerance = 1.0e-5_dp
-   end type sweep_config
 
    !> A whole, validated deck.
    type :: deck_type
