@@ -56,7 +56,7 @@ set(POUND_SOURCES
   # driver: a suite of ground motions (scaling, one case per motion, suite statistics, rules)
   driver/pound_suite_columns.f90 driver/pound_suite.f90
   # outputs: files, HDF5 layer, results file, the listing writer (unit + first failure), listing
-  output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing_writer.f90
+  output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_text_writer.f90
   output/pound_listing.f90
   # outputs: the suite's listing sections and /suite
   output/pound_suite_output.f90 output/pound_suite_columns_output.f90

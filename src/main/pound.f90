@@ -33,7 +33,7 @@ program pound
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
                             write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
                             write_sweep_column_table, write_section
-   use pound_listing_writer, only: listing_writer, open_listing, close_listing
+   use pound_text_writer, only: text_writer, open_text, close_text
    use pound_summary, only: summary_item, build_summary, summary_lines, motion_heading, summary_text_len
    use pound_summary_output, only: write_summary_csv, write_summary_attributes
    use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
@@ -292,10 +292,10 @@ contains
    subroutine write_listing(path, err)
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: err
-      type(listing_writer) :: lst
+      type(text_writer) :: lst
       character(len=len(ground_text)) :: motion_text(1)
 
-      call open_listing(path, lst, err)
+      call open_text(path, 'listing', lst, err)
       if (allocated(err)) return
       if (size(deck%motions) > 1) then
          ! Assigned (cut to the length of ground_text) before the call: an array constructor
@@ -335,7 +335,7 @@ contains
             '  free steps:            '//exact_text(res%cpl)
       end if
       call lst%note()
-      call close_listing(lst, err)
+      call close_text(lst, err)
    end subroutine write_listing
 
    !> The summary on standard output, written unbuffered: a failed write (standard output

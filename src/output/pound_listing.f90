@@ -1,11 +1,11 @@
 !> The listing (`.out`): a fixed-width report readable in a terminal and on paper.
 !>
-!> Every write is checked: the writers take a `listing_writer` (pound_listing_writer), which
+!> Every write is checked: the writers take a `text_writer` (pound_text_writer), which
 !> keeps the first failure (no space left, file too large, ...); the caller asks it once.
 module pound_listing
    use pound_kinds, only: dp
    use pound_strings, only: fixed_cell, left_cell, right_cell
-   use pound_listing_writer, only: listing_writer
+   use pound_text_writer, only: text_writer
    use pound_analysis_plan, only: steps_of
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
@@ -40,7 +40,7 @@ contains
    !> Warnings of an analysis or a sweep, one line each after '  WARNING: '.
    subroutine write_warning_lines(lst, warnings)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> The warnings (none when unallocated).
       character(len=:), allocatable, intent(in) :: warnings(:)
       integer :: i
@@ -55,7 +55,7 @@ contains
    !> Program, version, date, deck, title, units, the summary (when given) and the deck echo.
    subroutine write_listing_header(lst, deck, ground_text, summary)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> The deck.
       type(deck_type), intent(in) :: deck
       !> Ground motion summary lines.
@@ -119,7 +119,7 @@ contains
    !> A section heading.
    subroutine write_section(lst, title)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> Heading text.
       character(len=*), intent(in) :: title
 
@@ -130,7 +130,7 @@ contains
    !> Per building: storey data, periods and Rayleigh coefficients.
    subroutine write_model_summary(lst, models, buildings)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> The buildings' structural models.
       type(structure_model), intent(in) :: models(:)
       !> Their per-kind data (storey table, frame).
@@ -200,7 +200,7 @@ contains
    !> A frame's geometry, sections, DOFs and (with P-Delta) its gravity analysis.
    subroutine write_frame_summary(lst, b, s)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> Its structural model.
       type(structure_model), intent(in) :: b
       !> The building (a frame).
@@ -295,7 +295,7 @@ contains
    !> Peak tables of an analysis: floors (u, v, a_abs) and storeys (drift, shear).
    subroutine write_peak_tables(lst, label, models, res)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> Analysis label, e.g. 'Uncoupled'.
       character(len=*), intent(in) :: label
       !> The buildings.
@@ -347,7 +347,7 @@ contains
    !> left, fracture, and the LCP statistics with every fallback event.
    subroutine write_contact_summary(lst, cs)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> Contact system at the end of the coupled run.
       type(contact_system), intent(in) :: cs
       integer, parameter :: max_listed_events = 20
@@ -501,7 +501,7 @@ contains
    !> `cpl`, coupled with the influence coefficient lambda (%).
    subroutine write_column_tables(lst, models, buildings, unc, cpl, infl)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Their per-kind data (the frames' column segments).
@@ -594,7 +594,7 @@ contains
    !> floor absolute acceleration.
    subroutine write_influence_tables(lst, models, infl)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Influence coefficients of every building (`pound_influence`).
@@ -660,7 +660,7 @@ contains
    !> gap meeting the target.
    subroutine write_sweep_table(lst, models, cfg, res)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> `&sweep`.
@@ -771,7 +771,7 @@ contains
    !> gap meets the target on every targeted quantity (`sweep_result%meets`).
    subroutine write_sweep_column_table(lst, models, cfg, res)
       !> The listing writer (unit, first write failure).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> `&sweep`.

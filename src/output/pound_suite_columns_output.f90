@@ -15,7 +15,7 @@ module pound_suite_columns_output
    use pound_error, only: error_type
    use pound_structure, only: structure_model
    use pound_h5, only: h5_file, h5_write, h5_write_attr
-   use pound_listing_writer, only: listing_writer
+   use pound_text_writer, only: text_writer
    use pound_listing, only: write_section
    use pound_suite_columns, only: column_suite, column_target_maxima
    implicit none
@@ -30,7 +30,7 @@ contains
    !> motions used. Nothing without frames.
    subroutine write_suite_columns_listing(lst, models, names, failed, cols)
       !> The listing writer (unit, first write failure: the caller asks it).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Motion names.

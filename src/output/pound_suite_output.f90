@@ -46,7 +46,7 @@ module pound_suite_output
    use pound_contact, only: contact_system
    use pound_structure, only: structure_model
    use pound_influence, only: building_influence
-   use pound_listing_writer, only: listing_writer
+   use pound_text_writer, only: text_writer
    use pound_listing, only: write_section, write_influence_tables, gap_cell, mm
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
@@ -72,7 +72,7 @@ contains
    !> are as wide as the longest name, gaps are in mm ('n/a': not computed, or none).
    subroutine write_suite_listing(lst, models, suite, cs)
       !> The listing writer (unit, first write failure: the caller asks it).
-      type(listing_writer), intent(inout) :: lst
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> The suite.

@@ -1,25 +1,28 @@
-!> The listing's writer: its unit, its file and the first write failure.
+!> A text file being written (the listing, the summary CSV): its unit, its file and the first
+!> write failure.
 !>
-!> Every listing writer (`pound_listing`, `pound_suite_output`, `pound_suite_columns_output`)
-!> takes a `listing_writer`, writes with `iostat=w%ios, iomsg=w%msg` and then calls
-!> `w%note()`, which keeps the first failure (no space left, file too large, ...); the
-!> writers never return an error of their own. The caller asks once, in `close_listing`,
-!> which also checks that every byte reached the file.
-module pound_listing_writer
+!> A writer writes with `iostat=w%ios, iomsg=w%msg` and then calls `w%note()`, which keeps the
+!> first failure (no space left, file too large, ...); the listing's writers (`pound_listing`,
+!> `pound_suite_output`, `pound_suite_columns_output`) take the writer and never return an
+!> error of their own. The caller asks once, in `close_text`, which also checks that every
+!> byte reached the file. Messages: 'cannot write the <what> <path>: <reason>'.
+module pound_text_writer
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_error, only: error_type, fatal_error
    use pound_posix, only: posix_set_errno, posix_storage_error
    implicit none
    private
 
-   public :: listing_writer, open_listing, close_listing
+   public :: text_writer, open_text, close_text
 
-   !> An open listing and the first failed write since it was opened.
-   type :: listing_writer
-      !> Unit (formatted stream), opened by `open_listing`.
+   !> An open text file and the first failed write since it was opened.
+   type :: text_writer
+      !> Unit (formatted stream), opened by `open_text`.
       integer :: unit = -1
       !> The file, for messages.
       character(len=:), allocatable :: path
+      !> What the file is, for messages ('listing', 'summary').
+      character(len=:), allocatable :: what
       !> Status of the last write (`iostat=w%ios`).
       integer :: ios = 0
       !> Message of the last write (`iomsg=w%msg`).
@@ -33,14 +36,14 @@ module pound_listing_writer
       procedure :: note => writer_note
       !> The first failure, as an error naming the file (unallocated if none).
       procedure :: io_error => writer_io_error
-   end type listing_writer
+   end type text_writer
 
 contains
 
    !> Keep the last write's failure (`ios`, `msg`) if it is the first.
    subroutine writer_note(w)
       !> The writer.
-      class(listing_writer), intent(inout) :: w
+      class(text_writer), intent(inout) :: w
 
       if (w%ios /= 0 .and. w%first_ios == 0) then
          w%first_ios = w%ios
@@ -51,36 +54,39 @@ contains
    !> The first write failure (unallocated if none), naming the file.
    subroutine writer_io_error(w, error)
       !> The writer.
-      class(listing_writer), intent(in) :: w
+      class(text_writer), intent(in) :: w
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
 
-      if (w%first_ios /= 0) call fatal_error(error, 'cannot write the listing '//w%path//': '//trim(w%first_msg))
+      if (w%first_ios /= 0) call fatal_error(error, failure_text(w, trim(w%first_msg)))
    end subroutine writer_io_error
 
-   !> Open `path` (created or truncated) for the listing, as a formatted stream so that
-   !> `close_listing` can check that every byte reached the file.
-   subroutine open_listing(path, w, error)
+   !> Open `path` (created or truncated), as a formatted stream so that `close_text` can check
+   !> that every byte reached the file.
+   subroutine open_text(path, what, w, error)
       !> File.
       character(len=*), intent(in) :: path
+      !> What the file is, for messages ('listing', 'summary').
+      character(len=*), intent(in) :: what
       !> The writer, opened on `path` with no failure kept.
-      type(listing_writer), intent(out) :: w
+      type(text_writer), intent(out) :: w
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
 
       w%path = path
+      w%what = what
       call posix_set_errno(0)
       open (newunit=w%unit, file=path, status='replace', action='write', access='stream', form='formatted', &
             iostat=w%ios, iomsg=w%msg)
-      if (w%ios /= 0) call fatal_error(error, 'cannot write the listing '//path//': '//trim(w%msg))
-   end subroutine open_listing
+      if (w%ios /= 0) call fatal_error(error, failure_text(w, trim(w%msg)))
+   end subroutine open_text
 
-   !> Close the listing and check it: a failed write, or a file shorter than what was
-   !> written (the Fortran run-time can drop a buffer the system refused: no space, file
-   !> too large), is an error naming the system's reason.
-   subroutine close_listing(w, error)
-      !> The writer of `open_listing`.
-      type(listing_writer), intent(inout) :: w
+   !> Close the file and check it: a failed write, or a file shorter than what was written
+   !> (the Fortran run-time can drop a buffer the system refused: no space, file too large),
+   !> is an error naming the system's reason.
+   subroutine close_text(w, error)
+      !> The writer of `open_text`.
+      type(text_writer), intent(inout) :: w
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       integer :: stat
@@ -94,7 +100,7 @@ contains
       close (w%unit, iostat=w%ios, iomsg=w%msg)
       if (allocated(error)) return
       if (w%ios /= 0) then
-         call fatal_error(error, 'cannot write the listing '//w%path//': '//trim(w%msg))
+         call fatal_error(error, failure_text(w, trim(w%msg)))
          return
       end if
       inquire (file=w%path, size=size_on_disk, iostat=stat)
@@ -102,8 +108,19 @@ contains
          reason = posix_storage_error()
          if (len(reason) == 0) reason = 'the file system did not take every byte'
          write (counts, '(a,i0,a,i0,a)') ' (the file holds ', size_on_disk, ' of ', written - 1, ' bytes)'
-         call fatal_error(error, 'cannot write the listing '//w%path//': '//reason//trim(counts))
+         call fatal_error(error, failure_text(w, reason//trim(counts)))
       end if
-   end subroutine close_listing
+   end subroutine close_text
 
-end module pound_listing_writer
+   !> 'cannot write the <what> <path>: <reason>'.
+   pure function failure_text(w, reason) result(text)
+      !> The writer.
+      type(text_writer), intent(in) :: w
+      !> The system's reason.
+      character(len=*), intent(in) :: reason
+      character(len=:), allocatable :: text
+
+      text = 'cannot write the '//w%what//' '//w%path//': '//reason
+   end function failure_text
+
+end module pound_text_writer
