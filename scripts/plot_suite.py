@@ -122,9 +122,10 @@ def plot_all(s, plt, np, save):
         pair_names = (pairs.decode() if isinstance(pairs, bytes) else str(pairs)).split()
         fig, axes = plt.subplots(1, n_pairs, figsize=(3.2 * n_pairs + 1, 4), squeeze=False)
         x = np.arange(nm + 1)
-        # A failed motion has no rules (its row is not plotted).
+        # A failed motion has no rules (its row is not plotted); a rule or gap that is n/a (-1: no
+        # history of an end, or an end between floors without node_histories) is not drawn.
         gone = np.append(failed, False)
-        nc = np.where(gone[None, :], np.nan, nc)
+        nc = np.where(gone[None, :] | (nc < 0), np.nan, nc)
         if th is not None:
             th = np.where(gone[None, :], -1.0, th)
         for p, ax in enumerate(axes[0]):
@@ -133,7 +134,8 @@ def plot_all(s, plt, np, save):
                 ax.plot(x[ok], 1e3 * th[p][ok], "rs-", lw=2.5, label="time-history threshold")
             ax.plot(x, 1e3 * nc[p], "ko-", lw=2, label="no-contact gap")
             for r, m in zip(["abs", "srss", "ec8", "ddc"], ["^", "v", "D", "x"]):
-                v = np.where(gone[None, :], np.nan, _cols(s[f"separation/{r}"][...], nm + 1, np))
+                v = _cols(s[f"separation/{r}"][...], nm + 1, np)
+                v = np.where(gone[None, :] | (v < 0), np.nan, v)
                 ax.plot(x, 1e3 * v[p], marker=m, lw=0.8, ms=4, label=r.upper())
             ax.set_xticks(x)
             ax.set_xticklabels([n + (" (FAILED)" if f else "") for n, f in zip(names, failed)] + ["suite"],

@@ -12,6 +12,17 @@ plus the integration time (median of several runs) and the observed order betwee
 neighbouring steps. With --stepping uniform,impact the ladder is run once per time stepping
 (`&analysis stepping`; --substeps sets impact_substeps); the reference is always uniform.
 Columns stepping and steps taken (base steps plus substeps) tell the series apart.
+
+With --converged the script instead measures the settings against a converged reference of
+the influence coefficients (lambda, pp) that it computes itself: uniform runs at h, 2h and 4h
+(h = --ref-dt), Richardson-extrapolated at order 2, L = l(h) + (l(h) - l(2h))/3; its own
+uncertainty is the largest change of that extrapolation from (2h, 4h) to (h, 2h), stated with
+the observed order. Each time step of --dts is run with each setting of --stepping, the
+settings interleaved --repeats times (medians of the coupled-loop time), and each time is
+also given against the plain run (uniform, Newmark) at --base-dt, as the ratio of the medians
+and of the fastest runs (less disturbed on a loaded machine). Errors: lambda of the
+storey shears (the figure of the accurate setting's target), of every quantity and member row
+(a_abs and the column end forces included), and of the peak contact forces.
 """
 import argparse
 import math
@@ -150,7 +161,18 @@ def main():
                     help="comma separated: uniform, impact, uniform-exact, impact-exact (one ladder each; "
                          "-exact: free_steps = 'exact')")
     ap.add_argument("--substeps", type=int, default=0, help="impact_substeps of the impact ladder (0: automatic)")
+    ap.add_argument("--converged", action="store_true",
+                    help="errors of lambda against a Richardson-extrapolated reference (see the module doc)")
+    ap.add_argument("--ref-dt", type=float, default=3.125e-5, help="--converged: finest reference step h")
+    ap.add_argument("--base-dt", type=float, default=1e-3, help="--converged: dt of the plain run the times are "
+                    "compared with")
     a = ap.parse_args()
+    if a.converged:
+        with open(a.deck) as f:
+            text = f.read()
+        os.makedirs(a.outdir, exist_ok=True)
+        return converged(a, text, os.path.dirname(os.path.abspath(a.deck)),
+                         os.path.splitext(os.path.basename(a.deck))[0])
     steppings = [x.strip() for x in a.stepping.split(",") if x.strip()]
     kinds = ("uniform", "impact", "uniform-exact", "impact-exact")
     if not steppings or any(x not in kinds for x in steppings):
@@ -236,6 +258,95 @@ def main():
                       file=sys.stderr)
                 status = 3
     return status
+
+
+def lambdas(h5path):
+    """Every influence coefficient of a result file: {dataset path: array} (sweep groups left out)."""
+    import h5py
+    import numpy as np
+
+    out = {}
+    with h5py.File(h5path, "r") as f:
+        if "/influence" not in f:
+            return out
+
+        def visit(name, obj):
+            if isinstance(obj, h5py.Dataset) and obj.dtype.kind == "f":
+                out[name] = np.asarray(obj[()], dtype=float)
+        f["/influence"].visititems(visit)
+    return out
+
+
+def lambda_error(x, ref, keys):
+    import numpy as np
+
+    vals = [float(np.max(np.abs(x[k] - ref[k]))) for k in keys if k in ref and ref[k].size]
+    return max(vals) if vals else float("nan")
+
+
+def converged(a, text, deck_dir, stem):
+    """--converged: the settings at each dt against the Richardson-extrapolated reference."""
+    import numpy as np
+
+    steppings = [x.strip() for x in a.stepping.split(",") if x.strip()]
+    dts = sorted((float(s) for s in a.dts.split(",")), reverse=True)
+    h = a.ref_dt
+    t_out = max(dts + [a.base_dt])
+    every = lambda dt: max(1, round(t_out / dt))
+    with tempfile.TemporaryDirectory() as tmp:
+        lam = []
+        for k, hh in enumerate((h, 2 * h, 4 * h)):
+            p, _, tc, _ = run(a.exe, text, deck_dir, f"{stem}_ref{k}", tmp, hh, every(hh), 1)
+            lam.append(lambdas(p))
+        keys = sorted(lam[0])
+        rich = {k: lam[0][k] + (lam[0][k] - lam[1][k]) / 3.0 for k in keys}
+        rich2 = {k: lam[1][k] + (lam[1][k] - lam[2][k]) / 3.0 for k in keys}
+        unc = {k: float(np.max(np.abs(rich[k] - rich2[k]))) for k in keys}
+        orders = []
+        for k in keys:
+            d1, d2 = np.abs(lam[2][k] - lam[1][k]), np.abs(lam[1][k] - lam[0][k])
+            ok = (d2 > 1e-9) & (d1 > 1e-9)
+            orders += list(np.log2(d1[ok] / d2[ok]))
+        shear_keys = [k for k in keys if k.endswith("/storey_shear") and k.count("/") == 1]
+        results = {}
+        runs = [(sp, dt) for dt in dts for sp in steppings]
+        if ("uniform", a.base_dt) not in runs:
+            runs.append(("uniform", a.base_dt))
+        times = {r: [] for r in runs}
+        info = {}
+        for rep in range(a.repeats):
+            for i, (sp, dt) in enumerate(runs):
+                stepping, _, free = sp.partition("-")
+                p, _, tc, steps = run(a.exe, text, deck_dir, f"{stem}_c{i}", tmp, dt, every(dt), 1, stepping, a.substeps,
+                                      free or "newmark")
+                times[(sp, dt)].append(tc)
+                if rep == 0:
+                    x = lambdas(p)
+                    info[(sp, dt)] = (steps, lambda_error(x, rich, shear_keys), lambda_error(x, rich, keys),
+                                      lambda_error(x, rich, [k for k in keys if k.endswith("/a_abs")]))
+    base = statistics.median(times[("uniform", a.base_dt)])
+    u_shear = max((unc[k] for k in shear_keys), default=float("nan"))
+    u_all = max(unc.values(), default=float("nan"))
+    lines = [f"Deck `{os.path.basename(a.deck)}`: converged reference of the influence coefficients by Richardson "
+             f"extrapolation of uniform runs at h = {h:g}, 2h, 4h s (observed order median "
+             f"{fmt(float(np.median(orders)) if orders else float('nan'), '.2f')}); its uncertainty (change of the "
+             f"extrapolation from (2h, 4h) to (h, 2h)): storey-shear lambda {u_shear:.1e} pp, every lambda "
+             f"{u_all:.1e} pp. Times: medians of {a.repeats} interleaved runs of the coupled time-step loop; "
+             f"ratio against the plain run (uniform, Newmark) at dt = {a.base_dt:g} s ({1e3 * base:.2f} ms).", "",
+             "| setting | dt [s] | steps taken | coupled loop [ms] | x plain | x plain (fastest runs) | "
+             "lambda err, storey shear [pp] | lambda err, every quantity [pp] | of which a_abs [pp] |",
+             "|---|--:|--:|--:|--:|--:|--:|--:|--:|"]
+    for (sp, dt) in runs:
+        steps, e_s, e_a, e_acc = info[(sp, dt)]
+        t = statistics.median(times[(sp, dt)])
+        fastest = min(times[(sp, dt)]) / min(times[("uniform", a.base_dt)])
+        lines.append(f"| {sp} | {dt:g} | {steps if steps is not None else '-'} | {1e3 * t:.2f} | {t / base:.2f} | "
+                     f"{fastest:.2f} | {e_s:.4f} | {e_a:.4f} | {e_acc:.4f} |")
+    md = "\n".join(lines)
+    print(md)
+    with open(os.path.join(a.outdir, f"{stem}_converged.md"), "w") as f:
+        f.write(md + "\n")
+    return 0
 
 
 def plot(all_rows, coupled, base, title):

@@ -25,6 +25,8 @@ set(POUND_SOURCES
   # models: band storage, shear building, ground motion
   model/pound_band.f90 model/pound_structure.f90 model/pound_storey_properties.f90
   model/pound_shear_building.f90 model/pound_ground_motion.f90
+  # models: plausibility (period against the code estimate for the height, buckling hint)
+  model/pound_plausibility.f90
   # models: synthetic ground motions (filtered white noise)
   model/pound_synthetic_motion.f90
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)
@@ -37,9 +39,13 @@ set(POUND_SOURCES
   # solver: several ground motions of one shear building at once (motion-fastest lanes)
   solver/pound_newmark_batch.f90
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
-  contact/pound_contact_law.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
+  contact/pound_joint_law.f90 contact/pound_contact_law.f90 contact/pound_law_elastic.f90
+  contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90
+  contact/pound_law_registry.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
   contact/pound_joint_state.f90 contact/pound_lcp_statistics.f90 contact/pound_contact_lcp.f90
-  contact/pound_contact.f90
+  contact/pound_contact_system.f90 contact/pound_contact.f90
+  # contact: the contact half-period of a joint (substep count), ends without mass condensed
+  contact/pound_contact_period.f90
   contact/pound_lcp_enumerate.f90
   contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
@@ -54,10 +60,14 @@ set(POUND_SOURCES
   # driver: the memory a deck's run needs (estimated from the deck) and what the machine gives
   driver/pound_memory.f90
   # driver: a suite of ground motions (scaling, one case per motion, suite statistics, rules)
-  driver/pound_suite_columns.f90 driver/pound_suite.f90
-  # outputs: files, HDF5 layer, results file, the listing writer (unit + first failure), listing
+  driver/pound_suite_columns.f90 driver/pound_suite_outcome.f90 driver/pound_suite_context.f90
+  driver/pound_suite_motions.f90 driver/pound_suite_statistics.f90 driver/pound_suite_refine.f90
+  driver/pound_suite.f90
+  # outputs: files, HDF5 layer, results file, the text writer (unit + first failure), listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_text_writer.f90
   output/pound_listing.f90
+  # outputs: the separation rules' listing table and datasets (a run and a suite)
+  output/pound_separation_output.f90
   # outputs: the suite's listing sections and /suite
   output/pound_suite_output.f90 output/pound_suite_columns_output.f90
   # outputs: the engineering summary (terminal, top of the listing, <stem>_summary.csv, root attributes)

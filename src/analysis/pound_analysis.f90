@@ -22,11 +22,12 @@ module pound_analysis
    use iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str
+   use pound_error, only: error_type, fatal_error, error_at
+   use pound_strings, only: str, add_warning, mm_text
    use pound_analysis_plan, only: analysis_plan, output_steps, stepping_impact, free_exact, lcp_lemke
    use pound_structure, only: structure_model, building_label => structure_label
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
+   use pound_contact_pair, only: end_mass
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
                             newmark_predict_exact, newmark_drop_exact, newmark_advance, &
@@ -37,8 +38,10 @@ module pound_analysis
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record, contact_swap_step, &
-                            contact_may_act, lcp_solver_lemke, contact_track_closing, contact_track_paths
+                            contact_may_act, contact_carries_force, lcp_solver_lemke, contact_track_closing, &
+                            contact_track_paths
    use pound_deck_variables, only: max_substeps
+   use pound_contact_period, only: joint_half_period
    implicit none
    private
 
@@ -247,7 +250,8 @@ contains
    end subroutine coupled_prepare
 
    !> Substeps per impact step: `impact_substeps` when given, else the least m for which
-   !> dt/m is at most the shortest contact half-period of the joints divided by
+   !> dt/m is at most the shortest contact half-period of the joints (`joint_half_period`: the
+   !> facing masses, or for an end without mass its condensed mass and point stiffness) divided by
    !> `substeps_per_half_period` (`substeps_per_half_period_exact` with exact free steps; at
    !> least 2, at most `max_substeps`).
    integer function impact_substeps_of(cfg, models, cs) result(m)
@@ -266,7 +270,7 @@ contains
       end if
       half = huge(1.0_dp)
       do k = 1, cs%m
-         half = min(half, contact_half_period(cs%pair(k), models))
+         half = min(half, joint_half_period(cs%pair(k), models))
       end do
       per_half = substeps_per_half_period
       if (cfg%free_steps == free_exact) per_half = substeps_per_half_period_exact
@@ -297,7 +301,7 @@ contains
 
       do e = 1, 2
          m(e) = 0.0_dp
-         if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%dof(e))
+         if (p%building(e) > 0) m(e) = end_mass(p, e, models(p%building(e))%mass)
       end do
       if (m(1) > 0.0_dp .and. m(2) > 0.0_dp) then
          meff = m(1)*m(2)/(m(1) + m(2))
@@ -413,7 +417,7 @@ contains
       integer(int64) :: c0, c1, rate, write_ticks
       real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, track, exact, plain
+      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded
       integer :: newmark_steps
 
       nb = size(models)
@@ -467,10 +471,16 @@ contains
          t = real(step, dp)*cfg%dt
          ag_old = ag(step - 1)
          ag_new = ag(step)
+         ! A joint carrying force at the start makes the step Newmark's (below): its exact
+         ! prediction, which would be dropped, is not made.
+         loaded = .false.
+         if (exact .and. coupled .and. .not. track) loaded = contact_carries_force(cs)
          if (exact) then
-            do ib = 1, nb
-               call newmark_predict_exact(st(ib), models(ib), ag_old, ag_new)
-            end do
+            if (.not. loaded) then
+               do ib = 1, nb
+                  call newmark_predict_exact(st(ib), models(ib), ag_old, ag_new)
+               end do
+            end if
          else if (.not. plain) then
             do ib = 1, nb
                call newmark_predict(st(ib), models(ib), ag_new - ag_old)
@@ -487,7 +497,7 @@ contains
          n_sub = 1
          if (impact .or. (exact .and. coupled)) then
             if (track) call contact_track_paths(cs, st)
-            if (contact_may_act(cs, st)) then
+            if (loaded .or. contact_may_act(cs, st)) then
                newmark_steps = newmark_steps + 1
                if (impact) then
                   n_sub = sub%m
@@ -521,6 +531,7 @@ contains
                if (allocated(error)) then
                   ! A state that is not finite is named as such, not as a failed LCP.
                   call locate_nonfinite(st, models, cs, t_sub, step, error, predicted=.true.)
+                  call error_at(error, t_sub, step)
                   return
                end if
             end if
@@ -836,29 +847,6 @@ contains
       end if
    end function audit_error
 
-   !> Append a warning to a list of warnings (e.g. `res%warnings`).
-   pure subroutine add_warning(warnings, text)
-      !> The list (unallocated: empty).
-      character(len=:), allocatable, intent(inout) :: warnings(:)
-      !> One line of text.
-      character(len=*), intent(in) :: text
-      character(len=:), allocatable :: grown(:)
-      integer :: i, n, length
-
-      n = 0
-      length = len(text)
-      if (allocated(warnings)) then
-         n = size(warnings)
-         length = max(length, len(warnings))
-      end if
-      allocate (character(len=length) :: grown(n + 1))
-      do i = 1, n
-         grown(i) = warnings(i)
-      end do
-      grown(n + 1) = text
-      call move_alloc(grown, warnings)
-   end subroutine add_warning
-
    !> Write each warning of a list (e.g. `res%warnings`, `sweep%warnings`) as one line, `prefix`
    !> first (e.g. 'pound: warning: '); nothing for an empty or unallocated list.
    subroutine write_warnings(unit, warnings, prefix)
@@ -947,7 +935,8 @@ contains
             if (ieee_is_finite(e(i))) cycle
             call fatal_error(error, building_label(models(ib))//': the '//trim(energy_names(i))// &
                              ' energy is not finite at t = '//str(t)//' s (step '//str(step)//') ('// &
-                             str(e(i))//' kJ, largest |u| '//str(maxval(abs(newmark_u(st(ib)))))//' m)'//hint)
+                             str(e(i))//' kJ, largest |u| '//mm_text(maxval(abs(newmark_u(st(ib)))))//')'//hint)
+            call error_at(error, t, step, building=ib)
             return
          end do
       end do
@@ -955,10 +944,12 @@ contains
          if (ieee_is_finite(sample(i))) cycle
          call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
                           trim(energy_names(i))//' energy is not finite ('//str(sample(i))//' kJ)'//hint)
+         call error_at(error, t, step)
          return
       end do
       call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
                        'energy total overflows'//hint)
+      call error_at(error, t, step)
    end subroutine state_failure
 
    !> Set `error` to the first value of the state that is not finite, if there is one: u, v,
@@ -1007,6 +998,7 @@ contains
                call fatal_error(error, building_label(models(ib))//': floor '//str(i)//': '//trim(names(q))// &
                                 ' = '//str(x(1))//at//': the first value of the run that is not finite '// &
                                 '(check the size of the ground motion, masses, stiffnesses and joints)')
+               call error_at(error, t, step, building=ib)
                return
             end do
          end do
@@ -1020,6 +1012,7 @@ contains
                call fatal_error(error, 'contact '//cs%pair(k)%label//': joint '//trim(joint(q))//' = '//str(x(q))//at// &
                                 ': the first value of the run that is not finite (check the joint''s '// &
                                 'stiffness, dashpot and law)')
+               call error_at(error, t, step, joint=k)
                return
             end do
          end associate

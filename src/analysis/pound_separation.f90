@@ -1,34 +1,56 @@
 !> Code rules for the separation (seismic joint) of two adjacent buildings at one contact pair,
 !> from the uncoupled peak displacements u1, u2 (m, >= 0) of the two facing points (building 1
 !> on the left, its displacement to the right closes the joint), the buildings' fundamental
-!> periods T1, T2 (s) and damping ratios z1, z2. Applied, as given, to elastic peaks (no
-!> displacement amplification factors).
+!> periods T1, T2 (s), damping ratios z1, z2 and their design-code factors (`code_factors`).
+!>
+!> Combinations of the elastic peaks (no factor):
 !>
 !> * ABS = u1 + u2 (the sum: both peaks at the same time, in opposite directions);
 !> * SRSS = sqrt(u1^2 + u2^2);
-!> * EC8 (Eurocode 8, 4.4.2.7): the SRSS, times 0.7 where the floor levels coincide;
+!> * ec8 (legacy name, kept for the HDF5 layout): the SRSS, times 0.7 where the floor levels
+!>   coincide, of the elastic peaks, without q_d: not a code check (see `en1998`);
 !> * DDC (double difference combination) = sqrt(u1^2 + u2^2 - 2 rho u1 u2), with the CQC
 !>   correlation of two oscillators (Der Kiureghian 1981), r = T1/T2:
 !>   rho = 8 sqrt(z1 z2) (z1 + r z2) r^1.5 / ((1 - r^2)^2 + 4 z1 z2 r (1 + r^2) + 4 (z1^2 + z2^2) r^2);
+!>
+!> Design-code rules, with each building's factors (n/a: the factor of either building not given):
+!>
+!> * ASCE 7-16 12.12.3 (Eq. 12.12-2): delta_M = Cd delta_max / Ie per building,
+!>   delta_MT = sqrt(delta_M1^2 + delta_M2^2);
+!> * EN 1998-1:2004 4.4.2.7(2)-(3) with 4.3.4: d = q_d d_e per building (q_d = q), the SRSS
+!>   of the two, times 0.7 where the floor levels coincide;
+!> * IS 1893 (Part 1):2016 7.11.3: R1 D1 + R2 D2 (the code's R (D1 + D2) with each
+!>   building's own R), times 0.5 where the floor levels coincide;
+!>
+!> and from the histories:
+!>
 !> * the exact no-contact gap max_t (u1(t) - u2(t)) of the uncoupled histories (0 if the
 !>   joint never closes): the smallest gap at which the buildings never touch;
 !> * (held here, computed by pound_suite) the time-history threshold gap of the gap sweep.
 !>
-!> The formulas are pure elemental functions that assume valid arguments; `separation_rules`
-!> checks the arguments and returns all of them.
+!> The formulas are pure elemental functions that assume valid arguments; `code_separation`
+!> gives every rule from the peaks for one pair (usable for any run), `separation_rules`
+!> checks the arguments and adds the no-contact gap. A rule that is not computed holds NaN
+!> and its `*_valid` flag is false: never use its value as a number.
 module pound_separation
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use pound_kinds, only: dp
+   use pound_config, only: code_factors, deck_type
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    implicit none
    private
 
    public :: separation_abs, separation_srss, separation_ec8, separation_ddc, cqc_correlation
-   public :: no_contact_gap, separation_t, separation_rules
+   public :: no_contact_gap, separation_t, separation_rules, code_separation, levels_coincide
+   public :: separation_asce7, separation_en1998, separation_is1893, not_computed, pair_separation
 
    !> The EC8 reduction factor where floor levels coincide.
    real(dp), parameter, public :: ec8_coincident_factor = 0.7_dp
+   !> The IS 1893 7.11.3 reduction factor (R/2 instead of R) where floor levels coincide.
+   real(dp), parameter, public :: is1893_coincident_factor = 0.5_dp
+   !> Two floor levels (m above the common base) coincide when they differ by at most this.
+   real(dp), parameter, public :: level_tolerance = 1.0e-9_dp
 
    !> All rules for one pair (m; rho dimensionless).
    type :: separation_t
@@ -36,12 +58,25 @@ module pound_separation
       real(dp) :: abs = 0.0_dp, srss = 0.0_dp, ec8 = 0.0_dp, ddc = 0.0_dp
       !> CQC correlation used by the DDC.
       real(dp) :: rho = 0.0_dp
-      !> Exact no-contact gap from the histories.
+      !> Design-code separations (m): ASCE 7-16 12.12.3, EN 1998-1 4.4.2.7, IS 1893 7.11.3;
+      !> NaN when not computed (a factor not given), see the flags below.
+      real(dp) :: asce7 = 0.0_dp, en1998 = 0.0_dp, is1893 = 0.0_dp
+      !> Whether each design-code rule was computed (its factors given for both buildings).
+      logical :: asce7_valid = .false., en1998_valid = .false., is1893_valid = .false.
+      !> Exact no-contact gap from the histories (a run: the sweep probe's largest closing).
       real(dp) :: no_contact = 0.0_dp
+      !> Whether `no_contact` was computed.
+      logical :: no_contact_valid = .false.
       !> Time-history threshold gap of a suite's gap sweep (pound_suite): the smallest gap
       !> meeting the sweep's target, the same for every pair (a sweep gives every pair the same
-      !> gap); -1 when not computed (no `&sweep`, no target, or no gap of the range meets it).
+      !> gap); -1 when not computed (no `&sweep`, no target, or no gap of the range meets it:
+      !> `time_history_valid` false; the -1 is kept for the HDF5 layout, never print it).
       real(dp) :: time_history = -1.0_dp
+      !> Whether `time_history` was computed.
+      logical :: time_history_valid = .false.
+      !> False when no rule could be computed for the pair (a facing point between floors,
+      !> whose peak is not tracked): every rule n/a.
+      logical :: computed = .true.
    end type separation_t
 
 contains
@@ -114,6 +149,146 @@ contains
       s = sqrt((u1 - u2)**2 + 2.0_dp*(1.0_dp - rho)*u1*u2)
    end function separation_ddc
 
+   !> ASCE 7-16 12.12.3 (Eq. 12.12-1, 12.12-2): delta_MT = sqrt(delta_M1^2 + delta_M2^2) with
+   !> delta_M = Cd delta_max / Ie of each building (m). Factors > 0.
+   elemental function separation_asce7(u1, u2, cd1, ie1, cd2, ie2) result(s)
+      !> Elastic peak displacements (m) >= 0.
+      real(dp), intent(in) :: u1, u2
+      !> Deflection amplification and importance factors of building 1 and of building 2.
+      real(dp), intent(in) :: cd1, ie1, cd2, ie2
+      real(dp) :: s
+
+      s = separation_srss(cd1*u1/ie1, cd2*u2/ie2)
+   end function separation_asce7
+
+   !> EN 1998-1 4.4.2.7(2)-(3): the SRSS of d = q_d d_e of each building (4.3.4), times 0.7
+   !> where the floor levels coincide (m). Factors > 0.
+   elemental function separation_en1998(u1, u2, q1, q2, floors_coincide) result(s)
+      !> Elastic peak displacements (m) >= 0.
+      real(dp), intent(in) :: u1, u2
+      !> Displacement behaviour factors q_d of building 1 and of building 2.
+      real(dp), intent(in) :: q1, q2
+      !> The facing floors are at the same level.
+      logical, intent(in) :: floors_coincide
+      real(dp) :: s
+
+      s = separation_ec8(q1*u1, q2*u2, floors_coincide)
+   end function separation_en1998
+
+   !> IS 1893 (Part 1):2016 7.11.3: R1 D1 + R2 D2 (the code's R (D1 + D2), each building with
+   !> its own R), times 0.5 (R/2) where the floor levels coincide (m). Factors > 0.
+   elemental function separation_is1893(u1, u2, r1, r2, floors_coincide) result(s)
+      !> Elastic peak displacements (m) >= 0.
+      real(dp), intent(in) :: u1, u2
+      !> Response reduction factors of building 1 and of building 2.
+      real(dp), intent(in) :: r1, r2
+      !> The facing floors are at the same level.
+      logical, intent(in) :: floors_coincide
+      real(dp) :: s
+
+      s = r1*u1 + r2*u2
+      if (floors_coincide) s = is1893_coincident_factor*s
+   end function separation_is1893
+
+   !> Whether two floor levels (m above the common base) coincide (within `level_tolerance`).
+   elemental logical function levels_coincide(z1, z2)
+      !> The two levels (m).
+      real(dp), intent(in) :: z1, z2
+
+      levels_coincide = abs(z1 - z2) <= level_tolerance
+   end function levels_coincide
+
+   !> The value of a rule that is not computed: a quiet NaN (never a number).
+   elemental real(dp) function not_computed(x)
+      !> Any real (only its kind matters).
+      real(dp), intent(in) :: x
+
+      not_computed = ieee_value(x, ieee_quiet_nan)
+   end function not_computed
+
+   !> Every rule of one pair from the elastic peaks u1, u2 (m, >= 0) of its facing points:
+   !> ABS, SRSS, the legacy ec8, DDC with its rho, and the design-code rules with the two
+   !> buildings' factors (a rule whose factor is not given (<= 0) is NaN and not valid).
+   !> Periods > 0, 0 <= z < 1 (not checked here; `separation_rules` checks). The no-contact
+   !> and time-history gaps are left at their defaults.
+   elemental function code_separation(u1, u2, f1, f2, t1, t2, z1, z2, floors_coincide) result(sep)
+      !> Elastic peak displacements of the facing points (m).
+      real(dp), intent(in) :: u1, u2
+      !> Design-code factors of building 1 (left) and building 2 (right).
+      type(code_factors), intent(in) :: f1, f2
+      !> Fundamental periods (s).
+      real(dp), intent(in) :: t1, t2
+      !> Damping ratios.
+      real(dp), intent(in) :: z1, z2
+      !> The facing floors are at the same level.
+      logical, intent(in) :: floors_coincide
+      type(separation_t) :: sep
+
+      sep%abs = separation_abs(u1, u2)
+      sep%srss = separation_srss(u1, u2)
+      sep%ec8 = separation_ec8(u1, u2, floors_coincide)
+      sep%rho = cqc_correlation(t1, t2, z1, z2)
+      sep%ddc = separation_ddc(u1, u2, t1, t2, z1, z2)
+      sep%asce7_valid = f1%cd > 0.0_dp .and. f2%cd > 0.0_dp .and. f1%importance > 0.0_dp .and. &
+                        f2%importance > 0.0_dp
+      sep%en1998_valid = f1%behaviour_factor > 0.0_dp .and. f2%behaviour_factor > 0.0_dp
+      sep%is1893_valid = f1%response_reduction > 0.0_dp .and. f2%response_reduction > 0.0_dp
+      if (sep%asce7_valid) then
+         sep%asce7 = separation_asce7(u1, u2, f1%cd, f1%importance, f2%cd, f2%importance)
+      else
+         sep%asce7 = not_computed(u1)
+      end if
+      if (sep%en1998_valid) then
+         sep%en1998 = separation_en1998(u1, u2, f1%behaviour_factor, f2%behaviour_factor, floors_coincide)
+      else
+         sep%en1998 = not_computed(u1)
+      end if
+      if (sep%is1893_valid) then
+         sep%is1893 = separation_is1893(u1, u2, f1%response_reduction, f2%response_reduction, floors_coincide)
+      else
+         sep%is1893 = not_computed(u1)
+      end if
+   end function code_separation
+
+   !> The rules of one contact pair of the deck (`code_separation`): building `left` (its
+   !> floor `floor_left`) facing building `right` (its floor `floor_right`), with their factors
+   !> and damping ratios from the deck, the periods t1, t2 (s) and the peaks u1, u2 (m) of
+   !> the facing floors. The floors coincide when their levels above the common base agree
+   !> (`levels_coincide`). A pair with a point between floors (floor 0) has no rule (`computed`
+   !> false).
+   pure function pair_separation(deck, left, right, floor_left, floor_right, u1, u2, t1, t2) result(sep)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Buildings on the left and on the right (indices in `deck%buildings`).
+      integer, intent(in) :: left, right
+      !> Facing floors (0: a point between floors).
+      integer, intent(in) :: floor_left, floor_right
+      !> Elastic peak displacements of the facing floors (m).
+      real(dp), intent(in) :: u1, u2
+      !> Fundamental periods of the two buildings (s).
+      real(dp), intent(in) :: t1, t2
+      type(separation_t) :: sep
+      logical :: coincide
+
+      if (floor_left < 1 .or. floor_right < 1) then
+         sep%computed = .false.
+         sep%abs = not_computed(u1)
+         sep%srss = sep%abs
+         sep%ec8 = sep%abs
+         sep%ddc = sep%abs
+         sep%rho = sep%abs
+         sep%asce7 = sep%abs
+         sep%en1998 = sep%abs
+         sep%is1893 = sep%abs
+         return
+      end if
+      associate (b1 => deck%buildings(left), b2 => deck%buildings(right))
+         coincide = levels_coincide(sum(b1%height(1:floor_left)), sum(b2%height(1:floor_right)))
+         sep = code_separation(u1, u2, b1%factors, b2%factors, t1, t2, b1%damping_ratio, b2%damping_ratio, &
+                               coincide)
+      end associate
+   end function pair_separation
+
    !> Exact no-contact gap max_t (u1(t) - u2(t)) (m) of two histories sampled at the same
    !> times, 0 if the joint never closes. Both must have the same size.
    pure function no_contact_gap(u1, u2) result(gap)
@@ -131,7 +306,7 @@ contains
    !> Every rule for one pair, with the arguments checked: u1, u2 finite and >= 0, periods
    !> finite and > 0, 0 <= z < 1, histories of the same, non-zero length and finite.
    pure subroutine separation_rules(u1, u2, t1, t2, z1, z2, floors_coincide, &
-                                    history1, history2, sep, error)
+                                    history1, history2, sep, error, factors)
       !> Peak displacements of the facing points (m).
       real(dp), intent(in) :: u1, u2
       !> Fundamental periods of the buildings (s).
@@ -146,6 +321,10 @@ contains
       type(separation_t), intent(out) :: sep
       !> Set for an invalid argument.
       type(error_type), allocatable, intent(out) :: error
+      !> Design-code factors of building 1 and building 2 (absent: none given, the design-code
+      !> rules are n/a).
+      type(code_factors), intent(in), optional :: factors(2)
+      type(code_factors) :: f(2)
 
       call check_nonnegative(u1, 'u1', error)
       if (.not. allocated(error)) call check_nonnegative(u2, 'u2', error)
@@ -163,12 +342,10 @@ contains
          call fatal_error(error, 'separation: a displacement history is not finite')
          return
       end if
-      sep%abs = separation_abs(u1, u2)
-      sep%srss = separation_srss(u1, u2)
-      sep%ec8 = separation_ec8(u1, u2, floors_coincide)
-      sep%rho = cqc_correlation(t1, t2, z1, z2)
-      sep%ddc = separation_ddc(u1, u2, t1, t2, z1, z2)
+      if (present(factors)) f = factors
+      sep = code_separation(u1, u2, f(1), f(2), t1, t2, z1, z2, floors_coincide)
       sep%no_contact = no_contact_gap(history1, history2)
+      sep%no_contact_valid = .true.
    end subroutine separation_rules
 
    pure subroutine check_nonnegative(x, name, error)

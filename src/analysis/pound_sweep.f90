@@ -23,7 +23,7 @@ module pound_sweep
    use iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_strings, only: str
+   use pound_strings, only: mm_text, str
    use pound_sweep_settings, only: sweep_config
    use pound_quantities, only: n_target_quantities
    use pound_analysis_plan, only: analysis_plan
@@ -68,6 +68,9 @@ module pound_sweep
       real(dp), allocatable :: closing_max(:)
       !> The message of each failed gap (blank otherwise).
       character(len=case_message_len), allocatable :: messages(:)
+      !> Time (s) and step at which each failed gap's run failed (-1: not known, or not failed).
+      real(dp), allocatable :: time(:)
+      integer, allocatable :: step(:)
       !> Smallest gap from which on every larger gap of the sweep meets the target (m).
       real(dp) :: safe_gap = -1.0_dp
       !> Whether such a gap exists in the range (only with a target).
@@ -314,7 +317,7 @@ contains
       n_bad = 0
       worst = 0.0_dp
       do i = 1, sweep%n_gaps
-         names(i) = 'gap sweep, gap = '//str(res%gap(i))//' m'
+         names(i) = 'gap sweep, gap = '//mm_text(res%gap(i))
       end do
       if (all(table%failed)) then
          call first_failure(table, names, error)
@@ -322,6 +325,8 @@ contains
       end if
       res%failed = table%failed
       res%messages = table%message
+      res%time = table%time
+      res%step = table%step
       res%beyond = table%values(nl + 4, :) > 0.0_dp .and. .not. table%failed
       do i = 1, sweep%n_gaps
          associate (col => table%values(:, i))
@@ -329,7 +334,7 @@ contains
                n_bad = n_bad + 1
                if (col(nl + 2) > worst) then
                   worst = col(nl + 2)
-                  worst_text = 'gap = '//str(res%gap(i))//' m: '//column_to_text(col(nl + 5:))
+                  worst_text = 'gap = '//mm_text(res%gap(i))//': '//column_to_text(col(nl + 5:))
                end if
             end if
             res%impacts(i) = nint(col(nl + 1))

@@ -54,29 +54,31 @@ module pound_contact
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str
-   use pound_newmark, only: newmark_state, newmark_solve, newmark_n, newmark_dt, newmark_predicted, &
-                            newmark_u_at, newmark_add_response, newmark_path
-   use pound_structure, only: structure_model, structure_end_dof
-   use pound_contact_law, only: is_plastic, yield_segment, rate_trapezoidal, dashpot_of_restitution
+   use pound_strings, only: mm_text, str
+   use pound_newmark, only: newmark_state, newmark_predicted, newmark_u_at, newmark_add_response, newmark_path, &
+                            newmark_add_response_rows
+   use pound_structure, only: recovery_rows
+   use pound_contact_law, only: is_plastic, yield_segment
    use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
-   use pound_joint_state, only: joint_state, joints_advance, joints_advance_idle, plain_law, state_open, &
+   use pound_joint_state, only: joint_state, joints_advance, joints_advance_idle, state_open, &
                                 state_elastic, state_fractured, joint_history, joint_history_init, joint_history_record
    use pound_lcp_statistics, only: lcp_statistics, contact_event, statistics_count_solve, &
                                    statistics_add_event, statistics_count_active_set
    use pound_contact_lcp, only: lcp_layout, lcp_assemble, released_opening, lcp_residual
-   use pound_lemke, only: lemke_workspace, lemke_init, lemke_solve, lemke_report, &
-                          lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
+   use pound_lemke, only: lemke_solve, lemke_report, lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
    use pound_lcp_enumerate, only: lcp_enumerate
-   use pound_lcp_active_set, only: active_set_workspace, active_set_report, active_set_init, &
-                                   active_set_solve, active_set_solved
-   use pound_swap, only: swap
+   use pound_lcp_active_set, only: active_set_report, active_set_solve, active_set_solved, active_set_init
+   use pound_joint_law, only: max_law_iterations
+   use pound_contact_system, only: contact_system, contact_init, contact_init_flexibility, contact_swap_step, &
+                                   lcp_workspace, residual_limit, fallback_max_rows, initial_hinges, &
+                                   lcp_solver_auto, lcp_solver_lemke, joint_constants
    implicit none
    private
 
    public :: contact_system, contact_init, contact_init_flexibility
    public :: contact_step, contact_solve, contact_commit, contact_update
    public :: contact_swap_step, contact_may_act, contact_track_closing, contact_track_paths
+   public :: contact_carries_force
    public :: residual_limit, fallback_max_rows, initial_hinges
    public :: lcp_solver_auto, lcp_solver_lemke
    ! Re-exported: the constraint definitions, the joints' state and the LCP statistics.
@@ -85,326 +87,25 @@ module pound_contact
    public :: joint_history, joint_history_init, joint_history_record
    public :: lcp_statistics, contact_event
 
-   !> Largest accepted natural residual of a step's LCP, relative to ||q||.
-   real(dp), parameter :: residual_limit = 1.0e-10_dp
-   !> Largest LCP (rows) solved by enumeration when Lemke ends on a ray.
-   integer, parameter :: fallback_max_rows = 16
-   !> Segment ends per joint modelled up front (rows held by the initial workspace); a step
-   !> that passes more models them on demand and grows the workspace (no fixed limit).
-   integer, parameter :: initial_hinges = 32
-   !> LCP method: the active-set method for steps with elastic joints only, Lemke otherwise
-   !> and when it fails (the default); Lemke for every step.
-   integer, parameter :: lcp_solver_auto = 0, lcp_solver_lemke = 1
-
-   !> A vector of its own length (Khat^{-1} e of one constraint end).
-   type :: column
-      real(dp), allocatable :: x(:)
-   end type column
-
-   !> All constraints of an analysis: their definitions, their joints' state, the condensed
-   !> flexibility, the step's LCP work arrays and the LCP statistics.
-   type :: contact_system
-      !> Number of constraints.
-      integer :: m = 0
-      !> The constraints (what they join, gap, law; fixed during the analysis).
-      type(contact_pair), allocatable :: pair(:)
-      !> The state of each constraint's joint.
-      type(joint_state), allocatable :: joint(:)
-      !> Khat^{-1} e for each end, (2, m).
-      type(column), allocatable :: y(:, :)
-      !> Condensed flexibility F = B^T Khat^{-1} B (m, m).
-      real(dp), allocatable :: f(:, :)
-      !> Per joint: phat = k0 + a c, beta = k0/phat, dashpot rate coefficients a, b.
-      real(dp), allocatable :: phat(:), beta(:), rate_a(:), rate_b(:)
-      !> Newmark c2 = 2/dt.
-      real(dp) :: c2 = 0.0_dp
-      !> Largest LCP size (rows) the workspace holds.
-      integer :: n_max = 0
-      !> Step work arrays: contact q, new forces and plastic increments, LCP data.
-      real(dp), allocatable :: q(:), r_new(:), x_new(:), mat(:, :), qa(:), za(:), wa(:), zref(:)
-      !> Closing displacements if all forces were released (m).
-      real(dp), allocatable :: vp(:)
-      !> Each constraint's ends packed for the per-step loops: building and DOF of the left
-      !> end (rows 1, 2) and of the right end (rows 3, 4); building 0: rigid (4, m).
-      integer, allocatable :: ends(:, :)
-      !> Row bookkeeping: constraint of each contact row, row of each joint's yield variable,
-      !> modelled segment ends per joint.
-      integer, allocatable :: act(:), yrow(:), nh(:)
-      logical, allocatable :: in_lcp(:), guess(:)
-      type(lemke_workspace) :: ws
-      !> Work of the contact forces on the structure, sum r_avg dv (kJ).
-      real(dp) :: work = 0.0_dp
-      !> Work stored in or dissipated by the joints, sum r_avg dd (kJ), and the part of it
-      !> dissipated by plastic flow, sum r_s,avg dd_p (kJ).
-      real(dp) :: element_work = 0.0_dp, plastic_work = 0.0_dp
-      !> LCP statistics.
-      type(lcp_statistics) :: stats
-      !> Pivot cap of each Lemke run (0: Lemke's default, 50 (n + 1)).
-      integer :: pivot_cap = 0
-      !> LCP method (`lcp_solver_auto`, `lcp_solver_lemke`).
-      integer :: solver = lcp_solver_auto
-      !> Active-set method: its set and factor kept between steps, 1/phat per joint, the
-      !> role of each joint in the step (0 fractured, 1 elastic, 2 plastic), w of every joint.
-      type(active_set_workspace), allocatable :: as
-      real(dp), allocatable :: phat_inv(:), wm(:)
-      integer, allocatable :: role(:)
-      !> Steps in which no joint can act take the short path of `contact_step` (false: every
-      !> step takes the full path; the tests compare both).
-      logical :: shortcut = .true.
-      !> The last `contact_step` found that no joint can act: the forces stay zero and `vp`
-      !> holds the closing displacements it predicted, which `contact_commit` takes.
-      logical :: idle = .false.
-      !> Whether each joint's law is a `plain_law` (elastic, no dashpot, not fracturing).
-      logical, allocatable :: plain(:)
-      !> When allocated (`contact_track_closing`): per joint, the largest closing displacement
-      !> released of every force that the steps have predicted so far, at the steps' ends
-      !> (`contact_step`) and, where `contact_track_paths` is called, inside them (m).
-      real(dp), allocatable :: closing_max(:)
-   end type contact_system
-
 contains
 
-   !> Condense the structure onto the constraints: Khat^{-1} B and F.
-   subroutine contact_init(cs, pairs, states, models, error)
-      !> The contact system.
-      type(contact_system), intent(out) :: cs
-      !> The constraints (ends, gaps, laws).
-      type(contact_pair), intent(in) :: pairs(:)
-      !> Initialised integrators (their factored Khat).
-      type(newmark_state), intent(in) :: states(:)
-      !> The structural models of the integrators (the DOF of each floor).
-      type(structure_model), intent(in) :: models(:)
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(column), allocatable :: y(:, :)
-      type(contact_pair), allocatable :: located(:)
-      real(dp), allocatable :: f(:, :)
-      integer :: k, l, e, g, b, m, stat
 
-      m = size(pairs)
-      located = pairs
-      do k = 1, m
-         do e = 1, 2
-            b = pairs(k)%building(e)
-            if (b == 0) cycle
-            located(k)%dof(e) = structure_end_dof(models(b), e, pairs(k)%floor(e), pairs(k)%elevation)
-            if (located(k)%dof(e) == 0) then
-               call fatal_error(error, 'contact '//pairs(k)%label//': building '//models(b)%name// &
-                                ' has no node at the contact point')
-               return
-            end if
-         end do
-         if (pairs(k)%law%restitution > 0.0_dp) then
-            call calibrate_dashpot(located(k), models, error)
-            if (allocated(error)) return
-         end if
-      end do
-      allocate (y(2, m), f(m, m), stat=stat)
-      if (stat /= 0) then
-         call fatal_error(error, 'contact: cannot allocate the condensed flexibility F for '//str(m)// &
-                          ' pairs ('//str(8.0_dp*real(m, dp)**2/2.0_dp**20)//' MiB; fewer floors_left / '// &
-                          'floors_right pairs)')
-         return
-      end if
-      do k = 1, m
-         do e = 1, 2
-            b = pairs(k)%building(e)
-            if (b == 0) cycle
-            allocate (y(e, k)%x(newmark_n(states(b))), stat=stat)
-            if (stat /= 0) then
-               call fatal_error(error, 'contact '//pairs(k)%label//': cannot allocate Khat^{-1} B ('// &
-                                str(newmark_n(states(b)))//' reals per pair end; fewer pairs or storeys)')
-               return
-            end if
-            y(e, k)%x = 0.0_dp
-            y(e, k)%x(located(k)%dof(e)) = 1.0_dp
-            call newmark_solve(states(b), y(e, k)%x)
-            if (.not. all(ieee_is_finite(y(e, k)%x))) then
-               call fatal_error(error, 'contact '//pairs(k)%label//': Khat^{-1} B (the response of the '// &
-                                'building to a unit force at floor '//str(pairs(k)%floor(e))//') is not '// &
-                                'finite: from dt and the building''s masses, stiffnesses and damping')
-               return
-            end if
-         end do
-      end do
-      ! F_kl = sum over ends e of k and g of l on the same building of s_e s_g y(g,l)(floor_e).
-      do l = 1, m
-         do k = 1, m
-            f(k, l) = 0.0_dp
-            do e = 1, 2
-               b = pairs(k)%building(e)
-               if (b == 0) cycle
-               do g = 1, 2
-                  if (pairs(l)%building(g) /= b) cycle
-                  f(k, l) = f(k, l) + end_sign(e)*end_sign(g)*y(g, l)%x(located(k)%dof(e))
-               end do
-            end do
-         end do
-      end do
-      do k = 1, m
-         if (.not. all(ieee_is_finite(f(:, k)))) then
-            call fatal_error(error, 'contact '//pairs(k)%label//': condensed flexibility F = B^T Khat^{-1} B '// &
-                             'is not finite: from dt and the buildings'' masses, stiffnesses and damping')
+   !> Whether a joint (not fractured) carries force at the start of the step: then it can act
+   !> in the step (`contact_may_act` is true) whatever the step's prediction.
+   pure logical function contact_carries_force(cs) result(carries)
+      !> The contact system.
+      type(contact_system), intent(in) :: cs
+      integer :: k
+
+      carries = .false.
+      do k = 1, cs%m
+         if (cs%joint(k)%fractured) cycle
+         if (cs%joint(k)%r > 0.0_dp) then
+            carries = .true.
             return
          end if
       end do
-      call contact_init_flexibility(cs, located, f, newmark_dt(states(1)), error)
-      if (allocated(error)) return
-      call move_alloc(y, cs%y)
-   end subroutine contact_init
-
-   !> Dashpot of a joint calibrated to its coefficient of restitution: from the joint
-   !> stiffness and the lumped masses of the two facing DOFs (a rigid fixed end: infinite
-   !> mass), by the exact relation of the joint pound integrates (`dashpot_of_restitution`).
-   subroutine calibrate_dashpot(p, models, error)
-      !> The constraint, its DOFs located; its law's dashpot is set.
-      type(contact_pair), intent(inout) :: p
-      !> The structural models (the lumped masses).
-      type(structure_model), intent(in) :: models(:)
-      !> Error state (a facing DOF without mass).
-      type(error_type), allocatable, intent(out) :: error
-      real(dp) :: mass(2)
-      integer :: e, b
-
-      mass = 0.0_dp
-      do e = 1, 2
-         b = p%building(e)
-         if (b == 0) cycle
-         mass(e) = models(b)%mass(p%dof(e))
-         if (.not. (mass(e) > 0.0_dp)) then
-            call fatal_error(error, 'contact '//p%label//': restitution needs the mass of floor '// &
-                             str(p%floor(e))//' of '//models(b)%name//', which is '//str(mass(e))//' t')
-            return
-         end if
-      end do
-      p%law%dashpot = dashpot_of_restitution(p%law%restitution, p%law%stiffness, mass(1), mass(2))
-   end subroutine calibrate_dashpot
-
-   !> Set up the joints for a given condensed flexibility F (the structure enters only
-   !> through F and v_pred, so F = 0 drives the joints by prescribed closing displacements).
-   subroutine contact_init_flexibility(cs, pairs, f, dt, error)
-      !> The contact system.
-      type(contact_system), intent(out) :: cs
-      !> The constraints (ends, gaps, laws).
-      type(contact_pair), intent(in) :: pairs(:)
-      !> Condensed flexibility F (m, m), symmetric positive semidefinite.
-      real(dp), intent(in) :: f(:, :)
-      !> Time step (s).
-      real(dp), intent(in) :: dt
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: k, m, ns
-
-      m = size(pairs)
-      cs%m = m
-      cs%pair = pairs
-      cs%f = f
-      allocate (cs%joint(m), cs%stats%events(0))
-      if (m == 0) return
-      cs%c2 = 2.0_dp/dt
-      allocate (cs%phat(m), cs%beta(m), cs%rate_a(m), cs%rate_b(m), cs%q(m), cs%vp(m), cs%r_new(m), &
-                cs%x_new(m), cs%in_lcp(m), cs%yrow(m), cs%nh(m), cs%phat_inv(m), cs%wm(m), cs%role(m), stat=k)
-      if (k /= 0) then
-         call fatal_error(error, 'contact: cannot allocate the joint data for '//str(m)//' pairs')
-         return
-      end if
-      cs%n_max = m
-      do k = 1, m
-         associate (p => cs%pair(k), law => cs%pair(k)%law)
-            if (.not. (law%stiffness > 0.0_dp)) then
-               call fatal_error(error, 'contact '//p%label//': stiffness must be > 0')
-               return
-            end if
-            if (law%dashpot_rate == rate_trapezoidal) then
-               cs%rate_a(k) = cs%c2
-               cs%rate_b(k) = 1.0_dp
-            else
-               cs%rate_a(k) = 1.0_dp/dt
-               cs%rate_b(k) = 0.0_dp
-            end if
-            cs%phat(k) = law%stiffness + cs%rate_a(k)*law%dashpot
-            cs%beta(k) = law%stiffness/cs%phat(k)
-            cs%phat_inv(k) = 1.0_dp/cs%phat(k)
-            if (.not. (ieee_is_finite(cs%phat(k)) .and. ieee_is_finite(1.0_dp/cs%phat(k)))) then
-               call fatal_error(error, 'contact '//p%label//': joint stiffness with its dashpot, stiffness + '// &
-                                str(cs%rate_a(k))//' dashpot = '//str(cs%phat(k))//' kN/m from stiffness = '// &
-                                str(law%stiffness)//', dashpot = '//str(law%dashpot)//' and dt = '// &
-                                str(dt)//' is not finite')
-               return
-            end if
-            if (is_plastic(law)) then
-               ns = size(law%yp) - 1
-               cs%n_max = cs%n_max + 1 + min(ns, initial_hinges)
-            end if
-         end associate
-      end do
-      cs%nh = 0
-      cs%yrow = 0
-      cs%r_new = 0.0_dp
-      cs%x_new = 0.0_dp
-      allocate (cs%ends(4, m), cs%plain(m))
-      do k = 1, m
-         cs%plain(k) = plain_law(cs%pair(k)%law)
-      end do
-      do k = 1, m
-         cs%ends(:, k) = [cs%pair(k)%building(1), cs%pair(k)%dof(1), cs%pair(k)%building(2), cs%pair(k)%dof(2)]
-      end do
-      allocate (cs%as)
-      call active_set_init(cs%as, m)
-      call lcp_workspace(cs, cs%n_max, error)
-   end subroutine contact_init_flexibility
-
-   !> (Re)allocate the LCP work arrays and Lemke's workspace for `n` rows.
-   subroutine lcp_workspace(cs, n, error)
-      type(contact_system), intent(inout) :: cs
-      integer, intent(in) :: n
-      type(error_type), allocatable, intent(out) :: error
-      integer :: stat
-
-      if (allocated(cs%mat)) deallocate (cs%mat, cs%qa, cs%za, cs%wa, cs%zref, cs%act, cs%guess)
-      allocate (cs%mat(n, n), cs%qa(n), cs%za(n), cs%wa(n), cs%zref(n), cs%act(n), cs%guess(n), &
-                stat=stat)
-      if (stat == 0) call lemke_init(cs%ws, n)
-      if (stat /= 0 .or. .not. allocated(cs%ws%binv)) then
-         call fatal_error(error, 'contact: cannot allocate the LCP workspace for '//str(n)//' rows ('// &
-                          str(3.0_dp*8.0_dp*real(n, dp)**2/2.0_dp**20)//' MiB): too many joints or '// &
-                          'envelope segments in one step (reduce dt, the number of &contact pairs or '// &
-                          'of envelope points / n_segments)')
-         return
-      end if
-      cs%n_max = n
-   end subroutine lcp_workspace
-
-
-
-   !> Exchange the data that depend on the time step (Khat^{-1} B, F, the joints' phat, beta
-   !> and dashpot rate coefficients, c2) with `other`, a contact system of the same
-   !> constraints initialised for another dt; the joints' state and the statistics stay.
-   !> No copy, no allocation (`move_alloc`); swapping back restores both.
-   subroutine contact_swap_step(cs, other)
-      !> The contact system that goes on with the other step.
-      type(contact_system), intent(inout) :: cs
-      !> The same constraints at the other step (only its step data are used).
-      type(contact_system), intent(inout) :: other
-      type(column), allocatable :: ty(:, :)
-      type(active_set_workspace), allocatable :: ta
-
-      call swap(cs%c2, other%c2)
-      call move_alloc(cs%y, ty)
-      call move_alloc(other%y, cs%y)
-      call move_alloc(ty, other%y)
-      call swap(cs%f, other%f)
-      call swap(cs%phat, other%phat)
-      call swap(cs%beta, other%beta)
-      call swap(cs%rate_a, other%rate_a)
-      call swap(cs%rate_b, other%rate_b)
-      call swap(cs%phat_inv, other%phat_inv)
-      ! Each F keeps its active set and factor (the set is brought to the step's guess by
-      ! factor updates at the next solve).
-      call move_alloc(cs%as, ta)
-      call move_alloc(other%as, cs%as)
-      call move_alloc(ta, other%as)
-   end subroutine contact_swap_step
+   end function contact_carries_force
 
    !> Whether a joint can act in the step predicted in `states` (after `newmark_predict`,
    !> before `contact_step`): one carries force at the start, or one would close with every
@@ -457,7 +158,11 @@ contains
       do e = 1, 2
          b = cs%pair(k)%building(e)
          if (b == 0) cycle
-         call newmark_path(states(b), cs%pair(k)%dof(e), u0, v0, am)
+         if (cs%pair(k)%dof(e) > 0) then
+            call newmark_path(states(b), cs%pair(k)%dof(e), u0, v0, am)
+         else
+            call row_path(cs%pair(k)%end_row(e), states(b), u0, v0, am)
+         end if
          c0 = c0 + end_sign(e)*u0
          cv = cv + end_sign(e)*v0
          ca = ca + end_sign(e)*am
@@ -468,6 +173,29 @@ contains
          if (s < h) vmax = max(vmax, c0 + 0.5_dp*cv*s)
       end if
    end function path_closing_max
+
+   !> `newmark_path` of an end that is a row of several DOFs: the row's values of u, v and
+   !> the average acceleration.
+   pure subroutine row_path(row, st, u0, v0, am)
+      type(recovery_rows), intent(in) :: row
+      type(newmark_state), intent(in) :: st
+      real(dp), intent(out) :: u0, v0, am
+      real(dp) :: u, v, a
+      integer :: i
+
+      u0 = 0.0_dp
+      v0 = 0.0_dp
+      am = 0.0_dp
+      do i = row%start(1), row%start(2) - 1
+         call newmark_path(st, row%dof(i), u, v, a)
+         u0 = u0 + row%coef(i)*u
+         v0 = v0 + row%coef(i)*v
+         am = am + row%coef(i)*a
+      end do
+      u0 = row%scale(1)*u0
+      v0 = row%scale(1)*v0
+      am = row%scale(1)*am
+   end subroutine row_path
 
    !> Start recording, per joint, the largest closing displacement the steps predict with
    !> every force released (`closing_max`): at the steps' ends in `contact_step`, inside the
@@ -539,7 +267,15 @@ contains
          do e = 1, 2
             b = cs%pair(k)%building(e)
             if (b == 0) cycle
-            call newmark_add_response(states(b), -(end_sign(e)*dr), cs%pair(k)%dof(e), cs%y(e, k)%x)
+            if (cs%pair(k)%dof(e) > 0) then
+               call newmark_add_response(states(b), -(end_sign(e)*dr), cs%pair(k)%dof(e), cs%y(e, k)%x)
+            else
+               associate (row => cs%pair(k)%end_row(e))
+                  ! (`contact_init` folded the row's scale into its weights.)
+                  call newmark_add_response_rows(states(b), -(end_sign(e)*dr), row%dof(row%start(1):row%start(2) - 1), &
+                                                 row%coef(row%start(1):row%start(2) - 1), cs%y(e, k)%x)
+               end associate
+            end if
          end do
       end do
    end subroutine contact_step
@@ -600,7 +336,63 @@ contains
 
    !> Solve the step's LCP for the closing displacements `v_pred` (forces released): sets
    !> `cs%r_new` and `cs%x_new`. `v_pred` may be `cs%vp` (not `cs%q`).
+   !>
+   !> Joints whose law iterates (`cs%iterating`, pound_joint_law: none of the piecewise-linear
+   !> family, so the loop below runs once) are re-linearised around each solution and the
+   !> LCP solved again until no law moves its stiffness (at most `max_law_iterations`).
    subroutine contact_solve(cs, v_pred, t, step, error)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+      !> Closing displacement of each constraint if all forces were released (m).
+      real(dp), intent(in) :: v_pred(:)
+      !> Time at the end of the step (s), for messages.
+      real(dp), intent(in) :: t
+      !> Step number, for messages.
+      integer, intent(in) :: step
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: it, i
+
+      ! The constants of an iterating joint follow its current stiffness (after a step swap).
+      do i = 1, size(cs%iterating)
+         call joint_constants(cs, cs%iterating(i))
+      end do
+      do it = 1, max_law_iterations
+         call solve_lcp(cs, v_pred, t, step, error)
+         if (allocated(error)) return
+         if (.not. laws_relinearised(cs)) return
+      end do
+      call fatal_error(error, 'contact at t = '//str(t)//' s (step '//str(step)//'): the linearisation of '// &
+                       'the laws of '//labels(cs, cs%iterating)//' did not settle in '//str(max_law_iterations)// &
+                       ' solves (reduce dt)')
+   end subroutine contact_solve
+
+   !> Re-linearise every iterating joint around the step's last solution (`joint_law%relinearise`,
+   !> with the joint compression the update would give); true when one moved its stiffness
+   !> (then its step constants are rebuilt and the active set's factor is started again).
+   logical function laws_relinearised(cs) result(changed)
+      type(contact_system), intent(inout) :: cs
+      integer :: i, k
+      real(dp) :: d
+      logical :: moved
+
+      changed = .false.
+      do i = 1, size(cs%iterating)
+         k = cs%iterating(i)
+         associate (j => cs%joint(k), law => cs%pair(k)%law)
+            d = (cs%r_new(k) + law%dashpot*(cs%rate_a(k)*j%d + cs%rate_b(k)*j%ddot) + &
+                 law%stiffness*(j%plastic + cs%x_new(k)))/cs%phat(k)
+            call law%given%relinearise(d, cs%r_new(k), law%stiffness, moved)
+         end associate
+         if (.not. moved) cycle
+         call joint_constants(cs, k)
+         changed = .true.
+      end do
+      if (changed) call active_set_init(cs%as, cs%m)
+   end function laws_relinearised
+
+   !> One LCP solve of the step (`contact_solve`).
+   subroutine solve_lcp(cs, v_pred, t, step, error)
       !> The contact system.
       type(contact_system), intent(inout) :: cs
       !> Closing displacement of each constraint if all forces were released (m).
@@ -631,8 +423,8 @@ contains
          if (cs%joint(k)%fractured .or. ieee_is_finite(cs%q(k))) cycle
          call fatal_error(error, 'contact '//cs%pair(k)%label//': the step''s LCP data is not finite at t = '// &
                           str(t)//' s (step '//str(step)//'): predicted closing displacement '// &
-                          str(v_pred(k))//' m, joint compression '//str(cs%joint(k)%d)//' m, rate '// &
-                          str(cs%joint(k)%ddot)//' m/s, plastic penetration '//str(cs%joint(k)%plastic)//' m')
+                          mm_text(v_pred(k))//', joint compression '//mm_text(cs%joint(k)%d)//', rate '// &
+                          str(cs%joint(k)%ddot)//' m/s, plastic penetration '//mm_text(cs%joint(k)%plastic))
          return
       end do
       qnorm = max(qnorm, tiny(1.0_dp))
@@ -747,7 +539,7 @@ contains
                           '; constraints '//labels(cs, cs%act(1:na)))
          return
       end if
-   end subroutine contact_solve
+   end subroutine solve_lcp
 
    !> The step's LCP by the active-set method (`pound_lcp_active_set`) when every joint that
    !> can act in it is elastic (a plastic joint carrying force or predicted to close: not
@@ -898,6 +690,15 @@ contains
       integer :: k, b
       real(dp) :: v
 
+      if (cs%general_ends) then
+         do k = 1, cs%m
+            v = 0.0_dp
+            if (cs%ends(1, k) > 0) v = v + row_u(1)
+            if (cs%ends(3, k) > 0) v = v - row_u(2)
+            cs%vp(k) = v
+         end do
+         return
+      end if
       do k = 1, cs%m
          v = 0.0_dp
          b = cs%ends(1, k)
@@ -908,6 +709,25 @@ contains
       end do
 
    contains
+
+      !> The displacement of end e of pair k (its DOF or its row).
+      real(dp) function row_u(e)
+         integer, intent(in) :: e
+         integer :: i, b
+
+         b = cs%ends(2*e - 1, k)
+         if (cs%ends(2*e, k) > 0) then
+            row_u = end_u(states(b), cs%ends(2*e, k))
+            return
+         end if
+         row_u = 0.0_dp
+         associate (row => cs%pair(k)%end_row(e))
+            do i = row%start(1), row%start(2) - 1
+               row_u = row_u + row%coef(i)*end_u(states(b), row%dof(i))
+            end do
+            row_u = row%scale(1)*row_u
+         end associate
+      end function row_u
 
       real(dp) function end_u(st, i)
          type(newmark_state), intent(in) :: st

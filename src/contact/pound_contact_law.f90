@@ -1,4 +1,8 @@
-!> Constitutive laws of the unilateral constraints between facing floors.
+!> The rows of the piecewise-linear joint laws: what every law of the family compiles into
+!> once (`contact_law`), and what the per-step LCP, the joint update and the writers read.
+!> The laws themselves (their parameters, deck names and listing lines) are extensions of
+!> `joint_law` (pound_joint_law), one module each (pound_law_*), registered by deck name in
+!> pound_law_registry; `contact_law%given` holds the law a row set was compiled from.
 !>
 !> A law relates the compression d of the joint (penetration beyond the gap) to the
 !> compressive force r >= 0 of its spring, with an optional dashpot in parallel. Every law
@@ -7,16 +11,9 @@
 !> penetration d_p (d at r = 0 on the unloading line) is remembered, so a crushed joint
 !> reopens at a larger gap.
 !>
-!> | kind | envelope |
-!> |---|---|
-!> | `elastic` | r = k0 d |
-!> | `elastic_plastic` | k0 up to the yield force, then flat |
-!> | `bilinear` | k0 up to the yield force, then a second slope k2 < k0 of either sign |
-!> | `piecewise` | the polygon through the origin and the given points; k0 is its first slope |
-!> | `parabola_cubic` | the paper's Fig. 1b: a parabola from 0 (slope k0) to the peak rB at dB (slope 0), a cubic falling to 0 at dF (slope 0 at both ends, inflexion midway), nothing beyond (fracture) |
-!>
-!> Curved branches are replaced by `n_segments` chords each (equal steps in d). Beyond the
-!> last point the polygon goes on with its last slope; a falling envelope that reaches
+!> The family: `elastic` (pound_law_elastic), `elastic_plastic` and `bilinear`
+!> (pound_law_bilinear), `piecewise` (pound_law_piecewise), `parabola_cubic`
+!> (pound_law_parabola_cubic). Beyond the last point the polygon goes on with its last slope; a falling envelope that reaches
 !> r = 0 ends there: the joint is fractured and carries nothing for the rest of the analysis.
 !>
 !> For the per-step LCP (pound_contact) every envelope is stored as the yield force as a
@@ -26,29 +23,14 @@
 !> last node). Yield segment i+1 (1-based, as reported) is segment i here.
 module pound_contact_law
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
-   use pound_strings, only: str
-   use pound_envelope_rules, only: max_law_points, check_piecewise_envelope, check_law_constants
+   use pound_envelope_rules, only: max_law_points
+   use pound_joint_law, only: joint_law, law_text, add_line
    implicit none
    private
 
-   public :: contact_law, law_name, law_elastic, law_elastic_plastic, law_bilinear, law_piecewise
-   public :: law_parabola_cubic, rate_trapezoidal, rate_backward_euler, rate_name
-   public :: make_elastic, make_elastic_plastic, make_bilinear, make_piecewise, make_parabola_cubic
-   public :: envelope_force, yield_force, yield_segment, is_plastic, plastic_modulus
-   public :: parabola_cubic_force, max_law_points
+   public :: contact_law, compile_envelope, rate_trapezoidal, rate_backward_euler, rate_name
+   public :: envelope_force, yield_force, yield_segment, is_plastic, plastic_modulus, max_law_points
    public :: restitution_of_ratio, ratio_of_restitution, dashpot_of_restitution
-
-   !> Elastic compression-only spring: r = k0 d.
-   integer, parameter :: law_elastic = 1
-   !> Elastic-perfectly-plastic: k0 up to the yield force, then flat.
-   integer, parameter :: law_elastic_plastic = 2
-   !> Bilinear: k0 up to the yield force, then a second slope (hardening or softening).
-   integer, parameter :: law_bilinear = 3
-   !> General piecewise-linear envelope through given points.
-   integer, parameter :: law_piecewise = 4
-   !> The seed paper's Fig. 1b: parabola to the peak, cubic down to fracture.
-   integer, parameter :: law_parabola_cubic = 5
 
    !> Dashpot rate by the trapezoidal rule (Newmark's own): d'_{n+1} = (2/dt) (d_{n+1} - d_n) - d'_n.
    integer, parameter :: rate_trapezoidal = 1
@@ -56,10 +38,11 @@ module pound_contact_law
    integer, parameter :: rate_backward_euler = 2
 
 
-   !> A constraint law and its parameters.
+   !> A joint law compiled into the rows of the per-step LCP (piecewise linear).
    type :: contact_law
-      !> Kind of law (`law_elastic`, ...).
-      integer :: kind = law_elastic
+      !> The law these rows were compiled from (its name, listing lines, iteration hook);
+      !> unallocated: a plain elastic spring set up field by field (tests).
+      class(joint_law), allocatable :: given
       !> Initial (elastic, unloading and reloading) stiffness k0 (kN/m).
       real(dp) :: stiffness = 0.0_dp
       !> Dashpot coefficient c (kN s/m), in parallel with the spring.
@@ -80,37 +63,20 @@ module pound_contact_law
       real(dp), allocatable :: yh(:)
       !> The envelope ends at r = 0 in its last node: beyond it the joint is fractured.
       logical :: fractures = .false.
-      !> Parameters as given, for the listing: yield force (kN), second slope (kN/m),
-      !> peak force rB (kN), peak and fracture penetrations dB, dF (m).
-      real(dp) :: yield_force = 0.0_dp, second_slope = 0.0_dp
-      real(dp) :: peak_force = 0.0_dp, peak_penetration = 0.0_dp, fracture_penetration = 0.0_dp
-      !> Chords per curved branch (`parabola_cubic`).
-      integer :: n_segments = 0
+   contains
+      !> The law's deck name ('elastic' for rows without a `given` law).
+      procedure :: title => law_title
+      !> The listing lines of its parameters (with the fracture point of a fracturing law).
+      procedure :: lines => law_lines
+      !> The envelope as used, (2, n+1) points (d, r) from the origin; (2, 0) for a law
+      !> without yield nodes (the HDF5 writer's `envelope/` datasets).
+      procedure :: envelope_points => law_envelope_points
+      !> Set the dashpot from the coefficient of restitution (when one is given) and the
+      !> masses of the two ends (`dashpot_of_restitution`).
+      procedure :: calibrate => law_calibrate
    end type contact_law
 
 contains
-
-   !> Name of a law kind, as written in the deck.
-   pure function law_name(kind) result(name)
-      !> Law kind.
-      integer, intent(in) :: kind
-      character(len=:), allocatable :: name
-
-      select case (kind)
-      case (law_elastic)
-         name = 'elastic'
-      case (law_elastic_plastic)
-         name = 'elastic_plastic'
-      case (law_bilinear)
-         name = 'bilinear'
-      case (law_piecewise)
-         name = 'piecewise'
-      case (law_parabola_cubic)
-         name = 'parabola_cubic'
-      case default
-         name = 'unknown'
-      end select
-   end function law_name
 
    !> Name of a dashpot rate rule, as written in the deck.
    pure function rate_name(rule) result(name)
@@ -128,12 +94,13 @@ contains
       end select
    end function rate_name
 
-   !> The law has yield segments (anything but `elastic`).
+   !> The law has yield segments (anything but an elastic spring).
    pure logical function is_plastic(law)
       !> The law.
       type(contact_law), intent(in) :: law
 
-      is_plastic = law%kind /= law_elastic
+      is_plastic = .false.
+      if (allocated(law%yp)) is_plastic = size(law%yp) > 0
    end function is_plastic
 
    !> Plastic modulus h = k0 s/(k0 - s) of an envelope slope s < k0 (kN/m).
@@ -145,185 +112,6 @@ contains
 
       plastic_modulus = k0*s/(k0 - s)
    end function plastic_modulus
-
-   !> Elastic law r = k0 d.
-   pure subroutine make_elastic(law, k0, dashpot, error)
-      !> The law.
-      type(contact_law), intent(out) :: law
-      !> Stiffness k0 (kN/m), > 0.
-      real(dp), intent(in) :: k0
-      !> Dashpot c (kN s/m), >= 0.
-      real(dp), intent(in) :: dashpot
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-
-      call check_law_constants(k0, dashpot, error)
-      if (allocated(error)) return
-      law%kind = law_elastic
-      law%stiffness = k0
-      law%dashpot = dashpot
-      law%env_d = [real(dp) ::]
-      law%env_r = [real(dp) ::]
-      law%tail_slope = k0
-      law%yp = [real(dp) ::]
-      law%yr = [real(dp) ::]
-      law%yh = [real(dp) ::]
-   end subroutine make_elastic
-
-   !> Elastic-perfectly-plastic: k0 up to the yield force, flat beyond.
-   pure subroutine make_elastic_plastic(law, k0, fy, dashpot, error)
-      !> The law.
-      type(contact_law), intent(out) :: law
-      !> Stiffness k0 (kN/m), > 0.
-      real(dp), intent(in) :: k0
-      !> Yield force (kN), > 0.
-      real(dp), intent(in) :: fy
-      !> Dashpot c (kN s/m), >= 0.
-      real(dp), intent(in) :: dashpot
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-
-      call make_bilinear(law, k0, fy, 0.0_dp, dashpot, error)
-      if (allocated(error)) return
-      law%kind = law_elastic_plastic
-   end subroutine make_elastic_plastic
-
-   !> Bilinear: k0 up to the yield force, then the second slope k2 < k0 (either sign).
-   pure subroutine make_bilinear(law, k0, fy, k2, dashpot, error)
-      !> The law.
-      type(contact_law), intent(out) :: law
-      !> Stiffness k0 (kN/m), > 0.
-      real(dp), intent(in) :: k0
-      !> Yield force (kN), > 0.
-      real(dp), intent(in) :: fy
-      !> Second slope (kN/m), < k0.
-      real(dp), intent(in) :: k2
-      !> Dashpot c (kN s/m), >= 0.
-      real(dp), intent(in) :: dashpot
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-
-      call check_law_constants(k0, dashpot, error)
-      if (allocated(error)) return
-      if (.not. (fy > 0.0_dp)) then
-         call fatal_error(error, 'yield force must be > 0, got '//str(fy))
-         return
-      end if
-      if (.not. (k2 < k0)) then
-         call fatal_error(error, 'second slope '//str(k2)//' must be < the stiffness k0 = '//str(k0))
-         return
-      end if
-      law%kind = law_bilinear
-      law%stiffness = k0
-      law%dashpot = dashpot
-      law%yield_force = fy
-      law%second_slope = k2
-      call finish_envelope(law, [fy/k0], [fy], k2, 1)
-   end subroutine make_bilinear
-
-   !> Piecewise-linear envelope through the origin and the points (d(i), r(i)); k0 = r(1)/d(1).
-   !>
-   !> d strictly increasing and > 0, r(1) > 0, r >= 0, only the last r may be 0, every slope
-   !> after the first below k0. Beyond the last point the last slope goes on (a falling
-   !> envelope ends, fractured, where it reaches r = 0).
-   pure subroutine make_piecewise(law, d, r, dashpot, error)
-      !> The law.
-      type(contact_law), intent(out) :: law
-      !> Penetrations of the points (m).
-      real(dp), intent(in) :: d(:)
-      !> Forces of the points (kN).
-      real(dp), intent(in) :: r(:)
-      !> Dashpot c (kN s/m), >= 0.
-      real(dp), intent(in) :: dashpot
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: n
-      real(dp) :: k0, tail
-
-      n = size(d)
-      call check_piecewise_envelope(d, r, k0, error)
-      if (allocated(error)) return
-      call check_law_constants(k0, dashpot, error)
-      if (allocated(error)) return
-      law%kind = law_piecewise
-      law%stiffness = k0
-      law%dashpot = dashpot
-      tail = (r(n) - r(n - 1))/(d(n) - d(n - 1))
-      call finish_envelope(law, d, r, tail, 1)
-   end subroutine make_piecewise
-
-   !> The paper's Fig. 1b law from k0, dB, dF (rB = k0 dB/2), `nseg` chords per branch.
-   pure subroutine make_parabola_cubic(law, k0, db, df, nseg, dashpot, error)
-      !> The law.
-      type(contact_law), intent(out) :: law
-      !> Initial stiffness k0 = 2 rB/dB (kN/m), > 0.
-      real(dp), intent(in) :: k0
-      !> Penetration at the peak dB (m), > 0.
-      real(dp), intent(in) :: db
-      !> Penetration at fracture dF (m), > dB.
-      real(dp), intent(in) :: df
-      !> Chords per curved branch, >= 1.
-      integer, intent(in) :: nseg
-      !> Dashpot c (kN s/m), >= 0.
-      real(dp), intent(in) :: dashpot
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      real(dp) :: d(2*nseg), r(2*nseg)
-      integer :: i
-
-      call check_law_constants(k0, dashpot, error)
-      if (allocated(error)) return
-      if (.not. (db > 0.0_dp .and. df > db)) then
-         call fatal_error(error, 'need 0 < dB < dF, got dB = '//str(db)//', dF = '//str(df))
-         return
-      end if
-      if (nseg < 1) then
-         call fatal_error(error, 'n_segments must be >= 1, got '//str(nseg))
-         return
-      end if
-      law%kind = law_parabola_cubic
-      law%stiffness = k0
-      law%dashpot = dashpot
-      law%peak_force = 0.5_dp*k0*db
-      law%peak_penetration = db
-      law%fracture_penetration = df
-      law%n_segments = nseg
-      do i = 1, nseg
-         d(i) = db*real(i, dp)/real(nseg, dp)
-         d(nseg + i) = db + (df - db)*real(i, dp)/real(nseg, dp)
-      end do
-      d(nseg) = db
-      d(2*nseg) = df
-      do i = 1, 2*nseg
-         r(i) = parabola_cubic_force(law%peak_force, db, df, d(i))
-      end do
-      r(nseg) = law%peak_force
-      r(2*nseg) = 0.0_dp
-      call finish_envelope(law, d, r, 0.0_dp, 0)
-   end subroutine make_parabola_cubic
-
-   !> The smooth Fig. 1b envelope (not linearised) at penetration d.
-   pure real(dp) function parabola_cubic_force(rb, db, df, d) result(r)
-      !> Peak force rB (kN).
-      real(dp), intent(in) :: rb
-      !> Peak and fracture penetrations (m).
-      real(dp), intent(in) :: db, df
-      !> Penetration (m).
-      real(dp), intent(in) :: d
-      real(dp) :: xi
-
-      if (d <= 0.0_dp) then
-         r = 0.0_dp
-      else if (d <= db) then
-         xi = d/db
-         r = rb*xi*(2.0_dp - xi)
-      else if (d < df) then
-         xi = (d - db)/(df - db)
-         r = rb*(1.0_dp - xi*xi*(3.0_dp - 2.0_dp*xi))
-      else
-         r = 0.0_dp
-      end if
-   end function parabola_cubic_force
 
    !> Envelope force at penetration d on monotonic loading from the virgin state (kN).
    pure real(dp) function envelope_force(law, d) result(r)
@@ -390,12 +178,18 @@ contains
    end function yield_force
 
 
-   !> Store the envelope nodes (d, r) (origin implied) and derive the yield function.
-   !> Nodes first..n yield (node `first` is the elastic limit; 0 = the origin); a falling
-   !> tail that reaches r = 0 adds the fracture node.
-   pure subroutine finish_envelope(law, d, r, tail, first)
+   !> Compile a law's envelope polygon into its rows: store the nodes (d, r) (origin implied)
+   !> and derive the yield function. Nodes first..n yield (node `first` is the elastic limit;
+   !> 0 = the origin); a falling tail that reaches r = 0 adds the fracture node. The law's
+   !> `stiffness` k0 is set before.
+   pure subroutine compile_envelope(law, d, r, tail, first)
+      !> The rows (stiffness set).
       type(contact_law), intent(inout) :: law
-      real(dp), intent(in) :: d(:), r(:), tail
+      !> Envelope nodes after the origin: penetrations (m) and forces (kN).
+      real(dp), intent(in) :: d(:), r(:)
+      !> Envelope slope beyond the last node (kN/m).
+      real(dp), intent(in) :: tail
+      !> The node where yielding starts (0: the origin, 1: the first node).
       integer, intent(in) :: first
       real(dp) :: dd(0:size(d) + 1), rr(0:size(d) + 1)
       real(dp) :: k0
@@ -431,7 +225,70 @@ contains
          law%yh(i) = (law%yr(i + 1) - law%yr(i))/(law%yp(i + 1) - law%yp(i))
       end do
       law%yh(ns) = plastic_modulus(k0, law%tail_slope)
-   end subroutine finish_envelope
+   end subroutine compile_envelope
+
+   !> The law's deck name ('elastic' for rows without a `given` law).
+   pure function law_title(law) result(name)
+      !> The rows.
+      class(contact_law), intent(in) :: law
+      character(len=:), allocatable :: name
+
+      if (allocated(law%given)) then
+         name = law%given%name()
+      else
+         name = 'elastic'
+      end if
+   end function law_title
+
+   !> The listing lines of the law's parameters, and the fracture point of a fracturing law.
+   pure subroutine law_lines(law, lines)
+      !> The rows.
+      class(contact_law), intent(in) :: law
+      !> The lines, without the listing's indentation.
+      type(law_text), allocatable, intent(out) :: lines(:)
+      character(len=64) :: buf
+
+      if (allocated(law%given)) then
+         lines = law%given%describe()
+      else
+         allocate (lines(0))
+      end if
+      if (is_plastic(law) .and. law%fractures) then
+         write (buf, '(a,es11.4,a)') 'fractures at d = ', 1000.0_dp*law%env_d(size(law%env_d)), ' mm'
+         call add_line(lines, trim(buf))
+      end if
+   end subroutine law_lines
+
+   !> Set the dashpot from `restitution` (when > 0) and the end masses m1, m2 (t; <= 0: a
+   !> rigid fixed end), by the exact relation of the joint (`dashpot_of_restitution`).
+   pure subroutine law_calibrate(law, m1, m2)
+      !> The rows.
+      class(contact_law), intent(inout) :: law
+      !> Masses of the two ends (t).
+      real(dp), intent(in) :: m1, m2
+
+      if (law%restitution > 0.0_dp) law%dashpot = dashpot_of_restitution(law%restitution, law%stiffness, m1, m2)
+   end subroutine law_calibrate
+
+   !> The envelope as used, (2, n+1) points (d, r) from the origin; (2, 0) without nodes.
+   pure function law_envelope_points(law) result(pts)
+      !> The rows.
+      class(contact_law), intent(in) :: law
+      real(dp), allocatable :: pts(:, :)
+      integer :: i, n
+
+      n = 0
+      if (allocated(law%env_d)) n = size(law%env_d)
+      if (n == 0) then
+         allocate (pts(2, 0))
+         return
+      end if
+      allocate (pts(2, n + 1))
+      pts(:, 1) = 0.0_dp
+      do i = 1, n
+         pts(:, i + 1) = [law%env_d(i), law%env_r(i)]
+      end do
+   end function law_envelope_points
 
    !> Coefficient of restitution e of the joint pound integrates, as a function of the damping
    !> ratio xi = c / (2 sqrt(k m_eff)) of the impact oscillator.

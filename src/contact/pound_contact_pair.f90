@@ -5,18 +5,23 @@
 !> Constraint k joins end 1 (the left building, whose displacement to the right closes the
 !> joint) and end 2 (the right building); building 0 stands for a rigid, fixed neighbour.
 !> With B the constraint incidence (+1 left, -1 right, `end_sign`), the closing displacement
-!> is v = B^T u.
+!> is v = B^T u. Each end is a sparse row over its model's DOFs (`end_row`, the model's
+!> `recovery_rows`): the displacement of the end is the row's value, so an end may be any
+!> point of a model (a floor, a column node, a weighted point between DOFs); an end that is one
+!> DOF with coefficient 1 (every end the deck gives today) is also kept as `dof`, the fast path
+!> of the step.
 module pound_contact_pair
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str
-   use pound_contact_law, only: contact_law, make_elastic, make_elastic_plastic, make_bilinear, &
-                                make_piecewise, make_parabola_cubic, rate_trapezoidal, rate_backward_euler
+   use pound_contact_law, only: contact_law, rate_trapezoidal, rate_backward_euler
+   use pound_law_registry, only: law_from_config
    use pound_config, only: contact_config
+   use pound_structure, only: recovery_rows, recover
    implicit none
    private
 
-   public :: contact_pair, pairs_from_config, end_sign, pair_label
+   public :: contact_pair, pairs_from_config, end_sign, end_value, end_load, end_mass, end_single_dof, pair_label
 
    !> One unilateral constraint: its two ends, its gap and its law.
    type :: contact_pair
@@ -29,8 +34,12 @@ module pound_contact_pair
       integer :: floor(2) = 0
       !> Elevation of the pair (m) when given by elevation (locates ends between floors).
       real(dp) :: elevation = 0.0_dp
-      !> DOF of each end in its building's model (set by `contact_init` from the model's
-      !> response points: the model says which DOF a floor is).
+      !> Each end as a sparse row over its building's DOFs (one row). Given by the caller, or
+      !> set by `contact_init` from the floor or elevation (the model says which DOF a floor is:
+      !> `structure_end_row`).
+      type(recovery_rows) :: end_row(2)
+      !> The DOF of an end whose row is that DOF alone with coefficient 1 (the step's fast
+      !> path; set by `contact_init`); 0 for an end of several DOFs.
       integer :: dof(2) = 0
       !> Initial gap g (m).
       real(dp) :: gap = 0.0_dp
@@ -60,19 +69,7 @@ contains
       n = 0
       do i = 1, size(contacts)
          associate (c => contacts(i))
-            select case (c%law)
-            case ('elastic_plastic')
-               call make_elastic_plastic(law, c%stiffness, c%yield_force, c%dashpot, error)
-            case ('bilinear')
-               call make_bilinear(law, c%stiffness, c%yield_force, c%second_slope, c%dashpot, error)
-            case ('piecewise')
-               call make_piecewise(law, c%envelope_d, c%envelope_r, c%dashpot, error)
-            case ('parabola_cubic')
-               call make_parabola_cubic(law, c%stiffness, c%peak_penetration, c%fracture_penetration, &
-                                        c%n_segments, c%dashpot, error)
-            case default
-               call make_elastic(law, c%stiffness, c%dashpot, error)
-            end select
+            call law_from_config(c, law, error)
             if (allocated(error)) then
                error%message = '&contact #'//str(i)//': '//error%message
                return
@@ -132,6 +129,85 @@ contains
          s = 'z='//s//'m'
       end if
    end function end_text
+
+   !> The DOF of a row that is one DOF with coefficient and scale 1; 0 otherwise.
+   pure integer function end_single_dof(row) result(dof)
+      !> The row (one row).
+      type(recovery_rows), intent(in) :: row
+
+      dof = 0
+      if (row%n /= 1) return
+      if (row%start(2) - row%start(1) /= 1) return
+      if (row%coef(row%start(1)) == 1.0_dp .and. row%scale(1) == 1.0_dp) dof = row%dof(row%start(1))
+   end function end_single_dof
+
+   !> The displacement of end e for the DOF values x of its building: x(dof) on the fast
+   !> path, else the value of its row.
+   pure real(dp) function end_value(p, e, x) result(u)
+      !> The pair (its ends located).
+      type(contact_pair), intent(in) :: p
+      !> End: 1 or 2.
+      integer, intent(in) :: e
+      !> DOF values of the end's building.
+      real(dp), intent(in) :: x(:)
+
+      if (p%dof(e) > 0) then
+         u = x(p%dof(e))
+      else
+         u = recover(p%end_row(e), 1, x)
+      end if
+   end function end_value
+
+   !> Add a unit load along end e to the load vector x of its building (x(dof) = x(dof) + 1
+   !> on the fast path, else the row's coefficients times its scale).
+   pure subroutine end_load(p, e, x)
+      !> The pair (its ends located).
+      type(contact_pair), intent(in) :: p
+      !> End: 1 or 2.
+      integer, intent(in) :: e
+      !> Load vector of the end's building.
+      real(dp), intent(inout) :: x(:)
+      integer :: i
+
+      if (p%dof(e) > 0) then
+         x(p%dof(e)) = x(p%dof(e)) + 1.0_dp
+         return
+      end if
+      associate (r => p%end_row(e))
+         do i = r%start(1), r%start(2) - 1
+            x(r%dof(i)) = x(r%dof(i)) + r%scale(1)*r%coef(i)
+         end do
+      end associate
+   end subroutine end_load
+
+   !> The mass (t) end e moves with: the lumped mass of its DOF, or for a row of weights w_i
+   !> on DOFs of masses m_i, 1 / sum w_i^2/m_i; 0 when a DOF it moves has no mass.
+   pure real(dp) function end_mass(p, e, mass) result(m)
+      !> The pair (its ends located).
+      type(contact_pair), intent(in) :: p
+      !> End: 1 or 2.
+      integer, intent(in) :: e
+      !> Lumped masses of the end's building (t).
+      real(dp), intent(in) :: mass(:)
+      real(dp) :: s, w
+      integer :: i
+
+      if (p%dof(e) > 0) then
+         m = mass(p%dof(e))
+         return
+      end if
+      s = 0.0_dp
+      m = 0.0_dp
+      associate (r => p%end_row(e))
+         do i = r%start(1), r%start(2) - 1
+            w = r%scale(1)*r%coef(i)
+            if (w == 0.0_dp) cycle
+            if (.not. (mass(r%dof(i)) > 0.0_dp)) return
+            s = s + w*w/mass(r%dof(i))
+         end do
+      end associate
+      if (s > 0.0_dp) m = 1.0_dp/s
+   end function end_mass
 
    !> Sign of a constraint end in B: +1 on the left, -1 on the right.
    pure real(dp) function end_sign(e)

@@ -8,7 +8,7 @@
 !> ((a, b) = (2/dt, 1) trapezoidal, (1/dt, 0) backward Euler) and phat = k0 + a c.
 module pound_joint_state
    use pound_kinds, only: dp
-   use pound_contact_law, only: contact_law, is_plastic, yield_segment, law_elastic
+   use pound_contact_law, only: contact_law, is_plastic, yield_segment
    use pound_contact_pair, only: contact_pair
    implicit none
    private
@@ -215,7 +215,7 @@ contains
       !> The law.
       type(contact_law), intent(in) :: law
 
-      plain_law = law%dashpot == 0.0_dp .and. law%kind == law_elastic .and. .not. law%fractures
+      plain_law = law%dashpot == 0.0_dp .and. .not. is_plastic(law) .and. .not. law%fractures
    end function plain_law
 
    !> An elastic joint without dashpot, open with no compression, that stays open (most

@@ -26,7 +26,7 @@ module pound_cases
 
    public :: case_work, case_table, run_cases, first_failure, case_message_len
    public :: cases_start, cases_stop, cases_abort, cases_rank, cases_ranks, cases_all
-   public :: text_to_column, column_to_text, failure_time_step
+   public :: text_to_column, column_to_text
    ! For the implementations (submodules):
    public :: run_in_order, table_init, compute_into
 
@@ -55,7 +55,8 @@ module pound_cases
       end subroutine case_compute
    end interface
 
-   !> Every case's column, whether it failed and its message (the same on every rank).
+   !> Every case's column, whether it failed, its message and where it failed (the same on
+   !> every rank).
    type :: case_table
       !> Columns, (width, n): column i is case i's values (0 when it failed).
       real(dp), allocatable :: values(:, :)
@@ -63,6 +64,10 @@ module pound_cases
       logical, allocatable :: failed(:)
       !> The message of a failed case (blank otherwise).
       character(len=case_message_len), allocatable :: message(:)
+      !> Time (s) and step at which a failed case's integration failed (`error_type`'s; -1: not
+      !> known, or not failed).
+      real(dp), allocatable :: time(:)
+      integer, allocatable :: step(:)
    end type case_table
 
    interface
@@ -133,10 +138,12 @@ contains
       !> Number of cases and reals per case.
       integer, intent(in) :: n, width
 
-      allocate (table%values(width, n), table%failed(n), table%message(n))
+      allocate (table%values(width, n), table%failed(n), table%message(n), table%time(n), table%step(n))
       table%values = 0.0_dp
       table%failed = .false.
       table%message = ''
+      table%time = -1.0_dp
+      table%step = -1
    end subroutine table_init
 
    !> Case i of `work` into column j of `table` (a failed case: zeros, its message).
@@ -155,6 +162,8 @@ contains
       if (allocated(error)) then
          table%failed(j) = .true.
          table%message(j) = error%message
+         table%time(j) = error%time
+         table%step(j) = error%step
          table%values(:, j) = 0.0_dp
       end if
    end subroutine compute_into
@@ -189,37 +198,9 @@ contains
       end do
    end function column_to_text
 
-   !> The time and step a failed case's message names ('... at t = <t> s (step <n>) ...', as
-   !> the integrations' errors put them); t = -1, step = -1 when it names none.
-   pure subroutine failure_time_step(message, t, step)
-      !> The message.
-      character(len=*), intent(in) :: message
-      !> Time (s), or -1.
-      real(dp), intent(out) :: t
-      !> Step, or -1.
-      integer, intent(out) :: step
-      integer :: i, j, k, ios
-
-      t = -1.0_dp
-      step = -1
-      i = index(message, 'at t = ')
-      if (i == 0) return
-      j = index(message(i:), ' s (step ')
-      if (j == 0) return
-      j = i + j - 1
-      k = index(message(j + 9:), ')')
-      if (k == 0) return
-      read (message(i + 7:j - 1), *, iostat=ios) t
-      if (ios /= 0) t = -1.0_dp
-      read (message(j + 9:j + 7 + k), *, iostat=ios) step
-      if (ios /= 0 .or. t < 0.0_dp) then
-         t = -1.0_dp
-         step = -1
-      end if
-   end subroutine failure_time_step
-
    !> An error for the failed cases of `table`, if any: the first one's message (after its
-   !> name and ': ', unless the name is blank), and how many others failed.
+   !> name and ': ', unless the name is blank), and how many others failed; its case index,
+   !> time and step.
    subroutine first_failure(table, names, error)
       !> The cases' table.
       type(case_table), intent(in) :: table
@@ -237,6 +218,9 @@ contains
       if (len_trim(names(i)) > 0) text = trim(names(i))//': '//text
       if (n_failed > 1) text = text//' (and '//str(n_failed - 1)//' more of '//str(size(table%failed))//' failed)'
       call fatal_error(error, text)
+      error%case = i
+      error%time = table%time(i)
+      error%step = table%step(i)
    end subroutine first_failure
 
 end module pound_cases

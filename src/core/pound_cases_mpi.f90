@@ -7,8 +7,8 @@
 !> The counter is never reset: every `run_cases` of n cases raises it by exactly n + ranks
 !> (each rank takes one index past the end and stops), so every rank knows where the next
 !> call starts without a barrier. The columns are then gathered to every rank
-!> (`MPI_Allgatherv` of the case indices, the columns, the failure flags and messages) and
-!> placed by case index. Rank 0 adds the runs the other ranks made to its progress line.
+!> (`MPI_Allgatherv` of the case indices, the columns, the failure flags, times, steps and
+!> messages) and placed by case index. Rank 0 adds the runs the other ranks made to its progress line.
 submodule(pound_cases) pound_cases_mpi
    use, intrinsic :: iso_c_binding, only: c_ptr
    use, intrinsic :: iso_fortran_env, only: int64
@@ -85,8 +85,8 @@ contains
       type(case_table), intent(out) :: table
       type(case_table) :: mine
       integer, allocatable :: index(:), runs(:), counts(:), displs(:), all_index(:), all_runs(:)
-      integer, allocatable :: flags(:), all_flags(:)
-      real(dp), allocatable :: columns(:, :)
+      integer, allocatable :: flags(:), all_flags(:), all_step(:)
+      real(dp), allocatable :: columns(:, :), all_time(:)
       character(len=case_message_len), allocatable :: messages(:)
       integer :: n_mine, i, k, total, before, elsewhere
 
@@ -115,13 +115,17 @@ contains
       call MPI_Allgather(n_mine, 1, MPI_INTEGER, counts, 1, MPI_INTEGER, MPI_COMM_WORLD)
       total = sum(counts)
       displs = [(sum(counts(1:k - 1)), k=1, n_ranks)]
-      allocate (all_index(total), all_runs(total), all_flags(total), columns(width, total), messages(total))
+      allocate (all_index(total), all_runs(total), all_flags(total), columns(width, total), messages(total), &
+                all_time(total), all_step(total))
       flags = merge(1, 0, mine%failed(1:n_mine))
       call MPI_Allgatherv(index, n_mine, MPI_INTEGER, all_index, counts, displs, MPI_INTEGER, MPI_COMM_WORLD)
       call MPI_Allgatherv(runs, n_mine, MPI_INTEGER, all_runs, counts, displs, MPI_INTEGER, MPI_COMM_WORLD)
       call MPI_Allgatherv(flags, n_mine, MPI_INTEGER, all_flags, counts, displs, MPI_INTEGER, MPI_COMM_WORLD)
       call MPI_Allgatherv(mine%values, n_mine*width, MPI_DOUBLE_PRECISION, columns, counts*width, &
                           displs*width, MPI_DOUBLE_PRECISION, MPI_COMM_WORLD)
+      call MPI_Allgatherv(mine%time, n_mine, MPI_DOUBLE_PRECISION, all_time, counts, displs, MPI_DOUBLE_PRECISION, &
+                          MPI_COMM_WORLD)
+      call MPI_Allgatherv(mine%step, n_mine, MPI_INTEGER, all_step, counts, displs, MPI_INTEGER, MPI_COMM_WORLD)
       call MPI_Allgatherv(mine%message, n_mine*case_message_len, MPI_CHARACTER, messages, &
                           counts*case_message_len, displs*case_message_len, MPI_CHARACTER, MPI_COMM_WORLD)
       call table_init(table, n, width)
@@ -129,6 +133,8 @@ contains
          table%values(:, all_index(k)) = columns(:, k)
          table%failed(all_index(k)) = all_flags(k) /= 0
          table%message(all_index(k)) = messages(k)
+         table%time(all_index(k)) = all_time(k)
+         table%step(all_index(k)) = all_step(k)
       end do
       if (my_rank == 0) then
          elsewhere = sum(all_runs) - sum(runs(1:n_mine))

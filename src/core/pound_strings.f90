@@ -7,6 +7,7 @@ module pound_strings
    private
 
    public :: str, number_end, decimal_exponent, is_digit, shorten, short_real, fixed_cell, fit_with_suffix, left_cell, right_cell
+   public :: add_warning, plain_real, counted, mm_text
 
    !> Shortest readable text of a number.
    interface str
@@ -283,5 +284,87 @@ contains
 
       cell = repeat(' ', max(1, w - len(text)))//text
    end function right_cell
+
+   !> A count with its noun, singular for 1: counted(1, 'motion') = '1 motion', counted(3,
+   !> 'failed case') = '3 failed cases' (the plural adds 's').
+   pure function counted(n, noun) result(s)
+      !> The count.
+      integer, intent(in) :: n
+      !> The noun in the singular.
+      character(len=*), intent(in) :: noun
+      character(len=:), allocatable :: s
+
+      s = str_int(n)//' '//noun
+      if (n /= 1) s = s//'s'
+   end function counted
+
+   !> A length given in m, for messages in mm (as the listing shows gaps, displacements and
+   !> penetrations): `plain_real(1000 x)//' mm'`, e.g. mm_text(0.01) = '10 mm'; a value that is
+   !> not finite as `str` gives it ('NaN mm', 'Infinity mm').
+   pure function mm_text(x) result(s)
+      !> The length (m).
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: s
+
+      if (ieee_is_nan(x) .or. abs(x) > huge(x)) then
+         s = str_real(x)//' mm'
+      else
+         s = plain_real(1000.0_dp*x)//' mm'
+      end if
+   end function mm_text
+
+   !> `x` for messages in plain decimals: 7 significant digits, trailing zeros dropped ('12',
+   !> '0.04', '1.25') when 1e-4 <= |x| < 1e7; otherwise as `str` ('1.000000E-5').
+   pure function plain_real(x) result(s)
+      !> Value to format.
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: s
+      character(len=40) :: buf
+      character(len=12) :: fmt
+      integer :: decimals
+
+      if (.not. (abs(x) >= 1.0e-4_dp .and. abs(x) < 1.0e7_dp)) then
+         s = str_real(x)
+         if (.not. (abs(x) > 0.0_dp)) s = '0'
+         return
+      end if
+      decimals = max(0, 6 - floor(log10(abs(x))))
+      write (fmt, '(a,i0,a)') '(f0.', decimals, ')'
+      write (buf, fmt) x
+      s = trim(adjustl(buf))
+      if (index(s, '.') > 0) then
+         do while (s(len(s):len(s)) == '0')
+            s = s(1:len(s) - 1)
+         end do
+         if (s(len(s):len(s)) == '.') s = s(1:len(s) - 1)
+      end if
+      if (s(1:1) == '.') s = '0'//s
+      if (len(s) > 1) then
+         if (s(1:2) == '-.') s = '-0'//s(2:)
+      end if
+   end function plain_real
+
+   !> Append a warning to a list of warnings (e.g. `res%warnings`).
+   pure subroutine add_warning(warnings, text)
+      !> The list (unallocated: empty).
+      character(len=:), allocatable, intent(inout) :: warnings(:)
+      !> One line of text.
+      character(len=*), intent(in) :: text
+      character(len=:), allocatable :: grown(:)
+      integer :: i, n, length
+
+      n = 0
+      length = len(text)
+      if (allocated(warnings)) then
+         n = size(warnings)
+         length = max(length, len(warnings))
+      end if
+      allocate (character(len=length) :: grown(n + 1))
+      do i = 1, n
+         grown(i) = warnings(i)
+      end do
+      grown(n + 1) = text
+      call move_alloc(grown, warnings)
+   end subroutine add_warning
 
 end module pound_strings

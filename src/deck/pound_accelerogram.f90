@@ -29,7 +29,7 @@ module pound_accelerogram
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_text_file, only: read_whole_file
-   use pound_strings, only: str, number_end, decimal_exponent, is_digit, shorten, short_real
+   use pound_strings, only: counted, str, number_end, decimal_exponent, is_digit, shorten, short_real
    implicit none
    private
 
@@ -225,8 +225,8 @@ contains
          end do
       end do
       if (count /= npts) then
-         call fatal_error(error, path//': header line 4 gives NPTS = '//str(npts)//' but '// &
-                          str(count)//' values follow')
+         call fatal_error(error, path//': header line 4 gives NPTS = '//str(npts)//' but the file holds '// &
+                          counted(count, 'value'))
          return
       end if
       rec%time = [(real(i - 1, dp)*dt, i=1, npts)]

@@ -12,10 +12,13 @@ module pound_config
    implicit none
    private
 
-   public :: analysis_config, ground_config, building_config, contact_config, sweep_config, deck_type
-   public :: is_frame
+   public :: analysis_config, ground_config, building_config, code_factors, contact_config, sweep_config, deck_type
+   public :: is_frame, deck_warning_len
    ! The quantities (pound_quantities), named here too for the deck's readers.
    public :: n_history_quantities, history_names, n_target_quantities, target_names, q_column_shear, q_column_moment
+
+   !> Characters kept of a deck warning (`deck_type%warnings`).
+   integer, parameter :: deck_warning_len = 1024
 
    !> `&analysis`: title, time stepping and history output.
    type :: analysis_config
@@ -87,7 +90,20 @@ module pound_config
       logical :: histories = .false.
    end type ground_config
 
-   !> `&building`: one shear building (rigid beams, one lateral DOF per floor).
+   !> The design-code factors of one building for the separation rules (pound_separation);
+   !> 0 where the deck does not give them (the rule that needs the factor is then n/a).
+   type :: code_factors
+      !> ASCE 7 deflection amplification factor Cd (`cd`).
+      real(dp) :: cd = 0.0_dp
+      !> ASCE 7 importance factor Ie (`importance`; default 1).
+      real(dp) :: importance = 1.0_dp
+      !> EN 1998-1 behaviour factor q, used as the displacement behaviour factor q_d (`behaviour_factor`).
+      real(dp) :: behaviour_factor = 0.0_dp
+      !> IS 1893 response reduction factor R (`response_reduction`).
+      real(dp) :: response_reduction = 0.0_dp
+   end type code_factors
+
+   !> `&building`: one building (a shear building, or a planar frame with `model = 'frame'`).
    type :: building_config
       !> Name used in messages, listing and HDF5 groups.
       character(len=:), allocatable :: name
@@ -146,6 +162,9 @@ module pound_config
       !> rightmost column line (from the `&contact elevations` that face no floor of this
       !> building; the builder adds a column node at each); unallocated: none.
       real(dp), allocatable :: contact_z_left(:), contact_z_right(:)
+      !> Design-code factors for the separation rules (`cd`, `importance`, `behaviour_factor`,
+      !> `response_reduction`).
+      type(code_factors) :: factors
    end type building_config
 
    !> `&contact`: unilateral constraints between facing floors of two buildings.
@@ -203,6 +222,10 @@ module pound_config
       type(contact_config), allocatable :: contacts(:)
       !> `&sweep` (inactive when the deck has none).
       type(sweep_config) :: sweep
+      !> Plausibility warnings of the deck's values (one line each, 'deck.nml:12: &group: ...',
+      !> trailing blanks not part of them; unallocated: none): suspicious, not refused. (Fixed
+      !> length: gfortran's intrinsic assignment of the deck mishandles deferred-length arrays.)
+      character(len=deck_warning_len), allocatable :: warnings(:)
    end type deck_type
 
 contains

@@ -39,8 +39,8 @@
 !> count, 1..`max_pairs` pairs, each floor in 1..n_storeys of its building), `gap` (>= 0) and
 !> `law` are required. Instead of the floors, `elevations` (m above the common base, one per
 !> pair) joins the facing column lines at that elevation: a building's floor there, or a node
-!> added to a frame's facing column (refused between the floors of a shear building, above a
-!> roof, and in a suite). The same floor pair may appear more than once. Laws and their variables:
+!> added to a frame's facing column (refused between the floors of a shear building and above a
+!> roof). The same floor pair may appear more than once. Laws and their variables:
 !> 'elastic' (stiffness), 'elastic_plastic' (stiffness, yield_force), 'bilinear' (stiffness,
 !> yield_force, second_slope < stiffness), 'piecewise' (envelope_d, envelope_r: points after the
 !> origin), 'parabola_cubic' (peak_penetration, fracture_penetration, peak_force or stiffness,
@@ -141,7 +141,7 @@ contains
       do i = 1, n_groups
          if (groups(i)%name /= 'ground') cycle
          k = k + 1
-         call read_ground(path, text, groups(i), ng, d%motions(k), error)
+         call read_ground(path, text, groups(i), ng, d%motions(k), error, d%warnings)
          if (allocated(error)) return
          do j = 1, k - 1
             if (d%motions(j)%name == d%motions(k)%name) then
@@ -158,22 +158,15 @@ contains
       do i = 1, n_groups
          if (groups(i)%name /= 'building') cycle
          k = k + 1
-         call read_building(path, text, groups(i), d%buildings(1:k - 1), d%buildings(k), error)
+         call read_building(path, text, groups(i), d%buildings(1:k - 1), d%buildings(k), error, d%warnings)
          if (allocated(error)) return
-         if (d%analysis%free_steps == 'exact' .and. is_frame(d%buildings(k))) then
-            call fatal_error(error, path//':'//str(groups(i)%line1)//': &building #'//str(k)//' ('// &
-                             d%buildings(k)%name//"): model = 'frame' has DOFs without mass (the "// &
-                             "rotations), and &analysis free_steps = 'exact' needs a mass at every DOF; "// &
-                             "use free_steps = 'newmark' or shear buildings")
-            return
-         end if
       end do
       allocate (d%contacts(count([(groups(i)%name == 'contact', i=1, n_groups)])))
       k = 0
       do i = 1, n_groups
          if (groups(i)%name /= 'contact') cycle
          k = k + 1
-         call read_contact(path, text, groups(i), d%buildings, d%contacts(k), error, suite=ng > 1)
+         call read_contact(path, text, groups(i), d%buildings, d%contacts(k), error)
          if (allocated(error)) return
          call add_contact_points(d%contacts(k), d%buildings)
       end do

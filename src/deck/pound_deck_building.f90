@@ -3,15 +3,15 @@
 !> masses, stiffnesses and gravity loads: pound_storey_properties).
 module pound_deck_building
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use pound_config, only: building_config
+   use pound_config, only: building_config, deck_warning_len
    use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, require_real, &
-                                site, site_of, take_ints, take_reals, unset_int, unset_real
+                                site, site_of, take_ints, take_reals, unset_int, unset_real, warn
    use pound_deck_lexer, only: group_ref, group_text, is_name_char, lower
    use pound_deck_variables, only: max_name_length, max_storeys, word_len, max_bays, max_column_elements, &
                                    frame_variables
    use pound_error, only: error_type
    use pound_kinds, only: dp
-   use pound_strings, only: str
+   use pound_strings, only: plain_real, str
    implicit none
    private
 
@@ -24,7 +24,7 @@ module pound_deck_building
 contains
 
    !> `&building`: one shear building.
-   subroutine read_building(path, text, g, previous, cfg, error)
+   subroutine read_building(path, text, g, previous, cfg, error, warnings)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
@@ -37,12 +37,14 @@ contains
       type(building_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
+      !> The deck's plausibility warnings, this group's appended.
+      character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
       character(len=word_len) :: name, column_ends, model, base, geometric
       integer :: n_storeys, damping_modes(2), n_bays, column_elements
       logical :: rigid_beams, rigid_diaphragm, rigid_columns
       real(dp), allocatable :: bay_width(:), column_e(:), column_area(:), column_inertia(:), &
                                beam_e(:), beam_area(:), beam_inertia(:)
-      real(dp) :: ref_floor_load, damping_ratio
+      real(dp) :: ref_floor_load, damping_ratio, cd, importance, behaviour_factor, response_reduction
       logical :: p_delta
       real(dp), allocatable :: height(:), mass(:), load_coeff(:), stiffness(:), e_modulus(:), &
                                inertia(:), gravity_load(:)
@@ -55,7 +57,7 @@ contains
          n_columns, e_modulus, inertia, column_ends, damping_ratio, damping_modes, p_delta, &
          gravity_load, model, n_bays, bay_width, column_e, column_area, column_inertia, beam_e, &
          beam_area, beam_inertia, base, column_elements, rigid_beams, rigid_diaphragm, rigid_columns, &
-         geometric
+         geometric, cd, importance, behaviour_factor, response_reduction
 
       allocate (height(max_storeys), mass(max_storeys), load_coeff(max_storeys), &
                 stiffness(max_storeys), e_modulus(max_storeys), inertia(max_storeys), &
@@ -66,6 +68,10 @@ contains
       damping_modes = unset_int
       ref_floor_load = unset_real
       damping_ratio = 0.05_dp
+      cd = unset_real
+      importance = unset_real
+      behaviour_factor = unset_real
+      response_reduction = unset_real
       p_delta = .false.
       height = unset_real
       mass = unset_real
@@ -193,7 +199,48 @@ contains
          call take_reals(at, 'gravity_load', gravity_load, n, '>=', cfg%gravity_load, error)
          if (allocated(error)) return
       end if
+
+      call code_factor(at, 'cd', cd, 1.0_dp, 8.0_dp, 'ASCE 7 Table 12.2-1 gives Cd from 1.25 to 6.5', &
+                       cfg%factors%cd, warnings, error)
+      if (.not. allocated(error)) call code_factor(at, 'importance', importance, 1.0_dp, 1.5_dp, &
+                                                   'ASCE 7 Table 1.5-2 gives Ie from 1.0 to 1.5', &
+                                                   cfg%factors%importance, warnings, error)
+      if (.not. allocated(error)) call code_factor(at, 'behaviour_factor', behaviour_factor, 1.0_dp, 8.0_dp, &
+                                                   'EN 1998-1 gives q from 1.5 to about 6.5', &
+                                                   cfg%factors%behaviour_factor, warnings, error)
+      if (.not. allocated(error)) call code_factor(at, 'response_reduction', response_reduction, 1.0_dp, 8.0_dp, &
+                                                   'IS 1893 Table 9 gives R from 1.5 to 5', &
+                                                   cfg%factors%response_reduction, warnings, error)
    end subroutine read_building
+
+   !> One design-code factor of the separation rules (`cd`, `importance`, `behaviour_factor`,
+   !> `response_reduction`): when given, > 0 (refused otherwise) and, outside the usual range
+   !> lo..hi, a warning; when not given, `value` keeps its default.
+   pure subroutine code_factor(at, var, raw, lo, hi, usual, value, warnings, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Value as read (`unset_real` when not given).
+      real(dp), intent(in) :: raw
+      !> The usual range.
+      real(dp), intent(in) :: lo, hi
+      !> Where the usual range comes from (for the warning).
+      character(len=*), intent(in) :: usual
+      !> The resolved factor (default kept when not given).
+      real(dp), intent(inout) :: value
+      !> The deck's plausibility warnings.
+      character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
+      !> Unallocated on success; otherwise the problem found.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. is_set(raw)) return
+      call check_real(at, var, raw, '>', 0.0_dp, error)
+      if (allocated(error)) return
+      value = raw
+      if (raw < lo .or. raw > hi) call warn(at, var, var//' = '//plain_real(raw)//' is outside the usual range '// &
+                                            plain_real(lo)//'..'//plain_real(hi)//' ('//usual//'); check the value', warnings)
+   end subroutine code_factor
 
    !> Whether the deck assigns `var` in this group occurrence.
    pure logical function assigned(at, var)

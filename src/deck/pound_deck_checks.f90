@@ -1,15 +1,15 @@
 !> Checks of the values a group's reader got from its namelist: required, types, lengths,
-!> rules (> 0, >= ...), the plausible ranges of `bounds` (README: Input bounds), and the
+!> rules (> 0, >= ...), the plausible ranges of `bounds` (docs/manual.md: Input bounds), and the
 !> message format `deck.nml:LINE: &group #k (name): text` (`site`, `fail`).
 module pound_deck_checks
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use pound_config, only: history_names, n_history_quantities
+   use pound_config, only: deck_warning_len, history_names, n_history_quantities
    use pound_deck_lexer, only: group_label, group_ref, lower
    use pound_deck_variables, only: findloc_name, join, max_columns
    use pound_error, only: error_type, fatal_error
    use pound_kinds, only: dp
-   use pound_strings, only: short_real, str
+   use pound_strings, only: counted, short_real, str
    implicit none
    private
 
@@ -18,7 +18,7 @@ module pound_deck_checks
       module procedure given_count_real, given_count_int
    end interface given_count
 
-   public :: check_plausible, check_real, fail, given_count, is_set, parse_history, read_failed, &
+   public :: check_plausible, check_real, fail, warn, site_text, given_count, is_set, parse_history, read_failed, &
              require_real, site, site_of, take_ints, take_reals, unset_int, unset_real, values_text
 
    !> Marks namelist values the deck did not give.
@@ -26,6 +26,10 @@ module pound_deck_checks
 
    !> Marks namelist integers the deck did not give.
    integer, parameter :: unset_int = -huge(1)
+
+   !> Where a refusal for a value outside its plausible range sends the user: the file that
+   !> holds the whole table of bounds (the README only summarises it).
+   character(len=*), parameter :: bounds_where = ' (see the input bounds in docs/manual.md, "Input bounds")'
 
    !> Where a message points: deck, group occurrence and its label.
    type :: site
@@ -37,7 +41,7 @@ module pound_deck_checks
       type(group_ref) :: group
    end type site
 
-   !> Plausible engineering range of a deck variable (README: Input bounds).
+   !> Plausible engineering range of a deck variable (docs/manual.md: Input bounds).
    type :: bound_t
       !> 'group:variable'.
       character(len=28) :: key
@@ -51,7 +55,7 @@ module pound_deck_checks
 
    !> The ranges: generous enough for any real structure and record, tight enough that every
    !> value inside gives finite derived quantities (12EI/h^3, masses, periods, forces).
-   type(bound_t), parameter :: bounds(43) = [ &
+   type(bound_t), parameter :: bounds(48) = [ &
       bound_t('analysis:dt', 1.0e-7_dp, 1.0_dp, 's', .false.), &
       bound_t('analysis:t_end', 0.0_dp, 1.0e4_dp, 's', .false.), &
       bound_t('ground:x0', 1.0e-9_dp, 10.0_dp, 'm', .true.), &
@@ -59,6 +63,11 @@ module pound_deck_checks
       bound_t('ground:b', 1.0e-3_dp, 1.0e4_dp, 'rad/s', .false.), &
       bound_t('ground:scale', 1.0e-6_dp, 1.0e3_dp, '', .true.), &
       bound_t('ground:target', 1.0e-6_dp, 1.0e3_dp, 'm/s^2', .false.), &
+      bound_t('ground:target_g', 1.0e-7_dp, 1.0e2_dp, 'g', .false.), &
+      bound_t('building:cd', 1.0e-3_dp, 1.0e2_dp, '', .false.), &
+      bound_t('building:importance', 1.0e-3_dp, 1.0e2_dp, '', .false.), &
+      bound_t('building:behaviour_factor', 1.0e-3_dp, 1.0e2_dp, '', .false.), &
+      bound_t('building:response_reduction', 1.0e-3_dp, 1.0e2_dp, '', .false.), &
       bound_t('ground:period', 1.0e-3_dp, 1.0e2_dp, 's', .false.), &
       bound_t('ground:ground_frequency', 1.0e-2_dp, 1.0e3_dp, 'rad/s', .false.), &
       bound_t('ground:filter_frequency', 1.0e-3_dp, 1.0e3_dp, 'rad/s', .false.), &
@@ -121,14 +130,48 @@ contains
       character(len=*), intent(in) :: text
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
+
+      call fatal_error(error, site_text(at, var)//text)
+   end subroutine fail
+
+   !> 'deck.nml:14: &building #2 (B): ': where a message about `var` points (the line of its
+   !> assignment, or of the group start when the deck does not assign it).
+   pure function site_text(at, var) result(text)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      character(len=:), allocatable :: text
       integer :: i, line
 
       line = at%group%line1
       do i = 1, at%group%n_vars
          if (at%group%vars(i)%name == var) line = at%group%vars(i)%line
       end do
-      call fatal_error(error, at%path//':'//str(line)//': '//at%label//': '//text)
-   end subroutine fail
+      text = at%path//':'//str(line)//': '//at%label//': '
+   end function site_text
+
+   !> Append a plausibility warning about `var` (suspicious, not refused) to `warnings`, in
+   !> the form of `fail`'s messages.
+   pure subroutine warn(at, var, text, warnings)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> The warning.
+      character(len=*), intent(in) :: text
+      !> The deck's warnings (unallocated: none yet).
+      character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
+      character(len=deck_warning_len), allocatable :: grown(:)
+      integer :: n
+
+      n = 0
+      if (allocated(warnings)) n = size(warnings)
+      allocate (grown(n + 1))
+      if (n > 0) grown(1:n) = warnings
+      grown(n + 1) = site_text(at, var)//text
+      call move_alloc(grown, warnings)
+   end subroutine warn
 
    !> Pass on gfortran's message when the namelist read of a group failed (`ios /= 0`).
    pure subroutine read_failed(at, ios, msg, error)
@@ -231,7 +274,7 @@ contains
          end if
          if (raw(i) > max_columns) then
             call fail(at, var, var//'('//str(i)//') = '//str(raw(i))//', outside the plausible '// &
-                      'range: must be <= '//str(max_columns)//' (see the input bounds in the README)', error)
+                      'range: must be <= '//str(max_columns)//bounds_where, error)
             return
          end if
       end do
@@ -251,7 +294,7 @@ contains
 
       if (k == n) return
       if (k == 0) then
-         call fail(at, var, var//' is missing; give n_storeys = '//str(n)//' values', error)
+         call fail(at, var, var//' is missing; give '//values_text(n)//' (n_storeys = '//str(n)//')', error)
       else if (k == 1) then
          call fail(at, var, var//' has 1 value, must have n_storeys = '//str(n)// &
                    ' (repeat equal values: '//str(n)//'*value)', error)
@@ -366,11 +409,11 @@ contains
       what = what//' must be in '//short_real(lo)//'..'//short_real(hi)//unit
       if (present(line_of)) then
          call fail(at, line_of, shown//' = '//str(x)//unit//', outside the plausible range: '// &
-                   what//' (see the input bounds in the README)', error)
+                   what//bounds_where, error)
          return
       end if
       call fail(at, var, shown//' = '//str(x)//unit//', outside the plausible range: '//what// &
-                ' (see the input bounds in the README)', error)
+                bounds_where, error)
    end subroutine check_plausible
 
    !> Whether the deck gave `x` (it is not the `unset_real` marker; safe for NaN).
@@ -387,11 +430,7 @@ contains
       integer, intent(in) :: k
       character(len=:), allocatable :: s
 
-      if (k == 1) then
-         s = '1 value'
-      else
-         s = str(k)//' values'
-      end if
+      s = counted(k, 'value')
    end function values_text
 
    !> `history`: blank/comma separated quantities, 'all' or 'none'; blank means all. With

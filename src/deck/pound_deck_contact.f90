@@ -1,13 +1,13 @@
 !> Reader of `&contact`: the two buildings, the floor pairs, gaps and the joint law with its
-!> parameters (envelope rules: pound_envelope_rules).
+!> parameters (each law's own variables are checked by its module: pound_law_registry).
 module pound_deck_contact
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_config, only: building_config, contact_config, is_frame
-   use pound_deck_checks, only: check_plausible, check_real, fail, given_count, is_set, read_failed, &
-                                require_real, site, site_of, unset_int, unset_real, values_text
+   use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, site, site_of, unset_int, &
+                                unset_real, values_text
    use pound_deck_lexer, only: group_ref, group_text, lower
-   use pound_deck_variables, only: law_names, max_envelope_points, max_pairs, max_segments, word_len
-   use pound_envelope_rules, only: check_piecewise_envelope
+   use pound_law_registry, only: registered_law_names, law_is_registered, law_reads, law_restitution, law_take_deck
+   use pound_joint_law, only: law_input
+   use pound_deck_variables, only: max_envelope_points, max_pairs, word_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
    use pound_strings, only: str
@@ -22,7 +22,7 @@ module pound_deck_contact
 contains
 
    !> `&contact`: unilateral constraints between facing floors of two buildings.
-   subroutine read_contact(path, text, g, buildings, cfg, error, suite)
+   subroutine read_contact(path, text, g, buildings, cfg, error)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
@@ -35,8 +35,6 @@ contains
       type(contact_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      !> The deck is a suite (several `&ground`): its separation rules need floors at both ends.
-      logical, intent(in), optional :: suite
       character(len=word_len) :: left, right, law, dashpot_rate
       integer, allocatable :: floors_left(:), floors_right(:)
       real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:), elevations(:)
@@ -46,6 +44,7 @@ contains
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
+      type(law_input) :: raw
       integer :: ios, n, k, i
       namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot, &
          dashpot_rate, yield_force, second_slope, envelope_d, envelope_r, peak_force, peak_penetration, &
@@ -151,74 +150,45 @@ contains
       end if
 
       cfg%law = lower(trim(adjustl(law)))
-      select case (cfg%law)
-      case ('elastic', 'elastic_plastic', 'bilinear', 'piecewise', 'parabola_cubic')
-      case ('')
-         call fail(at, 'law', 'law is missing, must be '//law_names, error)
+      if (cfg%law == '') then
+         call fail(at, 'law', 'law is missing, must be '//registered_law_names(), error)
          return
-      case default
-         call fail(at, 'law', "law = '"//trim(adjustl(law))//"', must be "//law_names, error)
+      else if (.not. law_is_registered(cfg%law)) then
+         call fail(at, 'law', "law = '"//trim(adjustl(law))//"', must be "//registered_law_names(), error)
          return
-      end select
+      end if
 
       ! Variables of other laws are an error, not silently ignored.
-      call unused('stiffness', is_set(stiffness), cfg%law == 'piecewise', error)
+      ! Variables of other laws (pound_law_registry: what each law reads) are an error.
+      call unused('stiffness', is_set(stiffness), error)
       if (allocated(error)) return
-      call unused('yield_force', is_set(yield_force), &
-                  cfg%law /= 'elastic_plastic' .and. cfg%law /= 'bilinear', error)
+      call unused('yield_force', is_set(yield_force), error)
       if (allocated(error)) return
-      call unused('second_slope', is_set(second_slope), cfg%law /= 'bilinear', error)
+      call unused('second_slope', is_set(second_slope), error)
       if (allocated(error)) return
-      call unused('envelope_d', given_count(envelope_d) > 0, cfg%law /= 'piecewise', error)
+      call unused('envelope_d', given_count(envelope_d) > 0, error)
       if (allocated(error)) return
-      call unused('envelope_r', given_count(envelope_r) > 0, cfg%law /= 'piecewise', error)
+      call unused('envelope_r', given_count(envelope_r) > 0, error)
       if (allocated(error)) return
-      call unused('peak_force', is_set(peak_force), cfg%law /= 'parabola_cubic', error)
+      call unused('peak_force', is_set(peak_force), error)
       if (allocated(error)) return
-      call unused('peak_penetration', is_set(peak_penetration), cfg%law /= 'parabola_cubic', error)
+      call unused('peak_penetration', is_set(peak_penetration), error)
       if (allocated(error)) return
-      call unused('fracture_penetration', is_set(fracture_penetration), cfg%law /= 'parabola_cubic', error)
+      call unused('fracture_penetration', is_set(fracture_penetration), error)
       if (allocated(error)) return
-      call unused('n_segments', n_segments /= unset_int, cfg%law /= 'parabola_cubic', error)
+      call unused('n_segments', n_segments /= unset_int, error)
       if (allocated(error)) return
 
-      select case (cfg%law)
-      case ('elastic', 'elastic_plastic', 'bilinear')
-         call require_real(at, 'stiffness', stiffness, 'joint stiffness k0 in kN/m', error)
-         if (allocated(error)) return
-         call check_real(at, 'stiffness', stiffness, '>', 0.0_dp, error)
-         if (allocated(error)) return
-         cfg%stiffness = stiffness
-         if (cfg%law /= 'elastic') then
-            call require_real(at, 'yield_force', yield_force, 'yield force in kN', error)
-            if (allocated(error)) return
-            call check_real(at, 'yield_force', yield_force, '>', 0.0_dp, error)
-            if (allocated(error)) return
-            cfg%yield_force = yield_force
-         end if
-         if (cfg%law == 'bilinear') then
-            call require_real(at, 'second_slope', second_slope, 'slope after yielding in kN/m, '// &
-                              '< stiffness, negative for softening', error)
-            if (allocated(error)) return
-            if (.not. (second_slope < stiffness .and. ieee_is_finite(second_slope))) then
-               call fail(at, 'second_slope', 'second_slope = '//str(second_slope)//', must be < '// &
-                         'stiffness = '//str(stiffness), error)
-               return
-            end if
-            call check_plausible(at, 'second_slope', second_slope, 'second_slope', error)
-            if (allocated(error)) return
-            cfg%second_slope = second_slope
-         end if
-      case ('piecewise')
-         call take_points(error)
-         if (allocated(error)) return
-      case ('parabola_cubic')
-         call take_parabola_cubic(error)
-         if (allocated(error)) return
-      end select
+      ! The law's own variables, checked by the law's module (pound_law_registry).
+      raw = law_input(stiffness=stiffness, yield_force=yield_force, second_slope=second_slope, &
+                      peak_force=peak_force, peak_penetration=peak_penetration, &
+                      fracture_penetration=fracture_penetration, n_segments=n_segments, &
+                      envelope_d=envelope_d, envelope_r=envelope_r)
+      call law_take_deck(cfg%law, at, raw, cfg, error)
+      if (allocated(error)) return
 
       if (is_set(restitution)) then
-         if (cfg%law /= 'elastic') then
+         if (.not. law_restitution(cfg%law)) then
             call fail(at, 'restitution', "restitution is only for law = 'elastic' (law = '"//cfg%law// &
                       "'; give the dashpot instead)", error)
             return
@@ -261,10 +231,7 @@ contains
       subroutine take_elevations(error)
          type(error_type), allocatable, intent(out) :: error
          integer :: ne, j
-         logical :: in_suite
 
-         in_suite = .false.
-         if (present(suite)) in_suite = suite
          ne = given_count(elevations)
          if (ne > max_pairs) then
             call fail(at, 'elevations', 'elevations has '//values_text(ne)//', must have at most '// &
@@ -281,20 +248,20 @@ contains
             call check_real(at, 'elevations', elevations(j), '>', 0.0_dp, error, name='elevations('//str(j)//')')
             if (allocated(error)) return
             cfg%elevation(j) = elevations(j)
-            call point_at(at, j, elevations(j), buildings(cfg%left_index), in_suite, cfg%floor_left(j), error)
+            call point_at(at, j, elevations(j), buildings(cfg%left_index), cfg%floor_left(j), error)
             if (allocated(error)) return
-            call point_at(at, j, elevations(j), buildings(cfg%right_index), in_suite, cfg%floor_right(j), error)
+            call point_at(at, j, elevations(j), buildings(cfg%right_index), cfg%floor_right(j), error)
             if (allocated(error)) return
          end do
       end subroutine take_elevations
 
-      !> `var` was given (`given`) although the law does not use it (`not_used`).
-      pure subroutine unused(var, given, not_used, error)
+      !> `var` was given (`given`) although the law does not read it (pound_law_registry).
+      pure subroutine unused(var, given, error)
          character(len=*), intent(in) :: var
-         logical, intent(in) :: given, not_used
+         logical, intent(in) :: given
          type(error_type), allocatable, intent(out) :: error
 
-         if (given .and. not_used) then
+         if (given .and. .not. law_reads(cfg%law, var)) then
             if (var == 'stiffness') then
                call fail(at, var, "stiffness is not used by law = 'piecewise' (k0 is the slope of "// &
                          'its first segment, envelope_r(1)/envelope_d(1))', error)
@@ -304,110 +271,7 @@ contains
          end if
       end subroutine unused
 
-      !> `piecewise`: the envelope points, checked by the law's own rules.
-      subroutine take_points(error)
-         type(error_type), allocatable, intent(out) :: error
-         character(len=:), allocatable :: why
-         real(dp) :: k0
-         integer :: nd, nr, j
 
-         nd = given_count(envelope_d)
-         nr = given_count(envelope_r)
-         if (nd < 2) then
-            call fail(at, 'envelope_d', 'envelope_d has '//values_text(nd)//', needs at least 2 '// &
-                      'penetrations (m) of the envelope points after the origin', error)
-            return
-         end if
-         if (nd > max_envelope_points) then
-            call fail(at, 'envelope_d', 'envelope_d has '//values_text(nd)//', must have at most '// &
-                      str(max_envelope_points), error)
-            return
-         end if
-         if (nr /= nd) then
-            call fail(at, 'envelope_r', 'envelope_r has '//values_text(nr)//', envelope_d has '// &
-                      values_text(nd)//'; both need one value per point', error)
-            return
-         end if
-         do j = 1, nd
-            if (.not. is_set(envelope_d(j))) then
-               call fail(at, 'envelope_d', 'envelope_d('//str(j)//') is missing', error)
-               return
-            end if
-            if (.not. is_set(envelope_r(j))) then
-               call fail(at, 'envelope_r', 'envelope_r('//str(j)//') is missing', error)
-               return
-            end if
-            call check_real(at, 'envelope_d', envelope_d(j), '>', 0.0_dp, error, name='envelope_d('//str(j)//')')
-            if (allocated(error)) return
-            call check_real(at, 'envelope_r', envelope_r(j), '>=', 0.0_dp, error, name='envelope_r('//str(j)//')')
-            if (allocated(error)) return
-         end do
-         call check_piecewise_envelope(envelope_d(1:nd), envelope_r(1:nd), k0, error)
-         if (allocated(error)) then
-            why = error%message
-            call fail(at, 'envelope_r', 'envelope points: '//why, error)
-            return
-         end if
-         cfg%envelope_d = envelope_d(1:nd)
-         cfg%envelope_r = envelope_r(1:nd)
-         call check_plausible(at, 'stiffness', k0, &
-                              'k0 = envelope_r(1)/envelope_d(1)', error, line_of='envelope_r')
-         if (allocated(error)) return
-         cfg%stiffness = k0
-      end subroutine take_points
-
-      !> `parabola_cubic`: dB, dF, and k0 or rB (k0 = 2 rB/dB), chords per branch.
-      subroutine take_parabola_cubic(error)
-         type(error_type), allocatable, intent(out) :: error
-         real(dp) :: k0
-
-         call require_real(at, 'peak_penetration', peak_penetration, 'penetration dB at the peak force, m', &
-                           error)
-         if (allocated(error)) return
-         call check_real(at, 'peak_penetration', peak_penetration, '>', 0.0_dp, error)
-         if (allocated(error)) return
-         call require_real(at, 'fracture_penetration', fracture_penetration, &
-                           'penetration dF at fracture, m', error)
-         if (allocated(error)) return
-         call check_real(at, 'fracture_penetration', fracture_penetration, '>', peak_penetration, error, &
-                         bound_text='peak_penetration = '//str(peak_penetration))
-         if (allocated(error)) return
-         if (is_set(stiffness)) then
-            call check_real(at, 'stiffness', stiffness, '>', 0.0_dp, error)
-            if (allocated(error)) return
-            k0 = stiffness
-            if (is_set(peak_force)) then
-               if (abs(peak_force - 0.5_dp*k0*peak_penetration) > 1.0e-9_dp*peak_force) then
-                  call fail(at, 'peak_force', 'peak_force = '//str(peak_force)//' contradicts stiffness = '// &
-                            str(stiffness)//' and peak_penetration = '//str(peak_penetration)// &
-                            ' (the parabola needs stiffness = 2 peak_force/peak_penetration); give one '// &
-                            'of stiffness and peak_force', error)
-                  return
-               end if
-            end if
-         else
-            call require_real(at, 'peak_force', peak_force, 'peak force rB in kN, or give stiffness '// &
-                              'k0 = 2 rB/dB', error)
-            if (allocated(error)) return
-            call check_real(at, 'peak_force', peak_force, '>', 0.0_dp, error)
-            if (allocated(error)) return
-            k0 = 2.0_dp*peak_force/peak_penetration
-            call check_plausible(at, 'stiffness', k0, 'k0 = 2 peak_force/peak_penetration', error, &
-                                 line_of='peak_force')
-            if (allocated(error)) return
-         end if
-         if (n_segments == unset_int) n_segments = 8
-         if (n_segments < 1 .or. n_segments > max_segments) then
-            call fail(at, 'n_segments', 'n_segments = '//str(n_segments)//', must be 1..'//str(max_segments)// &
-                      ' (chords per curved branch)', error)
-            return
-         end if
-         cfg%stiffness = k0
-         cfg%peak_force = 0.5_dp*k0*peak_penetration
-         cfg%peak_penetration = peak_penetration
-         cfg%fracture_penetration = fracture_penetration
-         cfg%n_segments = n_segments
-      end subroutine take_parabola_cubic
 
    end subroutine read_contact
 
@@ -463,8 +327,8 @@ contains
 
    !> The floor of building `b` at elevation `z` of pair `k` (within `elevation_tol`), or 0 for a
    !> point between floors, which only a frame has (a node on its facing column); above the
-   !> roof, between the floors of a shear building, or between floors in a suite: an error.
-   pure subroutine point_at(at, k, z, b, suite, floor, error)
+   !> roof or between the floors of a shear building: an error.
+   pure subroutine point_at(at, k, z, b, floor, error)
       !> Where messages point.
       type(site), intent(in) :: at
       !> Pair (for messages).
@@ -473,8 +337,6 @@ contains
       real(dp), intent(in) :: z
       !> The building.
       type(building_config), intent(in) :: b
-      !> The deck is a suite.
-      logical, intent(in) :: suite
       !> The floor at z, or 0 between floors.
       integer, intent(out) :: floor
       !> Unallocated on success; otherwise the first problem found.
@@ -502,10 +364,6 @@ contains
                    ' m) and '//str(j)//' ('//str(zf)//' m) of building '//b%name//', a shear building '// &
                    "(DOFs only at its floors): give a floor's elevation, or model = 'frame' for "//b%name// &
                    ' (its facing column gets a node there)', error)
-      else if (suite) then
-         call fail(at, 'elevations', what//' lies between floors of building '//b%name//'; a suite '// &
-                   '(several &ground) needs the pairs at floors of both buildings (its separation rules '// &
-                   'take the floors'' peaks)', error)
       end if
    end subroutine point_at
 

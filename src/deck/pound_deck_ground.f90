@@ -1,23 +1,27 @@
 !> Reader of `&ground`: a pulse, a record file resolved relative to the deck, or a synthetic
 !> motion (pound_synthetic_motion), each with a name and a scaling for a suite.
 module pound_deck_ground
-   use pound_config, only: ground_config
+   use pound_config, only: ground_config, deck_warning_len
+   use pound_constants, only: g_accel
    use pound_deck_checks, only: check_real, fail, is_set, read_failed, require_real, site, site_of, &
-                                unset_int, unset_real
+                                unset_int, unset_real, warn
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_deck_variables, only: path_len, word_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
-   use pound_strings, only: str
+   use pound_strings, only: plain_real, str
    implicit none
    private
 
    public :: read_ground
 
+   !> A scaling `target` (m/s^2) below this is suspicious (probably given in g): a warning.
+   real(dp), parameter, public :: low_target = 0.05_dp
+
 contains
 
    !> `&ground`: a pulse or a record file.
-   subroutine read_ground(path, text, g, n_motions, cfg, error)
+   subroutine read_ground(path, text, g, n_motions, cfg, error, warnings)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
@@ -30,9 +34,11 @@ contains
       type(ground_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
+      !> The deck's plausibility warnings, this group's appended.
+      character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
       character(len=word_len) :: kind, format, name, scale_to, filter, envelope
       character(len=path_len) :: file
-      real(dp) :: x0, a, b, scale, target, period
+      real(dp) :: x0, a, b, scale, target, target_g, period
       real(dp) :: ground_frequency, ground_damping, filter_frequency, filter_damping
       real(dp) :: rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga
       integer :: ios, seed
@@ -43,7 +49,7 @@ contains
       type(site) :: at
       namelist /ground/ kind, x0, a, b, file, format, scale, name, scale_to, target, period, &
          filter, ground_frequency, ground_damping, filter_frequency, filter_damping, envelope, &
-         rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga, seed, histories
+         rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga, seed, histories, target_g
 
       kind = ' '
       format = ' '
@@ -57,6 +63,7 @@ contains
       b = unset_real
       scale = unset_real
       target = unset_real
+      target_g = unset_real
       period = unset_real
       ground_frequency = unset_real
       ground_damping = unset_real
@@ -175,6 +182,8 @@ contains
          case ('')
             if (is_set(target)) then
                call fail(at, 'target', "target applies only with scale_to = 'pga' or 'sa'", error)
+            else if (is_set(target_g)) then
+               call fail(at, 'target_g', "target_g applies only with scale_to = 'pga' or 'sa'", error)
             else if (is_set(period)) then
                call fail(at, 'period', "period applies only with scale_to = 'sa'", error)
             end if
@@ -183,8 +192,24 @@ contains
                call fail(at, 'scale', 'scale and scale_to exclude each other: give one', error)
                return
             end if
-            call required_positive('target', target, 'target of scale_to in m/s^2', cfg%target, error)
-            if (allocated(error)) return
+            if (is_set(target_g)) then
+               if (is_set(target)) then
+                  call fail(at, 'target_g', 'target and target_g exclude each other: give one (target '// &
+                            'in m/s^2, target_g in g)', error)
+                  return
+               end if
+               call check_real(at, 'target_g', target_g, '>', 0.0_dp, error)
+               if (allocated(error)) return
+               cfg%target = target_g*g_accel
+            else
+               call required_positive('target', target, 'target of scale_to in m/s^2, or target_g in g', &
+                                      cfg%target, error)
+               if (allocated(error)) return
+               if (cfg%target < low_target) call warn(at, 'target', 'target = '//plain_real(target)// &
+                  ' m/s^2 is below '//plain_real(low_target)//' m/s^2 (about 0.005 g): did you mean g? '// &
+                  'target is in m/s^2; for a target in g use target_g = '//plain_real(target), &
+                  warnings)
+            end if
             if (is_set(period)) then
                if (cfg%scale_to == 'pga') then
                   call fail(at, 'period', "period applies only with scale_to = 'sa'", error)

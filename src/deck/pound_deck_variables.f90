@@ -12,7 +12,7 @@ module pound_deck_variables
    public :: var_spec, variables, known_groups, known_variable, variable_index, variable_type, &
              variable_list, group_variable_count, group_max_size, findloc_name, join
    public :: max_storeys, max_name_length, max_pairs, max_columns, max_steps, title_len, path_len, &
-             word_len, max_substeps, law_names, max_envelope_points, max_segments, max_bays, max_column_elements, &
+             word_len, max_substeps, max_envelope_points, max_segments, max_bays, max_column_elements, &
              frame_variables
 
    !> Largest number of storeys a `&building` may have.
@@ -37,9 +37,6 @@ module pound_deck_variables
    integer, parameter :: max_substeps = 1000
    !> Lengths of the character buffers the namelist reads into.
    integer, parameter :: title_len = 1024, path_len = 4096, word_len = 256
-   !> Constraint laws, as written in the deck.
-   character(len=*), parameter :: law_names = &
-      "'elastic', 'elastic_plastic', 'bilinear', 'piecewise' or 'parabola_cubic'"
    !> Largest number of envelope points of a `piecewise` law (the contact law's own limit).
    integer, parameter :: max_envelope_points = max_law_points
    !> Largest number of chords per curved branch of `parabola_cubic`.
@@ -62,7 +59,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(92) = [ &
+   type(var_spec), parameter :: variables(97) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -113,7 +110,10 @@ module pound_deck_variables
       var_spec('analysis', 'compress', 'l', 0), &
       var_spec('contact', 'elevations', 'r', max_pairs), &
       var_spec('analysis', 'node_histories', 'l', 0), &
-      var_spec('analysis', 'lcp_solver', 'c', 0), var_spec('analysis', 'free_steps', 'c', 0)]
+      var_spec('analysis', 'lcp_solver', 'c', 0), var_spec('analysis', 'free_steps', 'c', 0), &
+      var_spec('building', 'cd', 'r', 0), var_spec('building', 'importance', 'r', 0), &
+      var_spec('building', 'behaviour_factor', 'r', 0), var_spec('building', 'response_reduction', 'r', 0), &
+      var_spec('ground', 'target_g', 'r', 0)]
 
 contains
 

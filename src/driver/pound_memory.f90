@@ -20,7 +20,8 @@
 !>   each with 8 band matrices of half-bandwidth 3 n_lines + 2 (K+G, M, C, factors, work),
 !>   and per analysis its deformed shapes (DOFs x n_storeys, at most `deformed_limit`) and
 !>   column-segment peaks; with `free_steps = 'exact'`, 5 n^2 reals per building of n floors
-!>   (its modes in up to three integrators and the dense eigenproblem of their set-up).
+!>   (its modes in up to three integrators and the dense eigenproblem of their set-up), and
+!>   12 n^2 per frame of n DOFs (shapes and coordinate rows, the condensed set-up).
 !>
 !> The memory available is the smallest of: MemAvailable of /proc/meminfo, the memory
 !> limit less the current use of the process's cgroup and of each of its ancestors
@@ -107,6 +108,10 @@ contains
                                                               2.0_dp*real(deformed_limit, dp)) + &
                              12.0_dp*lines*real(b%n_storeys, dp)*real(b%column_elements, dp))
                if (deck%analysis%node_histories) est%node_columns = est%node_columns + dofs
+               ! Exact free steps of a frame (DOFs without mass): the n x n shapes and
+               ! coordinate rows in up to three integrators, and the dense set-up (K, the
+               ! condensed eigenproblem and its blocks), 12 n^2 reals in all.
+               if (deck%analysis%free_steps == 'exact') frame_bytes = frame_bytes + 12.0_dp*8.0_dp*dofs**2
             end associate
          end do
          ! Exact free steps: the n x n modes of each building, held by up to three integrators
@@ -114,6 +119,7 @@ contains
          ! eigenproblem of their set-up.
          if (deck%analysis%free_steps == 'exact') then
             do ib = 1, size(deck%buildings)
+               if (is_frame(deck%buildings(ib))) cycle
                frame_bytes = frame_bytes + 5.0_dp*8.0_dp*real(deck%buildings(ib)%n_storeys, dp)**2
             end do
          end if

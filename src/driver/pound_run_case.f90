@@ -27,6 +27,8 @@ module pound_run_case
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
    use pound_sweep, only: sweep_result, run_sweep
+   use pound_separation, only: separation_t, pair_separation
+   use pound_plausibility, only: period_warning, unit_suspects
    implicit none
    private
 
@@ -78,9 +80,17 @@ module pound_run_case
       type(building_influence), allocatable :: influence(:)
       !> Gap study.
       type(sweep_result) :: sweep
-      !> Warnings of the uncoupled run, the coupled run and the sweep, in that order, one line
-      !> each (size 0 when there are none).
+      !> Separation rules per contact pair (the deck's `&contact` pairs in order), from the
+      !> uncoupled peaks (`pair_separation`; allocated when both analyses ran). With a sweep, the
+      !> no-contact gap is its probe's largest closing displacement of each joint and the
+      !> time-history gap its safe gap when found; without, both are n/a.
+      type(separation_t), allocatable :: separation(:)
+      !> Warnings of the deck (plausibility), of the models (period against the code estimate),
+      !> of the uncoupled run, the coupled run and the sweep, in that order, one line each (size
+      !> 0 when there are none).
       character(len=:), allocatable :: warnings(:)
+      !> How many of `warnings` (the first ones) concern the input: the deck's and the models'.
+      integer :: n_input_warnings = 0
    end type case_result
 
 contains
@@ -162,7 +172,7 @@ contains
       type(ground_motion_t) :: deck_gm
       type(contact_pair), allocatable :: pairs(:)
       type(analysis_plan) :: plan
-      character(len=:), allocatable :: prefix
+      character(len=:), allocatable :: prefix, text
       real(dp), allocatable :: ag(:)
       logical :: coupled_only
       integer :: n_steps, n_out, ib, stat
@@ -257,7 +267,19 @@ contains
          end if
       end if
 
+      if (res%has_uncoupled .and. res%has_coupled) call separations()
       allocate (character(len=1) :: res%warnings(0))
+      if (allocated(deck%warnings)) then
+         do ib = 1, size(deck%warnings)
+            call add_warning(res%warnings, trim(deck%warnings(ib)))
+         end do
+      end if
+      do ib = 1, size(res%models)
+         text = period_warning(res%models(ib)%name, res%models(ib)%period(1), sum(deck%buildings(ib)%height), &
+                               unit_suspects(deck%buildings(ib)))
+         if (len(text) > 0) call add_warning(res%warnings, text)
+      end do
+      res%n_input_warnings = size(res%warnings)
       if (res%has_uncoupled) call collect(res%unc%warnings)
       if (res%has_coupled) call collect(res%cpl%warnings)
       if (res%has_sweep) call collect(res%sweep%warnings)
@@ -273,6 +295,47 @@ contains
          has_uncoupled = .false.
          if (present(options)) has_uncoupled = associated(options%unc)
       end function has_uncoupled
+
+      !> The separation rules of every pair from the uncoupled peak displacements of the
+      !> facing floors.
+      subroutine separations()
+         integer :: ic, k, np
+
+         np = 0
+         allocate (res%separation(sum([(size(deck%contacts(ic)%floor_left), ic=1, size(deck%contacts))])))
+         do ic = 1, size(deck%contacts)
+            associate (c => deck%contacts(ic))
+               do k = 1, size(c%floor_left)
+                  np = np + 1
+                  res%separation(np) = pair_separation(deck, c%left_index, c%right_index, c%floor_left(k), &
+                                                       c%floor_right(k), peak_u(c%left_index, c%floor_left(k)), &
+                                                       peak_u(c%right_index, c%floor_right(k)), &
+                                                       res%models(c%left_index)%period(1), &
+                                                       res%models(c%right_index)%period(1))
+               end do
+            end associate
+         end do
+         if (res%has_sweep) then
+            res%separation%time_history_valid = res%sweep%found
+            if (res%sweep%found) res%separation%time_history = res%sweep%safe_gap
+            ! The sweep's probe (the uncoupled motion run as a coupled one no joint closes) gives
+            ! each joint's largest closing displacement: the no-contact gap (0 if it never closes).
+            if (allocated(res%sweep%closing_max)) then
+               if (size(res%sweep%closing_max) == np) then
+                  res%separation%no_contact = max(0.0_dp, res%sweep%closing_max)
+                  res%separation%no_contact_valid = .true.
+               end if
+            end if
+         end if
+      end subroutine separations
+
+      !> Peak |u| (m) of floor j of building ib in the uncoupled run (0 for a point between floors).
+      real(dp) function peak_u(ib, j)
+         integer, intent(in) :: ib, j
+
+         peak_u = 0.0_dp
+         if (j >= 1) peak_u = res%unc%building(ib)%peak(j, 1)
+      end function peak_u
 
       subroutine collect(warnings)
          character(len=:), allocatable, intent(in) :: warnings(:)

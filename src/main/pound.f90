@@ -30,7 +30,8 @@ program pound
    use pound_run_case, only: case_options, case_result, run_case, deck_ground_motion
    use pound_suite, only: suite_result, run_suite
    use pound_suite_output, only: write_suite_listing, write_suite_h5
-   use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, &
+   use pound_separation_output, only: write_run_separation, pair_labels
+   use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, write_warning_lines, &
                             write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
                             write_sweep_column_table, write_section
    use pound_text_writer, only: text_writer, open_text, close_text
@@ -43,7 +44,7 @@ program pound
    use pound_memory, only: estimate_memory, memory_available, memory_refusal
    use pound_posix, only: posix_std_fd_open, posix_reserve_fd, posix_exit_now, posix_write, posix_strerror, &
                           posix_sleep
-   use pound_strings, only: fixed_cell, str
+   use pound_strings, only: counted, fixed_cell, str
    use pound_analysis, only: substep_text, exact_text
    use pound_response, only: discard_sink
    use pound_progress, only: progress_setup, progress_start, progress_finish, progress_auto, progress_on, &
@@ -160,7 +161,7 @@ program pound
    ! (A suite of one motion writes no /suite: its failed gaps are those of its own sweep.)
    if (size(deck%motions) > 1) then
       if (size(suite%failures) > 0) then
-         call stop_with(str(size(suite%failures))//' cases of the suite failed ('// &
+         call stop_with(counted(size(suite%failures), 'case')//' of the suite failed ('// &
                         str(count(suite%motion_failed))//' of '//str(size(suite%names))// &
                         ' motions left out of the suite statistics; named in '//outputs%listing//' and '// &
                         outputs%h5//' /suite/failed); the other results were written', failed_cases_status)
@@ -203,25 +204,28 @@ contains
    subroutine write_h5(file)
       type(h5_file), intent(inout), optional :: file
 
+      if (.not. allocated(res%separation)) allocate (res%separation(0))
       if (res%has_sweep) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file)
+                               res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file, &
+                               separation=res%separation)
       else if (res%has_coupled) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, res%cpl, res%cs, res%influence, file=file)
+                               res%unc, error, res%cpl, res%cs, res%influence, file=file, separation=res%separation)
       else
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
                                res%unc, error, file=file)
       end if
    end subroutine write_h5
 
-   !> Stop with the message and status 1 if `err` is set; remove this run's temporaries.
+   !> Stop with the message and the error's status (1 unless the code that raised it chose
+   !> another) if `err` is set; remove this run's temporaries.
    subroutine check(err)
       type(error_type), allocatable, intent(in) :: err
 
       if (.not. allocated(err)) return
       call discard_outputs(outputs)
-      call stop_with(err%message, 1)
+      call stop_with(err%message, err%status)
    end subroutine check
 
    !> Write `message` to standard error and end the process with `status` by _exit, after
@@ -293,21 +297,27 @@ contains
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: err
       type(text_writer) :: lst
-      character(len=len(ground_text)) :: motion_text(1)
+      character(len=:), allocatable :: input_warnings(:)
+      character(len=len(ground_text)) :: suite_ground(1)
 
       call open_text(path, 'listing', lst, err)
       if (allocated(err)) return
       if (size(deck%motions) > 1) then
          ! Assigned (cut to the length of ground_text) before the call: an array constructor
          ! with a shorter type-spec length than its value was read past its end by gfortran.
-         motion_text(1) = motion_heading(suite)//': '//ground_text(1)
-         call write_listing_header(lst, deck, motion_text, summary_text)
-         call write_model_summary(lst, res%models, res%buildings)
-         call write_section(lst, motion_heading(suite)//': the single-motion results of this motion alone '// &
-                            '(the suite''s answer: Summary above and Ground-motion suite below)')
+         suite_ground(1) = motion_heading(suite)//': '//trim(ground_text(1))
+         call write_listing_header(lst, deck, suite_ground, summary_text)
       else
          call write_listing_header(lst, deck, ground_text, summary_text)
-         call write_model_summary(lst, res%models, res%buildings)
+      end if
+      call write_model_summary(lst, res%models, res%buildings)
+      if (res%n_input_warnings > 0) then
+         input_warnings = res%warnings(1:res%n_input_warnings)
+         call write_warning_lines(lst, input_warnings)
+      end if
+      if (size(deck%motions) > 1) then
+         call write_section(lst, motion_heading(suite)//': the single-motion results of this motion alone '// &
+                            '(the suite''s answer: Summary above and Ground-motion suite below)')
       end if
       call write_peak_tables(lst, 'Uncoupled', res%models, res%unc)
       if (.not. res%has_coupled) call write_column_tables(lst, res%models, res%buildings, res%unc)
@@ -318,6 +328,8 @@ contains
          call write_column_tables(lst, res%models, res%buildings, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(lst, res%models, deck%sweep, res%sweep)
          if (res%has_sweep) call write_sweep_column_table(lst, res%models, deck%sweep, res%sweep)
+         if (size(deck%motions) == 1 .and. allocated(res%separation)) &
+            call write_run_separation(lst, pair_labels(res%cs), res%separation)
       end if
       if (size(deck%motions) > 1) then
          call write_suite_listing(lst, res%models, suite, res%cs)
@@ -348,9 +360,8 @@ contains
       text = program_name//' '//program_version//': '//deck%analysis%title//new_line('a')
       associate (models => res%models, unc => res%unc, cpl => res%cpl, cs => res%cs, sweep => res%sweep)
          do ib = 1, size(models)
-            write (line, '(a,i0,a,a,a)') '  building '//models(ib)%name//': ', size(models(ib)%floor_dof), &
-               ' storeys, T1 = ', trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.))), ' s'
-            text = text//trim(line)//new_line('a')
+            text = text//'  building '//models(ib)%name//': '//counted(size(models(ib)%floor_dof), 'storey')// &
+                   ', T1 = '//trim(adjustl(fixed_cell(models(ib)%period(1), 11, 5, .true.)))//' s'//new_line('a')
          end do
          do i = 1, size(summary_text)
             text = text//'  '//trim(summary_text(i))//new_line('a')
@@ -359,10 +370,10 @@ contains
             ' s, energy balance error ', unc%energy_error
          text = text//trim(line)//new_line('a')
          if (res%has_coupled) then
-            write (line, '(a,es10.3,a,es9.2,a,i0,a,i0,a)') '  coupled integration:   ', cpl%seconds, &
-               ' s, energy balance error ', cpl%energy_error, ', ', sum(cs%joint(:)%impacts), ' impacts, ', &
-               cs%stats%pivots_total, ' LCP pivots'
-            text = text//trim(line)//new_line('a')
+            write (line, '(a,es10.3,a,es9.2,a)') '  coupled integration:   ', cpl%seconds, &
+               ' s, energy balance error ', cpl%energy_error, ', '
+            text = text//trim(line)//' '//counted(sum(cs%joint(:)%impacts), 'impact')//', '// &
+                   counted(cs%stats%pivots_total, 'LCP pivot')//new_line('a')
             write (line, '(a,es10.3,a,i0,a,i0,a,i0)') '  contact (LCP) time:    ', cpl%contact_seconds, &
                ' s, LCP solves ', cs%stats%solves + cs%stats%active_solves - cs%stats%active_fallbacks, &
                ', pivots max ', cs%stats%pivots_max, ', steps ', cpl%n_steps
@@ -393,9 +404,9 @@ contains
       end associate
       if (size(deck%motions) > 1) then
          if (size(suite%failures) > 0) then
-            write (line, '(a,i0,a,i0,a,i0,a)') '  suite: ', size(suite%names), ' motions, statistics over ', &
-               suite%n_used, ', ', size(suite%failures), ' failed cases (FAILED in the listing)'
-            text = text//trim(line)//new_line('a')
+            text = text//'  suite: '//counted(size(suite%names), 'motion')//', statistics over '// &
+                   str(suite%n_used)//', '//counted(size(suite%failures), 'failed case')// &
+                   ' (FAILED in the listing)'//new_line('a')
          end if
          if (suite%first > 1) text = text//'  the single-motion results are those of &ground '''// &
                                      trim(suite%names(suite%first))//''' (the first motion run whole that '// &

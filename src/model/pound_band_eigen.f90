@@ -25,6 +25,7 @@ module pound_band_eigen
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
+   use pound_plausibility, only: buckling_hint
    use pound_band, only: band_symv
    use pound_band_lapack, only: dpbtrf, dpbtrs, dsygv, dgbtrf, dgbtrs
    implicit none
@@ -74,7 +75,8 @@ contains
       fac = kt
       call dpbtrf('U', n, kd, fac, kd + 1, info)
       if (info /= 0) then
-         call fatal_error(error, 'modes: K+G is not positive definite (leading minor '//str(info)//')')
+         call fatal_error(error, 'modes: K+G is not positive definite (leading minor '//str(info)//')'// &
+                          buckling_hint)
          return
       end if
       ! Start vectors: the mass diagonal, then unit vectors at the largest m_ii/k_ii.

@@ -17,6 +17,7 @@ module pound_frame_gravity
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
+   use pound_plausibility, only: buckling_hint
    use pound_band_lapack, only: dpbtrf, dpbtrs
    use pound_band_eigen, only: band_inverse_iteration
    use pound_band, only: band_symv
@@ -205,7 +206,7 @@ contains
       call frame_buckling(f, axial, kind, factor, group, error)
       if (allocated(error)) return
       call fatal_error(error, 'frame '//f%name//' buckles under its gravity loads: lowest buckling factor '// &
-                       str(factor)//', must be > 1 (columns of storey '//str(group)//')')
+                       str(factor)//', must be > 1 (columns of storey '//str(group)//')'//buckling_hint)
    end subroutine check_frame_stability
 
 end module pound_frame_gravity

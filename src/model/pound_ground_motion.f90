@@ -18,7 +18,7 @@
 module pound_ground_motion
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str
    use pound_constants, only: g_accel
    use pound_accelerogram, only: accelerogram_t, read_accelerogram
@@ -154,6 +154,7 @@ contains
          call fatal_error(error, '&ground: the ground acceleration at t = '//str(real(n, dp)*dt)// &
                           ' s (step '//str(n)//') is not finite ('//str(ag(n))//' m/s^2): it comes from '// &
                           origin)
+         call error_at(error, real(n, dp)*dt, n)
          return
       end do
    end subroutine check_ground_samples

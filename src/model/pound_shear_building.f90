@@ -12,6 +12,7 @@ module pound_shear_building
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
+   use pound_plausibility, only: buckling_hint
    use pound_config, only: building_config
    use pound_storey_properties, only: storey_properties
    use pound_band, only: band_add_storey
@@ -141,7 +142,7 @@ contains
          call fatal_error(error, 'building '//b%name//': buckles under its own gravity loads '// &
                           '(K+G not positive definite) at storey '//str(jmax)//': P/h = '// &
                           str(b%geometric_stiffness(jmax))//' kN/m >= k = '//str(b%storey_stiffness(jmax))// &
-                          ' kN/m, load ratio P/(h k) = '//str(theta_max))
+                          ' kN/m, load ratio P/(h k) = '//str(theta_max)//buckling_hint)
          return
       end if
 

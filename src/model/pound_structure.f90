@@ -33,7 +33,8 @@ module pound_structure
    public :: structure_model, recovery_rows, recover, recover_all, recover_peaks, group_rows, structure_label
    public :: structure_names
    public :: structure_strain_energy
-   public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof
+   public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
+             structure_end_row, single_row
 
    !> Natural modes a builder computes besides the two Rayleigh modes: the periods the listing
    !> shows (the lowest `modes_listed`; fewer when the model has fewer modes).
@@ -499,6 +500,39 @@ contains
          if (k > 0) dof = m%point_dof_left(k)
       end if
    end function structure_end_dof
+
+   !> A contact end on model `m` as a sparse row over its DOFs (one row: the end's displacement
+   !> is the row's value): the point of `structure_end_dof`, one DOF with coefficient 1; no
+   !> row (n = 0) if there is no such point.
+   pure function structure_end_row(m, side, floor, z) result(row)
+      !> The model.
+      class(structure_model), intent(in) :: m
+      !> End of the pair: 1 (left building) or 2 (right building).
+      integer, intent(in) :: side
+      !> Floor (0: a point between floors).
+      integer, intent(in) :: floor
+      !> Elevation of a point between floors (m).
+      real(dp), intent(in) :: z
+      type(recovery_rows) :: row
+      integer :: dof
+
+      dof = structure_end_dof(m, side, floor, z)
+      if (dof == 0) return
+      row = single_row(dof)
+   end function structure_end_row
+
+   !> One row of one DOF with coefficient 1 (the value is u(dof)).
+   pure function single_row(dof) result(row)
+      !> The DOF.
+      integer, intent(in) :: dof
+      type(recovery_rows) :: row
+
+      row%n = 1
+      row%start = [1, 2]
+      row%dof = [dof]
+      row%coef = [1.0_dp]
+      row%scale = [1.0_dp]
+   end function single_row
 
    !> `&building #k (name)` when the occurrence is known, else `building name`.
    pure function structure_label(m) result(s)

@@ -4,7 +4,7 @@
 !> keeps the first failure (no space left, file too large, ...); the caller asks it once.
 module pound_listing
    use pound_kinds, only: dp
-   use pound_strings, only: fixed_cell, left_cell, right_cell
+   use pound_strings, only: counted, fixed_cell, left_cell, right_cell
    use pound_text_writer, only: text_writer
    use pound_analysis_plan, only: steps_of
    use pound_version, only: program_name, program_version
@@ -14,20 +14,19 @@ module pound_listing
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
-   use pound_contact_law, only: contact_law, law_name, rate_name, is_plastic, law_elastic, law_elastic_plastic, &
-                                law_bilinear, law_piecewise, law_parabola_cubic
+   use pound_contact_law, only: contact_law, rate_name
+   use pound_joint_law, only: law_text
    use pound_lemke, only: lemke_status_name
    use pound_influence, only: building_influence
    use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment
    use pound_sweep, only: sweep_result
-   use pound_cases, only: failure_time_step
    implicit none
    private
 
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
    public :: write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables
    public :: write_sweep_column_table
-   public :: gap_cell, mm
+   public :: gap_cell, mm, write_warning_lines
 
    !> Millimetres per metre: gaps, displacements, drifts and penetrations are listed in mm.
    real(dp), parameter :: mm = 1000.0_dp
@@ -147,8 +146,8 @@ contains
             if (allocated(s%frame)) then
                call write_frame_summary(lst, b, s)
             else
-               write (lst%unit, '(/,a,i0,a,a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '  Building '//b%name//': ', b%n, ' storeys, P-Delta ', trim(pd)
+               write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) &
+                  '  Building '//b%name//': '//counted(b%n, 'storey')//', P-Delta '//trim(pd)
                call lst%note()
                write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
                   '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
@@ -354,6 +353,7 @@ contains
       integer :: k, w
       real(dp) :: mean_pivots
       character(len=12) :: fractured
+      type(law_text), allocatable :: lines(:)
 
       call write_section(lst, 'Contact (unilateral constraints between facing floors)')
       w = 4
@@ -367,7 +367,7 @@ contains
       do k = 1, cs%m
          associate (p => cs%pair(k))
             write (lst%unit, '(2x,a,a12,2x,a16,es12.3,es12.3,2x,a)', iostat=lst%ios, iomsg=lst%msg) &
-               left_cell(p%label, w), fixed_cell(mm*p%gap, 12, 3), left_cell(law_name(p%law%kind), 16), &
+               left_cell(p%label, w), fixed_cell(mm*p%gap, 12, 3), left_cell(p%law%title(), 16), &
                p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
             call lst%note()
          end associate
@@ -375,12 +375,13 @@ contains
       ! The parameters of the laws beyond k0 and c, after the table (not between its rows).
       do k = 1, cs%m
          associate (p => cs%pair(k))
-            if (p%law%restitution <= 0.0_dp .and. p%law%kind == law_elastic) cycle
+            call p%law%lines(lines)
+            if (p%law%restitution <= 0.0_dp .and. size(lines) == 0) cycle
             write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//p%label//':'
             call lst%note()
             if (p%law%restitution > 0.0_dp) then
                write (lst%unit, '(4x,a,f6.3,a)', iostat=lst%ios, iomsg=lst%msg) 'c calibrated to the restitution e =', &
-                  p%law%restitution, ' (exact relation of the joint, README)'
+                  p%law%restitution, ' (exact relation of the joint: docs/verification.md)'
                call lst%note()
             end if
             call law_parameters(p%law)
@@ -462,35 +463,14 @@ contains
 
       subroutine law_parameters(law)
          type(contact_law), intent(in) :: law
+         type(law_text), allocatable :: lines(:)
          integer :: i
 
-         select case (law%kind)
-         case (law_elastic_plastic)
-            write (lst%unit, '(4x,a,es11.4,a)', iostat=lst%ios, iomsg=lst%msg) 'yield force ', law%yield_force, ' kN'
+         call law%lines(lines)
+         do i = 1, size(lines)
+            write (lst%unit, '(4x,a)', iostat=lst%ios, iomsg=lst%msg) lines(i)%line
             call lst%note()
-         case (law_bilinear)
-            write (lst%unit, '(4x,a,es11.4,a,es11.4,a)', iostat=lst%ios, iomsg=lst%msg) &
-               'yield force ', law%yield_force, ' kN, second slope ', &
-               law%second_slope, ' kN/m'
-            call lst%note()
-         case (law_piecewise)
-            write (lst%unit, '(4x,a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
-               'envelope through ', size(law%env_d), ' points (d [mm], r [kN]):'
-            call lst%note()
-            write (lst%unit, '(4x,4(a,es10.3,a,es10.3,a))', iostat=lst%ios, iomsg=lst%msg) &
-               ('(', mm*law%env_d(i), ', ', law%env_r(i), ') ', &
-               i=1, size(law%env_d))
-            call lst%note()
-         case (law_parabola_cubic)
-            write (lst%unit, '(4x,a,es11.4,a,es11.4,a,es11.4,a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
-               'rB = ', law%peak_force, ' kN, dB = ', &
-               mm*law%peak_penetration, ' mm, dF = ', mm*law%fracture_penetration, ' mm, ', law%n_segments, &
-               ' chords per curved branch'
-            call lst%note()
-         end select
-         if (is_plastic(law) .and. law%fractures) write (lst%unit, '(4x,a,es11.4,a)', iostat=lst%ios, iomsg=lst%msg) &
-            'fractures at d = ', mm*law%env_d(size(law%env_d)), ' mm'
-         call lst%note()
+         end do
       end subroutine law_parameters
 
    end subroutine write_contact_summary
@@ -671,8 +651,7 @@ contains
       character(len=*), parameter :: heads(4) = [character(len=9) :: 'Q', 'drift', 'u', 'a_abs']
       character(len=:), allocatable :: line
       character(len=11) :: cell
-      integer :: i, ib, k, step
-      real(dp) :: t
+      integer :: i, ib, k
 
       call write_section(lst, 'Gap study: largest |lambda| [%] over the storeys (floors) against the gap')
       write (lst%unit, '(a,i0,a,f10.4,a)', iostat=lst%ios, iomsg=lst%msg) &
@@ -739,9 +718,8 @@ contains
          call lst%note()
          do i = 1, size(res%gap)
             if (.not. res%failed(i)) cycle
-            call failure_time_step(res%messages(i), t, step)
-            write (lst%unit, '(i8,a14,es12.4,i10,2x,a)', iostat=lst%ios, iomsg=lst%msg) &
-               i, fixed_cell(mm*res%gap(i), 14, 4), t, step, &
+            write (lst%unit, '(i8,a14,es12.4,i10,2x,a)', iostat=lst%ios, iomsg=lst%msg) i, fixed_cell(mm*res%gap(i), 14, 4), &
+               res%time(i), res%step(i), &
                trim(res%messages(i))
             call lst%note()
          end do
@@ -824,7 +802,7 @@ contains
                end if
             end do
          end do
-         if (cfg%target > 0.0_dp) line = line//merge('     met', '        ', res%meets(i))
+         if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
          call lst%note()
       end do

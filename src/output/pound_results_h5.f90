@@ -63,12 +63,12 @@ module pound_results_h5
    use pound_analysis, only: analysis_result, history_sink
    use pound_analysis_plan, only: output_steps, steps_of
    use pound_contact, only: contact_system
-   use pound_contact_law, only: law_name
    use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
-   use pound_cases, only: failure_time_step
+   use pound_separation, only: separation_t
+   use pound_separation_output, only: write_separation_h5, pair_labels
    use pound_config, only: sweep_config
    use pound_constants, only: g_accel
    implicit none
@@ -164,7 +164,7 @@ contains
 
    !> Write the whole results file at `path`.
    subroutine write_results_h5(path, deck, models, buildings, ground_text, ag_out, unc, error, cpl, cs, influence, sweep, &
-                               file)
+                               file, separation)
       !> File to create (truncated).
       character(len=*), intent(in) :: path
       !> The deck.
@@ -192,6 +192,9 @@ contains
       !> The file already open (created at `path` before the analyses, holding the streamed
       !> histories): written into and closed.
       type(h5_file), intent(inout), optional :: file
+      !> Separation rules per contact pair (`pound_separation`), written to /separation
+      !> (`write_separation_h5`) for a deck with one motion; none when absent or empty.
+      type(separation_t), intent(in), optional :: separation(:)
       type(h5_file) :: h5
       type(error_type), allocatable :: close_error
       integer :: ib, q
@@ -255,6 +258,11 @@ contains
             end do
          end if
          if (present(sweep)) call write_sweep()
+         if (allocated(error) .or. .not. present(separation)) return
+         if (.not. present(cs)) return
+         if (size(separation) > 0 .and. size(deck%motions) == 1) &
+            call write_separation_h5(h5, '/separation', reshape(separation, [1, size(separation)]), &
+                                     pair_labels(cs), .false., error)
       end subroutine write_all
 
       !> lambda of the member rows by quantity: /influence/<b>/<group>/<name> (n_members).
@@ -316,7 +324,8 @@ contains
          if (allocated(error)) return
          call h5_write_attr(h5, '/sweep', 'safe_gap_note', 'failed gaps counted as not meeting the target', error)
          if (allocated(error)) return
-         call write_failed_cases(h5, '/sweep/failed', sweep%gap, sweep%failed, sweep%messages, error)
+         call write_failed_cases(h5, '/sweep/failed', sweep%gap, sweep%failed, sweep%messages, sweep%time, &
+                                 sweep%step, error)
       end subroutine write_sweep
 
       subroutine write_model(b, s)
@@ -416,7 +425,7 @@ contains
          character(len=16), allocatable :: laws(:)
          integer :: k, ne
          ! Contiguous copies of component sections (no array temporaries at the calls).
-         real(dp), allocatable :: rv(:)
+         real(dp), allocatable :: rv(:), envelope(:, :)
          integer, allocatable :: iv(:)
 
          call h5_write(h5, c//'/force', cpl%joints%force, error, units='kN')
@@ -451,7 +460,7 @@ contains
          if (allocated(error)) return
          allocate (laws(cs%m))
          do k = 1, cs%m
-            laws(k) = law_name(cs%pair(k)%law%kind)
+            laws(k) = cs%pair(k)%law%title()
          end do
          call h5_write(h5, c//'/law', laws, error, units='-')
          if (allocated(error)) return
@@ -467,13 +476,10 @@ contains
          call h5_write(h5, c//'/fracture_time', rv, error, units='s')
          if (allocated(error)) return
          do k = 1, cs%m
-            associate (law => cs%pair(k)%law)
-               if (size(law%env_d) == 0) cycle
-               call h5_write(h5, c//'/envelope/'//cs%pair(k)%label, &
-                             reshape([0.0_dp, 0.0_dp, (law%env_d(ne), law%env_r(ne), ne=1, size(law%env_d))], &
-                                     [2, size(law%env_d) + 1]), error, units='m, kN')
-               if (allocated(error)) return
-            end associate
+            envelope = cs%pair(k)%law%envelope_points()
+            if (size(envelope, 2) == 0) cycle
+            call h5_write(h5, c//'/envelope/'//cs%pair(k)%label, envelope, error, units='m, kN')
+            if (allocated(error)) return
          end do
          ne = cs%stats%n_events
          rv = cs%stats%events(1:ne)%time
@@ -661,10 +667,10 @@ contains
    end subroutine write_history
 
    !> The failed cases of a set of cases (a sweep's gaps, a suite's motions) in group `path`:
-   !> `case` (1-based index), `gap` (m), `time` (s) and `step` of the failure (-1: not named
-   !> in the message) and `message`, one entry per failed case; attribute `n_cases` (all cases).
+   !> `case` (1-based index), `gap` (m), `time` (s) and `step` of the failure (-1: not known)
+   !> and `message`, one entry per failed case; attribute `n_cases` (all cases).
    !> Without `indexed` (.false.: the caller names the cases itself) neither `case` nor `n_cases`.
-   subroutine write_failed_cases(h5, path, gap, failed, messages, error, indexed)
+   subroutine write_failed_cases(h5, path, gap, failed, messages, times, steps, error, indexed)
       !> Open file.
       type(h5_file), intent(inout) :: h5
       !> Group path (e.g. '/sweep/failed').
@@ -675,6 +681,9 @@ contains
       logical, intent(in) :: failed(:)
       !> Message of each case.
       character(len=*), intent(in) :: messages(:)
+      !> Time (s) and step of each case's failure (`error_type`'s; -1: not known).
+      real(dp), intent(in) :: times(:)
+      integer, intent(in) :: steps(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> Whether to write `case` and `n_cases` (default .true.).
@@ -690,10 +699,8 @@ contains
       idx = pack([(i, i=1, size(failed))], failed)
       g = gap(idx)
       m = messages(idx)
-      allocate (t(size(idx)), step(size(idx)))
-      do i = 1, size(idx)
-         call failure_time_step(m(i), t(i), step(i))
-      end do
+      t = times(idx)
+      step = steps(idx)
       if (with_index) then
          call h5_write(h5, path//'/case', idx, error, units='1')
          if (allocated(error)) return

@@ -42,7 +42,7 @@ module pound_suite_output
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_config, only: history_names, n_history_quantities
-   use pound_strings, only: str, left_cell, right_cell, fixed_cell
+   use pound_strings, only: counted, str, left_cell, right_cell, fixed_cell
    use pound_contact, only: contact_system
    use pound_structure, only: structure_model
    use pound_influence, only: building_influence
@@ -51,8 +51,10 @@ module pound_suite_output
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
    use pound_results_h5, only: write_analysis_h5, write_failed_cases, pair_list
-   use pound_cases, only: failure_time_step, case_message_len
+   use pound_cases, only: case_message_len
    use pound_suite_columns_output, only: write_suite_columns_listing, write_suite_columns_h5
+   use pound_separation_output, only: write_separation_h5, write_separation_head, write_separation_rows, &
+                                      write_separation_legend
    implicit none
    private
 
@@ -83,6 +85,8 @@ contains
       integer :: k, ib, q, ip, nm, nb, wm, wb
       integer, allocatable :: used(:)
       character(len=:), allocatable :: over, line
+      !> Why a safe gap of the suite sweep is n/a.
+      character(len=*), parameter :: none_met = 'no gap of the range meets the target, or no target'
 
       nm = size(suite%names)
       nb = size(models)
@@ -98,9 +102,8 @@ contains
       do ib = 1, nb
          wb = max(wb, len(models(ib)%name))
       end do
-      call write_section(lst, 'Ground-motion suite ('//str(nm)//' motions)')
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-         '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
+      call write_section(lst, 'Ground-motion suite ('//counted(nm, 'motion')//')')
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
          'period of each building (m/s^2); row T1: that period (s)'
       call lst%note()
       line = '  '//left_cell('motion', wm)//'  scale_factor  PGA [m/s^2]'
@@ -198,24 +201,12 @@ contains
       if (lst%first_ios /= 0) return
 
       call write_section(lst, 'Separation rules per contact pair [mm]')
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  Applied to the elastic time-history peaks of the '// &
-         'uncoupled runs, without displacement amplification factors.', &
-         '  ABS = u1 + u2, SRSS, EC8 4.4.2.7 (SRSS x 0.7 where floor levels coincide), DDC (CQC rho), ', &
-         '  no-contact gap = max_t (u1(t) - u2(t)) of the stored uncoupled histories (n/a: u not stored).', &
-         '  time_history = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
-         '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
-         '  (n/a: not computed: no &sweep, no target_lambda, or no gap of the range meets it).', &
-         '  The suite row: rules on the mean peaks; no-contact gap: mean over the motions'//over//'.'
+      call write_separation_legend(lst, .true.)
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  The suite row: rules on the mean peaks; no-contact gap: '// &
+         'mean over the motions'//over//'.'
       call lst%note()
       do ip = 1, size(suite%separation, 2)
-         write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  pair '//pair_name(ip)
-         call lst%note()
-         line = '  '//left_cell('motion', wm)
-         do q = 1, size(rule_names)
-            line = line//right_cell(trim(rule_names(q)), 14)
-         end do
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-         call lst%note()
+         call write_separation_head(lst, suite_pair_name(ip, cs), 'motion', wm)
          do k = 1, nm + 1
             if (k <= nm) then
                if (suite%motion_failed(k)) then
@@ -224,13 +215,7 @@ contains
                   cycle
                end if
             end if
-            associate (s => suite%separation(k, ip))
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '  '//left_cell(row_name(k), wm)//gap_cell(s%abs, 14)// &
-                  gap_cell(s%srss, 14)//gap_cell(s%ec8, 14)//gap_cell(s%ddc, 14)//gap_cell(s%no_contact, 14)// &
-                  gap_cell(s%time_history, 14)
-               call lst%note()
-            end associate
+            call write_separation_rows(lst, row_name(k), suite%separation(k, ip), wm)
          end do
       end do
       if (suite%has_sweep) then
@@ -256,16 +241,15 @@ contains
             call lst%note()
          end do
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  smallest gap meeting the target on the mean: '// &
-            trim(adjustl(gap_cell(suite%safe_gap_mean, 14)))//' mm (n/a: none in the range, or no target)'
+            gap_or_why(suite%safe_gap_mean, none_met)
          call lst%note()
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-            '  smallest gap meeting the target on every motion: '// &
-            trim(adjustl(gap_cell(suite%safe_gap_every, 14)))//' mm'
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  smallest gap meeting the target on every motion: '// &
+            gap_or_why(suite%safe_gap_every, none_met)
          call lst%note()
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  refined by bisection (mean, every motion): '// &
-            trim(adjustl(gap_cell(suite%refined_gap_mean, 14)))//' mm, '// &
-            trim(adjustl(gap_cell(suite%refined_gap_every, 14)))//' mm (tolerance '// &
-            trim(adjustl(fixed_cell(mm*suite%refine_tolerance, 14, 4, .true.)))//' mm; n/a: not refined)'
+            gap_or_why(suite%refined_gap_mean, 'not refined')//', '// &
+            gap_or_why(suite%refined_gap_every, 'not refined')//' (tolerance '// &
+            trim(adjustl(fixed_cell(mm*suite%refine_tolerance, 14, 4, .true.)))//' mm)'
          call lst%note()
          write (lst%unit, '(a,2(1x,i0),a)', iostat=lst%ios, iomsg=lst%msg) &
             '  non-monotone: grid gaps below the safe gap '// &
@@ -304,8 +288,7 @@ contains
       !> The table of the failed cases: motion, gap (mm; '-': the deck's gaps), time, step, message;
       !> each write checked, the first that fails named (no later write tried).
       subroutine write_failures()
-         real(dp) :: t
-         integer :: i, step
+         integer :: i
          character(len=14) :: gap
 
          if (size(suite%failures) == 0) return
@@ -321,15 +304,27 @@ contains
          do i = 1, size(suite%failures)
             if (lst%ios /= 0) exit
             associate (f => suite%failures(i))
-               call failure_time_step(f%message, t, step)
                gap = '             -'
                if (f%gap >= 0.0_dp) gap = fixed_cell(mm*f%gap, 14, 4)
                write (lst%unit, '(a,a14,es12.4,i10,2x,a)', iostat=lst%ios, iomsg=lst%msg) '  '// &
-                  left_cell(trim(suite%names(f%motion)), wm), gap, t, step, trim(f%message)
+                  left_cell(trim(suite%names(f%motion)), wm), gap, f%time, f%step, trim(f%message)
                call lst%note()
             end associate
          end do
       end subroutine write_failures
+
+      !> A gap of the suite sweep in mm, or, only when there is none (negative), 'n/a' and why.
+      pure function gap_or_why(gap, why) result(text)
+         real(dp), intent(in) :: gap
+         character(len=*), intent(in) :: why
+         character(len=:), allocatable :: text
+
+         if (gap >= 0.0_dp) then
+            text = trim(adjustl(gap_cell(gap, 14)))//' mm'
+         else
+            text = 'n/a ('//why//')'
+         end if
+      end function gap_or_why
 
       !> Width of the Sa column of building ib: its heading and a blank.
       pure integer function sa_width(ib)
@@ -348,16 +343,6 @@ contains
       end function es_cell
 
       !> The label of pair ip (`pair_label`), or 'ip' without the contact system.
-      function pair_name(ip) result(name)
-         integer, intent(in) :: ip
-         character(len=:), allocatable :: name
-
-         name = str(ip)
-         if (.not. present(cs)) return
-         if (.not. allocated(cs%pair)) return
-         if (ip <= size(cs%pair)) name = cs%pair(ip)%label
-      end function pair_name
-
       function row_name(k) result(name)
          integer, intent(in) :: k
          character(len=:), allocatable :: name
@@ -454,6 +439,21 @@ contains
                if (allocated(error)) return
             end if
          end if
+         block
+            character(len=:), allocatable :: labels(:)
+            integer :: length, ip
+
+            length = 1
+            do ip = 1, size(suite%separation, 2)
+               length = max(length, len(suite_pair_name(ip, cs)))
+            end do
+            allocate (character(len=length) :: labels(size(suite%separation, 2)))
+            do ip = 1, size(labels)
+               labels(ip) = suite_pair_name(ip, cs)
+            end do
+            call write_separation_h5(h5, '/suite/separation', suite%separation, labels, .true., error)
+         end block
+         if (allocated(error)) return
          call write_histories()
          if (allocated(error) .or. .not. suite%has_sweep) return
          call h5_write(h5, '/suite/sweep/gap', suite%sweep_gap, error, units='m')
@@ -515,7 +515,8 @@ contains
          end do
          call h5_write(h5, '/suite/failed/motion', motion, error, units='-')
          if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, spread(.true., 1, n), message, &
-                                                             error, indexed=.false.)
+                                                             suite%failures%time, suite%failures%step, error, &
+                                                             indexed=.false.)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions_used', suite%n_used, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'single_motion', &
@@ -547,6 +548,22 @@ contains
          end do
       end subroutine write_histories
 
+
    end subroutine write_suite_h5
+
+   !> The label of pair `ip` ('A:3-B:z=7.50m', `pair_label`), or its number without a contact
+   !> system: the separation tables and /suite/separation name the pairs by it.
+   function suite_pair_name(ip, cs) result(name)
+      !> Index of the pair (a column of `suite%separation`).
+      integer, intent(in) :: ip
+      !> The contact system of the deck.
+      type(contact_system), intent(in), optional :: cs
+      character(len=:), allocatable :: name
+
+      name = str(ip)
+      if (.not. present(cs)) return
+      if (.not. allocated(cs%pair)) return
+      if (ip <= size(cs%pair)) name = cs%pair(ip)%label
+   end function suite_pair_name
 
 end module pound_suite_output

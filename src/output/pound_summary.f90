@@ -25,12 +25,12 @@ module pound_summary
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_strings, only: str
+   use pound_strings, only: counted, str
    use pound_config, only: deck_type
    use pound_response, only: q_u, q_shear
    use pound_run_case, only: case_result
    use pound_suite, only: suite_result
-   use pound_separation, only: separation_t, separation_rules, no_contact_gap
+   use pound_separation, only: separation_t, no_contact_gap
    implicit none
    private
 
@@ -101,7 +101,7 @@ contains
          if (any(res%sweep%failed)) call add(item('failed', 'run', 'failed_sweep_gaps', &
                                                   'failed gaps of the sweep'//motion, &
                                                   real(count(res%sweep%failed), dp), '-', &
-                                                  'of '//str(size(res%sweep%failed))//' gaps'))
+                                                  'of '//counted(size(res%sweep%failed), 'gap')))
       end if
       if (allocated(res%warnings)) then
          do i = 1, size(res%warnings)
@@ -147,7 +147,7 @@ contains
                        'statistics over '//str(s%n_used)))
          if (size(s%failures) > 0) then
             call add(item('suite', 'suite', 'failed_cases', 'failed cases of the suite', real(size(s%failures), dp), &
-                          '-', str(nm - s%n_used)//' motions left out; named in the listing and /suite/failed'))
+                          '-', counted(nm - s%n_used, 'motion')//' left out; named in the listing and /suite/failed'))
          else
             call add(item('suite', 'suite', 'failed_cases', 'failed cases of the suite', 0.0_dp, '-', 'none'))
          end if
@@ -279,13 +279,18 @@ contains
             associate (s => suite%separation(size(suite%names) + 1, ip))
                if (s%no_contact >= 0.0_dp) then
                   call add(item('pair', p, 'no_contact_gap', p//': no-contact gap, mean over the motions', &
-                                1000.0_dp*s%no_contact, 'mm', 'max_t (u1 - u2) of the uncoupled histories'))
+                                1000.0_dp*s%no_contact, 'mm', &
+                                'suite mean over the motions of each motion''s max_t (u1 - u2) of its uncoupled histories'))
                else
                   call add(item('pair', p, 'no_contact_gap', p//': no-contact gap', unit='mm', &
                                 location='the deck''s history stores no u', available=.false.))
                end if
                call th_item(p, s%time_history, 'suite sweep threshold on the mean (one gap for every joint)')
-               call rule_items(p, s, .true., 'suite mean peaks')
+               if (s%abs >= 0.0_dp) then
+                  call rule_items(p, s, .true., 'suite mean peaks')
+               else
+                  call rule_items(p, s, .false., 'a pair end between floors: its peak needs &analysis node_histories')
+               end if
             end associate
             return
          end if
@@ -305,7 +310,15 @@ contains
          end if
          if (gap >= 0.0_dp) where = 'sweep threshold (one gap for every joint)'
          call th_item(p, gap, where)
-         call pair_rules(res, ip, sep, have, why)
+         have = .false.
+         why = 'the separation rules were not computed'
+         if (allocated(res%separation)) then
+            if (ip <= size(res%separation)) then
+               sep = res%separation(ip)
+               have = sep%computed
+               why = 'the pair is between floors: its peak displacement is not kept'
+            end if
+         end if
          if (have) then
             call rule_items(p, sep, .true., 'uncoupled peaks of the facing floors')
          else
@@ -327,24 +340,36 @@ contains
          end if
       end subroutine th_item
 
-      !> ABS, SRSS, EC8, DDC (mm) and rho of pair p (`have` false: n/a, `where` says why).
+      !> The code separations of pair p in mm (ABS, SRSS, DDC of the elastic peaks; ASCE 7, EN 1998
+      !> and IS 1893 with the buildings' factors, n/a where a factor is not given) and the DDC's
+      !> rho (`have` false: all n/a, `where` says why).
       subroutine rule_items(p, sep, have, where)
          character(len=*), intent(in) :: p
          type(separation_t), intent(in) :: sep
          logical, intent(in) :: have
          character(len=*), intent(in) :: where
-         character(len=*), parameter :: quantity(4) = [character(len=13) :: 'code_gap_abs', 'code_gap_srss', &
-                                                       'code_gap_ec8', 'code_gap_ddc']
-         character(len=*), parameter :: rule(4) = [character(len=40) :: 'ABS = u1 + u2', 'SRSS', &
-                                                   'EC8 4.4.2.7 (x0.7 where floors coincide)', 'DDC (CQC rho)']
-         real(dp) :: v(4)
+         character(len=*), parameter :: quantity(6) = [character(len=15) :: 'code_gap_abs', 'code_gap_srss', &
+                                                       'code_gap_ddc', 'code_gap_asce7', 'code_gap_en1998', &
+                                                       'code_gap_is1893']
+         character(len=*), parameter :: rule(6) = [character(len=48) :: 'ABS = u1 + u2', 'SRSS', 'DDC (CQC rho)', &
+                                                   'ASCE 7-16 12.12.3 (Cd/Ie)', 'EN 1998-1 4.4.2.7 (q)', &
+                                                   'IS 1893-1 7.11.3 (R)']
+         character(len=*), parameter :: factor(6) = [character(len=20) :: '', '', '', 'cd', 'behaviour_factor', &
+                                                     'response_reduction']
+         real(dp) :: v(6)
+         logical :: valid(6)
          integer :: r
 
-         v = [sep%abs, sep%srss, sep%ec8, sep%ddc]
-         do r = 1, 4
-            if (have) then
+         v = [sep%abs, sep%srss, sep%ddc, sep%asce7, sep%en1998, sep%is1893]
+         valid = [.true., .true., .true., sep%asce7_valid, sep%en1998_valid, sep%is1893_valid]
+         do r = 1, 6
+            if (have .and. valid(r)) then
                call add(item('pair', p, trim(quantity(r)), p//': code gap '//trim(rule(r)), 1000.0_dp*v(r), 'mm', &
-                             where//', elastic, no amplification'))
+                             where))
+            else if (have) then
+               call add(item('pair', p, trim(quantity(r)), p//': code gap '//trim(rule(r)), unit='mm', &
+                             location='&building '//trim(factor(r))//' not given for both buildings', &
+                             available=.false.))
             else
                call add(item('pair', p, trim(quantity(r)), p//': code gap '//trim(rule(r)), unit='mm', &
                              location=where, available=.false.))
@@ -438,55 +463,6 @@ contains
       gap = no_contact_gap(h(:, 1), h(:, 2))
    end subroutine pair_no_contact
 
-   !> The code separation rules of pair ip of a single-motion case on the uncoupled peak
-   !> displacements of its facing floors (a rigid neighbour: 0, its period and damping those of
-   !> the building); the one place where the summary calls `pound_separation`'s rules (the
-   !> no-contact gap is `pair_no_contact`'s). `have` is false (and `why` says why) for a pair
-   !> between floors, whose peak the uncoupled run does not keep.
-   subroutine pair_rules(res, ip, sep, have, why)
-      type(case_result), intent(in) :: res
-      integer, intent(in) :: ip
-      type(separation_t), intent(out) :: sep
-      logical, intent(out) :: have
-      character(len=:), allocatable, intent(out) :: why
-      type(error_type), allocatable :: error
-      real(dp) :: u(2), t(2), z(2), level(2)
-      integer :: e, b, other
-
-      have = .false.
-      why = ''
-      associate (pair => res%cs%pair(ip))
-         do e = 1, 2
-            b = pair%building(e)
-            other = pair%building(3 - e)
-            if (b == 0) b = other
-            if (b == 0) then
-               why = 'no building at either end'
-               return
-            end if
-            u(e) = 0.0_dp
-            level(e) = -1.0_dp
-            t(e) = res%models(b)%period(1)
-            z(e) = res%models(b)%damping_ratio
-            if (pair%building(e) == 0) cycle
-            if (pair%floor(e) == 0) then
-               why = 'the pair is between floors: its peak displacement is not kept'
-               return
-            end if
-            u(e) = res%unc%building(b)%peak(pair%floor(e), q_u)
-            level(e) = sum(res%buildings(b)%height(1:pair%floor(e)))
-         end do
-         call separation_rules(u(1), u(2), t(1), t(2), z(1), z(2), &
-                               all(level >= 0.0_dp) .and. abs(level(1) - level(2)) <= 1.0e-9_dp, &
-                               [0.0_dp], [0.0_dp], sep, error)
-      end associate
-      if (allocated(error)) then
-         why = error%message
-         return
-      end if
-      have = .true.
-   end subroutine pair_rules
-
    !> The heading of a suite's single-motion results: 'motion k of n: NAME'.
    pure function motion_heading(suite) result(text)
       !> The suite.
@@ -507,14 +483,14 @@ contains
       type(suite_result), intent(in) :: suite
       character(len=:), allocatable :: text
 
-      text = 'suite of '//str(size(suite%names))//' motions'
+      text = 'suite of '//counted(size(suite%names), 'motion')
       if (.not. suite%has_sweep) then
          text = text//': no sweep threshold (no &sweep)'
       else
          text = text//': gap '//gap_text(suite%refined_gap_mean, suite%safe_gap_mean)//' on the mean, '// &
                 gap_text(suite%refined_gap_every, suite%safe_gap_every)//' on every motion'
       end if
-      if (size(suite%failures) > 0) text = text//'; '//str(size(suite%failures))//' failed cases'
+      if (size(suite%failures) > 0) text = text//'; '//counted(size(suite%failures), 'failed case')
 
    contains
 
@@ -623,7 +599,7 @@ contains
       !> gaps in mm, then a line of notes: what each is based on, or why it is n/a.
       pure subroutine pair_line(first)
          integer, intent(in) :: first
-         character(len=:), allocatable :: text, notes
+         character(len=:), allocatable :: text, notes, factor
          integer :: k
 
          text = 'pair '//trim(items(first)%subject)//', gaps [mm]:'
@@ -634,6 +610,11 @@ contains
             associate (p => items(k))
                if (k > first .and. p%quantity /= 'ddc_rho') text = text//','
                text = text//' '//short_name(p%quantity)//' '//value_text(p, decimals(p%unit))
+               ! A code rule that is n/a for want of a factor names it: 'IS1893 n/a (needs response_reduction)'.
+               if (.not. p%available .and. index(p%location, '&building ') == 1) then
+                  factor = p%location(len('&building ') + 1:)
+                  text = text//' (needs '//factor(1:index(factor, ' ') - 1)//')'
+               end if
                if (p%quantity == 'ddc_rho') text = text//')'
                if (p%quantity == 'no_contact_gap' .or. p%quantity == 'time_history_gap') then
                   if (len(notes) > 0) notes = notes//'; '
@@ -661,8 +642,12 @@ contains
             name = 'ABS'
          case ('code_gap_srss')
             name = 'SRSS'
-         case ('code_gap_ec8')
-            name = 'EC8'
+         case ('code_gap_asce7')
+            name = 'ASCE7'
+         case ('code_gap_en1998')
+            name = 'EN1998'
+         case ('code_gap_is1893')
+            name = 'IS1893'
          case ('code_gap_ddc')
             name = 'DDC'
          case ('ddc_rho')

@@ -25,7 +25,9 @@
 !> acceleration linear over the step (`pound_modal_step`). `newmark_predict_exact` predicts the
 !> step exactly (du, and the v and a at its end) instead of by average acceleration; the next
 !> `newmark_commit` completes it, unless the caller drops it (`newmark_drop_exact`, a step in
-!> which a joint acts) and predicts by Newmark instead. Submodule pound_newmark_exact.
+!> which a joint acts) and predicts by Newmark instead. DOFs without mass are condensed
+!> statically, their elastic forces relaxing as exp(-t/a1) (exact as well). Submodule
+!> pound_newmark_exact.
 module pound_newmark
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
@@ -39,7 +41,7 @@ module pound_newmark
    private
 
    public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_advance, newmark_solve
-   public :: newmark_add_response, newmark_set_state, newmark_dt, newmark_n, newmark_swap_step
+   public :: newmark_add_response, newmark_add_response_rows, newmark_set_state, newmark_dt, newmark_n, newmark_swap_step
    public :: newmark_u, newmark_v, newmark_a, newmark_du, newmark_u_at, newmark_v_at, newmark_predicted, newmark_energies
    public :: newmark_path, newmark_tridiagonal_factors
    public :: kinetic_energy, strain_energy
@@ -101,6 +103,18 @@ module pound_newmark
       !> the terms of the step's energies in the ground acceleration alone, summed over the
       !> modes (6) (`modal_step_coefficients`).
       real(dp), allocatable :: phi(:, :), lam(:), cm(:), coef(:, :)
+      !> Exact free steps of a model with DOFs without mass: the number of DOFs with mass (the
+      !> first nm coordinates are the condensed modes, the others the relaxation coordinates),
+      !> and whether C v, (K+G) u and (K+G) v are still those of an earlier state (they are
+      !> formed again, `band_state`, before a Newmark step needs them).
+      integer :: nm = 0
+      logical :: band_stale = .false.
+      !> Exact free steps of a model with DOFs without mass: psi^T, whose rows give the
+      !> coordinates (condensed modes and relaxation coordinates) of a state, q = psi^T u
+      !> (n, n; unallocated when every DOF has a mass: q = phi^T M u).
+      real(dp), allocatable :: psi(:, :)
+      !> The largest entry of each relaxation coordinate's column of phi (n - nm).
+      real(dp), allocatable :: zscale(:)
       real(dp) :: ground_terms(6) = 0.0_dp
       !> Exact free steps: modal coordinates and rates now and at the end of the predicted
       !> step, the modal accelerations without the ground term at its end; v and a at its end
@@ -146,6 +160,12 @@ module pound_newmark
          type(structure_model), intent(in) :: b
          real(dp), intent(out) :: mdu, ddamp
       end subroutine commit_general
+      !> C v, and on the general path (K+G) u and (K+G) v, of the state u, v (band products;
+      !> submodule pound_newmark_step).
+      module subroutine band_state(st, b)
+         type(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+      end subroutine band_state
       !> Set up exact free steps: the modes and each mode's step (submodule
       !> pound_newmark_exact).
       module subroutine exact_init(st, b, error)
@@ -382,13 +402,7 @@ contains
       if (present(u)) st%u = u
       if (present(v)) st%v = v
       if (present(a)) st%a = a
-      call band_symv(b%kt, st%v, st%cv)
-      if (.not. st%tridiagonal) then
-         st%ktv = st%cv
-         call band_symv(b%kt, st%u, st%ktu)
-         st%since_refresh = 0
-      end if
-      st%cv = b%a0*b%mass*st%v + b%a1*st%cv
+      call band_state(st, b)
       st%kinetic = 0.5_dp*sum(b%mass*st%v**2)
       st%strain = structure_strain_energy(b, st%u)
       ! Exact free steps take the modal coordinates from the new u, v.
@@ -430,6 +444,29 @@ contains
          st%loaded = .true.
       end if
    end subroutine newmark_add_response
+
+   !> du = du + s x: the response to a load increment s along the weights w of the DOFs `dof`
+   !> (a contact end that is a sparse row), x = Khat^{-1} sum_i w_i e_dof(i) (computed once).
+   pure subroutine newmark_add_response_rows(st, s, dof, w, x)
+      !> Integrator state with the predicted `du`.
+      type(newmark_state), intent(inout) :: st
+      !> The load increment (kN).
+      real(dp), intent(in) :: s
+      !> The DOFs it acts on and their weights.
+      integer, intent(in) :: dof(:)
+      real(dp), intent(in) :: w(:)
+      !> Khat^{-1} sum_i w_i e_dof(i) (n).
+      real(dp), intent(in) :: x(:)
+      integer :: i
+
+      st%du = st%du + s*x
+      if (.not. st%tridiagonal) then
+         do i = 1, size(dof)
+            st%fc(dof(i)) = st%fc(dof(i)) + s*w(i)
+         end do
+         st%loaded = .true.
+      end if
+   end subroutine newmark_add_response_rows
 
    !> The fused tridiagonal path's data, for kernels that advance several motions of the same
    !> model at once (`pound_newmark_batch`): whether the path is taken, the sub-diagonal e of

@@ -6,6 +6,11 @@
 !> from u, v again after steps that were not exact. A step costs O(n^2) (the modes' shapes),
 !> hence `exact_max_dofs`.
 !>
+!> DOFs without mass (a frame's rotations, split column nodes) are condensed statically and
+!> their elastic forces relax as exp(-t/a1) (`condensed_modes`): the same kernels then step
+!> the nm modes of the condensed system and the ns relaxation coordinates, the coordinates of
+!> a state are psi^T u, and a run of exact steps forms no band product (`band_stale`).
+!>
 !> Per mode, `coef(:, i)` holds: 1:4 and 5:8 the end q and q' against x = (q0, q0', a_g0, a_g1);
 !> 9:15 the input work and 16:22 the damping energy against the products (q0^2, q0 q0',
 !> q0'^2, q0 a_g0, q0 a_g1, q0' a_g0, q0' a_g1) (the forms' off-diagonal terms doubled); the
@@ -16,19 +21,46 @@ submodule(pound_newmark) pound_newmark_exact
    use pound_band_lapack, only: dsygv
    implicit none
 
+   !> Modal coordinates (sqrt(kJ)-like: q^2/2 is an energy in kJ), rates and accelerations
+   !> below this are set to zero with DOFs without mass (`flush_negligible`).
+   real(dp), parameter :: negligible = 1.0e-100_dp
+   !> Relaxation coordinates adding less than this fraction of the largest |u|, |v|, |a| to
+   !> the state are set to zero (`relaxed`; below the round-off of the state).
+   real(dp), parameter :: relaxed_below = 1.0e-18_dp
+
+   interface
+      subroutine dpotrf(uplo, n, a, lda, info)
+         import :: dp
+         character, intent(in) :: uplo
+         integer, intent(in) :: n, lda
+         real(dp), intent(inout) :: a(lda, *)
+         integer, intent(out) :: info
+      end subroutine dpotrf
+      subroutine dtrtrs(uplo, trans, diag, n, nrhs, a, lda, b, ldb, info)
+         import :: dp
+         character, intent(in) :: uplo, trans, diag
+         integer, intent(in) :: n, nrhs, lda, ldb
+         real(dp), intent(in) :: a(lda, *)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dtrtrs
+   end interface
+
 contains
 
-   !> The modes of (K+G, M) (dense `dsygv`, mass-normalised) and each mode's step at dt.
+   !> The modes of (K+G, M) (dense `dsygv`, mass-normalised) and each mode's step at dt; with
+   !> DOFs without mass, the modes of the condensed system and the relaxation of the massless
+   !> DOFs' elastic forces (`condensed_modes`).
    module subroutine exact_init(st, b, error)
       !> Integrator state (initialised by `newmark_init`).
       type(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
-      !> Error state: a DOF without mass, too many DOFs, the eigenproblem failed.
+      !> Error state: too many DOFs, no DOF with mass, the eigenproblem failed.
       type(error_type), allocatable, intent(out) :: error
       real(dp), allocatable :: a(:, :), m(:, :), w(:), work(:)
-      real(dp) :: gamma, wi(4, 4), wd(4, 4)
-      integer :: n, i, j, info, stat
+      real(dp) :: gamma, wi(4, 4), wd(4, 4), decay
+      integer :: n, nm, i, j, info, stat
 
       n = st%n
       if (n > exact_max_dofs) then
@@ -37,39 +69,48 @@ contains
                           'the model has '//str(n)//": use free_steps = 'newmark'")
          return
       end if
-      do i = 1, n
-         if (.not. (b%mass(i) > 0.0_dp)) then
-            call fatal_error(error, structure_label(b)//': DOF '//str(i)//' has no mass ('//str(b%mass(i))// &
-                             " t): free_steps = 'exact' needs a mass at every DOF (a frame's rotations have "// &
-                             "none); use free_steps = 'newmark'")
-            return
-         end if
-      end do
-      allocate (a(n, n), m(n, n), w(n), work(max(1, 64*n)), st%phi(n, n), st%lam(n), st%cm(n), st%coef(22, n), &
+      nm = count(b%mass > 0.0_dp)
+      if (nm == 0) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': no DOF has a mass; "// &
+                          "use free_steps = 'newmark'")
+         return
+      end if
+      allocate (w(n), st%phi(n, n), st%lam(n), st%cm(n), st%coef(22, n), &
                 st%q(n), st%qd(n), st%xq(n), st%xqd(n), st%xw(n), st%xv(n), st%xa(n), stat=stat)
+      if (stat == 0 .and. nm < n) allocate (st%psi(n, n), stat=stat)
       if (stat /= 0) then
          call fatal_error(error, structure_label(b)//": free_steps = 'exact': cannot allocate the modes ("// &
                           str(n)//' x '//str(n)//')')
          return
       end if
-      a = 0.0_dp
-      m = 0.0_dp
-      do j = 1, n
-         do i = max(1, j - b%kd), j
-            a(i, j) = b%kt(b%kd + 1 + i - j, j)
+      if (nm == n) then
+         allocate (a(n, n), m(n, n), work(max(1, 64*n)))
+         a = 0.0_dp
+         m = 0.0_dp
+         do j = 1, n
+            do i = max(1, j - b%kd), j
+               a(i, j) = b%kt(b%kd + 1 + i - j, j)
+            end do
+            m(j, j) = b%mass(j)
          end do
-         m(j, j) = b%mass(j)
-      end do
-      call dsygv(1, 'V', 'U', n, a, n, m, n, w, work, size(work), info)
-      if (info /= 0) then
-         call fatal_error(error, structure_label(b)//": free_steps = 'exact': the eigenproblem of (K+G, M) "// &
-                          'failed (dsygv info = '//str(info)//')')
-         return
+         call dsygv(1, 'V', 'U', n, a, n, m, n, w, work, size(work), info)
+         if (info /= 0) then
+            call fatal_error(error, structure_label(b)//": free_steps = 'exact': the eigenproblem of (K+G, M) "// &
+                             'failed (dsygv info = '//str(info)//')')
+            return
+         end if
+         st%phi = a
+      else
+         call condensed_modes(b, nm, st%phi, st%psi, w, error)
+         if (allocated(error)) return
+         ! Held transposed: q = psi^T u is then a sum of columns (`coordinate_kernel`).
+         st%psi = transpose(st%psi)
+         st%zscale = [(maxval(abs(st%phi(:, i))), i=nm + 1, n)]
       end if
-      st%phi = a
       st%lam = w
+      st%nm = nm
       st%ground_terms = 0.0_dp
-      do i = 1, n
+      do i = 1, nm
          st%cm(i) = b%a0 + b%a1*w(i)
          gamma = sum(st%phi(:, i)*b%mass*b%ground)
          call modal_step_coefficients(w(i), st%cm(i), gamma, st%dt, st%coef(1:8, i), wi, wd)
@@ -83,6 +124,22 @@ contains
                              str(st%dt)//' s')
             return
          end if
+      end do
+      ! The massless DOFs' relaxation coordinates z (g = L z, K_ss = L L^T): z' = -z/a1, so
+      ! z(h) = exp(-h/a1) z(0), z' = -z/a1, z'' = z/a1^2 (lam = 0, cm = 1/a1 give
+      ! xw = -(lam z + cm z') = z/a1^2), and the damping energy of the step is the strain
+      ! energy z^2/2 lost, (1 - exp(-2h/a1)) z(0)^2/2. Without stiffness-proportional damping
+      ! (a1 = 0) the massless rows read g = 0: z drops to 0 and its energy counts as damped.
+      decay = 0.0_dp
+      if (b%a1 > 0.0_dp) decay = exp(-st%dt/b%a1)
+      do i = nm + 1, n
+         st%lam(i) = 0.0_dp
+         st%cm(i) = 0.0_dp
+         if (b%a1 > 0.0_dp) st%cm(i) = 1.0_dp/b%a1
+         st%coef(:, i) = 0.0_dp
+         st%coef(1, i) = decay
+         st%coef(5, i) = -decay*st%cm(i)
+         st%coef(16, i) = 0.5_dp*(1.0_dp - decay*decay)
       end do
       if (.not. all(ieee_is_finite(st%ground_terms))) then
          call fatal_error(error, structure_label(b)//": free_steps = 'exact': the step's energy terms are "// &
@@ -104,6 +161,90 @@ contains
       end function form_terms
    end subroutine exact_init
 
+   !> The exact free step of a model with DOFs without mass (index sets m: mass > 0, s: mass =
+   !> 0; K meaning K+G). With C = a0 M + a1 K and no force at the s DOFs, their rows read
+   !> a1 g' + g = 0, g = K_sm u_m + K_ss u_s their elastic forces, and the m rows reduce
+   !> exactly to M_m u_m'' + (a0 M_m + a1 K_c) u_m' + K_c u_m = -M_m r_m a_g with
+   !> K_c = K_mm - K_ms K_ss^-1 K_sm (the g terms enter as K_ms K_ss^-1 (a1 g' + g) = 0):
+   !> classical damping again. So u = Phi q + S z with n columns: the nm modes of (K_c, M_m)
+   !> (`phi(m, i)` mass-normalised, `phi(s, i)` = -K_ss^-1 K_sm phi(m, i)) and, with
+   !> K_ss = L L^T and g = L z, the ns relaxation coordinates z (`phi(s, nm+k)` = L^-T e_k,
+   !> `phi(m, nm+k)` = 0), which decay as exp(-t/a1). The coordinates of a state are
+   !> psi^T u: `psi(:, i)` = M phi(:, i) for a mode, and for z = L^-1 K_sm u_m + L^T u_s,
+   !> `psi(m, nm+k)` = (L^-1 K_sm)^T e_k, `psi(s, nm+k)` = L e_k. The strain energy is
+   !> u_m^T K_c u_m/2 + z^T z/2 and the damping power v_m^T C_c v_m + a1 g'^T K_ss^-1 g'.
+   subroutine condensed_modes(b, nm, phi, psi, lam, error)
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Number of DOFs with mass (0 < nm < n).
+      integer, intent(in) :: nm
+      !> Shapes and coordinate rows (n, n), see above.
+      real(dp), intent(out) :: phi(:, :), psi(:, :)
+      !> omega^2 of the nm modes (1:nm; the rest 0).
+      real(dp), intent(out) :: lam(:)
+      !> Error state: K_ss not positive definite, the eigenproblem failed.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: k(:, :), kss(:, :), wsm(:, :), tsm(:, :), kc(:, :), mm(:, :), work(:)
+      integer, allocatable :: im(:), is(:)
+      integer :: n, ns, i, j, info
+
+      n = b%n
+      ns = n - nm
+      im = pack([(i, i=1, n)], b%mass > 0.0_dp)
+      is = pack([(i, i=1, n)], .not. (b%mass > 0.0_dp))
+      allocate (k(n, n), mm(nm, nm), work(max(1, 64*nm)))
+      k = 0.0_dp
+      do j = 1, n
+         do i = max(1, j - b%kd), j
+            k(i, j) = b%kt(b%kd + 1 + i - j, j)
+            k(j, i) = k(i, j)
+         end do
+      end do
+      kss = k(is, is)
+      wsm = k(is, im)
+      call dpotrf('L', ns, kss, ns, info)
+      if (info /= 0) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': the stiffness of the "// &
+                          str(ns)//' DOFs without mass is not positive definite (dpotrf info = '//str(info)//')')
+         return
+      end if
+      do j = 1, ns
+         kss(1:j - 1, j) = 0.0_dp
+      end do
+      ! W = L^-1 K_sm, T = K_ss^-1 K_sm = L^-T W, K_c = K_mm - W^T W.
+      call dtrtrs('L', 'N', 'N', ns, nm, kss, ns, wsm, ns, info)
+      tsm = wsm
+      call dtrtrs('L', 'T', 'N', ns, nm, kss, ns, tsm, ns, info)
+      kc = k(im, im) - matmul(transpose(wsm), wsm)
+      mm = 0.0_dp
+      do i = 1, nm
+         mm(i, i) = b%mass(im(i))
+      end do
+      call dsygv(1, 'V', 'U', nm, kc, nm, mm, nm, lam, work, size(work), info)
+      if (info /= 0) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': the eigenproblem of the "// &
+                          'condensed (K+G, M) failed (dsygv info = '//str(info)//')')
+         return
+      end if
+      lam(nm + 1:) = 0.0_dp
+      phi = 0.0_dp
+      psi = 0.0_dp
+      phi(im, 1:nm) = kc
+      phi(is, 1:nm) = -matmul(tsm, kc)
+      do i = 1, nm
+         psi(im, i) = b%mass(im)*kc(:, i)
+      end do
+      ! L^-T: the shapes of the relaxation coordinates.
+      k = 0.0_dp
+      do i = 1, ns
+         k(i, i) = 1.0_dp
+      end do
+      call dtrtrs('L', 'T', 'N', ns, ns, kss, ns, k, n, info)
+      phi(is, nm + 1:n) = k(1:ns, 1:ns)
+      psi(im, nm + 1:n) = transpose(wsm)
+      psi(is, nm + 1:n) = kss
+   end subroutine condensed_modes
+
    !> Predict the step exactly: the modal coordinates at its end, du, v and a at its end, and
    !> its input work and damping energy (committed by `newmark_commit`).
    module subroutine newmark_predict_exact(st, b, ag_old, ag_new)
@@ -113,23 +254,95 @@ contains
       type(structure_model), intent(in) :: b
       !> Ground acceleration at the start and the end of the step (m/s^2).
       real(dp), intent(in), value :: ag_old, ag_new
-      integer :: n
+      integer :: n, ncol
 
       if (.not. st%exact) then
          call newmark_predict(st, b, ag_new - ag_old)
          return
       end if
       n = st%n
-      if (.not. st%modal_valid) call modal_state(n, st%phi, b%mass, st%u, st%v, st%q, st%qd)
+      if (.not. st%modal_valid) then
+         if (allocated(st%psi)) then
+            ! With DOFs without mass: q = psi^T u, q' = psi^T v (`condensed_modes`).
+            call coordinate_kernel(n, st%psi, st%u, st%v, st%q, st%qd)
+         else
+            call modal_state(n, st%phi, b%mass, st%u, st%v, st%q, st%qd)
+         end if
+      end if
       associate (g => st%ground_terms)
          st%x_input = (g(1)*ag_old + g(2)*ag_new)*ag_old + g(3)*ag_new*ag_new
          st%x_damping = (g(4)*ag_old + g(5)*ag_new)*ag_old + g(6)*ag_new*ag_new
       end associate
       call modal_kernel(n, st%coef, st%lam, st%cm, st%q, st%qd, ag_old, ag_new, st%xq, st%xqd, st%xw, &
                         st%x_input, st%x_damping)
-      call shape_kernel(n, st%phi, st%xq, st%xqd, st%xw, st%u, b%ground, ag_new, st%du, st%xv, st%xa)
+      ! With DOFs without mass the relaxation coordinates (and, where the ground is still, the
+      ! over-damped stiff modes) decay by exp(-h/a1) a step and would go subnormal, which
+      ! slows every product with them many times: below `negligible` they are zero.
+      ! Once the relaxation coordinates add less than `relaxed_below` of the largest u, v, a
+      ! (or are 0, as in a run without joints acting) they are 0 and their columns are left out.
+      ncol = n
+      if (allocated(st%psi)) then
+         call flush_negligible(n, st%xq, st%xqd, st%xw)
+         if (relaxed(st)) then
+            st%xq(st%nm + 1:n) = 0.0_dp
+            st%xqd(st%nm + 1:n) = 0.0_dp
+            st%xw(st%nm + 1:n) = 0.0_dp
+            ncol = st%nm
+         end if
+      end if
+      call shape_kernel(n, ncol, st%phi, st%xq, st%xqd, st%xw, st%u, b%ground, ag_new, st%du, st%xv, st%xa)
       st%pending = .true.
    end subroutine newmark_predict_exact
+
+   !> Whether every relaxation coordinate at the end of the predicted step, z, z' and z'', times
+   !> its column's largest entry, is below `relaxed_below` of the largest |u|, |v|, |a| now.
+   pure logical function relaxed(st)
+      type(newmark_state), intent(in) :: st
+      real(dp) :: umax, vmax, amax, s
+      integer :: k
+
+      relaxed = .false.
+      umax = relaxed_below*maxval(abs(st%u))
+      vmax = relaxed_below*maxval(abs(st%v))
+      amax = relaxed_below*maxval(abs(st%a))
+      do k = st%nm + 1, st%n
+         s = st%zscale(k - st%nm)
+         if (abs(st%xq(k))*s > umax .or. abs(st%xqd(k))*s > vmax .or. abs(st%xw(k))*s > amax) return
+      end do
+      relaxed = .true.
+   end function relaxed
+
+   !> Coordinates below `negligible` in magnitude (and their rates and accelerations when
+   !> they are too) set to zero.
+   pure subroutine flush_negligible(n, xq, xqd, xw)
+      integer, intent(in) :: n
+      real(dp), intent(inout) :: xq(n), xqd(n), xw(n)
+      integer :: i
+
+      do i = 1, n
+         if (abs(xq(i)) < negligible) xq(i) = 0.0_dp
+         if (abs(xqd(i)) < negligible) xqd(i) = 0.0_dp
+         if (abs(xw(i)) < negligible) xw(i) = 0.0_dp
+      end do
+   end subroutine flush_negligible
+
+   !> q = psi^T u, q' = psi^T v from psi^T held as `psit` (n, n), column by column.
+   pure subroutine coordinate_kernel(n, psit, u, v, q, qd)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: psit(n, n), u(n), v(n)
+      real(dp), intent(out) :: q(n), qd(n)
+      integer :: i, j
+
+      q = 0.0_dp
+      qd = 0.0_dp
+      do j = 1, n
+         !GCC$ vector
+         do i = 1, n
+            q(i) = q(i) + psit(i, j)*u(j)
+            qd(i) = qd(i) + psit(i, j)*v(j)
+         end do
+      end do
+   end subroutine coordinate_kernel
 
    !> q = Phi^T M u, q' = Phi^T M v (mass-normalised modes).
    pure subroutine modal_state(n, phi, mass, u, v, q, qd)
@@ -169,9 +382,10 @@ contains
       end do
    end subroutine modal_kernel
 
-   !> u, v, a at the end from the modes: du = Phi q - u, v = Phi q', a = Phi w - r a_g.
-   pure subroutine shape_kernel(n, phi, xq, xqd, xw, u, ground, ag1, du, xv, xa)
-      integer, intent(in) :: n
+   !> u, v, a at the end from the modes: du = Phi q - u, v = Phi q', a = Phi w - r a_g (the first
+   !> `ncol` columns; the others' coordinates are 0).
+   pure subroutine shape_kernel(n, ncol, phi, xq, xqd, xw, u, ground, ag1, du, xv, xa)
+      integer, intent(in) :: n, ncol
       real(dp), intent(in) :: phi(n, n), xq(n), xqd(n), xw(n), u(n), ground(n), ag1
       real(dp), intent(out) :: du(n), xv(n), xa(n)
       integer :: i, j
@@ -181,7 +395,8 @@ contains
          xv(j) = 0.0_dp
          xa(j) = -ground(j)*ag1
       end do
-      do i = 1, n
+      do i = 1, ncol
+         !GCC$ vector
          do j = 1, n
             du(j) = du(j) + phi(j, i)*xq(i)
             xv(j) = xv(j) + phi(j, i)*xqd(i)
@@ -204,9 +419,21 @@ contains
       st%u = st%u + st%du
       st%v = st%xv
       st%a = st%xa
-      ! C v, (K+G) u and v, the kinetic and strain energy of the new state, as for any state
-      ! put in (then the modal coordinates are the step's).
-      call newmark_set_state(st, b)
+      if (allocated(st%psi)) then
+         ! DOFs without mass: the energies from the coordinates (kinetic q'^T q'/2 of the
+         ! modes, strain (sum omega^2 q^2 + z^T z)/2), and C v, (K+G) u, (K+G) v only when
+         ! a Newmark step needs them (`band_stale`): no band product in a run of exact steps.
+         associate (nm => st%nm, n => st%n)
+            st%kinetic = 0.5_dp*sum(st%xqd(1:nm)**2)
+            st%strain = 0.5_dp*(sum(st%lam(1:nm)*st%xq(1:nm)**2) + sum(st%xq(nm + 1:n)**2))
+         end associate
+         st%band_stale = .true.
+         st%pending = .false.
+      else
+         ! C v, (K+G) u and v, the kinetic and strain energy of the new state, as for any state
+         ! put in (then the modal coordinates are the step's).
+         call newmark_set_state(st, b)
+      end if
       st%q = st%xq
       st%qd = st%xqd
       st%modal_valid = .true.

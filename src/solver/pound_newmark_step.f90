@@ -8,6 +8,23 @@ submodule(pound_newmark) pound_newmark_step
 
 contains
 
+   !> C v, and on the general path (K+G) u and (K+G) v, of the state u, v (band products).
+   module subroutine band_state(st, b)
+      !> Integrator state.
+      type(newmark_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+
+      call band_symv(b%kt, st%v, st%cv)
+      if (.not. st%tridiagonal) then
+         st%ktv = st%cv
+         call band_symv(b%kt, st%u, st%ktu)
+         st%since_refresh = 0
+      end if
+      st%cv = b%a0*b%mass*st%v + b%a1*st%cv
+      st%band_stale = .false.
+   end subroutine band_state
+
    !> Increment du of the step for the ground acceleration increment `dag` alone.
    !>
    !> Tridiagonal path: the right-hand side is formed inside the forward sweep of the
@@ -22,6 +39,8 @@ contains
       !> other scalars: nothing is stored to be passed).
       real(dp), intent(in), value :: dag
 
+      ! After exact free steps of a model with DOFs without mass (`commit_exact`).
+      if (st%band_stale) call band_state(st, b)
       if (st%tridiagonal) then
          call predict_kernel(st%n, 2.0_dp*st%c2, dag, b%mass, st%v, st%a, st%cv, st%e, st%dinv, st%du)
       else

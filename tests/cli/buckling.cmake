@@ -11,3 +11,6 @@ expect_contains("message" "${r_err}" "buckle.nml: building T: buckles under its 
 expect_contains("message" "${r_err}" "at storey 1")
 expect_contains("message" "${r_err}" "load ratio P/(h k) = 1.000000")
 expect_no_outputs(buckle.nml)
+# The refusal says which inputs to check.
+expect_contains("message" "${r_err}" "check the units of the inputs (masses in t, gravity loads in kN, E in kN/m^2 (not MPa)")
+expect_contains("message" "${r_err}" "whether p_delta is meant")

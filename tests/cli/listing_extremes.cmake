@@ -20,5 +20,7 @@ foreach(text IN ITEMS "${listing}" "${r_out}")
 endforeach()
 # T1 of a uniform 2-storey stick: 2 pi / (2 sqrt(k/m) sin(pi/10)) = 1.017e7 s; of B 2 pi sqrt(m/k).
 expect_contains("summary" "${r_out}" "building A: 2 storeys, T1 = 1.017E+07 s")
-expect_contains("summary" "${r_out}" "building B: 1 storeys, T1 = 1.987E-07 s")
+# Singular for one storey, on the terminal and in the listing.
+expect_contains("summary" "${r_out}" "building B: 1 storey, T1 = 1.987E-07 s")
+expect_contains("listing" "${listing}" "  Building B: 1 storey, P-Delta off")
 expect_contains("listing" "${listing}" " 1.0000E+09")

@@ -1,0 +1,148 @@
+!> The interface of a joint law: what a complementarity element's constitutive part tells
+!> the rest of pound (its deck name, its listing lines, whether the step must iterate on it)
+!> without anyone reading its internals or dispatching on its kind.
+!>
+!> A joint (a complementarity element of the per-step LCP, `pound_contact`) is
+!>
+!> - its ends: a sparse row of DOFs on each model it joins (`pound_contact_pair`,
+!>   `contact_pair%end_row`), the closing displacement v = B^T u;
+!> - its LCP rows: a piecewise-linear law compiled once into `contact_law` (pound_contact_law:
+!>   initial stiffness k0, dashpot, yield function r_y(d_p) as nodes and plastic moduli, the
+!>   envelope for the writers); the step assembles one contact row, one yield row and the
+!>   hinge rows of the segment ends it passes from those tables (`pound_contact_lcp`);
+!> - its state and its energy terms (`pound_joint_state`: advance after an accepted step,
+!>   work of the force, work in the joint, plastic work), written once for every law of the
+!>   family in terms of the compiled rows;
+!> - its description, an extension of `joint_law` (this module) kept in `contact_law%given`:
+!>   the deck name (`name`), the listing lines of its own parameters (`describe`), and the
+!>   iteration hook (`iterates`, `relinearise`).
+!>
+!> **Adding a piecewise-linear law** is one module (an extension of `joint_law` with `name`
+!> and `describe`, a constructor `make_*` that checks its parameters and compiles its envelope
+!> polygon with `compile_envelope`, and a constructor from the deck's `&contact` group) plus
+!> one line in `pound_law_registry` (deck name, constructor, the `&contact` variables it
+!> reads). See docs/architecture.md, "How to add a joint law".
+!>
+!> **Smooth laws (Hertz, Jankowski, Kelvin with a nonlinear spring).** They enter as the
+!> same rows, linearised: an elastic row of secant stiffness k_s around the state. A law
+!> whose `iterates` is true is listed once by `contact_init` (`contact_system%iterating`);
+!> after each solve of a step, `contact_step` calls `relinearise` of every listed joint with
+!> the compression and force the LCP gave; a law that moves its secant by more than its own
+!> tolerance says so (`changed`), the step's per-joint constants (phat, beta) are rebuilt
+!> from the new stiffness and the LCP is solved again (at most `max_law_iterations` times).
+!> Piecewise-linear laws keep the defaults (no iteration, nothing listed): the loop is empty
+!> and costs nothing; `contact_solve` has no branch on a law.
+module pound_joint_law
+   use pound_kinds, only: dp
+   implicit none
+   private
+
+   public :: joint_law, law_text, law_input, add_line, max_law_iterations
+
+   !> Largest number of LCP solves of one step while iterating laws ask for another.
+   integer, parameter :: max_law_iterations = 50
+
+   !> One line of text (a law's listing lines).
+   type :: law_text
+      !> The line, without the listing's indentation.
+      character(len=:), allocatable :: line
+   end type law_text
+
+   !> The `&contact` variables of the laws as the deck read them (unset values: the deck's
+   !> sentinels, pound_deck_checks `is_set`), handed to the law's deck reader
+   !> (`pound_law_registry`: `law_take_deck`), which checks those it reads.
+   type :: law_input
+      !> Scalars: stiffness k0 (kN/m), yield force (kN), second slope (kN/m), peak force rB
+      !> (kN), peak and fracture penetrations dB, dF (m).
+      real(dp) :: stiffness = 0.0_dp, yield_force = 0.0_dp, second_slope = 0.0_dp, peak_force = 0.0_dp, &
+                  peak_penetration = 0.0_dp, fracture_penetration = 0.0_dp
+      !> Chords per curved branch.
+      integer :: n_segments = 0
+      !> Envelope points as read (the namelist's whole arrays: unset beyond those given).
+      real(dp), allocatable :: envelope_d(:), envelope_r(:)
+   end type law_input
+
+   !> A joint law, as described to the listing, the HDF5 writer and the step.
+   type, abstract :: joint_law
+   contains
+      !> Its name as written in the deck (`law = '...'`).
+      procedure(law_name_i), deferred :: name
+      !> The listing lines of its own parameters (none for a law of k0 alone).
+      procedure(law_describe_i), deferred :: describe
+      !> The step must iterate on this law (a smooth law linearised around the LCP); the
+      !> default: piecewise linear, no iteration.
+      procedure :: iterates => law_no_iteration
+      !> Re-linearise around the compression and force of the last solve; the default:
+      !> piecewise linear, nothing changes.
+      procedure :: relinearise => law_keep_linearisation
+   end type joint_law
+
+   abstract interface
+      !> Deck name of a law.
+      pure function law_name_i(law) result(name)
+         import :: joint_law
+         !> The law.
+         class(joint_law), intent(in) :: law
+         character(len=:), allocatable :: name
+      end function law_name_i
+
+      !> Listing lines of a law's parameters.
+      pure function law_describe_i(law) result(lines)
+         import :: joint_law, law_text
+         !> The law.
+         class(joint_law), intent(in) :: law
+         type(law_text), allocatable :: lines(:)
+      end function law_describe_i
+   end interface
+
+contains
+
+   !> Append the line `s` to `lines` (element by element: no array constructor of strings
+   !> of different lengths).
+   pure subroutine add_line(lines, s)
+      !> The lines (allocated, possibly empty, on return).
+      type(law_text), allocatable, intent(inout) :: lines(:)
+      !> The new line.
+      character(len=*), intent(in) :: s
+      type(law_text), allocatable :: more(:)
+      integer :: i, n
+
+      n = 0
+      if (allocated(lines)) n = size(lines)
+      allocate (more(n + 1))
+      do i = 1, n
+         more(i)%line = lines(i)%line
+      end do
+      more(n + 1)%line = s
+      call move_alloc(more, lines)
+   end subroutine add_line
+
+   !> Default `iterates`: a piecewise-linear law is solved exactly by one LCP.
+   pure logical function law_no_iteration(law) result(it)
+      !> The law.
+      class(joint_law), intent(in) :: law
+
+      associate (unused => law)
+      end associate
+      it = .false.
+   end function law_no_iteration
+
+   !> Default `relinearise`: the rows of a piecewise-linear law do not depend on the state.
+   pure subroutine law_keep_linearisation(law, d, r, stiffness, changed)
+      !> The law.
+      class(joint_law), intent(in) :: law
+      !> Joint compression (m) and force (kN) the last solve of the step gave.
+      real(dp), intent(in) :: d, r
+      !> Stiffness of the joint's elastic row (kN/m): the secant a smooth law sets.
+      real(dp), intent(inout) :: stiffness
+      !> The stiffness moved beyond the law's tolerance: solve the step again.
+      logical, intent(out) :: changed
+
+      associate (unused => [d, r, stiffness])
+      end associate
+      associate (unused => law)
+      end associate
+      changed = .false.
+   end subroutine law_keep_linearisation
+
+end module pound_joint_law

@@ -1,0 +1,285 @@
+!> Outputs of the separation rules (`pound_separation`): the listing table of one pair (rows:
+!> the run, or a suite's motions and the suite) and the HDF5 datasets of the rules.
+!>
+!> HDF5, under a group `g` ('/separation' for a run, '/suite/separation' for a suite), one
+!> dataset per rule, (n_pairs) for a run or (n_motions + 1, n_pairs) for a suite:
+!>
+!>     g/abs, g/srss, g/ddc              m, combinations of the elastic peaks
+!>     g/ec8                             m, SRSS x 0.7 (coinciding floors) of the elastic peaks,
+!>                                       without q_d (legacy; the EN 1998 rule is g/en1998)
+!>     g/rho                             1, CQC correlation of the DDC
+!>     g/asce7, g/en1998, g/is1893       m, design-code rules, NaN where n/a (factor not given)
+!>     g/no_contact                      m; a run: NaN without &sweep (its probe gives it)
+!>     g/time_history                    m; a run: NaN where n/a; a suite: -1 where n/a (the
+!>                                       layout of earlier files), with g/time_history_valid (0/1)
+!>     g/pair                            (n_pairs) labels 'A:3-B:3', 'A:z4.5m-B:2'
+!>
+!> every dataset with the attribute `units` and, where a value can be n/a, `na` saying how it
+!> is marked.
+module pound_separation_output
+   use pound_kinds, only: dp
+   use pound_error, only: error_type
+   use pound_strings, only: fixed_cell, left_cell, right_cell
+   use pound_contact, only: contact_system
+   use pound_h5, only: h5_file, h5_write, h5_write_attr
+   use pound_separation, only: separation_t, not_computed
+   use pound_listing, only: write_section
+   use pound_text_writer, only: text_writer
+   implicit none
+   private
+
+   public :: write_separation_h5, write_separation_rows, write_separation_head, pair_labels, &
+             write_separation_legend, write_run_separation
+
+   !> Width of a value column of the listing table.
+   integer, parameter :: cw = 14
+   !> NaN marks of the new datasets.
+   character(len=*), parameter :: na_nan = 'NaN where not computed (n/a: a factor of either '// &
+                                           'building not given, or the pair is not between floors)'
+
+contains
+
+   !> The labels of the contact pairs (`pair_label` of `pound_contact_pair`, e.g.
+   !> 'A:3-B:z=7.50m'), in the order of the contact system's pairs.
+   pure function pair_labels(cs) result(labels)
+      !> The contact system.
+      type(contact_system), intent(in) :: cs
+      character(len=:), allocatable :: labels(:)
+      integer :: k, length
+
+      length = 1
+      do k = 1, cs%m
+         length = max(length, len(cs%pair(k)%label))
+      end do
+      allocate (character(len=length) :: labels(cs%m))
+      do k = 1, cs%m
+         labels(k) = cs%pair(k)%label
+      end do
+   end function pair_labels
+
+   !> The legend of the separation tables (`suite`: the time-history gap of a suite's sweep).
+   subroutine write_separation_legend(lst, suite)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
+      !> The suite's table (else a run's).
+      logical, intent(in) :: suite
+
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         '  From the elastic peaks u1, u2 of the uncoupled run(s) at the '// &
+         'facing floors; n/a: not computed.', &
+         '  ABS = u1 + u2; SRSS = sqrt(u1^2 + u2^2); DDC = sqrt(u1^2 + u2^2 - 2 rho u1 u2), rho: CQC '// &
+         'correlation of the two buildings'' first modes;', &
+         '  ASCE7 = ASCE 7-16 12.12.3: sqrt(dM1^2 + dM2^2), dM = Cd u / Ie (n/a without &building cd);', &
+         '  EN1998 = EN 1998-1 4.4.2.7: SRSS of q u, x 0.7 where floor levels coincide (n/a without '// &
+         'behaviour_factor);', &
+         '  IS1893 = IS 1893-1:2016 7.11.3: R1 u1 + R2 u2, x 0.5 where floor levels coincide (n/a '// &
+         'without response_reduction);', &
+         '  the factors take u as the codes'' elastic displacement under the design action reduced by q, '// &
+         'R or R/Ie: with unreduced records the peak itself is the codes'' estimate (equal displacements): '// &
+         'then enter factors 1 (docs/manual.md, Design-code separation rules).'
+      call lst%note()
+      if (suite) then
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  no-contact = max_t (u1(t) - u2(t)) of the uncoupled histories;', &
+            '  time-hist. = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
+            '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
+            '  (n/a: no &sweep, no target_lambda, or no gap of the range meets it).'
+         call lst%note()
+      else
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  no-contact = the largest closing displacement u1 - u2 of the '// &
+            'uncoupled motion, from the sweep''s probe (n/a without &sweep);', &
+            '  time-hist. = the smallest gap of the sweep meeting target_lambda (n/a: no &sweep, no '// &
+            'target_lambda, or no gap of the range meets it).'
+         call lst%note()
+      end if
+   end subroutine write_separation_legend
+
+   !> The listing section of a run's separation rules: one table row per pair.
+   subroutine write_run_separation(lst, labels, sep)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
+      !> Pair labels (`pair_labels`).
+      character(len=*), intent(in) :: labels(:)
+      !> The rules per pair.
+      type(separation_t), intent(in) :: sep(:)
+      integer :: ip
+
+      if (size(sep) == 0) return
+      call write_section(lst, 'Separation rules per contact pair [mm]')
+      call write_separation_legend(lst, .false.)
+      do ip = 1, size(sep)
+         call write_separation_head(lst, trim(labels(ip)), 'run', 3)
+         call write_separation_rows(lst, 'run', sep(ip), 3)
+      end do
+   end subroutine write_run_separation
+
+   !> The head of the listing table of one pair: its label and the column names (the row
+   !> column `w` characters wide: the longest row name; every other column `cw`).
+   subroutine write_separation_head(lst, label, row_title, w)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
+      !> The pair's label.
+      character(len=*), intent(in) :: label
+      !> Title of the row column ('motion' or 'run').
+      character(len=*), intent(in) :: row_title
+      !> Width of the row column.
+      integer, intent(in) :: w
+      character(len=10), parameter :: heads(9) = [character(len=10) :: 'ABS', 'SRSS', 'DDC', 'rho', 'ASCE7', &
+                                                  'EN1998', 'IS1893', 'no-contact', 'time-hist.']
+      character(len=:), allocatable :: line
+      integer :: q
+
+      write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  pair '//label
+      call lst%note()
+      line = '  '//left_cell(row_title, w)
+      do q = 1, size(heads)
+         line = line//right_cell(trim(heads(q)), cw)
+      end do
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+      call lst%note()
+   end subroutine write_separation_head
+
+   !> One row of a pair's table: the rules in mm (n/a where not computed) and rho.
+   subroutine write_separation_rows(lst, name, sep, w)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
+      !> The row's name (a motion, 'mean' or 'run').
+      character(len=*), intent(in) :: name
+      !> The rules of the pair.
+      type(separation_t), intent(in) :: sep
+      !> Width of the row column.
+      integer, intent(in) :: w
+
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         '  '//left_cell(name, w)//mm(sep%abs, sep%computed)//mm(sep%srss, sep%computed)// &
+         mm(sep%ddc, sep%computed)//ratio(sep%rho, sep%computed)//mm(sep%asce7, sep%asce7_valid)// &
+         mm(sep%en1998, sep%en1998_valid)//mm(sep%is1893, sep%is1893_valid)// &
+         mm(sep%no_contact, sep%no_contact_valid)//mm(sep%time_history, sep%time_history_valid)
+      call lst%note()
+
+   contains
+
+      !> A gap (m) in mm, 3 decimals, or 'n/a'.
+      pure function mm(x, valid) result(cell)
+         !> The gap (m).
+         real(dp), intent(in) :: x
+         !> Whether it was computed.
+         logical, intent(in) :: valid
+         character(len=cw) :: cell
+
+         if (valid) then
+            cell = fixed_cell(1000.0_dp*x, cw, 3)
+         else
+            cell = repeat(' ', cw - 3)//'n/a'
+         end if
+      end function mm
+
+      !> A ratio, 4 decimals, or 'n/a'.
+      pure function ratio(x, valid) result(cell)
+         !> The value.
+         real(dp), intent(in) :: x
+         !> Whether it was computed.
+         logical, intent(in) :: valid
+         character(len=cw) :: cell
+
+         if (valid) then
+            cell = fixed_cell(x, cw, 4)
+         else
+            cell = repeat(' ', cw - 3)//'n/a'
+         end if
+      end function ratio
+
+   end subroutine write_separation_rows
+
+   !> The new datasets of the rules under `g` (rho, asce7, en1998, is1893, pair; for a run
+   !> also abs, srss, ec8, ddc and time_history), with their attributes. `sep` is
+   !> (n_rows, n_pairs): one row for a run, n_motions + 1 for a suite (`suite` true: the suite
+   !> writes abs, srss, ec8, ddc, no_contact and time_history itself, in their earlier layout;
+   !> here their attributes and time_history_valid).
+   subroutine write_separation_h5(h5, g, sep, labels, suite, error)
+      !> Open file.
+      type(h5_file), intent(inout) :: h5
+      !> Group path ('/separation' or '/suite/separation').
+      character(len=*), intent(in) :: g
+      !> The rules (n_rows, n_pairs).
+      type(separation_t), intent(in) :: sep(:, :)
+      !> Pair labels (n_pairs).
+      character(len=*), intent(in) :: labels(:)
+      !> The suite's group (see above).
+      logical, intent(in) :: suite
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. suite) then
+         call put('abs', nan_where(sep%abs, sep%computed), 'm', 'ABS = u1 + u2 of the elastic peaks')
+         call put('srss', nan_where(sep%srss, sep%computed), 'm', 'SRSS = sqrt(u1^2 + u2^2) of the elastic peaks')
+         call put('ec8', nan_where(sep%ec8, sep%computed), 'm', 'SRSS x 0.7 where floor levels coincide, of '// &
+                  'the elastic peaks without q_d (legacy; the EN 1998-1 4.4.2.7 rule is en1998)')
+         call put('ddc', nan_where(sep%ddc, sep%computed), 'm', 'DDC = sqrt(u1^2 + u2^2 - 2 rho u1 u2)')
+         call put('no_contact', nan_where(sep%no_contact, sep%no_contact_valid), 'm', &
+                  'largest closing displacement of the uncoupled motion (the sweep probe)')
+         call put('time_history', nan_where(sep%time_history, sep%time_history_valid), 'm', &
+                  'smallest gap of the sweep meeting target_lambda')
+      else
+         call attrs('abs', '', 'ABS = u1 + u2 of the elastic peaks', '')
+         call attrs('srss', '', 'SRSS = sqrt(u1^2 + u2^2) of the elastic peaks', '')
+         call attrs('ec8', '', 'SRSS x 0.7 where floor levels coincide, of the elastic peaks without q_d '// &
+                    '(legacy; the EN 1998-1 4.4.2.7 rule is en1998)', '')
+         call attrs('ddc', '', 'DDC = sqrt(u1^2 + u2^2 - 2 rho u1 u2)', '')
+         call attrs('no_contact', '', 'max_t (u1(t) - u2(t)) of the uncoupled histories', '')
+         call attrs('time_history', '', 'threshold gap of the gap sweep', '-1 where not computed '// &
+                    '(time_history_valid = 0)')
+         if (.not. allocated(error)) call h5_write(h5, g//'/time_history_valid', &
+                                                   transpose(merge(1, 0, sep%time_history_valid)), error, &
+                                                   units='1')
+      end if
+      call put('rho', nan_where(sep%rho, sep%computed), '1', 'CQC correlation coefficient used by the DDC')
+      call put('asce7', nan_where(sep%asce7, sep%asce7_valid), 'm', 'ASCE 7-16 12.12.3: sqrt(dM1^2 + dM2^2), '// &
+               'dM = Cd delta / Ie')
+      call put('en1998', nan_where(sep%en1998, sep%en1998_valid), 'm', 'EN 1998-1 4.4.2.7: SRSS of q_d d_e, '// &
+               'x 0.7 where floor levels coincide')
+      call put('is1893', nan_where(sep%is1893, sep%is1893_valid), 'm', 'IS 1893-1:2016 7.11.3: R1 D1 + R2 D2, '// &
+               'x 0.5 where floor levels coincide')
+      if (.not. allocated(error)) call h5_write(h5, g//'/pair', labels, error, units='-')
+
+   contains
+
+      !> A new dataset with its attributes (its NaN marks n/a).
+      subroutine put(name, values, units, rule)
+         character(len=*), intent(in) :: name, units, rule
+         real(dp), intent(in) :: values(:, :)
+
+         if (allocated(error)) return
+         if (suite) then
+            call h5_write(h5, g//'/'//name, transpose(values), error)
+         else
+            call h5_write(h5, g//'/'//name, values(1, :), error)
+         end if
+         call attrs(name, units, rule, na_nan)
+      end subroutine put
+
+      subroutine attrs(name, units, rule, na)
+         character(len=*), intent(in) :: name, units, rule, na
+
+         if (allocated(error)) return
+         ! units = '': the dataset was written with its units (the suite's legacy rules)
+         if (len(units) > 0) call h5_write_attr(h5, g//'/'//name, 'units', units, error)
+         if (.not. allocated(error)) call h5_write_attr(h5, g//'/'//name, 'rule', rule, error)
+         if (.not. allocated(error) .and. len(na) > 0) call h5_write_attr(h5, g//'/'//name, 'na', na, error)
+      end subroutine attrs
+
+   end subroutine write_separation_h5
+
+   !> `x` where `valid`, NaN elsewhere.
+   elemental real(dp) function nan_where(x, valid) result(y)
+      !> Value.
+      real(dp), intent(in) :: x
+      !> Whether it is computed.
+      logical, intent(in) :: valid
+
+      y = x
+      if (.not. valid) y = not_computed(x)
+   end function nan_where
+
+end module pound_separation_output
