@@ -1,8 +1,8 @@
 # The library's sources, by step (paths relative to src/). The program is src/main/pound.f90.
 set(POUND_SOURCES
-  # core: kinds, physical constants, the response quantities, the analysis plan, the sweep settings, errors, strings, whole-file reading, version, POSIX calls, the progress line, sorting
+  # core: kinds, physical constants, the response quantities, the analysis plan, the sweep, code-factor and contact settings, errors, strings, whole-file reading, version, POSIX calls, the progress line, sorting
   core/pound_kinds.f90 core/pound_constants.f90 core/pound_quantities.f90 core/pound_analysis_plan.f90
-  core/pound_sweep_settings.f90
+  core/pound_sweep_settings.f90 core/pound_code_factors.f90 core/pound_contact_settings.f90
   core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
   core/pound_version.f90 core/pound_posix.f90 core/pound_progress.f90
   core/pound_sort.f90

@@ -9,6 +9,8 @@ module pound_config
    use pound_quantities, only: n_history_quantities, history_names, n_target_quantities, target_names, &
                                q_column_shear, q_column_moment
    use pound_sweep_settings, only: sweep_config
+   use pound_code_factors, only: code_factors
+   use pound_contact_settings, only: contact_config
    implicit none
    private
 
@@ -90,19 +92,6 @@ module pound_config
       logical :: histories = .false.
    end type ground_config
 
-   !> The design-code factors of one building for the separation rules (pound_separation);
-   !> 0 where the deck does not give them (the rule that needs the factor is then n/a).
-   type :: code_factors
-      !> ASCE 7 deflection amplification factor Cd (`cd`).
-      real(dp) :: cd = 0.0_dp
-      !> ASCE 7 importance factor Ie (`importance`; default 1).
-      real(dp) :: importance = 1.0_dp
-      !> EN 1998-1 behaviour factor q, used as the displacement behaviour factor q_d (`behaviour_factor`).
-      real(dp) :: behaviour_factor = 0.0_dp
-      !> IS 1893 response reduction factor R (`response_reduction`).
-      real(dp) :: response_reduction = 0.0_dp
-   end type code_factors
-
    !> `&building`: one building (a shear building, or a planar frame with `model = 'frame'`).
    type :: building_config
       !> Name used in messages, listing and HDF5 groups.
@@ -166,43 +155,6 @@ module pound_config
       !> `response_reduction`).
       type(code_factors) :: factors
    end type building_config
-
-   !> `&contact`: unilateral constraints between facing floors of two buildings.
-   !>
-   !> Pair k joins floor `floor_left(k)` of building `left` with floor `floor_right(k)` of
-   !> building `right`; a displacement of `left` towards `right` closes the gap. Pairs given
-   !> by `elevations` join the two facing column lines at elevation `elevation(k)`: the floor
-   !> there, or 0 for a point between floors (a column node of a frame).
-   type :: contact_config
-      !> Names of the building on the left and on the right.
-      character(len=:), allocatable :: left, right
-      !> Their indices in `deck%buildings`.
-      integer :: left_index = 0, right_index = 0
-      !> Facing floors, one entry per pair (0: a point between floors, see `elevation`).
-      integer, allocatable :: floor_left(:), floor_right(:)
-      !> Elevation of each pair above the common base (m) when the deck gives `elevations`;
-      !> unallocated when the pairs are given by floor.
-      real(dp), allocatable :: elevation(:)
-      !> Initial gap of each pair (m).
-      real(dp), allocatable :: gap(:)
-      !> Constraint law: 'elastic', 'elastic_plastic', 'bilinear', 'piecewise' or 'parabola_cubic'.
-      character(len=:), allocatable :: law
-      !> Joint (initial) stiffness k0 (kN/m) and dashpot c (kN s/m).
-      real(dp) :: stiffness = 0.0_dp, dashpot = 0.0_dp
-      !> Coefficient of restitution the dashpot is calibrated to (0 < e < 1, elastic law
-      !> only); 0: none, the dashpot is `dashpot`.
-      real(dp) :: restitution = 0.0_dp
-      !> Dashpot rate rule: 'backward_euler' or 'trapezoidal'.
-      character(len=:), allocatable :: dashpot_rate
-      !> Yield force (kN) and second slope (kN/m) of `elastic_plastic` and `bilinear`.
-      real(dp) :: yield_force = 0.0_dp, second_slope = 0.0_dp
-      !> Envelope points of `piecewise`: penetrations (m) and forces (kN).
-      real(dp), allocatable :: envelope_d(:), envelope_r(:)
-      !> `parabola_cubic`: peak force rB (kN), peak and fracture penetrations dB, dF (m),
-      !> chords per curved branch.
-      real(dp) :: peak_force = 0.0_dp, peak_penetration = 0.0_dp, fracture_penetration = 0.0_dp
-      integer :: n_segments = 8
-   end type contact_config
 
    !> A whole, validated deck.
    type :: deck_type

@@ -27,13 +27,13 @@ module pound_run_case
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
    use pound_sweep, only: sweep_result, run_sweep
-   use pound_separation, only: separation_t, pair_separation
+   use pound_separation, only: separation_t, code_separation, levels_coincide, not_computed
    use pound_plausibility, only: period_warning, unit_suspects
    implicit none
    private
 
    public :: case_options, case_result, run_case, deck_ground_motion, configured_motion, label_prefix
-   public :: analysis_plan_of
+   public :: analysis_plan_of, pair_separation
 
    !> What distinguishes one case of a configuration from another; every component is
    !> optional (the defaults run the configuration as the deck states it).
@@ -348,5 +348,44 @@ contains
       end subroutine collect
 
    end subroutine run_case
+
+   !> The rules of one contact pair of the deck (`code_separation`): building `left` (its
+   !> floor `floor_left`) facing building `right` (its floor `floor_right`), with their factors
+   !> and damping ratios from the deck, the periods t1, t2 (s) and the peaks u1, u2 (m) of
+   !> the facing floors. The floors coincide when their levels above the common base agree
+   !> (`levels_coincide`). A pair with a point between floors (floor 0) has no rule (`computed`
+   !> false).
+   pure function pair_separation(deck, left, right, floor_left, floor_right, u1, u2, t1, t2) result(sep)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Buildings on the left and on the right (indices in `deck%buildings`).
+      integer, intent(in) :: left, right
+      !> Facing floors (0: a point between floors).
+      integer, intent(in) :: floor_left, floor_right
+      !> Elastic peak displacements of the facing floors (m).
+      real(dp), intent(in) :: u1, u2
+      !> Fundamental periods of the two buildings (s).
+      real(dp), intent(in) :: t1, t2
+      type(separation_t) :: sep
+      logical :: coincide
+
+      if (floor_left < 1 .or. floor_right < 1) then
+         sep%computed = .false.
+         sep%abs = not_computed(u1)
+         sep%srss = sep%abs
+         sep%ec8 = sep%abs
+         sep%ddc = sep%abs
+         sep%rho = sep%abs
+         sep%asce7 = sep%abs
+         sep%en1998 = sep%abs
+         sep%is1893 = sep%abs
+         return
+      end if
+      associate (b1 => deck%buildings(left), b2 => deck%buildings(right))
+         coincide = levels_coincide(sum(b1%height(1:floor_left)), sum(b2%height(1:floor_right)))
+         sep = code_separation(u1, u2, b1%factors, b2%factors, t1, t2, b1%damping_ratio, b2%damping_ratio, &
+                               coincide)
+      end associate
+   end function pair_separation
 
 end module pound_run_case
