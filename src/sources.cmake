@@ -63,8 +63,10 @@ set(POUND_SOURCES
   driver/pound_suite_columns.f90 driver/pound_suite_outcome.f90 driver/pound_suite_context.f90
   driver/pound_suite_motions.f90 driver/pound_suite_statistics.f90 driver/pound_suite_refine.f90
   driver/pound_suite.f90
-  # outputs: files, HDF5 layer, results file, the text writer (unit + first failure), listing
-  output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_text_writer.f90
+  # outputs: files, HDF5 layer (its attribute writers and low-level helpers in submodules),
+  # results file, the text writer (unit + first failure), listing
+  output/pound_files.f90 output/pound_h5.f90 output/pound_h5_support.f90 output/pound_h5_attributes.f90
+  output/pound_results_h5.f90 output/pound_text_writer.f90
   output/pound_listing.f90
   # outputs: the separation rules' listing table and datasets (a run and a suite)
   output/pound_separation_output.f90

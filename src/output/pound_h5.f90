@@ -44,27 +44,22 @@
 !> during `h5open_f`) and shut down by HDF5 itself at program exit. After a write failed
 !> because the disk filled up, HDF5 1.10's exit handler can crash on the dataset whose close
 !> failed: the program should then end with `_exit` (as pound does).
+!>
+!> This module holds the handle, the generic interfaces, the files, groups, datasets and
+!> histories; the attribute writers are in submodule `pound_h5_attributes`
+!> (src/output/pound_h5_attributes.f90), the low-level helpers (HDF5 start-up, path checks,
+!> group creation, dataspaces, string buffers, identifier release, error text) in submodule
+!> `pound_h5_support` (src/output/pound_h5_support.f90).
 module pound_h5
-   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char, c_null_char
-   use, intrinsic :: ieee_exceptions, only: ieee_status_type, ieee_get_status, ieee_set_status, &
-                                            ieee_set_halting_mode, ieee_all
-   use hdf5, only: hid_t, hsize_t, size_t, h5open_f, h5eset_auto_f, &
-                   h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, H5F_ACC_RDWR_F, &
-                   h5pcreate_f, h5pclose_f, h5pset_fclose_degree_f, H5P_FILE_ACCESS_F, &
-                   H5F_CLOSE_STRONG_F, &
-                   h5lexists_f, h5oopen_f, h5oclose_f, h5iget_type_f, H5I_GROUP_F, &
-                   h5gcreate_f, h5gclose_f, h5screate_f, h5screate_simple_f, h5sclose_f, &
-                   H5S_SCALAR_F, h5dcreate_f, h5dwrite_f, &
-                   h5acreate_f, h5aclose_f, h5awrite_f, h5aexists_f, h5adelete_f, &
-                   h5tcopy_f, h5tclose_f, h5tset_size_f, h5tset_cset_f, &
-                   H5T_C_S1, H5T_CSET_UTF8_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
-                   H5T_IEEE_F64LE, H5T_STD_I32LE, &
-                   H5P_DATASET_CREATE_F, h5pset_chunk_f, h5pset_shuffle_f, h5pset_deflate_f, &
-                   h5dopen_f, h5dget_space_f, h5sselect_hyperslab_f, H5S_SELECT_SET_F
-   use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f, h5ltset_attribute_double_f
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char
+   use hdf5, only: hid_t, hsize_t, h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, &
+                   H5F_ACC_RDWR_F, h5pcreate_f, h5pclose_f, h5dcreate_f, h5dwrite_f, h5dopen_f, &
+                   h5dget_space_f, h5sselect_hyperslab_f, H5S_SELECT_SET_F, H5T_NATIVE_DOUBLE, &
+                   H5T_IEEE_F64LE, H5P_DATASET_CREATE_F, h5pset_chunk_f, h5pset_shuffle_f, h5pset_deflate_f
+   use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_posix, only: posix_errno, posix_set_errno, posix_strerror, posix_storage_error
+   use pound_posix, only: posix_set_errno
    implicit none
    private
 
@@ -94,10 +89,60 @@ module pound_h5
 
    !> Set an attribute of the object at a path ('/' is the root), replacing an existing one:
    !> `call h5_write_attr(file, path, name, value, error)` with `value` a character string,
-   !> real(dp) scalar or 1-D (H5LT), or default integer scalar.
+   !> real(dp) scalar or 1-D (H5LT), or default integer scalar (submodule pound_h5_attributes).
    interface h5_write_attr
-      module procedure write_attr_string, write_attr_real_0d, write_attr_real_1d, &
-         write_attr_int_0d
+      !> String attribute (variable-length UTF-8, stored exactly as given).
+      module subroutine write_attr_string(file, path, name, value, error)
+         !> File open for writing.
+         type(h5_file), intent(in) :: file
+         !> Path of the object carrying the attribute ('/' for the root).
+         character(len=*), intent(in) :: path
+         !> Attribute name.
+         character(len=*), intent(in) :: name
+         !> Text; may be long and contain newlines.
+         character(len=*), intent(in) :: value
+         !> Error state.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine write_attr_string
+      !> Real scalar attribute.
+      module subroutine write_attr_real_0d(file, path, name, value, error)
+         !> File open for writing.
+         type(h5_file), intent(in) :: file
+         !> Path of the object carrying the attribute ('/' for the root).
+         character(len=*), intent(in) :: path
+         !> Attribute name.
+         character(len=*), intent(in) :: name
+         !> Value.
+         real(dp), intent(in) :: value
+         !> Error state.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine write_attr_real_0d
+      !> Real 1-D attribute (H5LT).
+      module subroutine write_attr_real_1d(file, path, name, value, error)
+         !> File open for writing.
+         type(h5_file), intent(in) :: file
+         !> Path of the object carrying the attribute ('/' for the root).
+         character(len=*), intent(in) :: path
+         !> Attribute name.
+         character(len=*), intent(in) :: name
+         !> Values.
+         real(dp), intent(in) :: value(:)
+         !> Error state.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine write_attr_real_1d
+      !> Integer scalar attribute (stored as 32-bit signed).
+      module subroutine write_attr_int_0d(file, path, name, value, error)
+         !> File open for writing.
+         type(h5_file), intent(in) :: file
+         !> Path of the object carrying the attribute ('/' for the root).
+         character(len=*), intent(in) :: path
+         !> Attribute name.
+         character(len=*), intent(in) :: name
+         !> Value.
+         integer, intent(in) :: value
+         !> Error state.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine write_attr_int_0d
    end interface h5_write_attr
 
    !> HDF5 identifiers held by one operation, closed together by `release`.
@@ -109,17 +154,104 @@ module pound_h5
       integer(hid_t) :: mtype = -1_hid_t
    end type h5_ids
 
-   !> State of one link on a path.
-   integer, parameter :: link_missing = 0, link_group = 1, link_other = 2
-
-   !> H5T_VARIABLE: the size that makes a string type variable-length ((size_t)-1 in C).
-   integer(size_t), parameter :: variable_size = -1_size_t
-
    !> Largest chunk of a history dataset (bytes), and the deflate level of compressed ones.
    integer, parameter :: chunk_bytes = 2**20, deflate_level = 4
 
-   !> HDF5 initialised and its error printing silenced.
-   logical :: library_ready = .false.
+   !> The low-level helpers (submodule pound_h5_support), for this module and its submodules.
+   interface
+      !> Initialise HDF5 once and check that the handle is free.
+      module subroutine start(file, path, error)
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: path
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine start
+      !> File access list that closes every object with the file.
+      module subroutine file_access_list(path, fapl, error)
+         character(len=*), intent(in) :: path
+         integer(hid_t), intent(out) :: fapl
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine file_access_list
+      !> Check the handle (open; writable if `write`) and normalise `path` to '/a/b'.
+      module subroutine check_path(file, path, write, action, p, error)
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: path
+         logical, intent(in) :: write
+         character(len=*), intent(in) :: action
+         character(len=:), allocatable, intent(out) :: p
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine check_path
+      !> Whether every component of the normalised path `p` exists (all but the last as groups).
+      module subroutine path_exists(file, p, exists, error)
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: p
+         logical, intent(out) :: exists
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine path_exists
+      !> Create the missing groups of the normalised path `p` (the last component too if `whole`).
+      module subroutine make_groups(file, p, whole, error)
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: p
+         logical, intent(in) :: whole
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine make_groups
+      !> Check the handle and `path` for a new dataset, create the groups above it and
+      !> refuse an existing object; `p` is the normalised path.
+      module subroutine dataset_path(file, path, p, error)
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: path
+         character(len=:), allocatable, intent(out) :: p
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine dataset_path
+      !> Turn an H5LT return code into the module's message.
+      module subroutine check_lt(hdferr, file, p, call_name, error)
+         integer, intent(in) :: hdferr
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: p, call_name
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine check_lt
+      !> Scalar (empty `dims`) or simple dataspace.
+      module subroutine new_space(dims, ids, file, action, what, path, error)
+         integer(hsize_t), intent(in) :: dims(:)
+         type(h5_ids), intent(inout) :: ids
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: action, what, path
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine new_space
+      !> New variable-length UTF-8 C string datatype.
+      module subroutine string_type(type_id, hdferr)
+         integer(hid_t), intent(out) :: type_id
+         integer, intent(out) :: hdferr
+      end subroutine string_type
+      !> NUL-terminated copies of `values(i)(1:lengths(i))` in `chars`, addressed by `ptrs`.
+      module subroutine pack_strings(lengths, values, chars, ptrs)
+         integer, intent(in) :: lengths(:)
+         character(len=*), intent(in) :: values(:)
+         character(kind=c_char), allocatable, target, intent(out) :: chars(:)
+         type(c_ptr), allocatable, intent(out) :: ptrs(:)
+      end subroutine pack_strings
+      !> Close every identifier held; report the first failure unless an error is already set.
+      module subroutine release(ids, file, action, what, path, error)
+         type(h5_ids), intent(inout) :: ids
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: action, what, path
+         type(error_type), allocatable, intent(inout) :: error
+      end subroutine release
+      !> Error "HDF5 file '<file>': cannot <action> <what> '<path>': <detail>".
+      module subroutine fail(error, file, action, what, path, detail)
+         type(error_type), allocatable, intent(out) :: error
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: action, what, path, detail
+      end subroutine fail
+      !> ': <strerror>' for any errno left by a failed create (errno is cleared before it).
+      module function create_reason() result(text)
+         character(len=:), allocatable :: text
+      end function create_reason
+      !> ': <strerror>' when errno holds a storage or permission failure, '' otherwise: HDF5
+      !> reports a failed write only as a failed call, the system's reason is in errno.
+      module function system_reason() result(text)
+         character(len=:), allocatable :: text
+      end function system_reason
+   end interface
 
 contains
 
@@ -539,499 +671,6 @@ contains
       call release(ids, file, 'write', 'dataset', p, error)
       call put_units(file, path, units, error)
    end subroutine write_string_1d
-
-   !> String attribute (variable-length UTF-8, stored exactly as given).
-   subroutine write_attr_string(file, path, name, value, error)
-      !> File open for writing.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Text; may be long and contain newlines.
-      character(len=*), intent(in) :: value
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: what
-      character(kind=c_char), allocatable, target :: chars(:)
-      type(c_ptr), allocatable, target :: ptrs(:)
-      integer(hsize_t) :: dims(0)
-      integer :: hdferr
-
-      what = "attribute '"//name//"' of"
-      call string_type(ids%ftype, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, 'write', what, path, 'h5tcopy_f/h5tset_size_f failed')
-      else
-         call new_attribute(file, path, name, ids%ftype, dims, ids, error)
-      end if
-      if (.not. allocated(error)) then
-         call pack_strings([len(value)], [value], chars, ptrs)
-         call h5awrite_f(ids%attr, ids%ftype, c_loc(ptrs), hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', what, path, 'h5awrite_f failed')
-      end if
-      call release(ids, file, 'write', what, path, error)
-   end subroutine write_attr_string
-
-   !> Real scalar attribute.
-   subroutine write_attr_real_0d(file, path, name, value, error)
-      !> File open for writing.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Value.
-      real(dp), intent(in) :: value
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      integer(hsize_t) :: dims(0)
-      integer :: hdferr
-
-      call new_attribute(file, path, name, H5T_IEEE_F64LE, dims, ids, error)
-      if (.not. allocated(error)) then
-         call h5awrite_f(ids%attr, H5T_NATIVE_DOUBLE, value, [1_hsize_t], hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, &
-                                    'h5awrite_f failed')
-      end if
-      call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
-   end subroutine write_attr_real_0d
-
-   !> Real 1-D attribute (H5LT).
-   subroutine write_attr_real_1d(file, path, name, value, error)
-      !> File open for writing.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Values.
-      real(dp), intent(in) :: value(:)
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      character(len=:), allocatable :: p
-      integer :: hdferr
-
-      call open_carrier(file, path, .true., 'write', "attribute '"//name//"' of", ids, p, error)
-      call release(ids, file, 'write', "attribute '"//name//"' of", p, error)
-      if (allocated(error)) return
-      call h5ltset_attribute_double_f(file%id, p, name, value, size(value, kind=size_t), hdferr)
-      if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", p, &
-                                 'h5ltset_attribute_double_f failed')
-   end subroutine write_attr_real_1d
-
-   !> Integer scalar attribute (stored as 32-bit signed).
-   subroutine write_attr_int_0d(file, path, name, value, error)
-      !> File open for writing.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Value.
-      integer, intent(in) :: value
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      integer(hsize_t) :: dims(0)
-      integer :: hdferr
-
-      call new_attribute(file, path, name, H5T_STD_I32LE, dims, ids, error)
-      if (.not. allocated(error)) then
-         call h5awrite_f(ids%attr, H5T_NATIVE_INTEGER, value, [1_hsize_t], hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, &
-                                    'h5awrite_f failed')
-      end if
-      call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
-   end subroutine write_attr_int_0d
-
-   ! ------------------------------------------------------------------ internals
-
-   !> Initialise HDF5 once and check that the handle is free.
-   subroutine start(file, path, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path
-      type(error_type), allocatable, intent(out) :: error
-      type(ieee_status_type) :: fp_status
-      integer :: hdferr
-
-      if (file%id >= 0) then
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': the handle is still open on '"// &
-                          h5_file_name(file)//"'")
-         return
-      end if
-      if (library_ready) return
-      ! HDF5's start-up code must not meet the program's floating-point traps; the
-      ! floating-point state, flags included, is restored afterwards.
-      call ieee_get_status(fp_status)
-      call ieee_set_halting_mode(ieee_all, .false.)
-      call h5open_f(hdferr)
-      call ieee_set_status(fp_status)
-      if (hdferr /= 0) then
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5open_f failed (HDF5 library)")
-         return
-      end if
-      call h5eset_auto_f(0, hdferr)
-      if (hdferr /= 0) then
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5eset_auto_f failed (HDF5 library)")
-         return
-      end if
-      library_ready = .true.
-   end subroutine start
-
-   !> File access list that closes every object with the file.
-   subroutine file_access_list(path, fapl, error)
-      character(len=*), intent(in) :: path
-      integer(hid_t), intent(out) :: fapl
-      type(error_type), allocatable, intent(out) :: error
-      integer :: hdferr, ignore
-
-      call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, hdferr)
-      if (hdferr /= 0) then
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5pcreate_f failed")
-         return
-      end if
-      call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, hdferr)
-      if (hdferr /= 0) then
-         call h5pclose_f(fapl, ignore)
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5pset_fclose_degree_f failed")
-      end if
-   end subroutine file_access_list
-
-   !> Check the handle (open; writable if `write`) and normalise `path` to '/a/b'.
-   subroutine check_path(file, path, write, action, p, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path
-      logical, intent(in) :: write
-      character(len=*), intent(in) :: action
-      character(len=:), allocatable, intent(out) :: p
-      type(error_type), allocatable, intent(out) :: error
-
-      p = trim(adjustl(path))
-      if (len(p) == 0) p = '/'
-      if (p(1:1) /= '/') p = '/'//p
-      do while (len(p) > 1)
-         if (p(len(p):len(p)) /= '/') exit
-         p = p(:len(p) - 1)
-      end do
-      if (file%id < 0) then
-         call fatal_error(error, "cannot "//action//" '"//p//"': no HDF5 file is open")
-      else if (write .and. .not. file%writable) then
-         call fail(error, file, action, 'object', p, 'the file is open read-only')
-      else if (index(p, '//') > 0) then
-         call fail(error, file, action, 'object', p, 'invalid path (empty name)')
-      end if
-   end subroutine check_path
-
-   !> State of the link `prefix` (an absolute path other than '/'), whose parent is a group.
-   subroutine link_state(file, prefix, state, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: prefix
-      integer, intent(out) :: state
-      type(error_type), allocatable, intent(out) :: error
-      logical :: there
-      integer(hid_t) :: obj
-      integer :: hdferr, obj_type, ignore
-
-      state = link_missing
-      call h5lexists_f(file%id, prefix, there, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, 'look up', 'object', prefix, 'h5lexists_f failed')
-         return
-      end if
-      if (.not. there) return
-      call h5oopen_f(file%id, prefix, obj, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, 'look up', 'object', prefix, 'h5oopen_f failed')
-         return
-      end if
-      call h5iget_type_f(obj, obj_type, hdferr)
-      call h5oclose_f(obj, ignore)
-      if (hdferr /= 0) then
-         call fail(error, file, 'look up', 'object', prefix, 'h5iget_type_f failed')
-         return
-      end if
-      state = merge(link_group, link_other, obj_type == H5I_GROUP_F)
-   end subroutine link_state
-
-   !> Whether every component of the normalised path `p` exists (all but the last as groups).
-   subroutine path_exists(file, p, exists, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: p
-      logical, intent(out) :: exists
-      type(error_type), allocatable, intent(out) :: error
-      integer :: i, state
-
-      exists = .true.
-      if (p == '/') return
-      do i = 2, len(p) + 1
-         if (i <= len(p)) then
-            if (p(i:i) /= '/') cycle
-         end if
-         call link_state(file, p(:i - 1), state, error)
-         if (allocated(error)) exists = .false.
-         if (allocated(error)) return
-         if (state == link_missing .or. (i <= len(p) .and. state /= link_group)) then
-            exists = .false.
-            return
-         end if
-      end do
-   end subroutine path_exists
-
-   !> Create the missing groups of the normalised path `p` (the last component too if `whole`).
-   subroutine make_groups(file, p, whole, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: p
-      logical, intent(in) :: whole
-      type(error_type), allocatable, intent(out) :: error
-      integer(hid_t) :: gid
-      integer :: i, last, state, hdferr
-
-      if (p == '/') return
-      last = len(p)
-      if (.not. whole) last = index(p, '/', back=.true.) - 1
-      do i = 2, last + 1
-         if (i <= last) then
-            if (p(i:i) /= '/') cycle
-         end if
-         call link_state(file, p(:i - 1), state, error)
-         if (allocated(error)) return
-         select case (state)
-         case (link_other)
-            call fail(error, file, 'create', 'group', p(:i - 1), 'an object that is not a group has this path')
-            return
-         case (link_missing)
-            call h5gcreate_f(file%id, p(:i - 1), gid, hdferr)
-            if (hdferr /= 0) then
-               call fail(error, file, 'create', 'group', p(:i - 1), 'h5gcreate_f failed')
-               return
-            end if
-            call h5gclose_f(gid, hdferr)
-            if (hdferr /= 0) then
-               call fail(error, file, 'create', 'group', p(:i - 1), 'h5gclose_f failed')
-               return
-            end if
-         end select
-      end do
-   end subroutine make_groups
-
-   !> Check the handle and `path` for a new dataset, create the groups above it and
-   !> refuse an existing object; `p` is the normalised path.
-   subroutine dataset_path(file, path, p, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path
-      character(len=:), allocatable, intent(out) :: p
-      type(error_type), allocatable, intent(out) :: error
-      logical :: there
-
-      call check_path(file, path, .true., 'write', p, error)
-      if (allocated(error)) return
-      if (p == '/') then
-         call fail(error, file, 'write', 'dataset', p, 'the root is a group')
-         return
-      end if
-      call make_groups(file, p, .false., error)
-      if (allocated(error)) return
-      call path_exists(file, p, there, error)
-      if (allocated(error)) return
-      if (there) call fail(error, file, 'write', 'dataset', p, 'an object with this path already exists')
-   end subroutine dataset_path
-
-   !> Turn an H5LT return code into the module's message.
-   subroutine check_lt(hdferr, file, p, call_name, error)
-      integer, intent(in) :: hdferr
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: p, call_name
-      type(error_type), allocatable, intent(out) :: error
-
-      if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, call_name//' failed')
-   end subroutine check_lt
-
-   !> Open the object at `path`; delete attribute `name` if present; create it anew.
-   subroutine new_attribute(file, path, name, ftype, dims, ids, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path, name
-      integer(hid_t), intent(in) :: ftype
-      integer(hsize_t), intent(in) :: dims(:)
-      type(h5_ids), intent(inout) :: ids
-      type(error_type), allocatable, intent(out) :: error
-      character(len=:), allocatable :: p, what
-      logical :: there
-      integer :: hdferr
-
-      what = "attribute '"//name//"' of"
-      call open_carrier(file, path, .true., 'write', what, ids, p, error)
-      if (allocated(error)) return
-      call h5aexists_f(ids%obj, name, there, hdferr)
-      if (hdferr /= 0) then
-         call fail(error, file, 'write', what, p, 'h5aexists_f failed')
-         return
-      end if
-      if (there) then
-         call h5adelete_f(ids%obj, name, hdferr)
-         if (hdferr /= 0) then
-            call fail(error, file, 'write', what, p, 'h5adelete_f failed (replacing it)')
-            return
-         end if
-      end if
-      call new_space(dims, ids, file, 'write', what, p, error)
-      if (allocated(error)) return
-      call h5acreate_f(ids%obj, name, ftype, ids%space, ids%attr, hdferr)
-      if (hdferr /= 0) then
-         ids%attr = -1_hid_t
-         call fail(error, file, 'write', what, p, 'h5acreate_f failed')
-      end if
-   end subroutine new_attribute
-
-   !> Scalar (empty `dims`) or simple dataspace.
-   subroutine new_space(dims, ids, file, action, what, path, error)
-      integer(hsize_t), intent(in) :: dims(:)
-      type(h5_ids), intent(inout) :: ids
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: action, what, path
-      type(error_type), allocatable, intent(out) :: error
-      integer :: hdferr
-
-      if (size(dims) == 0) then
-         call h5screate_f(H5S_SCALAR_F, ids%space, hdferr)
-         if (hdferr /= 0) call fail(error, file, action, what, path, 'h5screate_f failed')
-      else
-         call h5screate_simple_f(size(dims), dims, ids%space, hdferr)
-         if (hdferr /= 0) call fail(error, file, action, what, path, 'h5screate_simple_f failed')
-      end if
-      if (hdferr /= 0) ids%space = -1_hid_t
-   end subroutine new_space
-
-   !> Open the group or dataset at `path` that carries attributes.
-   subroutine open_carrier(file, path, write, action, what, ids, p, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path
-      logical, intent(in) :: write
-      character(len=*), intent(in) :: action, what
-      type(h5_ids), intent(inout) :: ids
-      character(len=:), allocatable, intent(out) :: p
-      type(error_type), allocatable, intent(out) :: error
-      logical :: there
-      integer :: hdferr
-
-      call check_path(file, path, write, action, p, error)
-      if (allocated(error)) return
-      call path_exists(file, p, there, error)
-      if (allocated(error)) return
-      if (.not. there) then
-         call fail(error, file, action, what, p, 'no such object')
-         return
-      end if
-      call h5oopen_f(file%id, p, ids%obj, hdferr)
-      if (hdferr /= 0) then
-         ids%obj = -1_hid_t
-         call fail(error, file, action, what, p, 'h5oopen_f failed')
-      end if
-   end subroutine open_carrier
-
-   !> New variable-length UTF-8 C string datatype.
-   subroutine string_type(type_id, hdferr)
-      integer(hid_t), intent(out) :: type_id
-      integer, intent(out) :: hdferr
-      integer :: ignore
-
-      call h5tcopy_f(H5T_C_S1, type_id, hdferr)
-      if (hdferr /= 0) then
-         type_id = -1_hid_t
-         return
-      end if
-      call h5tset_size_f(type_id, variable_size, hdferr)
-      if (hdferr == 0) call h5tset_cset_f(type_id, H5T_CSET_UTF8_F, hdferr)
-      if (hdferr /= 0) then
-         call h5tclose_f(type_id, ignore)
-         type_id = -1_hid_t
-      end if
-   end subroutine string_type
-
-   !> NUL-terminated copies of `values(i)(1:lengths(i))` in `chars`, addressed by `ptrs`.
-   subroutine pack_strings(lengths, values, chars, ptrs)
-      integer, intent(in) :: lengths(:)
-      character(len=*), intent(in) :: values(:)
-      character(kind=c_char), allocatable, target, intent(out) :: chars(:)
-      type(c_ptr), allocatable, intent(out) :: ptrs(:)
-      integer :: i, j, pos
-
-      allocate (chars(sum(lengths) + size(lengths)), ptrs(size(values)))
-      pos = 1
-      do i = 1, size(values)
-         do j = 1, lengths(i)
-            chars(pos + j - 1) = values(i) (j:j)
-         end do
-         chars(pos + lengths(i)) = c_null_char
-         ptrs(i) = c_loc(chars(pos))
-         pos = pos + lengths(i) + 1
-      end do
-   end subroutine pack_strings
-
-   !> Close every identifier held; report the first failure unless an error is already set.
-   subroutine release(ids, file, action, what, path, error)
-      type(h5_ids), intent(inout) :: ids
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: action, what, path
-      type(error_type), allocatable, intent(inout) :: error
-      character(len=:), allocatable :: failed
-      integer :: hdferr
-
-      if (ids%attr >= 0) then
-         call h5aclose_f(ids%attr, hdferr)
-         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5aclose_f'
-      end if
-      if (ids%obj >= 0) then
-         call h5oclose_f(ids%obj, hdferr)
-         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5oclose_f'
-      end if
-      if (ids%space >= 0) then
-         call h5sclose_f(ids%space, hdferr)
-         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5sclose_f'
-      end if
-      if (ids%ftype >= 0) then
-         call h5tclose_f(ids%ftype, hdferr)
-         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5tclose_f'
-      end if
-      if (ids%mtype >= 0) then
-         call h5tclose_f(ids%mtype, hdferr)
-         if (hdferr /= 0 .and. .not. allocated(failed)) failed = 'h5tclose_f'
-      end if
-      ids = h5_ids()
-      if (allocated(failed) .and. .not. allocated(error)) then
-         call fail(error, file, action, what, path, failed//' failed')
-      end if
-   end subroutine release
-
-   !> Error "HDF5 file '<file>': cannot <action> <what> '<path>': <detail>".
-   subroutine fail(error, file, action, what, path, detail)
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: action, what, path, detail
-
-      call fatal_error(error, "HDF5 file '"//h5_file_name(file)//"': cannot "//action//" "//what// &
-                       " '"//path//"': "//detail//system_reason())
-   end subroutine fail
-
-   !> ': <strerror>' for any errno left by a failed create (errno is cleared before it).
-   function create_reason() result(text)
-      character(len=:), allocatable :: text
-
-      text = ''
-      if (posix_errno() /= 0) text = ': '//posix_strerror(posix_errno())
-   end function create_reason
-
-   !> ': <strerror>' when errno holds a storage or permission failure, '' otherwise: HDF5
-   !> reports a failed write only as a failed call, the system's reason is in errno.
-   function system_reason() result(text)
-      character(len=:), allocatable :: text
-
-      text = posix_storage_error()
-      if (len(text) > 0) text = ': '//text
-   end function system_reason
 
    !> File name of a handle, for messages ('(none)' before the first open).
    pure function h5_file_name(file) result(name)
