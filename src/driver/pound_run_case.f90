@@ -25,6 +25,7 @@ module pound_run_case
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
    use pound_sweep, only: sweep_result, run_sweep
+   use pound_sweep_joints, only: joint_sweep, find_joints, run_joint_sweeps, joint_thresholds
    use pound_separation, only: separation_t, pair_separation
    use pound_plausibility, only: period_warning, unit_suspects
    implicit none
@@ -77,10 +78,14 @@ module pound_run_case
       type(building_influence), allocatable :: influence(:)
       !> Gap study.
       type(sweep_result) :: sweep
+      !> The independent joints (`pound_sweep_joints`; allocated with the sweep) and, where
+      !> there are several, each one's own sweep (its pairs swept, the others at their deck gaps).
+      type(joint_sweep), allocatable :: joints(:)
       !> Separation rules per contact pair (the deck's `&contact` pairs in order), from the
       !> uncoupled peaks (`pair_separation`; allocated when both analyses ran). With a sweep, the
       !> no-contact gap is its probe's largest closing displacement of each joint and the
-      !> time-history gap its safe gap when found; without, both are n/a.
+      !> time-history gap its safe gap when found (with several independent joints, that of the
+      !> pair's joint's own sweep); without, both are n/a.
       type(separation_t), allocatable :: separation(:)
       !> Warnings of the deck (plausibility), of the models (period against the code estimate),
       !> of the uncoupled run, the coupled run and the sweep, in that order, one line each (size
@@ -148,7 +153,7 @@ contains
       type(case_options), intent(in), optional :: options
       type(ground_motion_t) :: deck_gm
       type(contact_pair), allocatable :: pairs(:)
-      character(len=:), allocatable :: prefix, text
+      character(len=:), allocatable :: prefix, text, joint_warnings(:)
       real(dp), allocatable :: ag(:)
       logical :: coupled_only
       integer :: n_steps, n_out, ib, stat
@@ -238,6 +243,8 @@ contains
                   return
                end if
                res%has_sweep = .true.
+               call joint_sweeps()
+               if (allocated(error)) return
             end if
          end if
       end if
@@ -258,6 +265,7 @@ contains
       if (res%has_uncoupled) call collect(res%unc%warnings)
       if (res%has_coupled) call collect(res%cpl%warnings)
       if (res%has_sweep) call collect(res%sweep%warnings)
+      if (allocated(joint_warnings)) call collect(joint_warnings)
 
    contains
 
@@ -265,6 +273,22 @@ contains
          has_ground = .false.
          if (present(options)) has_ground = allocated(options%ground)
       end function has_ground
+
+      !> The independent joints and, where there are several, each one's sweep (its warnings
+      !> into `joint_warnings`).
+      subroutine joint_sweeps()
+         res%joints = find_joints(pairs, structure_names(res%models))
+         if (size(res%joints) < 2) return
+         allocate (character(len=1) :: joint_warnings(0))
+         if (has_ground()) then
+            call run_joint_sweeps(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
+                                  joint_warnings, error, options%ground)
+         else
+            call run_joint_sweeps(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
+                                  joint_warnings, error, deck_gm)
+         end if
+         if (allocated(error)) error%message = prefix//error%message
+      end subroutine joint_sweeps
 
       logical function has_uncoupled()
          has_uncoupled = .false.
@@ -291,8 +315,12 @@ contains
             end associate
          end do
          if (res%has_sweep) then
-            res%separation%time_history_valid = res%sweep%found
-            if (res%sweep%found) res%separation%time_history = res%sweep%safe_gap
+            if (size(res%joints) > 1) then
+               call joint_thresholds(res%joints, np, res%separation%time_history, res%separation%time_history_valid)
+            else
+               res%separation%time_history_valid = res%sweep%found
+               if (res%sweep%found) res%separation%time_history = res%sweep%safe_gap
+            end if
             ! The sweep's probe (the uncoupled motion run as a coupled one no joint closes) gives
             ! each joint's largest closing displacement: the no-contact gap (0 if it never closes).
             if (allocated(res%sweep%closing_max)) then

@@ -90,18 +90,25 @@ contains
    end subroutine write_separation_legend
 
    !> The listing section of a run's separation rules: one table row per pair.
-   subroutine write_run_separation(u, labels, sep)
+   subroutine write_run_separation(u, labels, sep, per_joint)
       !> Open listing unit.
       integer, intent(in) :: u
       !> Pair labels (`pair_labels`).
       character(len=*), intent(in) :: labels(:)
       !> The rules per pair.
       type(separation_t), intent(in) :: sep(:)
-      integer :: ip
+      !> Whether the time-history gaps are the joints' own thresholds (several independent
+      !> joints, `pound_sweep_joints`; default: the common sweep's, one gap for every pair).
+      logical, intent(in), optional :: per_joint
+      integer :: ip, ios
 
       if (size(sep) == 0) return
       call write_section(u, 'Separation rules per contact pair [mm]')
       call write_separation_legend(u, .false.)
+      if (present(per_joint)) then
+         if (per_joint) write (u, '(a)', iostat=ios) '  time-hist. per joint: the threshold of the pair''s '// &
+            'joint''s own sweep (its pairs at the gaps, the other pairs at their deck gaps; Gap study per joint).'
+      end if
       do ip = 1, size(sep)
          call write_separation_head(u, trim(labels(ip)), 'run', 3)
          call write_separation_rows(u, 'run', sep(ip), 3)
