@@ -412,6 +412,9 @@ contains
                write (line, '(a,f10.4,a)') 'smallest gap meeting the target: ', 1000.0_dp*sweep%safe_gap, ' mm'
                if (size(deck%motions) > 1) then
                   text = text//'  '//motion_heading(suite)//', '//trim(line)//' (this motion alone)'//new_line('a')
+               else if (joint_count() > 1) then
+                  text = text//'  '//trim(line)//' (every joint at this gap; each joint''s own: the pair lines)'// &
+                         new_line('a')
                else
                   text = text//'  '//trim(line)//new_line('a')
                end if
