@@ -299,6 +299,9 @@ contains
       !> facing floors.
       subroutine separations()
          integer :: ic, k, np
+         ! Contiguous copies for `joint_thresholds` (no array temporary at the call).
+         real(dp), allocatable :: th_gap(:)
+         logical, allocatable :: th_valid(:)
 
          np = 0
          allocate (res%separation(sum([(size(deck%contacts(ic)%floor_left), ic=1, size(deck%contacts))])))
@@ -315,8 +318,11 @@ contains
             end associate
          end do
          if (res%has_sweep) then
+            allocate (th_gap(np), th_valid(np))
             if (size(res%joints) > 1) then
-               call joint_thresholds(res%joints, np, res%separation%time_history, res%separation%time_history_valid)
+               call joint_thresholds(res%joints, np, th_gap, th_valid)
+               res%separation%time_history = th_gap
+               res%separation%time_history_valid = th_valid
             else
                res%separation%time_history_valid = res%sweep%found
                if (res%sweep%found) res%separation%time_history = res%sweep%safe_gap
