@@ -39,7 +39,9 @@ QUANTITY_LABEL = {
     "v": ("floor velocity v", "floor"),
     "a_abs": ("floor absolute acceleration", "floor"),
 }
-G = 9.80665  # m/s^2
+# The acceleration of gravity (m/s^2) of files that predate the root attribute `g` (pound has
+# always used 9.81); a file that has the attribute gives its own (Results.g).
+G_DEFAULT = 9.81
 
 # Black-and-white friendly styles: every series differs in line style and marker, colour is extra.
 COLOURS = ("black", "#0072B2", "#D55E00", "#009E73", "#CC79A7", "#E69F00")
@@ -64,6 +66,8 @@ class Results:
         self.path = ""
         self.title = ""
         self.dt = None
+        self.g = G_DEFAULT             # acceleration of gravity (m/s^2), root attribute g
+        self.units = ""              # the file's units, root attribute units
         self.buildings = []          # names, left to right when the deck tells
         self.model = {}              # name -> dict of arrays
         self.analyses = {}           # 'uncoupled'/'coupled' -> {'time', name -> {q: hist}, 'peak'}
@@ -184,6 +188,11 @@ def read_results(path):
                 (answer if answer else "the suite's answer: the suite plots") + ")"
         if "dt" in f.attrs:
             r.dt = float(np.asarray(f.attrs["dt"]).ravel()[0])
+        if "g" in f.attrs:
+            r.g = float(np.asarray(f.attrs["g"]).ravel()[0])
+            if not (np.isfinite(r.g) and r.g > 0.0):
+                raise PlotError(f"{path}: root attribute g = {r.g} is not a positive acceleration")
+        r.units = _text(f.attrs.get("units", "")).strip()
         model = need("/model")
         names = list(model.keys())
         if not names:
@@ -205,6 +214,7 @@ def read_results(path):
         if r.ground["time"].shape != r.ground["acceleration"].shape:
             raise PlotError(f"{path}: /ground/time and /ground/acceleration differ in length")
         r.ground["description"] = _text(f["/ground"].attrs.get("description", "")).strip()
+        r.ground["units"] = _text(f["/ground/acceleration"].attrs.get("units", "m/s^2")).strip() or "m/s^2"
         need("/uncoupled/time")
         for an in ("uncoupled", "coupled"):
             if an not in f:
@@ -649,17 +659,19 @@ def plot_ground(plt, r, args, written, notes):
     import numpy as np
 
     t, ag = r.ground["time"], r.ground["acceleration"]
+    g = r.g                                   # m/s^2, from the file
+    unit = r.ground.get("units", "m/s^2").replace("^2", "²")
     fig, ax = plt.subplots(figsize=(7.0, 2.9))
     ax.plot(t, ag, color="black", linestyle="-", label="ground acceleration a_g")
     if len(ag):
         i = int(np.argmax(np.abs(ag)))
         ax.plot([t[i]], [ag[i]], linestyle="none", marker="o", markerfacecolor="white", color="black",
-                label=f"PGA {abs(ag[i]):.4g} m/s² = {abs(ag[i]) / G:.3g} g at {t[i]:.3f} s")
+                label=f"PGA {abs(ag[i]):.4g} {unit} = {abs(ag[i]) / g:.3g} g at {t[i]:.3f} s")
     ax.axhline(0.0, color="0.5", linewidth=0.6)
     ax.set_xlabel("time t [s]")
-    ax.set_ylabel("a_g [m/s²]")
+    ax.set_ylabel(f"a_g [{unit}]")
     ax.set_xlim(t[0], t[-1]) if len(t) > 1 else None
-    sec = ax.secondary_yaxis("right", functions=(lambda a: a / G, lambda x: x * G))
+    sec = ax.secondary_yaxis("right", functions=(lambda a: a / g, lambda x: x * g))
     sec.set_ylabel("a_g [g]")
     ax.legend(loc="upper right")
     desc = r.ground.get("description", "")

@@ -1,7 +1,9 @@
 # The library's sources, by step (paths relative to src/). The program is src/main/pound.f90.
 set(POUND_SOURCES
-  # core: kinds, errors, strings, whole-file reading, version, POSIX calls, the progress line, sorting
-  core/pound_kinds.f90 core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
+  # core: kinds, physical constants, the response quantities, the analysis plan, the sweep, code-factor and contact settings, errors, strings, whole-file reading, version, POSIX calls, the progress line, sorting
+  core/pound_kinds.f90 core/pound_constants.f90 core/pound_quantities.f90 core/pound_analysis_plan.f90
+  core/pound_sweep_settings.f90 core/pound_code_factors.f90 core/pound_contact_settings.f90
+  core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
   core/pound_version.f90 core/pound_posix.f90 core/pound_progress.f90
   core/pound_sort.f90
   # core: pound's own pseudo-random numbers
@@ -48,19 +50,22 @@ set(POUND_SOURCES
   contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_influence.f90
-  analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90 analysis/pound_memory.f90
+  analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90
   # analyses: the uncoupled runs of several motions at once
   analysis/pound_analysis_batch.f90
   # analyses: response spectra and scaling, code separation rules
   analysis/pound_spectrum.f90 analysis/pound_separation.f90
   # driver: one case from a validated configuration to all results (program, tests, suites)
   driver/pound_run_case.f90
+  # driver: the memory a deck's run needs (estimated from the deck) and what the machine gives
+  driver/pound_memory.f90
   # driver: a suite of ground motions (scaling, one case per motion, suite statistics, rules)
   driver/pound_suite_columns.f90 driver/pound_suite_outcome.f90 driver/pound_suite_context.f90
   driver/pound_suite_motions.f90 driver/pound_suite_statistics.f90 driver/pound_suite_refine.f90
   driver/pound_suite.f90
-  # outputs: files, HDF5 layer, results file, listing
-  output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_listing.f90
+  # outputs: files, HDF5 layer, results file, the text writer (unit + first failure), listing
+  output/pound_files.f90 output/pound_h5.f90 output/pound_results_h5.f90 output/pound_text_writer.f90
+  output/pound_listing.f90
   # outputs: the separation rules' listing table and datasets (a run and a suite)
   output/pound_separation_output.f90 output/pound_sweep_joints_output.f90
   # outputs: the suite's listing sections and /suite

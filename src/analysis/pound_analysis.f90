@@ -24,7 +24,7 @@ module pound_analysis
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str, add_warning, mm_text
-   use pound_config, only: analysis_config
+   use pound_analysis_plan, only: analysis_plan, output_steps, stepping_impact, free_exact, lcp_lemke
    use pound_structure, only: structure_model, building_label => structure_label
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
    use pound_contact_pair, only: end_mass
@@ -45,7 +45,7 @@ module pound_analysis
    implicit none
    private
 
-   public :: analysis_result, run_uncoupled, run_coupled, output_steps, history_sink
+   public :: analysis_result, run_uncoupled, run_coupled, history_sink
    public :: coupled_model, coupled_prepare, coupled_integrate, beyond_closing, probe_gap
    public :: e_input, e_kinetic, e_strain, e_damping, e_contact, e_plastic, n_energy, energy_names
    public :: add_warning, write_warnings, audit_warning_limit, resolved_steps
@@ -151,20 +151,10 @@ module pound_analysis
 
 contains
 
-   !> Number of output samples for n_steps steps stored every `every` steps (t = 0 included).
-   pure integer function output_steps(n_steps, every)
-      !> Number of time steps.
-      integer, intent(in) :: n_steps
-      !> Output interval in steps.
-      integer, intent(in) :: every
-
-      output_steps = n_steps/every + 1
-   end function output_steps
-
    !> Integrate every building without contact: the coupled run with no constraints.
    subroutine run_uncoupled(cfg, models, ag, res, error, sink)
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
@@ -187,7 +177,7 @@ contains
       if (allocated(error)) return
       allocate (st(nb))
       do ib = 1, nb
-         call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error, exact=cfg%free_steps == 'exact')
+         call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error, exact=cfg%free_steps == free_exact)
          if (allocated(error)) return
       end do
       call integrate(cfg, models, ag, st, cs, res, error, sink=sink)
@@ -195,8 +185,8 @@ contains
 
    !> Integrate all buildings together with the unilateral constraints `pairs`.
    subroutine run_coupled(cfg, models, ag, pairs, res, cs, error, ground, sink)
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
@@ -223,8 +213,8 @@ contains
 
    !> Factor every building's Khat and condense the structure onto the constraints.
    subroutine coupled_prepare(cfg, models, ag0, pairs, prep, error)
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t = 0 (m/s^2).
@@ -241,13 +231,13 @@ contains
       call check_ground_samples([ag0], cfg%dt, error)
       if (allocated(error)) return
       do ib = 1, size(models)
-         call newmark_init(prep%st(ib), models(ib), cfg%dt, ag0, error, exact=cfg%free_steps == 'exact')
+         call newmark_init(prep%st(ib), models(ib), cfg%dt, ag0, error, exact=cfg%free_steps == free_exact)
          if (allocated(error)) return
       end do
       call contact_init(prep%cs, pairs, prep%st, models, error)
       if (allocated(error)) return
-      if (cfg%lcp_solver == 'lemke') prep%cs%solver = lcp_solver_lemke
-      if (cfg%stepping /= 'impact' .or. size(pairs) == 0) return
+      if (cfg%lcp_solver == lcp_lemke) prep%cs%solver = lcp_solver_lemke
+      if (cfg%stepping /= stepping_impact .or. size(pairs) == 0) return
       ! Impact-aware substeps: Khat and F factored once more, for dt/m.
       prep%substeps = impact_substeps_of(cfg, models, prep%cs)
       allocate (prep%st_sub(size(models)))
@@ -265,8 +255,8 @@ contains
    !> `substeps_per_half_period` (`substeps_per_half_period_exact` with exact free steps; at
    !> least 2, at most `max_substeps`).
    integer function impact_substeps_of(cfg, models, cs) result(m)
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> The constraints, their DOFs located (`contact_init`).
@@ -283,7 +273,7 @@ contains
          half = min(half, joint_half_period(cs%pair(k), models))
       end do
       per_half = substeps_per_half_period
-      if (cfg%free_steps == 'exact') per_half = substeps_per_half_period_exact
+      if (cfg%free_steps == free_exact) per_half = substeps_per_half_period_exact
       m = max(2, min(max_substeps, ceiling(per_half*cfg%dt/half - 1.0e-9_dp)))
    end function impact_substeps_of
 
@@ -323,8 +313,8 @@ contains
    !> The coupled time integration from a prepared model (left unchanged, so that it can be
    !> reused); `gaps`, when given, replace the gaps of the constraints.
    subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps, ground, sink, track)
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
@@ -402,8 +392,8 @@ contains
    !> audit residual stays bit-identical); with constraints each term is summed over the
    !> buildings first.
    subroutine integrate(cfg, models, ag, st, cs, res, error, sub, sink)
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
@@ -434,7 +424,7 @@ contains
       allocate (view(nb))
       coupled = cs%m > 0
       impact = present(sub)
-      exact = cfg%free_steps == 'exact'
+      exact = cfg%free_steps == free_exact
       plain = .not. (coupled .or. impact .or. exact)
       track = (impact .or. exact) .and. allocated(cs%closing_max)
       newmark_steps = 0
@@ -781,8 +771,8 @@ contains
    pure subroutine start_result(res, cfg, n_steps, n_buildings, error, n_pairs)
       !> The result (set up).
       type(analysis_result), intent(inout) :: res
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> Number of time steps.
       integer, intent(in) :: n_steps
       !> Number of buildings.

@@ -15,7 +15,7 @@ module pound_analysis_batch
    use iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_config, only: analysis_config
+   use pound_analysis_plan, only: analysis_plan, free_newmark
    use pound_structure, only: structure_model, structure_strain_energy
    use pound_ground_motion, only: check_ground_samples
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
@@ -43,13 +43,13 @@ contains
    !> `pound_newmark_step` is straight-line code that the compiler fuses differently), and the
    !> steps are Newmark's (`free_steps = 'newmark'`: the batch has no exact steps).
    pure logical function batch_eligible(cfg, models)
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       integer :: ib
 
-      batch_eligible = size(models) > 0 .and. cfg%free_steps == 'newmark'
+      batch_eligible = size(models) > 0 .and. cfg%free_steps == free_newmark
       do ib = 1, size(models)
          if (models(ib)%kd /= 1 .or. .not. models(ib)%stick .or. models(ib)%n < 2) batch_eligible = .false.
          if (batch_eligible) batch_eligible = all(models(ib)%ground == 1.0_dp)
@@ -58,8 +58,8 @@ contains
 
    !> The uncoupled runs of the motions `ag(:, m)` (m = 1..size(ag, 2)), `batch_lanes` at a time.
    subroutine run_uncoupled_batch(cfg, models, ag, res, ok)
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> The buildings (`batch_eligible`).
       type(structure_model), intent(in) :: models(:)
       !> Ground acceleration of each motion at t_n = n dt, n = 0..n_steps (m/s^2), (0:n_steps, n_motions).
@@ -84,8 +84,8 @@ contains
 
    !> Motions m1..m2 (at most `batch_lanes`) in one batch.
    subroutine run_lanes(cfg, models, ag, m1, m2, res, ok)
-      !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      !> The analysis plan (`&analysis`).
+      type(analysis_plan), intent(in) :: cfg
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Ground acceleration of every motion (0:n_steps, n_motions).

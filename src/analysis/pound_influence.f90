@@ -9,7 +9,7 @@
 !> `max_abs_influence`, or with `max_abs_target`, which adds a frame's column segments.
 module pound_influence
    use pound_kinds, only: dp
-   use pound_config, only: n_history_quantities, n_target_quantities, q_column_shear, q_column_moment
+   use pound_quantities, only: n_history_quantities, n_target_quantities, q_column_shear, q_column_moment
    use pound_analysis, only: analysis_result
    use pound_structure, only: structure_model
    implicit none

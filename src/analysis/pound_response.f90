@@ -1,6 +1,6 @@
 !> Response of one building over an analysis: peaks at every step, histories at output steps.
 !>
-!> Quantities (indices match `history_names` of pound_config): floor displacement `u`,
+!> Quantities (indices match `history_names` of pound_quantities): floor displacement `u`,
 !> floor velocity `v` (relative to the ground), floor absolute acceleration `a_abs`,
 !> storey drift `drift` and storey shear `storey_shear`, both from the model's recovery
 !> rows (a shear building: u_j - u_{j-1} and k_j drift_j). Floor quantities are taken at
@@ -25,7 +25,7 @@ module pound_response
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_config, only: n_history_quantities
+   use pound_quantities, only: n_history_quantities
    use pound_structure, only: structure_model, recover_all, recover_peaks
    implicit none
    private

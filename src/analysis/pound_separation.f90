@@ -35,7 +35,7 @@
 module pound_separation
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_value, ieee_quiet_nan
    use pound_kinds, only: dp
-   use pound_config, only: code_factors, deck_type
+   use pound_code_factors, only: code_factors
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    implicit none
@@ -43,7 +43,7 @@ module pound_separation
 
    public :: separation_abs, separation_srss, separation_ec8, separation_ddc, cqc_correlation
    public :: no_contact_gap, separation_t, separation_rules, code_separation, levels_coincide
-   public :: separation_asce7, separation_en1998, separation_is1893, not_computed, pair_separation
+   public :: separation_asce7, separation_en1998, separation_is1893, not_computed
 
    !> The EC8 reduction factor where floor levels coincide.
    real(dp), parameter, public :: ec8_coincident_factor = 0.7_dp
@@ -249,45 +249,6 @@ contains
          sep%is1893 = not_computed(u1)
       end if
    end function code_separation
-
-   !> The rules of one contact pair of the deck (`code_separation`): building `left` (its
-   !> floor `floor_left`) facing building `right` (its floor `floor_right`), with their factors
-   !> and damping ratios from the deck, the periods t1, t2 (s) and the peaks u1, u2 (m) of
-   !> the facing floors. The floors coincide when their levels above the common base agree
-   !> (`levels_coincide`). A pair with a point between floors (floor 0) has no rule (`computed`
-   !> false).
-   pure function pair_separation(deck, left, right, floor_left, floor_right, u1, u2, t1, t2) result(sep)
-      !> A validated configuration.
-      type(deck_type), intent(in) :: deck
-      !> Buildings on the left and on the right (indices in `deck%buildings`).
-      integer, intent(in) :: left, right
-      !> Facing floors (0: a point between floors).
-      integer, intent(in) :: floor_left, floor_right
-      !> Elastic peak displacements of the facing floors (m).
-      real(dp), intent(in) :: u1, u2
-      !> Fundamental periods of the two buildings (s).
-      real(dp), intent(in) :: t1, t2
-      type(separation_t) :: sep
-      logical :: coincide
-
-      if (floor_left < 1 .or. floor_right < 1) then
-         sep%computed = .false.
-         sep%abs = not_computed(u1)
-         sep%srss = sep%abs
-         sep%ec8 = sep%abs
-         sep%ddc = sep%abs
-         sep%rho = sep%abs
-         sep%asce7 = sep%abs
-         sep%en1998 = sep%abs
-         sep%is1893 = sep%abs
-         return
-      end if
-      associate (b1 => deck%buildings(left), b2 => deck%buildings(right))
-         coincide = levels_coincide(sum(b1%height(1:floor_left)), sum(b2%height(1:floor_right)))
-         sep = code_separation(u1, u2, b1%factors, b2%factors, t1, t2, b1%damping_ratio, b2%damping_ratio, &
-                               coincide)
-      end associate
-   end function pair_separation
 
    !> Exact no-contact gap max_t (u1(t) - u2(t)) (m) of two histories sampled at the same
    !> times, 0 if the joint never closes. Both must have the same size.

@@ -24,7 +24,9 @@ module pound_sweep
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: mm_text, str
-   use pound_config, only: analysis_config, sweep_config, n_target_quantities
+   use pound_sweep_settings, only: sweep_config
+   use pound_quantities, only: n_target_quantities
+   use pound_analysis_plan, only: analysis_plan
    use pound_structure, only: structure_model
    use pound_ground_motion, only: ground_motion_t
    use pound_analysis, only: analysis_result, coupled_model, coupled_prepare, coupled_integrate, &
@@ -87,7 +89,7 @@ module pound_sweep
    !> closing (the probe's column), the first warning (`text_to_column`).
    type, extends(case_work) :: gap_cases
       !> Settings of the sweep's runs (no histories).
-      type(analysis_config) :: cfg
+      type(analysis_plan) :: cfg
       !> The buildings, the ground samples, the prepared coupled model, the uncoupled result,
       !> the ground motion (not allocated: none needed; passed on as an absent argument).
       type(structure_model), pointer :: models(:) => null()
@@ -191,7 +193,7 @@ contains
    !> Run the coupled analysis for every gap of the sweep, against the uncoupled result `unc`.
    subroutine run_sweep(cfg, sweep, models, ag, pairs, unc, res, error, ground)
       !> `&analysis` settings (histories are not stored for the sweep runs).
-      type(analysis_config), intent(in) :: cfg
+      type(analysis_plan), intent(in) :: cfg
       !> `&sweep`.
       type(sweep_config), intent(in) :: sweep
       !> The buildings.
@@ -240,7 +242,7 @@ contains
       !> The cases.
       type(gap_cases), intent(out) :: cases
       !> `&analysis` settings.
-      type(analysis_config), intent(in) :: cfg
+      type(analysis_plan), intent(in) :: cfg
       !> `&sweep`.
       type(sweep_config), intent(in) :: sweep
       !> The buildings (kept by reference).
@@ -258,7 +260,7 @@ contains
 
       cases%cfg = cfg
       cases%cfg%store = .false.
-      cases%cfg%output_every = max(1, nint(cfg%t_end/cfg%dt))
+      cases%cfg%output_every = max(1, cfg%n_steps)
       call coupled_prepare(cases%cfg, models, ag(0), pairs, cases%prep, error)
       if (allocated(error)) return
       cases%models => models

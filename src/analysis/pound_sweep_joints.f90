@@ -21,7 +21,9 @@ module pound_sweep_joints
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str
-   use pound_config, only: analysis_config, sweep_config, deck_type
+   use pound_sweep_settings, only: sweep_config
+   use pound_contact_settings, only: contact_config
+   use pound_analysis_plan, only: analysis_plan
    use pound_structure, only: structure_model
    use pound_ground_motion, only: ground_motion_t
    use pound_analysis, only: analysis_result, add_warning
@@ -118,16 +120,16 @@ contains
 
    !> The number of independent joints of a deck's `&contact` groups (one per unordered pair
    !> of buildings), as `find_joints` finds them.
-   pure integer function deck_joints(deck) result(n)
-      !> A validated configuration.
-      type(deck_type), intent(in) :: deck
+   pure integer function deck_joints(contacts) result(n)
+      !> The deck's validated `&contact` groups.
+      type(contact_config), intent(in) :: contacts(:)
       integer :: i, k
 
       n = 0
-      do i = 1, size(deck%contacts)
-         associate (a => deck%contacts(i))
-            if (any([(same_ends(a%left_index, a%right_index, deck%contacts(k)%left_index, &
-                                 deck%contacts(k)%right_index), k=1, i - 1)])) cycle
+      do i = 1, size(contacts)
+         associate (a => contacts(i))
+            if (any([(same_ends(a%left_index, a%right_index, contacts(k)%left_index, &
+                                 contacts(k)%right_index), k=1, i - 1)])) cycle
             n = n + 1
          end associate
       end do
@@ -162,8 +164,8 @@ contains
    !> common sweep. Warnings (a joint's failed gaps, energy audit; a joint whose every gap
    !> failed) are appended to `warnings`.
    subroutine run_joint_sweeps(cfg, sweep, models, ag, pairs, unc, joints, warnings, error, ground)
-      !> `&analysis` settings (histories are not stored for the sweep runs).
-      type(analysis_config), intent(in) :: cfg
+      !> What `&analysis` asks of the runs (histories are not stored for the sweep runs).
+      type(analysis_plan), intent(in) :: cfg
       !> `&sweep`.
       type(sweep_config), intent(in) :: sweep
       !> The buildings.

@@ -16,7 +16,7 @@ module pound_contact_pair
    use pound_strings, only: str
    use pound_contact_law, only: contact_law, rate_trapezoidal, rate_backward_euler
    use pound_law_registry, only: law_from_config
-   use pound_config, only: contact_config
+   use pound_contact_settings, only: contact_config
    use pound_structure, only: recovery_rows, recover
    implicit none
    private

@@ -9,7 +9,7 @@ module pound_law_bilinear
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_joint_law, only: joint_law, law_text, law_input, add_line
    use pound_contact_law, only: contact_law, compile_envelope
-   use pound_config, only: contact_config
+   use pound_contact_settings, only: contact_config
    use pound_deck_checks, only: site, require_real, check_real, check_plausible, fail
    use pound_law_elastic, only: take_stiffness
    implicit none

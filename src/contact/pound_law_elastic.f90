@@ -6,7 +6,7 @@ module pound_law_elastic
    use pound_envelope_rules, only: check_law_constants
    use pound_joint_law, only: joint_law, law_text, law_input
    use pound_contact_law, only: contact_law
-   use pound_config, only: contact_config
+   use pound_contact_settings, only: contact_config
    use pound_deck_checks, only: site, require_real, check_real
    implicit none
    private

@@ -10,7 +10,7 @@ module pound_law_parabola_cubic
    use pound_envelope_rules, only: check_law_constants
    use pound_joint_law, only: joint_law, law_text, law_input, add_line
    use pound_contact_law, only: contact_law, compile_envelope
-   use pound_config, only: contact_config
+   use pound_contact_settings, only: contact_config
    use pound_deck_checks, only: site, require_real, check_real, check_plausible, fail, is_set, unset_int
    use pound_deck_variables, only: max_segments
    implicit none

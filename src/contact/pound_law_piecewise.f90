@@ -7,7 +7,7 @@ module pound_law_piecewise
    use pound_strings, only: str
    use pound_joint_law, only: joint_law, law_text, law_input, add_line
    use pound_contact_law, only: contact_law, compile_envelope
-   use pound_config, only: contact_config
+   use pound_contact_settings, only: contact_config
    use pound_deck_checks, only: site, check_real, check_plausible, fail, given_count, is_set, values_text
    use pound_deck_variables, only: max_envelope_points
    implicit none

@@ -6,7 +6,7 @@
 !> line in `registered_laws`.
 module pound_law_registry
    use pound_error, only: error_type, fatal_error
-   use pound_config, only: contact_config
+   use pound_contact_settings, only: contact_config
    use pound_contact_law, only: contact_law
    use pound_joint_law, only: law_input
    use pound_deck_checks, only: site

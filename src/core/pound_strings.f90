@@ -1,6 +1,6 @@
 !> Number-to-text conversion for messages and listings.
 module pound_strings
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan, ieee_is_finite
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    implicit none
@@ -306,7 +306,7 @@ contains
       real(dp), intent(in) :: x
       character(len=:), allocatable :: s
 
-      if (ieee_is_nan(x) .or. abs(x) > huge(x)) then
+      if (.not. ieee_is_finite(x)) then
          s = str_real(x)//' mm'
       else
          s = plain_real(1000.0_dp*x)//' mm'

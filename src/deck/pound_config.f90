@@ -6,34 +6,21 @@
 !> Units throughout: kN, m, s, t (tonne).
 module pound_config
    use pound_kinds, only: dp
+   use pound_quantities, only: n_history_quantities, history_names, n_target_quantities, target_names, &
+                               q_column_shear, q_column_moment
+   use pound_sweep_settings, only: sweep_config
+   use pound_code_factors, only: code_factors
+   use pound_contact_settings, only: contact_config
    implicit none
    private
 
    public :: analysis_config, ground_config, building_config, code_factors, contact_config, sweep_config, deck_type
-   public :: n_history_quantities, history_names, g_accel, is_frame, deck_warning_len
-   public :: n_target_quantities, target_names, q_column_shear, q_column_moment
+   public :: is_frame, deck_warning_len
+   ! The quantities (pound_quantities), named here too for the deck's readers.
+   public :: n_history_quantities, history_names, n_target_quantities, target_names, q_column_shear, q_column_moment
 
-   !> Standard gravity used to turn floor loads into masses (m/s^2).
-   real(dp), parameter :: g_accel = 9.81_dp
    !> Characters kept of a deck warning (`deck_type%warnings`).
    integer, parameter :: deck_warning_len = 1024
-
-   !> Number of history quantities that can be stored.
-   integer, parameter :: n_history_quantities = 5
-   !> Names of the history quantities, as written in `&analysis history=` and in HDF5.
-   character(len=*), parameter :: history_names(n_history_quantities) = &
-      [character(len=12) :: 'u', 'v', 'a_abs', 'drift', 'storey_shear']
-
-   !> Number of quantities a sweep's target can apply to: the history quantities, then the
-   !> column-segment quantities of frames (`q_column_shear`, `q_column_moment`).
-   integer, parameter :: n_target_quantities = n_history_quantities + 2
-   !> Index of the largest |lambda| of a column segment's shear among the target quantities.
-   integer, parameter :: q_column_shear = n_history_quantities + 1
-   !> Index of the largest |lambda| of a column segment's end moments (bottom and top).
-   integer, parameter :: q_column_moment = n_history_quantities + 2
-   !> Names of the target quantities, as written in `&sweep target_quantities` and in HDF5.
-   character(len=*), parameter :: target_names(n_target_quantities) = &
-      [character(len=13) :: history_names, 'column_shear', 'column_moment']
 
    !> `&analysis`: title, time stepping and history output.
    type :: analysis_config
@@ -105,20 +92,7 @@ module pound_config
       logical :: histories = .false.
    end type ground_config
 
-   !> `&building`: one shear building (rigid beams, one lateral DOF per floor).
-   !> The design-code factors of one building for the separation rules (pound_separation);
-   !> 0 where the deck does not give them (the rule that needs the factor is then n/a).
-   type :: code_factors
-      !> ASCE 7 deflection amplification factor Cd (`cd`).
-      real(dp) :: cd = 0.0_dp
-      !> ASCE 7 importance factor Ie (`importance`; default 1).
-      real(dp) :: importance = 1.0_dp
-      !> EN 1998-1 behaviour factor q, used as the displacement behaviour factor q_d (`behaviour_factor`).
-      real(dp) :: behaviour_factor = 0.0_dp
-      !> IS 1893 response reduction factor R (`response_reduction`).
-      real(dp) :: response_reduction = 0.0_dp
-   end type code_factors
-
+   !> `&building`: one building (a shear building, or a planar frame with `model = 'frame'`).
    type :: building_config
       !> Name used in messages, listing and HDF5 groups.
       character(len=:), allocatable :: name
@@ -181,61 +155,6 @@ module pound_config
       !> `response_reduction`).
       type(code_factors) :: factors
    end type building_config
-
-   !> `&contact`: unilateral constraints between facing floors of two buildings.
-   !>
-   !> Pair k joins floor `floor_left(k)` of building `left` with floor `floor_right(k)` of
-   !> building `right`; a displacement of `left` towards `right` closes the gap. Pairs given
-   !> by `elevations` join the two facing column lines at elevation `elevation(k)`: the floor
-   !> there, or 0 for a point between floors (a column node of a frame).
-   type :: contact_config
-      !> Names of the building on the left and on the right.
-      character(len=:), allocatable :: left, right
-      !> Their indices in `deck%buildings`.
-      integer :: left_index = 0, right_index = 0
-      !> Facing floors, one entry per pair (0: a point between floors, see `elevation`).
-      integer, allocatable :: floor_left(:), floor_right(:)
-      !> Elevation of each pair above the common base (m) when the deck gives `elevations`;
-      !> unallocated when the pairs are given by floor.
-      real(dp), allocatable :: elevation(:)
-      !> Initial gap of each pair (m).
-      real(dp), allocatable :: gap(:)
-      !> Constraint law: 'elastic', 'elastic_plastic', 'bilinear', 'piecewise' or 'parabola_cubic'.
-      character(len=:), allocatable :: law
-      !> Joint (initial) stiffness k0 (kN/m) and dashpot c (kN s/m).
-      real(dp) :: stiffness = 0.0_dp, dashpot = 0.0_dp
-      !> Coefficient of restitution the dashpot is calibrated to (0 < e < 1, elastic law
-      !> only); 0: none, the dashpot is `dashpot`.
-      real(dp) :: restitution = 0.0_dp
-      !> Dashpot rate rule: 'backward_euler' or 'trapezoidal'.
-      character(len=:), allocatable :: dashpot_rate
-      !> Yield force (kN) and second slope (kN/m) of `elastic_plastic` and `bilinear`.
-      real(dp) :: yield_force = 0.0_dp, second_slope = 0.0_dp
-      !> Envelope points of `piecewise`: penetrations (m) and forces (kN).
-      real(dp), allocatable :: envelope_d(:), envelope_r(:)
-      !> `parabola_cubic`: peak force rB (kN), peak and fracture penetrations dB, dF (m),
-      !> chords per curved branch.
-      real(dp) :: peak_force = 0.0_dp, peak_penetration = 0.0_dp, fracture_penetration = 0.0_dp
-      integer :: n_segments = 8
-   end type contact_config
-
-   !> `&sweep`: the coupled analysis repeated for a range of seismic-joint gaps.
-   type :: sweep_config
-      !> Whether the deck asks for a sweep.
-      logical :: active = .false.
-      !> First and last gap (m), applied to every contact pair.
-      real(dp) :: gap_from = 0.0_dp, gap_to = 0.0_dp
-      !> Number of gaps, evenly spaced from gap_from to gap_to.
-      integer :: n_gaps = 0
-      !> Target for the largest |lambda| (%); negative when none is given.
-      real(dp) :: target = -1.0_dp
-      !> Quantities the target applies to (same order as `target_names`: the history quantities,
-      !> then the frames' column-segment shear and moment, off unless the deck names them).
-      logical :: target_quantities(n_target_quantities) = &
-         [spread(.true., 1, n_history_quantities), .false., .false.]
-      !> Tolerance (m) of the bisection refinement of a suite's threshold gaps (pound_suite).
-      real(dp) :: refine_tolerance = 1.0e-5_dp
-   end type sweep_config
 
    !> A whole, validated deck.
    type :: deck_type

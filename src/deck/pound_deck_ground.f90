@@ -1,7 +1,8 @@
 !> Reader of `&ground`: a pulse, a record file resolved relative to the deck, or a synthetic
 !> motion (pound_synthetic_motion), each with a name and a scaling for a suite.
 module pound_deck_ground
-   use pound_config, only: ground_config, g_accel, deck_warning_len
+   use pound_config, only: ground_config, deck_warning_len
+   use pound_constants, only: g_accel
    use pound_deck_checks, only: check_real, fail, is_set, read_failed, require_real, site, site_of, &
                                 unset_int, unset_real, warn
    use pound_deck_lexer, only: group_ref, group_text, lower

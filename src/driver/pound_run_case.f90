@@ -15,23 +15,26 @@ module pound_run_case
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_config, only: deck_type, ground_config
+   use pound_config, only: deck_type, ground_config, analysis_config
+   use pound_analysis_plan, only: analysis_plan, steps_of, stepping_uniform, stepping_impact, free_newmark, &
+                                  free_exact, lcp_auto, lcp_lemke
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_building, only: building_model, build_building
    use pound_structure, only: structure_model, structure_names
-   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, output_steps, add_warning, history_sink, &
+   use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, add_warning, history_sink, &
                              analysis_copy
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
    use pound_sweep, only: sweep_result, run_sweep
    use pound_sweep_joints, only: joint_sweep, find_joints, run_joint_sweeps, joint_thresholds
-   use pound_separation, only: separation_t, pair_separation
+   use pound_separation, only: separation_t, code_separation, levels_coincide, not_computed
    use pound_plausibility, only: period_warning, unit_suspects
    implicit none
    private
 
    public :: case_options, case_result, run_case, deck_ground_motion, configured_motion, label_prefix
+   public :: analysis_plan_of, pair_separation
 
    !> What distinguishes one case of a configuration from another; every component is
    !> optional (the defaults run the configuration as the deck states it).
@@ -97,6 +100,26 @@ module pound_run_case
 
 contains
 
+   !> The analysis plan of `&analysis`: the number of steps, the output and the stepping,
+   !> free-step and LCP policies as enumerations (pound_analysis_plan), decided once here so
+   !> that no kernel reads the configuration.
+   pure function analysis_plan_of(cfg) result(plan)
+      !> `&analysis`, validated (dt > 0).
+      type(analysis_config), intent(in) :: cfg
+      type(analysis_plan) :: plan
+
+      plan%dt = cfg%dt
+      plan%t_end = cfg%t_end
+      if (cfg%dt > 0.0_dp) plan%n_steps = steps_of(cfg%t_end, cfg%dt)
+      plan%output_every = cfg%output_every
+      plan%store = cfg%store
+      plan%node_histories = cfg%node_histories
+      plan%stepping = merge(stepping_impact, stepping_uniform, cfg%stepping == 'impact')
+      plan%impact_substeps = cfg%impact_substeps
+      plan%free_steps = merge(free_exact, free_newmark, cfg%free_steps == 'exact')
+      plan%lcp_solver = merge(lcp_lemke, lcp_auto, cfg%lcp_solver == 'lemke')
+   end function analysis_plan_of
+
    !> The ground motion the configuration `&ground` describes: a pulse, or a record read
    !> whole from its file (its memory is proportional to the file).
    subroutine deck_ground_motion(deck, gm, error)
@@ -153,6 +176,7 @@ contains
       type(case_options), intent(in), optional :: options
       type(ground_motion_t) :: deck_gm
       type(contact_pair), allocatable :: pairs(:)
+      type(analysis_plan) :: plan
       character(len=:), allocatable :: prefix, text, joint_warnings(:)
       real(dp), allocatable :: ag(:)
       logical :: coupled_only
@@ -170,8 +194,9 @@ contains
       end if
 
       ! Ground motion, sampled at every step and at the output steps.
-      n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
-      n_out = output_steps(n_steps, deck%analysis%output_every)
+      plan = analysis_plan_of(deck%analysis)
+      n_steps = plan%n_steps
+      n_out = plan%outputs()
       allocate (ag(0:n_steps), res%ag_out(n_out), stat=stat)
       if (stat /= 0) then
          call fatal_error(error, prefix//'&analysis: not enough memory for the ground motion at '// &
@@ -205,7 +230,7 @@ contains
          if (has_uncoupled()) then
             call analysis_copy(options%unc, res%unc)
          else
-            call run_uncoupled(deck%analysis, res%models, ag, res%unc, error, sink)
+            call run_uncoupled(plan, res%models, ag, res%unc, error, sink)
             if (allocated(error)) return
          end if
          res%has_uncoupled = .true.
@@ -220,9 +245,9 @@ contains
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
          if (has_ground()) then
-            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, options%ground, sink)
+            call run_coupled(plan, res%models, ag, pairs, res%cpl, res%cs, error, options%ground, sink)
          else
-            call run_coupled(deck%analysis, res%models, ag, pairs, res%cpl, res%cs, error, deck_gm, sink)
+            call run_coupled(plan, res%models, ag, pairs, res%cpl, res%cs, error, deck_gm, sink)
          end if
          if (allocated(error)) then
             error%message = prefix//error%message
@@ -233,10 +258,10 @@ contains
             res%influence = influence_of(res%unc, res%cpl)
             if (deck%sweep%active) then
                if (has_ground()) then
-                  call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, &
+                  call run_sweep(plan, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, &
                                  options%ground)
                else
-                  call run_sweep(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, deck_gm)
+                  call run_sweep(plan, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, deck_gm)
                end if
                if (allocated(error)) then
                   error%message = prefix//error%message
@@ -281,10 +306,10 @@ contains
          if (size(res%joints) < 2) return
          allocate (character(len=1) :: joint_warnings(0))
          if (has_ground()) then
-            call run_joint_sweeps(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
+            call run_joint_sweeps(plan, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
                                   joint_warnings, error, options%ground)
          else
-            call run_joint_sweeps(deck%analysis, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
+            call run_joint_sweeps(plan, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
                                   joint_warnings, error, deck_gm)
          end if
          if (allocated(error)) error%message = prefix//error%message
@@ -357,5 +382,44 @@ contains
       end subroutine collect
 
    end subroutine run_case
+
+   !> The rules of one contact pair of the deck (`code_separation`): building `left` (its
+   !> floor `floor_left`) facing building `right` (its floor `floor_right`), with their factors
+   !> and damping ratios from the deck, the periods t1, t2 (s) and the peaks u1, u2 (m) of
+   !> the facing floors. The floors coincide when their levels above the common base agree
+   !> (`levels_coincide`). A pair with a point between floors (floor 0) has no rule (`computed`
+   !> false).
+   pure function pair_separation(deck, left, right, floor_left, floor_right, u1, u2, t1, t2) result(sep)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Buildings on the left and on the right (indices in `deck%buildings`).
+      integer, intent(in) :: left, right
+      !> Facing floors (0: a point between floors).
+      integer, intent(in) :: floor_left, floor_right
+      !> Elastic peak displacements of the facing floors (m).
+      real(dp), intent(in) :: u1, u2
+      !> Fundamental periods of the two buildings (s).
+      real(dp), intent(in) :: t1, t2
+      type(separation_t) :: sep
+      logical :: coincide
+
+      if (floor_left < 1 .or. floor_right < 1) then
+         sep%computed = .false.
+         sep%abs = not_computed(u1)
+         sep%srss = sep%abs
+         sep%ec8 = sep%abs
+         sep%ddc = sep%abs
+         sep%rho = sep%abs
+         sep%asce7 = sep%abs
+         sep%en1998 = sep%abs
+         sep%is1893 = sep%abs
+         return
+      end if
+      associate (b1 => deck%buildings(left), b2 => deck%buildings(right))
+         coincide = levels_coincide(sum(b1%height(1:floor_left)), sum(b2%height(1:floor_right)))
+         sep = code_separation(u1, u2, b1%factors, b2%factors, t1, t2, b1%damping_ratio, b2%damping_ratio, &
+                               coincide)
+      end associate
+   end function pair_separation
 
 end module pound_run_case

@@ -25,7 +25,8 @@ module pound_suite
    use pound_building, only: building_model, build_building
    use pound_spectrum, only: response_spectrum, period_grid, peak_ground_acceleration
    use pound_separation, only: separation_t, no_contact_gap
-   use pound_run_case, only: case_options, case_result, run_case, label_prefix
+   use pound_run_case, only: case_options, case_result, run_case, label_prefix, analysis_plan_of
+   use pound_analysis_plan, only: steps_of, output_steps
    use pound_analysis, only: analysis_result, n_energy, analysis_copy, add_warning
    use pound_contact, only: contact_pair, pairs_from_config
    use pound_sweep, only: sweep_result, gap_cases, gap_cases_init, gap_cases_probe, gap_cases_set_probe, &
@@ -152,8 +153,8 @@ contains
 
       allocate (batched(size(ms)), ok(size(ms)))
       ok = .false.
-      if (size(ms) < batch_min .or. .not. batch_eligible(ctx%deck%analysis, ctx%models)) return
-      n_steps = nint(ctx%deck%analysis%t_end/ctx%deck%analysis%dt)
+      if (size(ms) < batch_min .or. .not. batch_eligible(analysis_plan_of(ctx%deck%analysis), ctx%models)) return
+      n_steps = steps_of(ctx%deck%analysis%t_end, ctx%deck%analysis%dt)
       allocate (agb(0:n_steps, size(ms)))
       do j = 1, size(ms)
          call suite_motion_samples(ctx%deck, ms(j), ctx%models, gm, factor, agb(:, j), error)
@@ -162,7 +163,7 @@ contains
             return
          end if
       end do
-      call run_uncoupled_batch(ctx%deck%analysis, ctx%models, agb, batched, ok)
+      call run_uncoupled_batch(analysis_plan_of(ctx%deck%analysis), ctx%models, agb, batched, ok)
    end subroutine batch_uncoupled
 
    !> Motion k of the suite: scaled, its spectra, run (`run_case`) into `res`, and what the
@@ -194,7 +195,7 @@ contains
 
       call outcome_init(ctx%layout, o)
       dt = ctx%deck%analysis%dt
-      n_steps = nint(ctx%deck%analysis%t_end/dt)
+      n_steps = steps_of(ctx%deck%analysis%t_end, dt)
       if (allocated(ctx%label)) options%label = ctx%label
       allocate (options%ground, ag(0:n_steps))
       call suite_motion_samples(ctx%deck, k, ctx%models, options%ground, o%scale_factor, ag, error)
@@ -297,7 +298,8 @@ contains
       o%has_probe = .false.
       pairs = pairs_from_config(ctx%deck%contacts, structure_names(res%models), error)
       if (allocated(error)) return
-      call gap_cases_init(cases, ctx%deck%analysis, ctx%deck%sweep, res%models, ag, pairs, res%unc, error, ground)
+      call gap_cases_init(cases, analysis_plan_of(ctx%deck%analysis), ctx%deck%sweep, res%models, ag, pairs, res%unc, &
+                          error, ground)
       if (allocated(error)) return
       call gap_cases_probe(cases)
       if (.not. allocated(cases%probe)) return
@@ -346,13 +348,13 @@ contains
          work%current = 0
          k = work%motions(j)
          associate (deck => work%ctx%deck)
-            n_steps = nint(deck%analysis%t_end/deck%analysis%dt)
+            n_steps = steps_of(deck%analysis%t_end, deck%analysis%dt)
             allocate (ag(0:n_steps))
             call suite_motion_samples(deck, k, work%ctx%models, gm, factor, ag, error)
             if (allocated(error)) return
             pairs = pairs_from_config(deck%contacts, structure_names(work%ctx%models), error)
             if (allocated(error)) return
-            call gap_cases_init(work%gaps, deck%analysis, deck%sweep, work%ctx%models, ag, pairs, &
+            call gap_cases_init(work%gaps, analysis_plan_of(deck%analysis), deck%sweep, work%ctx%models, ag, pairs, &
                                 work%ctx%unc(k), error, gm)
             if (allocated(error)) return
          end associate
@@ -378,8 +380,8 @@ contains
       integer :: ib, groups, n_out, size_of, g
 
       start = [(g, g=1, n + 1)]
-      if (n < batch_min .or. .not. batch_eligible(deck%analysis, models)) return
-      n_out = nint(deck%analysis%t_end/deck%analysis%dt)/deck%analysis%output_every + 1
+      if (n < batch_min .or. .not. batch_eligible(analysis_plan_of(deck%analysis), models)) return
+      n_out = output_steps(steps_of(deck%analysis%t_end, deck%analysis%dt), deck%analysis%output_every)
       bytes = real(1 + n_energy, dp)
       do ib = 1, size(models)
          bytes = bytes + real(size(models(ib)%floor_dof), dp)*real(count(deck%analysis%store), dp)
@@ -424,7 +426,7 @@ contains
       character(len=:), allocatable :: text
       logical :: targeted(n_target_quantities)
       integer :: nm, nb, k, ib, np, ip, nmax, ig, w
-      integer, allocatable :: start(:), ms(:)
+      integer, allocatable :: start(:), ms(:), n_storeys(:)
       type(analysis_result), allocatable, target :: batched(:)
       logical, allocatable :: batched_ok(:)
 
@@ -446,7 +448,8 @@ contains
       allocate (mean_unc(nmax, n_history_quantities, nb), mean_cpl(nmax, n_history_quantities, nb))
       mean_unc = 0.0_dp
       mean_cpl = 0.0_dp
-      call suite_result_init(suite, nm, deck%buildings%n_storeys, np)
+      n_storeys = deck%buildings%n_storeys
+      call suite_result_init(suite, nm, n_storeys, np)
       call columns_init(models, nm, suite%columns)
       suite%refine_tolerance = deck%sweep%refine_tolerance
       targeted = deck%sweep%target_quantities

@@ -21,6 +21,7 @@ module pound_suite_motions
    use pound_structure, only: structure_model
    use pound_spectrum, only: scale_to_pga, scale_to_sa
    use pound_run_case, only: configured_motion
+   use pound_analysis_plan, only: steps_of
    implicit none
    private
 
@@ -55,7 +56,7 @@ contains
 
       g = deck%motions(k)
       dt = deck%analysis%dt
-      n_steps = nint(deck%analysis%t_end/dt)
+      n_steps = steps_of(deck%analysis%t_end, dt)
       factor = 1.0_dp
       if (g%kind == 'synthetic') then
          call synthetic(base, error)

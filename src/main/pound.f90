@@ -35,8 +35,8 @@ program pound
    use pound_separation_output, only: write_run_separation, pair_labels
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, write_warning_lines, &
                             write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
-                            write_sweep_column_table, &
-                            open_listing, close_listing, write_section
+                            write_sweep_column_table, write_section
+   use pound_text_writer, only: text_writer, open_text, close_text
    use pound_summary, only: summary_item, build_summary, summary_lines, motion_heading, summary_text_len
    use pound_summary_output, only: write_summary_csv, write_summary_attributes
    use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
@@ -263,8 +263,8 @@ contains
          ! A sweep: its run without contact (`probe_gap`) and its gaps; a single motion's with
          ! several independent joints, also each joint's gaps (`pound_sweep_joints`).
          if (deck%sweep%active) planned_runs = planned_runs + 1 + deck%sweep%n_gaps
-         if (deck%sweep%active .and. .not. is_suite .and. deck_joints(deck) > 1) &
-            planned_runs = planned_runs + deck_joints(deck)*deck%sweep%n_gaps
+         if (deck%sweep%active .and. .not. is_suite .and. deck_joints(deck%contacts) > 1) &
+            planned_runs = planned_runs + deck_joints(deck%contacts)*deck%sweep%n_gaps
       end if
       if (is_suite) planned_runs = planned_runs*size(deck%motions)
    end function planned_runs
@@ -313,57 +313,59 @@ contains
    subroutine write_listing(path, err)
       character(len=*), intent(in) :: path
       type(error_type), allocatable, intent(out) :: err
-      integer :: u, ios
+      type(text_writer) :: lst
       character(len=:), allocatable :: input_warnings(:)
       character(len=len(ground_text)) :: suite_ground(1)
 
-      call open_listing(path, u, err)
+      call open_text(path, 'listing', lst, err)
       if (allocated(err)) return
       if (size(deck%motions) > 1) then
+         ! Assigned (cut to the length of ground_text) before the call: an array constructor
+         ! with a shorter type-spec length than its value was read past its end by gfortran.
          suite_ground(1) = motion_heading(suite)//': '//trim(ground_text(1))
-         call write_listing_header(u, deck, suite_ground, summary_text)
+         call write_listing_header(lst, deck, suite_ground, summary_text)
       else
-         call write_listing_header(u, deck, ground_text, summary_text)
+         call write_listing_header(lst, deck, ground_text, summary_text)
       end if
-      call write_model_summary(u, res%models, res%buildings)
+      call write_model_summary(lst, res%models, res%buildings)
       if (res%n_input_warnings > 0) then
          input_warnings = res%warnings(1:res%n_input_warnings)
-         call write_warning_lines(u, input_warnings)
+         call write_warning_lines(lst, input_warnings)
       end if
       if (size(deck%motions) > 1) then
-         call write_section(u, motion_heading(suite)//': the single-motion results of this motion alone '// &
+         call write_section(lst, motion_heading(suite)//': the single-motion results of this motion alone '// &
                             '(the suite''s answer: Summary above and Ground-motion suite below)')
       end if
-      call write_peak_tables(u, 'Uncoupled', res%models, res%unc)
-      if (.not. res%has_coupled) call write_column_tables(u, res%models, res%buildings, res%unc)
+      call write_peak_tables(lst, 'Uncoupled', res%models, res%unc)
+      if (.not. res%has_coupled) call write_column_tables(lst, res%models, res%buildings, res%unc)
       if (res%has_coupled) then
-         call write_peak_tables(u, 'Coupled', res%models, res%cpl)
-         call write_contact_summary(u, res%cs)
-         call write_influence_tables(u, res%models, res%influence)
-         call write_column_tables(u, res%models, res%buildings, res%unc, res%cpl, res%influence)
-         if (res%has_sweep) call write_sweep_table(u, res%models, deck%sweep, res%sweep)
-         if (res%has_sweep) call write_sweep_column_table(u, res%models, deck%sweep, res%sweep)
-         if (joint_count() > 1) call write_joint_sweep_tables(u, deck%sweep, res%joints, pair_labels(res%cs))
+         call write_peak_tables(lst, 'Coupled', res%models, res%cpl)
+         call write_contact_summary(lst, res%cs)
+         call write_influence_tables(lst, res%models, res%influence)
+         call write_column_tables(lst, res%models, res%buildings, res%unc, res%cpl, res%influence)
+         if (res%has_sweep) call write_sweep_table(lst, res%models, deck%sweep, res%sweep)
+         if (res%has_sweep) call write_sweep_column_table(lst, res%models, deck%sweep, res%sweep)
+         if (joint_count() > 1) call write_joint_sweep_tables(lst, deck%sweep, res%joints, pair_labels(res%cs))
          if (size(deck%motions) == 1 .and. allocated(res%separation)) &
-            call write_run_separation(u, pair_labels(res%cs), res%separation, per_joint=joint_count() > 1)
+            call write_run_separation(lst, pair_labels(res%cs), res%separation, per_joint=joint_count() > 1)
       end if
       if (size(deck%motions) > 1) then
-         call write_suite_listing(u, res%models, suite, err, res%cs)
-         if (allocated(err)) return
+         call write_suite_listing(lst, res%models, suite, res%cs)
       end if
-      write (u, '(/,a,es10.3,a)', iostat=ios) '  uncoupled integration: ', res%unc%seconds, ' s'
-      if (res%has_coupled .and. ios == 0) write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) &
+      write (lst%unit, '(/,a,es10.3,a)', iostat=lst%ios, iomsg=lst%msg) '  uncoupled integration: ', res%unc%seconds, ' s'
+      if (res%has_coupled .and. lst%ios == 0) write (lst%unit, '(a,es10.3,a,es10.3,a)', iostat=lst%ios, iomsg=lst%msg) &
          '  coupled integration:   ', res%cpl%seconds, ' s, of which LCP solves ', res%cpl%contact_seconds, ' s'
-      if (res%unc%write_seconds + res%cpl%write_seconds > 0.0_dp .and. ios == 0) &
-         write (u, '(a,es10.3,a,es10.3,a)', iostat=ios) '  histories written during the integration: ', &
+      if (res%unc%write_seconds + res%cpl%write_seconds > 0.0_dp .and. lst%ios == 0) &
+         write (lst%unit, '(a,es10.3,a,es10.3,a)', iostat=lst%ios, iomsg=lst%msg) '  histories written during the integration: ', &
          res%unc%write_seconds, ' s (uncoupled), ', res%cpl%write_seconds, ' s (coupled), not in the times above'
-      if (res%has_coupled .and. ios == 0) then
-         if (res%cpl%substep_factor > 0) write (u, '(a)', iostat=ios) &
+      if (res%has_coupled .and. lst%ios == 0) then
+         if (res%cpl%substep_factor > 0) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
             '  impact stepping:       '//substep_text(res%cpl)
-         if (res%cpl%exact_steps >= 0 .and. ios == 0) write (u, '(a)', iostat=ios) &
+         if (res%cpl%exact_steps >= 0 .and. lst%ios == 0) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
             '  free steps:            '//exact_text(res%cpl)
       end if
-      call close_listing(u, path, err)
+      call lst%note()
+      call close_text(lst, err)
    end subroutine write_listing
 
    !> The summary on standard output, written unbuffered: a failed write (standard output

@@ -29,6 +29,7 @@
 !> (half of each adjacent bay) unless given per node; no rotary inertia unless given.
 module pound_frame
    use pound_kinds, only: dp
+   use pound_constants, only: g_accel
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_frame_element, only: beam_global_stiffness, beam_global_geometric
@@ -37,12 +38,10 @@ module pound_frame
 
    public :: frame_spec, frame_model, build_frame, frame_stiffness, frame_mass, frame_geometric
    public :: frame_load_vector, frame_node_displacements, frame_node_at
-   public :: element_column, element_beam, gravity_acceleration
+   public :: element_column, element_beam
 
    !> Element kinds.
    integer, parameter :: element_column = 1, element_beam = 2
-   !> Acceleration of gravity for default gravity loads (m/s^2).
-   real(dp), parameter :: gravity_acceleration = 9.81_dp
    !> Elevations closer than this are the same node (m).
    real(dp), parameter :: z_tol = 1.0e-6_dp
 
@@ -70,7 +69,7 @@ module pound_frame
       real(dp), allocatable :: node_mass(:, :)
       !> Optional: rotary inertia per floor node (t m^2), shape (n_lines, n_storeys).
       real(dp), allocatable :: node_rotary(:, :)
-      !> Optional: floor gravity loads (kN); default floor mass x 9.81, split like the mass.
+      !> Optional: floor gravity loads (kN); default floor mass x g (`pound_constants::g_accel`), split like the mass.
       real(dp), allocatable :: floor_load(:)
       !> Optional: gravity load per floor node (kN), shape (n_lines, n_storeys).
       real(dp), allocatable :: node_load(:, :)
@@ -226,7 +225,7 @@ contains
                   f%node_load(k) = spec%floor_load(j)*trib(i)
                end if
             else
-               f%node_load(k) = gravity_acceleration*f%node_mass(k)
+               f%node_load(k) = g_accel*f%node_mass(k)
             end if
          end do
       end do

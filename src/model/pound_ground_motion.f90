@@ -8,7 +8,7 @@
 !>   pulse starts with x_g'(0) = b x0 and x_g''(0) = -2 a b x0, not from rest: in the relative
 !>   formulation only a_g enters, so the buildings start moving with the ground.
 !>   Before t = 0 the ground is at rest.
-!> * `record`: an accelerogram (values in g) times a scale factor times `standard_gravity`,
+!> * `record`: an accelerogram (values in g) times a scale factor times `g_accel`,
 !>   linearly interpolated between its samples. Outside the record, before its first sample
 !>   and after its last one, a_g = 0: after the end of the record the buildings vibrate
 !>   freely.
@@ -20,20 +20,15 @@ module pound_ground_motion
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str
-   use pound_config, only: g_accel
+   use pound_constants, only: g_accel
    use pound_accelerogram, only: accelerogram_t, read_accelerogram
    implicit none
    private
 
-   public :: ground_motion_t, standard_gravity
+   public :: ground_motion_t
    public :: pulse_motion, record_motion, sample_ground, ground_accel, check_ground_samples
    public :: pulse_displacement, pulse_velocity, pulse_acceleration
    public :: peak_ground_accel, describe_ground
-
-   !> Acceleration of 1 g (m/s^2) used to turn record values (in g) into m/s^2. It is the
-   !> same 9.81 m/s^2 that turns floor loads into masses (`pound_config::g_accel`), so a
-   !> record of 1 g loads a floor with its own weight.
-   real(dp), parameter :: standard_gravity = g_accel
 
    !> Two times closer than this fraction of the record's step count as the same sample
    !> (absorbs rounding in n*dt, so solver steps that fall on samples get them exactly).
@@ -104,7 +99,7 @@ contains
       gm%scale = scale
       gm%dt = rec%dt
       gm%time = rec%time
-      gm%accel = rec%accel*(scale*standard_gravity)
+      gm%accel = rec%accel*(scale*g_accel)
    end subroutine record_motion
 
    !> Ground acceleration at the solver's steps: ag(n) = a_g(n dt), n = 0..n_steps.
@@ -153,7 +148,7 @@ contains
                         ' rad/s (x0 exp(-a t) ((a^2 - b^2) sin(b t) - 2 a b cos(b t)))'
             case ('record')
                origin = 'the values of record '//gm%path//' (in g) times scale = '//str(gm%scale)// &
-                        ' times 9.81 m/s^2'
+                        ' times '//str(g_accel)//' m/s^2'
             end select
          end if
          call fatal_error(error, '&ground: the ground acceleration at t = '//str(real(n, dp)*dt)// &
@@ -292,7 +287,7 @@ contains
          text = 'no ground motion'
          return
       end select
-      text = text//'; PGA '//str(pga)//' m/s^2 = '//str(pga/standard_gravity)//' g at t = '// &
+      text = text//'; PGA '//str(pga)//' m/s^2 = '//str(pga/g_accel)//' g at t = '// &
              str(t_pga)//' s'
    end function describe_ground
 

@@ -11,7 +11,8 @@
 !> naming the deck variables it came from (`mass_source`, `stiffness_source`).
 module pound_storey_properties
    use pound_kinds, only: dp
-   use pound_config, only: building_config, g_accel
+   use pound_config, only: building_config
+   use pound_constants, only: g_accel
    implicit none
    private
 

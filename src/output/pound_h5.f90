@@ -323,11 +323,15 @@ contains
       !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
+      real(dp), allocatable :: packed(:, :)
       integer :: hdferr
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
-      call h5ltmake_dataset_double_f(file%id, p, 2, shape(values, kind=hsize_t), values, hdferr)
+      ! A contiguous copy: the caller may pass a section or a component of a derived-type array
+      ! (H5LT takes a plain buffer).
+      packed = values
+      call h5ltmake_dataset_double_f(file%id, p, 2, shape(values, kind=hsize_t), packed, hdferr)
       call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
       call put_units(file, path, units, error)
    end subroutine write_real_2d

@@ -1,13 +1,12 @@
 !> The listing (`.out`): a fixed-width report readable in a terminal and on paper.
 !>
-!> Every write is checked: the first failure (no space left, file too large, ...) is kept
-!> and reported by `listing_io_error`, which the caller asks after the last write.
+!> Every write is checked: the writers take a `text_writer` (pound_text_writer), which
+!> keeps the first failure (no space left, file too large, ...); the caller asks it once.
 module pound_listing
    use pound_kinds, only: dp
    use pound_strings, only: counted, fixed_cell, left_cell, right_cell
-   use, intrinsic :: iso_fortran_env, only: int64
-   use pound_error, only: error_type, fatal_error
-   use pound_posix, only: posix_set_errno, posix_storage_error
+   use pound_text_writer, only: text_writer
+   use pound_analysis_plan, only: steps_of
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_building, only: building_model
@@ -27,7 +26,7 @@ module pound_listing
    public :: write_listing_header, write_model_summary, write_peak_tables, write_section
    public :: write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables
    public :: write_sweep_column_table
-   public :: listing_io_error, open_listing, close_listing, gap_cell, mm, write_warning_lines
+   public :: gap_cell, mm, write_warning_lines
 
    !> Millimetres per metre: gaps, displacements, drifts and penetrations are listed in mm.
    real(dp), parameter :: mm = 1000.0_dp
@@ -35,106 +34,27 @@ module pound_listing
    !> Modes listed in the model summary (the HDF5 file has every mode the builder computed).
    integer, parameter :: max_listed_modes = modes_listed
 
-   !> Status and message of the last write, and the first failure since the last check.
-   integer, save :: ios = 0
-   character(len=256), save :: msg = ''
-   integer, save :: first_ios = 0
-   character(len=256), save :: first_msg = ''
-
 contains
 
-   !> The first write failure since the previous call (unallocated if none), naming `path`;
-   !> the record is cleared.
-   subroutine listing_io_error(path, error)
-      !> File the unit writes to, for the message.
-      character(len=*), intent(in) :: path
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-
-      if (first_ios /= 0) call fatal_error(error, 'cannot write the listing '//path//': '//trim(first_msg))
-      first_ios = 0
-      first_msg = ''
-      ios = 0
-   end subroutine listing_io_error
-
-   !> Open `path` (created or truncated) for the listing, as a formatted stream so that
-   !> `close_listing` can check that every byte reached the file.
-   subroutine open_listing(path, u, error)
-      !> File.
-      character(len=*), intent(in) :: path
-      !> Unit opened.
-      integer, intent(out) :: u
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-
-      first_ios = 0
-      ios = 0
-      call posix_set_errno(0)
-      open (newunit=u, file=path, status='replace', action='write', access='stream', form='formatted', &
-            iostat=ios, iomsg=msg)
-      if (ios /= 0) call fatal_error(error, 'cannot write the listing '//path//': '//trim(msg))
-   end subroutine open_listing
-
-   !> Close the listing and check it: a failed write, or a file shorter than what was
-   !> written (the Fortran run-time can drop a buffer the system refused: no space, file
-   !> too large), is an error naming the system's reason.
-   subroutine close_listing(u, path, error)
-      !> Unit of `open_listing`.
-      integer, intent(in) :: u
-      !> Its file.
-      character(len=*), intent(in) :: path
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: stat
-      integer(int64) :: written, size_on_disk
-      character(len=:), allocatable :: reason
-      character(len=80) :: counts
-
-      call listing_io_error(path, error)
-      inquire (unit=u, pos=written, iostat=stat)
-      if (stat /= 0) written = -1
-      close (u, iostat=ios, iomsg=msg)
-      if (allocated(error)) return
-      if (ios /= 0) then
-         call fatal_error(error, 'cannot write the listing '//path//': '//trim(msg))
-         return
-      end if
-      inquire (file=path, size=size_on_disk, iostat=stat)
-      if (stat /= 0 .or. written < 1 .or. size_on_disk /= written - 1) then
-         reason = posix_storage_error()
-         if (len(reason) == 0) reason = 'the file system did not take every byte'
-         write (counts, '(a,i0,a,i0,a)') ' (the file holds ', size_on_disk, ' of ', written - 1, ' bytes)'
-         call fatal_error(error, 'cannot write the listing '//path//': '//reason//trim(counts))
-      end if
-   end subroutine close_listing
-
    !> Warnings of an analysis or a sweep, one line each after '  WARNING: '.
-   subroutine write_warning_lines(u, warnings)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_warning_lines(lst, warnings)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The warnings (none when unallocated).
       character(len=:), allocatable, intent(in) :: warnings(:)
       integer :: i
 
       if (.not. allocated(warnings)) return
       do i = 1, size(warnings)
-         write (u, '(a)', iostat=ios, iomsg=msg) '  WARNING: '//trim(warnings(i))
-         call note_io()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  WARNING: '//trim(warnings(i))
+         call lst%note()
       end do
    end subroutine write_warning_lines
 
-   !> Keep the first failed write.
-   subroutine note_io()
-      if (ios /= 0 .and. first_ios == 0) then
-         first_ios = ios
-         first_msg = msg
-      end if
-   end subroutine note_io
-
    !> Program, version, date, deck, title, units, the summary (when given) and the deck echo.
-   subroutine write_listing_header(u, deck, ground_text, summary)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_listing_header(lst, deck, ground_text, summary)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The deck.
       type(deck_type), intent(in) :: deck
       !> Ground motion summary lines.
@@ -146,67 +66,70 @@ contains
       integer :: i, start
 
       call date_and_time(date=date, time=time)
-      write (u, '(a)', iostat=ios, iomsg=msg) repeat('=', 78)
-      call note_io()
-      write (u, '(a)', iostat=ios, iomsg=msg) program_name//' '//program_version// &
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) repeat('=', 78)
+      call lst%note()
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) program_name//' '//program_version// &
          ' - seismic pounding of adjacent buildings (unilateral contact, LCP)'
-      call note_io()
-      write (u, '(a)', iostat=ios, iomsg=msg) 'run on '//date(1:4)//'-'//date(5:6)//'-'//date(7:8)//' '// &
+      call lst%note()
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         'run on '//date(1:4)//'-'//date(5:6)//'-'//date(7:8)//' '// &
          time(1:2)//':'//time(3:4)//':'//time(5:6)
-      call note_io()
-      write (u, '(a)', iostat=ios, iomsg=msg) 'deck:  '//deck%path
-      call note_io()
-      write (u, '(a)', iostat=ios, iomsg=msg) 'title: '//deck%analysis%title
-      call note_io()
-      write (u, '(a)', iostat=ios, iomsg=msg) 'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
+      call lst%note()
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) 'deck:  '//deck%path
+      call lst%note()
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) 'title: '//deck%analysis%title
+      call lst%note()
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
          'gaps, displacements, drifts and penetrations in mm'
-      call note_io()
-      write (u, '(a)', iostat=ios, iomsg=msg) repeat('=', 78)
-      call note_io()
+      call lst%note()
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) repeat('=', 78)
+      call lst%note()
       if (present(summary)) then
-         call write_section(u, 'Summary')
+         call write_section(lst, 'Summary')
          do i = 1, size(summary)
-            write (u, '(a)', iostat=ios, iomsg=msg) '  '//trim(summary(i))
-            call note_io()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//trim(summary(i))
+            call lst%note()
          end do
       end if
-      call write_section(u, 'Deck echo')
+      call write_section(lst, 'Deck echo')
       start = 1
       do i = 1, len(deck%text)
          if (deck%text(i:i) == new_line('a')) then
-            write (u, '(a)', iostat=ios, iomsg=msg) '  | '//deck%text(start:i - 1)
-            call note_io()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  | '//deck%text(start:i - 1)
+            call lst%note()
             start = i + 1
          end if
       end do
-      if (start <= len(deck%text)) write (u, '(a)', iostat=ios, iomsg=msg) '  | '//deck%text(start:)
-      call note_io()
-      call write_section(u, 'Analysis and ground motion')
-      write (u, '(a,es12.4,a,f10.4,a,i0,a,i0)', iostat=ios, iomsg=msg) '  dt =', deck%analysis%dt, ' s   t_end =', &
-         deck%analysis%t_end, ' s   steps = ', nint(deck%analysis%t_end/deck%analysis%dt), &
+      if (start <= len(deck%text)) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  | '//deck%text(start:)
+      call lst%note()
+      call write_section(lst, 'Analysis and ground motion')
+      write (lst%unit, '(a,es12.4,a,f10.4,a,i0,a,i0)', iostat=lst%ios, iomsg=lst%msg) &
+         '  dt =', deck%analysis%dt, ' s   t_end =', &
+         deck%analysis%t_end, ' s   steps = ', steps_of(deck%analysis%t_end, deck%analysis%dt), &
          '   history every ', deck%analysis%output_every
-      call note_io()
+      call lst%note()
       do i = 1, size(ground_text)
-         write (u, '(a)', iostat=ios, iomsg=msg) '  '//trim(ground_text(i))
-         call note_io()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//trim(ground_text(i))
+         call lst%note()
       end do
    end subroutine write_listing_header
 
    !> A section heading.
-   subroutine write_section(u, title)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_section(lst, title)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> Heading text.
       character(len=*), intent(in) :: title
 
-      write (u, '(/,a,/,a)', iostat=ios, iomsg=msg) title, repeat('-', len(title))
-      call note_io()
+      write (lst%unit, '(/,a,/,a)', iostat=lst%ios, iomsg=lst%msg) title, repeat('-', len(title))
+      call lst%note()
    end subroutine write_section
 
    !> Per building: storey data, periods and Rayleigh coefficients.
-   subroutine write_model_summary(u, models, buildings)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_model_summary(lst, models, buildings)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The buildings' structural models.
       type(structure_model), intent(in) :: models(:)
       !> Their per-kind data (storey table, frame).
@@ -214,65 +137,69 @@ contains
       integer :: ib, j
       character(len=3) :: pd
 
-      call write_section(u, 'Models (shear buildings: rigid beams, one lateral DOF per floor; '// &
+      call write_section(lst, 'Models (shear buildings: rigid beams, one lateral DOF per floor; '// &
                          'frames: planar beam-column elements)')
       do ib = 1, size(models)
          associate (b => models(ib), s => buildings(ib))
             pd = 'off'
             if (s%p_delta) pd = 'on'
             if (allocated(s%frame)) then
-               call write_frame_summary(u, b, s)
+               call write_frame_summary(lst, b, s)
             else
-               write (u, '(/,a)', iostat=ios, iomsg=msg) &
+               write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) &
                   '  Building '//b%name//': '//counted(b%n, 'storey')//', P-Delta '//trim(pd)
-               call note_io()
-               write (u, '(a)', iostat=ios, iomsg=msg) &
+               call lst%note()
+               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
                   '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
-               call note_io()
+               call lst%note()
                do j = 1, b%n
-                  write (u, '(2x,i6,a9,a12,es13.5,es12.4,es13.5,a14)', iostat=ios, iomsg=msg) &
+                  write (lst%unit, '(2x,i6,a9,a12,es13.5,es12.4,es13.5,a14)', iostat=lst%ios, iomsg=lst%msg) &
                      j, fixed_cell(s%height(j), 9, 3, .true.), fixed_cell(s%floor_mass(j), 12, 4, .true.), &
                      s%storey_stiffness(j), s%axial_load(j), s%geometric_stiffness(j), &
                      fixed_cell(s%geometric_stiffness(j)/s%storey_stiffness(j), 14, 5)
-                  call note_io()
+                  call lst%note()
                end do
             end if
             if (allocated(s%frame)) then
-               write (u, '(a)', iostat=ios, iomsg=msg) '    mode      T [s]      f [Hz]  omega [rad/s]'// &
+               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+                  '    mode      T [s]      f [Hz]  omega [rad/s]'// &
                   '  Gamma [t^0.5]  eff. mass [%]  cumulative [%]'
             else
-               write (u, '(a)', iostat=ios, iomsg=msg) '    mode      T [s]      f [Hz]  omega [rad/s]'
+               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '    mode      T [s]      f [Hz]  omega [rad/s]'
             end if
-            call note_io()
+            call lst%note()
             do j = 1, min(size(b%period), max_listed_modes)
                if (allocated(s%frame)) then
-                  write (u, '(2x,i6,a11,a12,a15,es15.5,2a15)', iostat=ios, iomsg=msg) j, &
+                  write (lst%unit, '(2x,i6,a11,a12,a15,es15.5,2a15)', iostat=lst%ios, iomsg=lst%msg) j, &
                      fixed_cell(b%period(j), 11, 5, .true.), fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), &
                      fixed_cell(b%omega(j), 15, 4, .true.), s%frame%participation(j), &
                      fixed_cell(100.0_dp*s%frame%effective_mass(j), 15, 3), &
                      fixed_cell(100.0_dp*sum(s%frame%effective_mass(1:j)), 15, 3)
                else
-                  write (u, '(2x,i6,a11,a12,a15)', iostat=ios, iomsg=msg) j, fixed_cell(b%period(j), 11, 5, .true.), &
+                  write (lst%unit, '(2x,i6,a11,a12,a15)', iostat=lst%ios, iomsg=lst%msg) &
+                     j, fixed_cell(b%period(j), 11, 5, .true.), &
                      fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), fixed_cell(b%omega(j), 15, 4, .true.)
                end if
-               call note_io()
+               call lst%note()
             end do
-            if (size(b%period) > max_listed_modes) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '    (', &
+            if (size(b%period) > max_listed_modes) write (lst%unit, '(a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
+               '    (', &
                size(b%period) - max_listed_modes, &
                ' more modes in the HDF5 file)'
-            call note_io()
-            write (u, '(a,f6.2,a,i0,a,i0,a,es12.5,a,es12.5,a)', iostat=ios, iomsg=msg) '  Rayleigh damping ', &
+            call lst%note()
+            write (lst%unit, '(a,f6.2,a,i0,a,i0,a,es12.5,a,es12.5,a)', iostat=lst%ios, iomsg=lst%msg) &
+               '  Rayleigh damping ', &
                100.0_dp*b%damping_ratio, ' % at modes ', b%damping_modes(1), ' and ', &
                b%damping_modes(2), ': a0 = ', b%a0, ' 1/s, a1 = ', b%a1, ' s'
-            call note_io()
+            call lst%note()
          end associate
       end do
    end subroutine write_model_summary
 
    !> A frame's geometry, sections, DOFs and (with P-Delta) its gravity analysis.
-   subroutine write_frame_summary(u, b, s)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_frame_summary(lst, b, s)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> Its structural model.
       type(structure_model), intent(in) :: b
       !> The building (a frame).
@@ -286,52 +213,55 @@ contains
          if (s%frame%rigid_diaphragm) cons = cons//' rigid_diaphragm'
          if (s%frame%rigid_columns) cons = cons//' rigid_columns'
          if (len(cons) == 0) cons = ' none'
-         write (u, '(/,a,i0,a,i0,a,i0,a,i0,a,i0,a)', iostat=ios, iomsg=msg) '  Building '//b%name// &
+         write (lst%unit, '(/,a,i0,a,i0,a,i0,a,i0,a,i0,a)', iostat=lst%ios, iomsg=lst%msg) '  Building '//b%name// &
             ' (frame): ', f%n_storeys, ' storeys, ', f%n_lines, ' column lines, ', f%n_nodes, ' nodes, ', &
             f%n_elements, ' elements, ', b%n, ' DOFs'
-         call note_io()
-         write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '  half-bandwidth ', b%kd, ', constraints:'//cons// &
+         call lst%note()
+         write (lst%unit, '(a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  half-bandwidth ', b%kd, ', constraints:'//cons// &
             ', base '//s%frame%base
-         call note_io()
+         call lst%note()
          if (s%p_delta) then
-            write (u, '(a)', iostat=ios, iomsg=msg) "  P-Delta on, geometric stiffness '"//s%frame%geometric// &
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+               "  P-Delta on, geometric stiffness '"//s%frame%geometric// &
                "' of the gravity analysis (unconstrained frame)"
          else
-            write (u, '(a)', iostat=ios, iomsg=msg) '  P-Delta off'
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  P-Delta off'
          end if
-         call note_io()
-         write (u, '(a)', iostat=ios, iomsg=msg) '  x of the column lines [m]:'
-         call note_io()
-         write (u, '(4x,*(a))', iostat=ios, iomsg=msg) (fixed_cell(f%line_x(j), 10, 3), j=1, size(f%line_x))
-         call note_io()
-         write (u, '(a)', iostat=ios, iomsg=msg) '  storey    h [m]    mass [t]  column E [kN/m2]'// &
+         call lst%note()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  x of the column lines [m]:'
+         call lst%note()
+         write (lst%unit, '(4x,*(a))', iostat=lst%ios, iomsg=lst%msg) &
+            (fixed_cell(f%line_x(j), 10, 3), j=1, size(f%line_x))
+         call lst%note()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  storey    h [m]    mass [t]  column E [kN/m2]'// &
             '   A [m2]     I [m4]  beam E [kN/m2]   A [m2]     I [m4]'
-         call note_io()
+         call lst%note()
          do j = 1, f%n_storeys
             e = first_element(j, 1)
             eb = first_element(j, 2)
             if (eb == 0) eb = e
-            write (u, '(2x,i6,a9,a12,es18.5,2es11.3,es16.5,2es11.3)', iostat=ios, iomsg=msg) j, &
+            write (lst%unit, '(2x,i6,a9,a12,es18.5,2es11.3,es16.5,2es11.3)', iostat=lst%ios, iomsg=lst%msg) j, &
                fixed_cell(s%height(j), 9, 3, .true.), fixed_cell(s%floor_mass(j), 12, 4, .true.), &
                f%element_e(e), f%element_a(e), f%element_i(e), f%element_e(eb), f%element_a(eb), &
                f%element_i(eb)
-            call note_io()
+            call lst%note()
          end do
          if (s%p_delta) then
-            write (u, '(a,es12.4,a)', iostat=ios, iomsg=msg) '  gravity analysis: total load ', &
+            write (lst%unit, '(a,es12.4,a)', iostat=lst%ios, iomsg=lst%msg) '  gravity analysis: total load ', &
                s%frame%gravity%total_load, ' kN; base reactions per column line (H [kN], V [kN], M [kN m]):'
-            call note_io()
+            call lst%note()
             do ln = 1, f%n_lines
-               write (u, '(4x,i6,3es13.4)', iostat=ios, iomsg=msg) ln, s%frame%gravity%reactions(:, ln)
-               call note_io()
+               write (lst%unit, '(4x,i6,3es13.4)', iostat=lst%ios, iomsg=lst%msg) ln, s%frame%gravity%reactions(:, ln)
+               call lst%note()
             end do
-            write (u, '(a)', iostat=ios, iomsg=msg) '  column axial force N [kN] (tension +) at the '// &
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  column axial force N [kN] (tension +) at the '// &
                'bottom of each storey, column lines 1.. (at most 8):'
-            call note_io()
+            call lst%note()
             do j = 1, f%n_storeys
-               write (u, '(4x,i6,8es13.4)', iostat=ios, iomsg=msg) j, &
+               write (lst%unit, '(4x,i6,8es13.4)', iostat=lst%ios, iomsg=lst%msg) j, &
                   (s%frame%gravity%axial(bottom_column(j, ln)), ln=1, min(f%n_lines, 8))
-               call note_io()
+               call lst%note()
             end do
          end if
       end associate
@@ -362,9 +292,9 @@ contains
    end subroutine write_frame_summary
 
    !> Peak tables of an analysis: floors (u, v, a_abs) and storeys (drift, shear).
-   subroutine write_peak_tables(u, label, models, res)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_peak_tables(lst, label, models, res)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> Analysis label, e.g. 'Uncoupled'.
       character(len=*), intent(in) :: label
       !> The buildings.
@@ -373,49 +303,50 @@ contains
       type(analysis_result), intent(in) :: res
       integer :: ib, j
 
-      call write_section(u, label//' response: absolute maxima and the time they occur')
+      call write_section(lst, label//' response: absolute maxima and the time they occur')
       do ib = 1, size(models)
          associate (b => models(ib), p => res%building(ib)%peak, t => res%building(ib)%peak_time)
-            write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//b%name
-            call note_io()
-            write (u, '(a)', iostat=ios, iomsg=msg) &
+            write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  Building '//b%name
+            call lst%note()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
                '   floor    |u| [mm]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]'
-            call note_io()
+            call lst%note()
             do j = size(b%floor_dof), 1, -1
-               write (u, '(2x,i6,es12.4,a9,es12.4,a9,es16.4,a9)', iostat=ios, iomsg=msg) &
+               write (lst%unit, '(2x,i6,es12.4,a9,es12.4,a9,es16.4,a9)', iostat=lst%ios, iomsg=lst%msg) &
                   j, mm*p(j, q_u), fixed_cell(t(j, q_u), 9, 3), &
                   p(j, q_v), fixed_cell(t(j, q_v), 9, 3), p(j, q_a_abs), fixed_cell(t(j, q_a_abs), 9, 3)
-               call note_io()
+               call lst%note()
             end do
-            write (u, '(a)', iostat=ios, iomsg=msg) '  storey  |drift| [mm]    t [s]    |Q| [kN]    t [s]'
-            call note_io()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+               '  storey  |drift| [mm]    t [s]    |Q| [kN]    t [s]'
+            call lst%note()
             do j = size(b%floor_dof), 1, -1
-               write (u, '(2x,i6,es14.4,a9,es12.4,a9)', iostat=ios, iomsg=msg) j, mm*p(j, q_drift), &
+               write (lst%unit, '(2x,i6,es14.4,a9,es12.4,a9)', iostat=lst%ios, iomsg=lst%msg) j, mm*p(j, q_drift), &
                   fixed_cell(t(j, q_drift), 9, 3), p(j, q_shear), fixed_cell(t(j, q_shear), 9, 3)
-               call note_io()
+               call lst%note()
             end do
          end associate
       end do
-      write (u, '(/,a,es10.3)', iostat=ios, iomsg=msg) &
+      write (lst%unit, '(/,a,es10.3)', iostat=lst%ios, iomsg=lst%msg) &
          '  Energy audit (input = kinetic + strain + damping + contact + plastic), '// &
          'max relative error over time: ', res%energy_error
-      call note_io()
-      call write_warning_lines(u, res%warnings)
+      call lst%note()
+      call write_warning_lines(lst, res%warnings)
       j = res%n_out
-      write (u, '(a)', iostat=ios, iomsg=msg) '  energies at the end [kJ]:'
-      call note_io()
-      write (u, '(a)', iostat=ios, iomsg=msg) &
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  energies at the end [kJ]:'
+      call lst%note()
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
          '         input     kinetic      strain     damping     contact     plastic'
-      call note_io()
-      write (u, '(a,6es12.4)', iostat=ios, iomsg=msg) '  ', res%energy(:, j)
-      call note_io()
+      call lst%note()
+      write (lst%unit, '(a,6es12.4)', iostat=lst%ios, iomsg=lst%msg) '  ', res%energy(:, j)
+      call lst%note()
    end subroutine write_peak_tables
 
    !> Contact pairs and laws, impacts, time in contact, peak forces, plastic penetration
    !> left, fracture, and the LCP statistics with every fallback event.
-   subroutine write_contact_summary(u, cs)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_contact_summary(lst, cs)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> Contact system at the end of the coupled run.
       type(contact_system), intent(in) :: cs
       integer, parameter :: max_listed_events = 20
@@ -424,20 +355,21 @@ contains
       character(len=12) :: fractured
       type(law_text), allocatable :: lines(:)
 
-      call write_section(u, 'Contact (unilateral constraints between facing floors)')
+      call write_section(lst, 'Contact (unilateral constraints between facing floors)')
       w = 4
       do k = 1, cs%m
          w = max(w, len(cs%pair(k)%label))
       end do
-      write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell('pair', w)//'    gap [mm]  '//left_cell('law', 16)// &
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         '  '//left_cell('pair', w)//'    gap [mm]  '//left_cell('law', 16)// &
          right_cell('k0 [kN/m]', 12)//right_cell('c [kNs/m]', 12)//'  dashpot_rate'
-      call note_io()
+      call lst%note()
       do k = 1, cs%m
          associate (p => cs%pair(k))
-            write (u, '(2x,a,a12,2x,a16,es12.3,es12.3,2x,a)', iostat=ios, iomsg=msg) &
+            write (lst%unit, '(2x,a,a12,2x,a16,es12.3,es12.3,2x,a)', iostat=lst%ios, iomsg=lst%msg) &
                left_cell(p%label, w), fixed_cell(mm*p%gap, 12, 3), left_cell(p%law%title(), 16), &
                p%law%stiffness, p%law%dashpot, rate_name(p%law%dashpot_rate)
-            call note_io()
+            call lst%note()
          end associate
       end do
       ! The parameters of the laws beyond k0 and c, after the table (not between its rows).
@@ -445,83 +377,87 @@ contains
          associate (p => cs%pair(k))
             call p%law%lines(lines)
             if (p%law%restitution <= 0.0_dp .and. size(lines) == 0) cycle
-            write (u, '(a)', iostat=ios, iomsg=msg) '  '//p%label//':'
-            call note_io()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//p%label//':'
+            call lst%note()
             if (p%law%restitution > 0.0_dp) then
-               write (u, '(4x,a,f6.3,a)', iostat=ios, iomsg=msg) 'c calibrated to the restitution e =', &
+               write (lst%unit, '(4x,a,f6.3,a)', iostat=lst%ios, iomsg=lst%msg) 'c calibrated to the restitution e =', &
                   p%law%restitution, ' (exact relation of the joint: docs/verification.md)'
-               call note_io()
+               call lst%note()
             end if
             call law_parameters(p%law)
          end associate
       end do
-      write (u, '(/,a)', iostat=ios, iomsg=msg) '  '//left_cell('pair', w)// &
+      write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell('pair', w)// &
          '   impacts  in_contact [s]  peak r [kN]     t [s]  max_pen. [mm]'// &
          '  plastic_left [mm]  fractured_at [s]'
-      call note_io()
+      call lst%note()
       do k = 1, cs%m
          associate (p => cs%joint(k))
             fractured = '          no'
             if (p%fractured) fractured = fixed_cell(p%fracture_time, 12, 4)
-            write (u, '(2x,a,i10,a16,es13.4,a10,es15.4,es19.4,6x,a12)', iostat=ios, iomsg=msg) &
+            write (lst%unit, '(2x,a,i10,a16,es13.4,a10,es15.4,es19.4,6x,a12)', iostat=lst%ios, iomsg=lst%msg) &
                left_cell(cs%pair(k)%label, w), p%impacts, fixed_cell(p%contact_time, 16, 4), &
                p%peak_force, fixed_cell(p%peak_time, 10, 4), mm*p%peak_penetration, mm*p%plastic, fractured
-            call note_io()
+            call lst%note()
          end associate
       end do
       do k = 1, cs%m
-         if (cs%joint(k)%fractured) write (u, '(a,f10.4,a)', iostat=ios, iomsg=msg) '  joint '//cs%pair(k)%label// &
+         if (cs%joint(k)%fractured) write (lst%unit, '(a,f10.4,a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  joint '//cs%pair(k)%label// &
             ' FRACTURED at t = ', cs%joint(k)%fracture_time, ' s: it carries nothing for the rest of the analysis'
-         call note_io()
+         call lst%note()
       end do
       mean_pivots = 0.0_dp
       if (cs%stats%solves > 0) mean_pivots = real(cs%stats%pivots_total, dp)/real(cs%stats%solves, dp)
-      write (u, '(/,a)', iostat=ios, iomsg=msg) '  LCP (Lemke, lexicographic) statistics:'
-      call note_io()
-      write (u, '(a,i0,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
+      write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  LCP (Lemke, lexicographic) statistics:'
+      call lst%note()
+      write (lst%unit, '(a,i0,a,i0,a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
          '    solves ', cs%stats%solves, ' (q >= 0 without pivoting: ', cs%stats%trivial, &
          '; warm start accepted: ', cs%stats%warm, ')'
-      call note_io()
-      write (u, '(a,i0,a,i0,a,f8.3)', iostat=ios, iomsg=msg) '    pivots total ', cs%stats%pivots_total, ', max per solve ', &
+      call lst%note()
+      write (lst%unit, '(a,i0,a,i0,a,f8.3)', iostat=lst%ios, iomsg=lst%msg) &
+         '    pivots total ', cs%stats%pivots_total, ', max per solve ', &
          cs%stats%pivots_max, ', mean per solve ', mean_pivots
-      call note_io()
-      write (u, '(a,i0)', iostat=ios, iomsg=msg) &
+      call lst%note()
+      write (lst%unit, '(a,i0)', iostat=lst%ios, iomsg=lst%msg) &
          '    re-solves (a left-out constraint would close, a segment end was passed): ', &
          cs%stats%resolves
-      call note_io()
+      call lst%note()
       if (cs%stats%active_solves > 0) then
-         write (u, '(a,i0,a,i0,a,f8.3,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
+         write (lst%unit, '(a,i0,a,i0,a,f8.3,a,i0,a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
             '    active-set method (elastic steps, from the previous step''s set): solves ', &
             cs%stats%active_solves, ', iterations ', cs%stats%active_iterations, ' (mean ', &
             real(cs%stats%active_iterations, dp)/real(cs%stats%active_solves, dp), ', max ', &
             cs%stats%active_iterations_max, '), factor updates ', cs%stats%active_updates, ','
-         call note_io()
-         write (u, '(a,i0,a)', iostat=ios, iomsg=msg) '      ', cs%stats%active_fallbacks, &
+         call lst%note()
+         write (lst%unit, '(a,i0,a)', iostat=lst%ios, iomsg=lst%msg) '      ', cs%stats%active_fallbacks, &
             ' failed and were solved by Lemke (counted above)'
-         call note_io()
+         call lst%note()
       end if
-      write (u, '(a,i0)', iostat=ios, iomsg=msg) &
+      write (lst%unit, '(a,i0)', iostat=lst%ios, iomsg=lst%msg) &
          '    largest LCP (contact + yield + segment-end rows): ', cs%stats%largest_lcp
-      call note_io()
-      write (u, '(a,i0)', iostat=ios, iomsg=msg) '    non-convex steps (softening rows in the LCP): ', cs%stats%nonconvex
-      call note_io()
-      write (u, '(a,i0)', iostat=ios, iomsg=msg) &
+      call lst%note()
+      write (lst%unit, '(a,i0)', iostat=lst%ios, iomsg=lst%msg) &
+         '    non-convex steps (softening rows in the LCP): ', cs%stats%nonconvex
+      call lst%note()
+      write (lst%unit, '(a,i0)', iostat=lst%ios, iomsg=lst%msg) &
          '    Lemke failures solved by enumeration (nearest the previous state): ', cs%stats%fallbacks
-      call note_io()
+      call lst%note()
       do k = 1, min(cs%stats%n_events, max_listed_events)
          associate (e => cs%stats%events(k))
-            write (u, '(a,f10.5,a,i0,a,a,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
+            write (lst%unit, '(a,f10.5,a,i0,a,a,a,i0,a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
                '      t = ', e%time, ' s, step ', e%step, ': Lemke ', &
                lemke_status_name(e%status), ', ', e%rows, ' rows, ', e%solutions, ' solutions; pairs '//e%pairs
-            call note_io()
+            call lst%note()
          end associate
       end do
-      if (cs%stats%n_events > max_listed_events) write (u, '(a,i0,a)', iostat=ios, iomsg=msg) &
+      if (cs%stats%n_events > max_listed_events) write (lst%unit, '(a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
          '      ... ', cs%stats%n_events - max_listed_events, &
          ' more in the HDF5 file (/coupled/contact/events)'
-      call note_io()
-      write (u, '(a,es10.3)', iostat=ios, iomsg=msg) '    max natural residual ||min(z, w)|| / ||q||: ', cs%stats%residual_max
-      call note_io()
+      call lst%note()
+      write (lst%unit, '(a,es10.3)', iostat=lst%ios, iomsg=lst%msg) &
+         '    max natural residual ||min(z, w)|| / ||q||: ', cs%stats%residual_max
+      call lst%note()
 
    contains
 
@@ -532,8 +468,8 @@ contains
 
          call law%lines(lines)
          do i = 1, size(lines)
-            write (u, '(4x,a)', iostat=ios, iomsg=msg) lines(i)%line
-            call note_io()
+            write (lst%unit, '(4x,a)', iostat=lst%ios, iomsg=lst%msg) lines(i)%line
+            call lst%note()
          end do
       end subroutine law_parameters
 
@@ -543,9 +479,9 @@ contains
    !> line, bottom and top elevation, and the peaks of the member rows (shear |V|, bottom and
    !> top end moments |M1|, |M2|, axial force variation |N - N_gravity|), uncoupled and, with
    !> `cpl`, coupled with the influence coefficient lambda (%).
-   subroutine write_column_tables(u, models, buildings, unc, cpl, infl)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_column_tables(lst, models, buildings, unc, cpl, infl)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Their per-kind data (the frames' column segments).
@@ -569,12 +505,12 @@ contains
             line = 'Column segments: peak first-order end forces (V shear, M1 bottom and M2 top end moment, '// &
                    'dN = N - N_gravity axial)'
             if (both) line = line//', uncoupled (u), coupled (c), lambda [%]'
-            call write_section(u, line)
+            call write_section(lst, line)
          end if
          first = .false.
          nq = size(models(ib)%member_names)
-         write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//models(ib)%name
-         call note_io()
+         write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  Building '//models(ib)%name
+         call lst%note()
          line = repeat(' ', 46)
          head = '     seg  storey  line      z1 [m]      z2 [m]'
          do q = 1, nq
@@ -586,14 +522,14 @@ contains
             end if
          end do
          if (both) then
-            write (u, '(a)', iostat=ios, iomsg=msg) trim(line)
-            call note_io()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) trim(line)
+            call lst%note()
             line = trim(head)
          else
             line = head(1:46)//trim(line(47:))
          end if
-         write (u, '(a)', iostat=ios, iomsg=msg) line
-         call note_io()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+         call lst%note()
          associate (f => buildings(ib)%frame%frame, ce => buildings(ib)%frame%column_element)
             do s = size(ce), 1, -1
                e = ce(s)
@@ -611,8 +547,8 @@ contains
                      end if
                   end associate
                end do
-               write (u, '(a)', iostat=ios, iomsg=msg) line
-               call note_io()
+               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+               call lst%note()
             end do
          end associate
       end do
@@ -636,15 +572,15 @@ contains
    !> Influence coefficients lambda = (Qc - Qu)/Qu * 100 (%), storey (floor) rows and one
    !> column per building, for storey shear, storey drift, floor displacement and
    !> floor absolute acceleration.
-   subroutine write_influence_tables(u, models, infl)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_influence_tables(lst, models, infl)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Influence coefficients of every building (`pound_influence`).
       type(building_influence), intent(in) :: infl(:)
 
-      call write_section(u, 'Influence coefficients lambda = (Qc - Qu) / Qu * 100 [%]')
+      call write_section(lst, 'Influence coefficients lambda = (Qc - Qu) / Qu * 100 [%]')
       call table('storey shear Q', 'storey', q_shear)
       call table('storey drift', 'storey', q_drift)
       call table('floor displacement u', 'floor', q_u)
@@ -662,14 +598,14 @@ contains
          integer :: j, ib, w
          real(dp) :: lambda
 
-         write (u, '(/,a)', iostat=ios, iomsg=msg) '  '//title
-         call note_io()
+         write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  '//title
+         call lst%note()
          line = '  '//right_cell(row, 6)
          do ib = 1, size(models)
             line = line//right_cell(models(ib)%name, column_width(ib))
          end do
-         write (u, '(a)', iostat=ios, iomsg=msg) line
-         call note_io()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+         call lst%note()
          do j = maxval([(size(models(ib)%floor_dof), ib=1, size(models))]), 1, -1
             write (number, '(i6)') j
             line = '  '//number
@@ -686,8 +622,8 @@ contains
                   end if
                end if
             end do
-            write (u, '(a)', iostat=ios, iomsg=msg) line
-            call note_io()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+            call lst%note()
          end do
       end subroutine table
 
@@ -702,9 +638,9 @@ contains
 
    !> Gap study: largest |lambda| per building and quantity against the gap, and the smallest
    !> gap meeting the target.
-   subroutine write_sweep_table(u, models, cfg, res)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_sweep_table(lst, models, cfg, res)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> `&sweep`.
@@ -717,33 +653,33 @@ contains
       character(len=11) :: cell
       integer :: i, ib, k
 
-      call write_section(u, 'Gap study: largest |lambda| [%] over the storeys (floors) against the gap')
-      write (u, '(a,i0,a,f10.4,a)', iostat=ios, iomsg=msg) &
+      call write_section(lst, 'Gap study: largest |lambda| [%] over the storeys (floors) against the gap')
+      write (lst%unit, '(a,i0,a,f10.4,a)', iostat=lst%ios, iomsg=lst%msg) &
          '  ', size(res%gap), ' gaps applied to every contact pair; ', &
          res%seconds, ' s for all coupled runs'
-      call note_io()
+      call lst%note()
       if (allocated(res%closing_max)) then
-         write (u, '(a,f10.4,a,/,a,i0,a,i0,a)', iostat=ios, iomsg=msg) &
+         write (lst%unit, '(a,f10.4,a,/,a,i0,a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
             '  largest closing displacement of any joint without contact: ', 1000.0_dp*maxval(res%closing_max), &
             ' mm;', '  the ', count(res%beyond), ' of ', size(res%gap), &
             ' gaps beyond it have no contact: one run without contact stands for them'
-         call note_io()
+         call lst%note()
       end if
       do ib = 1, size(models)
-         write (u, '(/,a)', iostat=ios, iomsg=msg) '  Building '//models(ib)%name
-         call note_io()
+         write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  Building '//models(ib)%name
+         call lst%note()
          line = '      gap [mm]    impacts'
          do k = 1, size(shown)
             line = line//right_cell(trim(heads(k)), 10)
          end do
          if (cfg%target > 0.0_dp) line = line//'  target'
-         write (u, '(a)', iostat=ios, iomsg=msg) line
-         call note_io()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+         call lst%note()
          do i = 1, size(res%gap)
             line = '  '//fixed_cell(mm*res%gap(i), 12, 4)
             if (res%failed(i)) then
-               write (u, '(a)', iostat=ios, iomsg=msg) line//'   FAILED (see the failed gaps below)'
-               call note_io()
+               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line//'   FAILED (see the failed gaps below)'
+               call lst%note()
                cycle
             end if
             write (cell, '(i11)') res%impacts(i)
@@ -756,38 +692,39 @@ contains
                end if
             end do
             if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
-            write (u, '(a)', iostat=ios, iomsg=msg) line
-            call note_io()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+            call lst%note()
          end do
       end do
       if (cfg%target > 0.0_dp) then
          if (res%found) then
-            write (u, '(/,a,f7.2,a,f10.4,a)', iostat=ios, iomsg=msg) &
+            write (lst%unit, '(/,a,f7.2,a,f10.4,a)', iostat=lst%ios, iomsg=lst%msg) &
                '  Smallest gap with every targeted |lambda| <= ', cfg%target, &
                ' % at it and at every larger gap of the sweep: ', 1000.0_dp*res%safe_gap, ' mm'
-            call note_io()
+            call lst%note()
          else
-            write (u, '(/,a,f7.2,a)', iostat=ios, iomsg=msg) &
+            write (lst%unit, '(/,a,f7.2,a)', iostat=lst%ios, iomsg=lst%msg) &
                '  No gap of the sweep range keeps every targeted |lambda| <= ', &
                cfg%target, ' % from there to the end of the range.'
-            call note_io()
+            call lst%note()
          end if
       end if
       if (any(res%failed)) then
-         write (u, '(/,a,i0,a,i0,a)', iostat=ios, iomsg=msg) '  Failed gaps (', count(res%failed), ' of ', &
+         write (lst%unit, '(/,a,i0,a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  Failed gaps (', count(res%failed), ' of ', &
             size(res%gap), '; left out, counted as not meeting the target):'
-         call note_io()
-         write (u, '(a)', iostat=ios, iomsg=msg) '    case      gap [mm]       t [s]      step  message'
-         call note_io()
+         call lst%note()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '    case      gap [mm]       t [s]      step  message'
+         call lst%note()
          do i = 1, size(res%gap)
             if (.not. res%failed(i)) cycle
-            write (u, '(i8,a14,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) i, fixed_cell(mm*res%gap(i), 14, 4), &
+            write (lst%unit, '(i8,a14,es12.4,i10,2x,a)', iostat=lst%ios, iomsg=lst%msg) i, fixed_cell(mm*res%gap(i), 14, 4), &
                res%time(i), res%step(i), &
                trim(res%messages(i))
-            call note_io()
+            call lst%note()
          end do
       end if
-      call write_warning_lines(u, res%warnings)
+      call write_warning_lines(lst, res%warnings)
    end subroutine write_sweep_table
 
    !> A gap in mm (3 decimals) in a field of width `w` (>= 10), or 'n/a' for a negative value
@@ -810,9 +747,9 @@ contains
    !> column_shear or column_moment and a building is a frame): per frame and targeted column
    !> quantity the largest |lambda| over its column segments against the gap, and whether the
    !> gap meets the target on every targeted quantity (`sweep_result%meets`).
-   subroutine write_sweep_column_table(u, models, cfg, res)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_sweep_column_table(lst, models, cfg, res)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> `&sweep`.
@@ -825,11 +762,11 @@ contains
 
       if (.not. any(cfg%target_quantities(q_column_shear:q_column_moment))) return
       if (all(models%member%n == 0)) return
-      call write_section(u, 'Gap study: largest |lambda| [%] over the column segments of the frames '// &
+      call write_section(lst, 'Gap study: largest |lambda| [%] over the column segments of the frames '// &
                          'against the gap')
-      write (u, '(a)', iostat=ios, iomsg=msg) '  one column per frame and targeted column quantity: '// &
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  one column per frame and targeted column quantity: '// &
          '<building>:column_shear (segment shear V), <building>:column_moment (end moments M1, M2)'
-      call note_io()
+      call lst%note()
       line = '    gap [mm]  impacts'
       do ib = 1, size(models)
          if (models(ib)%member%n == 0) cycle
@@ -841,14 +778,14 @@ contains
          end do
       end do
       if (cfg%target > 0.0_dp) line = line//'  target'
-      write (u, '(a)', iostat=ios, iomsg=msg) line
-      call note_io()
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+      call lst%note()
       do i = 1, size(res%gap)
          write (cell, '(f12.4)') 1000.0_dp*res%gap(i)
          line = cell
          if (res%failed(i)) then
-            write (u, '(a)', iostat=ios, iomsg=msg) line//'   FAILED (see the failed gaps above)'
-            call note_io()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line//'   FAILED (see the failed gaps above)'
+            call lst%note()
             cycle
          end if
          write (cell, '(i9)') res%impacts(i)
@@ -866,8 +803,8 @@ contains
             end do
          end do
          if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
-         write (u, '(a)', iostat=ios, iomsg=msg) line
-         call note_io()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+         call lst%note()
       end do
    end subroutine write_sweep_column_table
 

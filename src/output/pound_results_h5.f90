@@ -5,7 +5,8 @@
 !> dimensionless number, a count, an index or a code, '-' for text; a dataset whose columns
 !> differ lists them, e.g. '1/s, s'):
 !>
-!>     /                          attributes program, version, units, title, deck
+!>     /                          attributes program, version, units, g (the acceleration of
+!>                                gravity in m/s^2, `pound_constants::g_accel`), title, deck
 !>     /ground/time, /ground/acceleration        (n_out), m/s^2; attribute description
 !>     /model/<b>/height, mass, storey_stiffness, geometric_stiffness, axial_load,
 !>                periods, omega, rayleigh (a0, a1)
@@ -67,7 +68,8 @@ module pound_results_h5
                            q_column_moment
    use pound_building, only: building_model
    use pound_structure, only: structure_model
-   use pound_analysis, only: analysis_result, history_sink, output_steps
+   use pound_analysis, only: analysis_result, history_sink
+   use pound_analysis_plan, only: output_steps, steps_of
    use pound_contact, only: contact_system
    use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
@@ -77,6 +79,7 @@ module pound_results_h5
    use pound_separation, only: separation_t
    use pound_separation_output, only: write_separation_h5, pair_labels
    use pound_config, only: sweep_config
+   use pound_constants, only: g_accel
    implicit none
    private
 
@@ -134,7 +137,7 @@ contains
          error%message = 'cannot write '//label//': '//error%message
          return
       end if
-      sink%n_out = output_steps(nint(deck%analysis%t_end/deck%analysis%dt), deck%analysis%output_every)
+      sink%n_out = output_steps(steps_of(deck%analysis%t_end, deck%analysis%dt), deck%analysis%output_every)
       sink%compress = deck%analysis%compress
       allocate (sink%names(size(deck%buildings)))
       do ib = 1, size(deck%buildings)
@@ -227,6 +230,8 @@ contains
          call h5_write_attr(h5, '/', 'version', program_version, error)
          if (allocated(error)) return
          call h5_write_attr(h5, '/', 'units', units, error)
+         if (allocated(error)) return
+         call h5_write_attr(h5, '/', 'g', g_accel, error)
          if (allocated(error)) return
          call h5_write_attr(h5, '/', 'title', deck%analysis%title, error)
          if (allocated(error)) return

@@ -24,6 +24,7 @@ module pound_separation_output
    use pound_h5, only: h5_file, h5_write, h5_write_attr
    use pound_separation, only: separation_t, not_computed
    use pound_listing, only: write_section
+   use pound_text_writer, only: text_writer
    implicit none
    private
 
@@ -57,14 +58,14 @@ contains
    end function pair_labels
 
    !> The legend of the separation tables (`suite`: the time-history gap of a suite's sweep).
-   subroutine write_separation_legend(u, suite)
-      !> Open listing unit.
-      integer, intent(in) :: u
+   subroutine write_separation_legend(lst, suite)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The suite's table (else a run's).
       logical, intent(in) :: suite
-      integer :: ios
 
-      write (u, '(a)', iostat=ios) '  From the elastic peaks u1, u2 of the uncoupled run(s) at the '// &
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         '  From the elastic peaks u1, u2 of the uncoupled run(s) at the '// &
          'facing floors; n/a: not computed.', &
          '  ABS = u1 + u2; SRSS = sqrt(u1^2 + u2^2); DDC = sqrt(u1^2 + u2^2 - 2 rho u1 u2), rho: CQC '// &
          'correlation of the two buildings'' first modes;', &
@@ -76,23 +77,28 @@ contains
          '  the factors take u as the codes'' elastic displacement under the design action reduced by q, '// &
          'R or R/Ie: with unreduced records the peak itself is the codes'' estimate (equal displacements): '// &
          'then enter factors 1 (docs/manual.md, Design-code separation rules).'
+      call lst%note()
       if (suite) then
-         write (u, '(a)', iostat=ios) '  no-contact = max_t (u1(t) - u2(t)) of the uncoupled histories;', &
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  no-contact = max_t (u1(t) - u2(t)) of the uncoupled histories;', &
             '  time-hist. = the threshold gap of the gap sweep (the same gap at every pair): per motion', &
             '  its own largest |lambda|, for the suite the mean, against the target, refined by bisection', &
             '  (n/a: no &sweep, no target_lambda, or no gap of the range meets it).'
+         call lst%note()
       else
-         write (u, '(a)', iostat=ios) '  no-contact = the largest closing displacement u1 - u2 of the '// &
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  no-contact = the largest closing displacement u1 - u2 of the '// &
             'uncoupled motion, from the sweep''s probe (n/a without &sweep);', &
             '  time-hist. = the smallest gap of the sweep meeting target_lambda (n/a: no &sweep, no '// &
             'target_lambda, or no gap of the range meets it).'
+         call lst%note()
       end if
    end subroutine write_separation_legend
 
    !> The listing section of a run's separation rules: one table row per pair.
-   subroutine write_run_separation(u, labels, sep, per_joint)
-      !> Open listing unit.
-      integer, intent(in) :: u
+   subroutine write_run_separation(lst, labels, sep, per_joint)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> Pair labels (`pair_labels`).
       character(len=*), intent(in) :: labels(:)
       !> The rules per pair.
@@ -100,26 +106,30 @@ contains
       !> Whether the time-history gaps are the joints' own thresholds (several independent
       !> joints, `pound_sweep_joints`; default: the common sweep's, one gap for every pair).
       logical, intent(in), optional :: per_joint
-      integer :: ip, ios
+      integer :: ip
 
       if (size(sep) == 0) return
-      call write_section(u, 'Separation rules per contact pair [mm]')
-      call write_separation_legend(u, .false.)
+      call write_section(lst, 'Separation rules per contact pair [mm]')
+      call write_separation_legend(lst, .false.)
       if (present(per_joint)) then
-         if (per_joint) write (u, '(a)', iostat=ios) '  time-hist. per joint: the threshold of the pair''s '// &
-            'joint''s own sweep (its pairs at the gaps, the other pairs at their deck gaps; Gap study per joint).'
+         if (per_joint) then
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  time-hist. per joint: the threshold of '// &
+               'the pair''s joint''s own sweep (its pairs at the gaps, the other pairs at their deck gaps; Gap '// &
+               'study per joint).'
+            call lst%note()
+         end if
       end if
       do ip = 1, size(sep)
-         call write_separation_head(u, trim(labels(ip)), 'run', 3)
-         call write_separation_rows(u, 'run', sep(ip), 3)
+         call write_separation_head(lst, trim(labels(ip)), 'run', 3)
+         call write_separation_rows(lst, 'run', sep(ip), 3)
       end do
    end subroutine write_run_separation
 
    !> The head of the listing table of one pair: its label and the column names (the row
    !> column `w` characters wide: the longest row name; every other column `cw`).
-   subroutine write_separation_head(u, label, row_title, w)
-      !> Open listing unit.
-      integer, intent(in) :: u
+   subroutine write_separation_head(lst, label, row_title, w)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The pair's label.
       character(len=*), intent(in) :: label
       !> Title of the row column ('motion' or 'run').
@@ -129,32 +139,35 @@ contains
       character(len=10), parameter :: heads(9) = [character(len=10) :: 'ABS', 'SRSS', 'DDC', 'rho', 'ASCE7', &
                                                   'EN1998', 'IS1893', 'no-contact', 'time-hist.']
       character(len=:), allocatable :: line
-      integer :: ios, q
+      integer :: q
 
-      write (u, '(/,a)', iostat=ios) '  pair '//label
+      write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  pair '//label
+      call lst%note()
       line = '  '//left_cell(row_title, w)
       do q = 1, size(heads)
          line = line//right_cell(trim(heads(q)), cw)
       end do
-      write (u, '(a)', iostat=ios) line
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+      call lst%note()
    end subroutine write_separation_head
 
    !> One row of a pair's table: the rules in mm (n/a where not computed) and rho.
-   subroutine write_separation_rows(u, name, sep, w)
-      !> Open listing unit.
-      integer, intent(in) :: u
+   subroutine write_separation_rows(lst, name, sep, w)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
       !> The row's name (a motion, 'mean' or 'run').
       character(len=*), intent(in) :: name
       !> The rules of the pair.
       type(separation_t), intent(in) :: sep
       !> Width of the row column.
       integer, intent(in) :: w
-      integer :: ios
 
-      write (u, '(a)', iostat=ios) '  '//left_cell(name, w)//mm(sep%abs, sep%computed)//mm(sep%srss, sep%computed)// &
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         '  '//left_cell(name, w)//mm(sep%abs, sep%computed)//mm(sep%srss, sep%computed)// &
          mm(sep%ddc, sep%computed)//ratio(sep%rho, sep%computed)//mm(sep%asce7, sep%asce7_valid)// &
          mm(sep%en1998, sep%en1998_valid)//mm(sep%is1893, sep%is1893_valid)// &
          mm(sep%no_contact, sep%no_contact_valid)//mm(sep%time_history, sep%time_history_valid)
+      call lst%note()
 
    contains
 

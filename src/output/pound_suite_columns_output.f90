@@ -12,9 +12,10 @@
 !> moment_top, axial) and the segments as in /model/<b>/columns.
 module pound_suite_columns_output
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type
    use pound_structure, only: structure_model
    use pound_h5, only: h5_file, h5_write, h5_write_attr
+   use pound_text_writer, only: text_writer
    use pound_listing, only: write_section
    use pound_suite_columns, only: column_suite, column_target_maxima
    implicit none
@@ -27,9 +28,9 @@ contains
    !> Listing: per motion and frame the largest |lambda| of the column segments' shear and end
    !> moments (the sweep's column_shear, column_moment), then their mean and maximum over the
    !> motions used. Nothing without frames.
-   subroutine write_suite_columns_listing(u, models, names, failed, cols, error)
-      !> Open unit.
-      integer, intent(in) :: u
+   subroutine write_suite_columns_listing(lst, models, names, failed, cols)
+      !> The listing writer (unit, first write failure: the caller asks it).
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Motion names.
@@ -38,30 +39,31 @@ contains
       logical, intent(in) :: failed(:)
       !> Per building (`pound_suite_columns`).
       type(column_suite), intent(in) :: cols(:)
-      !> Error state (a failed write).
-      type(error_type), allocatable, intent(out) :: error
       real(dp) :: m(2, size(models)), mean(2, size(models)), most(2, size(models))
       character(len=:), allocatable :: line
-      character(len=512) :: msg
       character(len=14) :: cell
-      integer :: k, ib, q, ios, n_used
+      integer :: k, ib, q, n_used
 
       if (all(models%member%n == 0)) return
-      call write_section(u, 'Suite: largest |lambda| [%] over the column segments per motion and frame')
-      write (u, '(a)', iostat=ios, iomsg=msg) '  column_shear: segment shear V; column_moment: end moments '// &
+      call write_section(lst, 'Suite: largest |lambda| [%] over the column segments per motion and frame')
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         '  column_shear: segment shear V; column_moment: end moments '// &
          'M1, M2 (the &sweep target quantities); mean and max over the motions that did not fail'
+      call lst%note()
       line = '  '//'motion'//repeat(' ', 14)
       do ib = 1, size(models)
          if (models(ib)%member%n == 0) cycle
          line = line//'  '//trim(models(ib)%name)//':column_shear  '//trim(models(ib)%name)//':column_moment'
       end do
-      if (ios == 0) write (u, '(a)', iostat=ios, iomsg=msg) line
+      if (lst%ios == 0) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+      call lst%note()
       mean = 0.0_dp
       most = 0.0_dp
       n_used = count(.not. failed)
       do k = 1, size(names)
          if (failed(k)) then
-            if (ios == 0) write (u, '(2x,a20,a)', iostat=ios, iomsg=msg) names(k), '   FAILED'
+            if (lst%ios == 0) write (lst%unit, '(2x,a20,a)', iostat=lst%ios, iomsg=lst%msg) names(k), '   FAILED'
+            call lst%note()
             cycle
          end if
          m = column_target_maxima(models, cols, k)
@@ -71,7 +73,6 @@ contains
       end do
       call row('mean', mean)
       call row('max', most)
-      if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
 
    contains
 
@@ -88,7 +89,8 @@ contains
                line = line//repeat(' ', len_trim(models(ib)%name) + merge(1, 2, q == 1))//cell
             end do
          end do
-         if (ios == 0) write (u, '(a)', iostat=ios, iomsg=msg) line
+         if (lst%ios == 0) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+         call lst%note()
       end subroutine row
 
    end subroutine write_suite_columns_listing

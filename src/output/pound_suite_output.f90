@@ -40,12 +40,13 @@
 !> row per output time).
 module pound_suite_output
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type
    use pound_config, only: history_names, n_history_quantities
    use pound_strings, only: counted, str, left_cell, right_cell, fixed_cell
    use pound_contact, only: contact_system
    use pound_structure, only: structure_model
    use pound_influence, only: building_influence
+   use pound_text_writer, only: text_writer
    use pound_listing, only: write_section, write_influence_tables, gap_cell, mm
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_suite, only: suite_result
@@ -71,21 +72,18 @@ contains
    !> Every table has one heading per column (names separated by at least two blanks) and one
    !> cell per column in every row (no blank inside a cell): the motion and building columns
    !> are as wide as the longest name, gaps are in mm ('n/a': not computed, or none).
-   subroutine write_suite_listing(u, models, suite, error, cs)
-      !> Open listing unit.
-      integer, intent(in) :: u
+   subroutine write_suite_listing(lst, models, suite, cs)
+      !> The listing writer (unit, first write failure: the caller asks it).
+      type(text_writer), intent(inout) :: lst
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> The suite.
       type(suite_result), intent(in) :: suite
-      !> Set when a write fails.
-      type(error_type), allocatable, intent(out) :: error
       !> The contact system of the deck (its pairs' labels name the separation tables).
       type(contact_system), intent(in), optional :: cs
       type(building_influence), allocatable :: infl(:)
-      integer :: ios, k, ib, q, ip, nm, nb, wm, wb
+      integer :: k, ib, q, ip, nm, nb, wm, wb
       integer, allocatable :: used(:)
-      character(len=256) :: msg
       character(len=:), allocatable :: over, line
       !> Why a safe gap of the suite sweep is n/a.
       character(len=*), parameter :: none_met = 'no gap of the range meets the target, or no target'
@@ -96,7 +94,6 @@ contains
       over = ''
       if (suite%n_used < nm) over = ' ('//str(suite%n_used)//' of '//str(nm)//' motions used, '// &
                                     str(nm - suite%n_used)//' FAILED and left out)'
-      ios = 0
       wm = len('mean_of_'//str(nm)//'/'//str(nm))
       do k = 1, nm
          wm = max(wm, len_trim(suite%names(k)))
@@ -105,23 +102,27 @@ contains
       do ib = 1, nb
          wb = max(wb, len(models(ib)%name))
       end do
-      call write_section(u, 'Ground-motion suite ('//counted(nm, 'motion')//')')
-      write (u, '(a)', iostat=ios, iomsg=msg) '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
+      call write_section(lst, 'Ground-motion suite ('//counted(nm, 'motion')//')')
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
          'period of each building (m/s^2); row T1: that period (s)'
+      call lst%note()
       line = '  '//left_cell('motion', wm)//'  scale_factor  PGA [m/s^2]'
       do ib = 1, nb
          line = line//right_cell('Sa '//models(ib)%name, sa_width(ib))
       end do
-      write (u, '(a)', iostat=ios, iomsg=msg) line
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+      call lst%note()
       do k = 1, nm
          line = '  '//left_cell(trim(suite%names(k)), wm)//es_cell(suite%scale_factor(k), 14)// &
                 es_cell(suite%pga(k), 13)
          do ib = 1, nb
             line = line//es_cell(suite%sa_building(k, ib), sa_width(ib))
          end do
-         write (u, '(a)', iostat=ios, iomsg=msg) line
-         if (suite%motion_failed(k)) write (u, '(a)', iostat=ios, iomsg=msg) '  '//repeat(' ', wm)// &
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+         call lst%note()
+         if (suite%motion_failed(k)) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//repeat(' ', wm)// &
             '   FAILED (see the failed cases below): left out of every suite statistic'
+         call lst%note()
       end do
       if (suite%n_used == nm) then
          line = '  '//left_cell('mean', wm)//right_cell('-', 14)//es_cell(sum(suite%pga)/nm, 13)
@@ -135,35 +136,39 @@ contains
             line = line//es_cell(sum(suite%sa_building(used, ib))/suite%n_used, sa_width(ib))
          end do
       end if
-      write (u, '(a)', iostat=ios, iomsg=msg) line
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+      call lst%note()
       line = '  '//left_cell('T1', wm)//right_cell('-', 14)//right_cell('-', 13)
       do ib = 1, nb
          line = line//repeat(' ', sa_width(ib) - 14)//fixed_cell(suite%building_period(ib), 14, 4)
       end do
-      write (u, '(a)', iostat=ios, iomsg=msg) line
-      write (u, '(/,a)', iostat=ios, iomsg=msg) '  '//left_cell('motion', wm)//'  source'
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+      call lst%note()
+      write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell('motion', wm)//'  source'
+      call lst%note()
       do k = 1, nm
-         write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(trim(suite%names(k)), wm)//'  '// &
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell(trim(suite%names(k)), wm)//'  '// &
             trim(suite%source(k))
+         call lst%note()
       end do
-      if (ios /= 0) then
-         call fatal_error(error, 'listing: '//trim(msg))
-         return
-      end if
+      if (lst%first_ios /= 0) return
       if (.not. suite%has_coupled) then
          call write_failures()
          return
       end if
 
-      call write_section(u, 'Suite: largest |lambda| per motion, building and quantity [%]')
+      call write_section(lst, 'Suite: largest |lambda| per motion, building and quantity [%]')
       line = '  '//left_cell('motion', wm)//'  '//left_cell('building', wb)
       do q = 1, n_history_quantities
          line = line//right_cell(trim(history_names(q)), 14)
       end do
-      write (u, '(a)', iostat=ios, iomsg=msg) line
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+      call lst%note()
       do k = 1, nm
          if (suite%motion_failed(k)) then
-            write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(trim(suite%names(k)), wm)//'   FAILED'
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+               '  '//left_cell(trim(suite%names(k)), wm)//'   FAILED'
+            call lst%note()
             cycle
          end if
          do ib = 1, nb
@@ -171,89 +176,111 @@ contains
             do q = 1, n_history_quantities
                line = line//es_cell(maxval(abs(suite%building(ib)%lambda(k, :, q))), 14)
             end do
-            write (u, '(a)', iostat=ios, iomsg=msg) line
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+            call lst%note()
          end do
       end do
 
       allocate (infl(nb))
-      write (u, '(/,a)', iostat=ios, iomsg=msg) '  Suite mean of the lambdas (each motion''s lambda, '// &
+      write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) &
+         '  Suite mean of the lambdas (each motion''s lambda, '// &
          'then their arithmetic mean'//over//'):'
+      call lst%note()
       do ib = 1, nb
          infl(ib)%lambda = suite%building(ib)%mean_lambda
       end do
-      call write_influence_tables(u, models, infl)
-      write (u, '(/,a)', iostat=ios, iomsg=msg) '  Suite lambda of the means (the mean coupled and '// &
+      call write_influence_tables(lst, models, infl)
+      write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  Suite lambda of the means (the mean coupled and '// &
          'uncoupled peaks'//over//', then lambda; the codes average the responses: this is the one they ask for):'
+      call lst%note()
       do ib = 1, nb
          infl(ib)%lambda = suite%building(ib)%lambda_of_means
       end do
-      call write_influence_tables(u, models, infl)
-      call write_suite_columns_listing(u, models, suite%names, suite%motion_failed, suite%columns, error)
-      if (allocated(error)) return
+      call write_influence_tables(lst, models, infl)
+      call write_suite_columns_listing(lst, models, suite%names, suite%motion_failed, suite%columns)
+      if (lst%first_ios /= 0) return
 
-      call write_section(u, 'Separation rules per contact pair [mm]')
-      call write_separation_legend(u, .true.)
-      write (u, '(a)', iostat=ios, iomsg=msg) '  The suite row: rules on the mean peaks; no-contact gap: '// &
+      call write_section(lst, 'Separation rules per contact pair [mm]')
+      call write_separation_legend(lst, .true.)
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  The suite row: rules on the mean peaks; no-contact gap: '// &
          'mean over the motions'//over//'.'
+      call lst%note()
       do ip = 1, size(suite%separation, 2)
-         call write_separation_head(u, suite_pair_name(ip, cs), 'motion', wm)
+         call write_separation_head(lst, suite_pair_name(ip, cs), 'motion', wm)
          do k = 1, nm + 1
             if (k <= nm) then
                if (suite%motion_failed(k)) then
-                  write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(row_name(k), wm)//'   FAILED'
+                  write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell(row_name(k), wm)//'   FAILED'
+                  call lst%note()
                   cycle
                end if
             end if
-            call write_separation_rows(u, row_name(k), suite%separation(k, ip), wm)
+            call write_separation_rows(lst, row_name(k), suite%separation(k, ip), wm)
          end do
       end do
       if (suite%has_sweep) then
-         call write_section(u, 'Suite gap sweep: largest |lambda| [%] over the targeted quantities')
-         write (u, '(a)', iostat=ios, iomsg=msg) '  mean: the suite mean of each quantity''s and '// &
+         call write_section(lst, 'Suite gap sweep: largest |lambda| [%] over the targeted quantities')
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  mean: the suite mean of each quantity''s and '// &
             'building''s largest |lambda|, then the largest; max: the largest over the motions'//over
-         if (any(suite%gap_failed)) write (u, '(a)', iostat=ios, iomsg=msg) '  FAILED: a motion''s run '// &
+         call lst%note()
+         if (any(suite%gap_failed)) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  FAILED: a motion''s run '// &
             'failed at the gap (see the failed cases below): not averaged over the others, never meeting the target'
-         write (u, '(a)', iostat=ios, iomsg=msg) '      gap [mm]          mean           max'
+         call lst%note()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '      gap [mm]          mean           max'
+         call lst%note()
          do k = 1, size(suite%sweep_gap)
             if (suite%gap_failed(k)) then
-               write (u, '(a)', iostat=ios, iomsg=msg) '  '//gap_cell(suite%sweep_gap(k), 12)//'        FAILED'
+               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+                  '  '//gap_cell(suite%sweep_gap(k), 12)//'        FAILED'
+               call lst%note()
                cycle
             end if
-            write (u, '(a)', iostat=ios, iomsg=msg) '  '//gap_cell(suite%sweep_gap(k), 12)// &
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//gap_cell(suite%sweep_gap(k), 12)// &
                es_cell(suite%sweep_mean(k), 14)//es_cell(suite%sweep_max(k), 14)
+            call lst%note()
          end do
-         write (u, '(a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on the mean: '// &
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  smallest gap meeting the target on the mean: '// &
             gap_or_why(suite%safe_gap_mean, none_met)
-         write (u, '(a)', iostat=ios, iomsg=msg) '  smallest gap meeting the target on every motion: '// &
+         call lst%note()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  smallest gap meeting the target on every motion: '// &
             gap_or_why(suite%safe_gap_every, none_met)
-         write (u, '(a)', iostat=ios, iomsg=msg) '  refined by bisection (mean, every motion): '// &
+         call lst%note()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  refined by bisection (mean, every motion): '// &
             gap_or_why(suite%refined_gap_mean, 'not refined')//', '// &
             gap_or_why(suite%refined_gap_every, 'not refined')//' (tolerance '// &
             trim(adjustl(fixed_cell(mm*suite%refine_tolerance, 14, 4, .true.)))//' mm)'
-         write (u, '(a,2(1x,i0),a)', iostat=ios, iomsg=msg) '  non-monotone: grid gaps below the safe gap '// &
+         call lst%note()
+         write (lst%unit, '(a,2(1x,i0),a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  non-monotone: grid gaps below the safe gap '// &
             'that pass nevertheless (mean, every motion):', suite%non_monotone_mean, suite%non_monotone_every, &
             '  (0: monotone on the grid)'
-         if (suite%non_monotone_mean > 0 .or. suite%non_monotone_every > 0) write (u, '(a)', iostat=ios, &
-            iomsg=msg) '  WARNING: |lambda| is not monotone in the gap: a smaller gap of the grid passes, '// &
+         call lst%note()
+         if (suite%non_monotone_mean > 0 .or. suite%non_monotone_every > 0) write (lst%unit, '(a)', iostat=lst%ios, &
+            iomsg=lst%msg) '  WARNING: |lambda| is not monotone in the gap: a smaller gap of the grid passes, '// &
             'yet the thresholds above are the gaps from which on every larger gap passes'
-         write (u, '(/,a)', iostat=ios, iomsg=msg) '  Per motion: the threshold on its own largest |lambda| '// &
+         call lst%note()
+         write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  Per motion: the threshold on its own largest |lambda| '// &
             '(the time_history rule)'
-         write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell('motion', wm)// &
+         call lst%note()
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell('motion', wm)// &
             '     grid [mm]  refined [mm]  non-monotone'
+         call lst%note()
          do k = 1, nm
             if (suite%motion_failed(k)) then
-               write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell(trim(suite%names(k)), wm)//'        FAILED'
+               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+                  '  '//left_cell(trim(suite%names(k)), wm)//'        FAILED'
+               call lst%note()
                cycle
             end if
-            write (u, '(a,i14)', iostat=ios, iomsg=msg) '  '//left_cell(trim(suite%names(k)), wm)// &
+            write (lst%unit, '(a,i14)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell(trim(suite%names(k)), wm)// &
                gap_cell(suite%safe_gap_motion(k), 14)//gap_cell(suite%refined_gap_motion(k), 14), &
                suite%non_monotone_motion(k)
+            call lst%note()
          end do
       end if
-      if (ios /= 0) then
-         call fatal_error(error, 'listing: '//trim(msg))
-         return
-      end if
+      if (lst%first_ios /= 0) return
       call write_failures()
 
    contains
@@ -265,22 +292,25 @@ contains
          character(len=14) :: gap
 
          if (size(suite%failures) == 0) return
-         call write_section(u, 'Failed cases of the suite ('//str(size(suite%failures))//')')
-         write (u, '(a)', iostat=ios, iomsg=msg) '  gap -: the motion''s run at the deck''s gaps failed, or '// &
+         call write_section(lst, 'Failed cases of the suite ('//str(size(suite%failures))//')')
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+            '  gap -: the motion''s run at the deck''s gaps failed, or '// &
             'every gap of its sweep did (the motion is left out of every suite statistic);', &
             '  a gap: its run at that gap of the sweep or of a refinement failed (the gap never meets the target).'
-         if (ios == 0) write (u, '(a)', iostat=ios, iomsg=msg) '  '//left_cell('motion', wm)// &
+         call lst%note()
+         if (lst%ios == 0) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell('motion', wm)// &
             '      gap [mm]       t [s]      step  message'
+         call lst%note()
          do i = 1, size(suite%failures)
-            if (ios /= 0) exit
+            if (lst%ios /= 0) exit
             associate (f => suite%failures(i))
                gap = '             -'
                if (f%gap >= 0.0_dp) gap = fixed_cell(mm*f%gap, 14, 4)
-               write (u, '(a,a14,es12.4,i10,2x,a)', iostat=ios, iomsg=msg) '  '// &
+               write (lst%unit, '(a,a14,es12.4,i10,2x,a)', iostat=lst%ios, iomsg=lst%msg) '  '// &
                   left_cell(trim(suite%names(f%motion)), wm), gap, f%time, f%step, trim(f%message)
+               call lst%note()
             end associate
          end do
-         if (ios /= 0) call fatal_error(error, 'listing: '//trim(msg))
       end subroutine write_failures
 
       !> A gap of the suite sweep in mm, or, only when there is none (negative), 'n/a' and why.
@@ -470,22 +500,26 @@ contains
       !> /suite/failed and /suite/motion_failed, when some case failed: `write_failed_cases`
       !> (every failure a case) with the motion of each in place of the case index.
       subroutine write_failures()
-         real(dp), allocatable :: gap(:)
+         real(dp), allocatable :: gap(:), time(:)
          character(len=len(suite%names)), allocatable :: motion(:)
          character(len=case_message_len), allocatable :: message(:)
+         integer, allocatable :: step(:)
+         logical, allocatable :: failed(:)
          integer :: i, n
 
          n = size(suite%failures)
          if (n == 0) return
-         allocate (gap(n), motion(n), message(n))
+         allocate (gap(n), motion(n), message(n), time(n), step(n), failed(n))
+         failed = .true.
          do i = 1, n
             gap(i) = suite%failures(i)%gap
+            time(i) = suite%failures(i)%time
+            step(i) = suite%failures(i)%step
             motion(i) = suite%names(suite%failures(i)%motion)
             message(i) = suite%failures(i)%message
          end do
          call h5_write(h5, '/suite/failed/motion', motion, error, units='-')
-         if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, spread(.true., 1, n), message, &
-                                                             suite%failures%time, suite%failures%step, error, &
+         if (.not. allocated(error)) call write_failed_cases(h5, '/suite/failed', gap, failed, message, time, step, error, &
                                                              indexed=.false.)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions', size(suite%names), error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/failed', 'n_motions_used', suite%n_used, error)

@@ -291,7 +291,8 @@ contains
                                 'suite mean over the motions of each motion''s max_t (u1 - u2) of its uncoupled histories'))
                else
                   call add(item('pair', p, 'no_contact_gap', p//': no-contact gap', unit='mm', &
-                                location='the deck''s history stores no u', available=.false.))
+                                location='the u histories at the pair''s ends are not kept (history = ''u''; '// &
+                                'a point between floors also needs &analysis node_histories)', available=.false.))
                end if
                call th_item(p, s%time_history, 'suite sweep threshold on the mean (one gap for every joint)')
                if (s%abs >= 0.0_dp) then

@@ -28,8 +28,8 @@
 !> `single_motion_index` (1-based), `single_motion_heading` ('motion k of n: NAME').
 module pound_summary_output
    use pound_kinds, only: dp
-   use, intrinsic :: iso_fortran_env, only: int64
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type
+   use pound_text_writer, only: text_writer, open_text, close_text
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write_attr
    use pound_suite, only: suite_result
    use pound_summary, only: summary_item, motion_heading, suite_answer_line
@@ -98,36 +98,19 @@ contains
       type(summary_item), intent(in) :: items(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: u, ios, i
-      integer(int64) :: written, on_disk
-      character(len=256) :: msg
+      type(text_writer) :: w
+      integer :: i
 
-      open (newunit=u, file=path, status='replace', action='write', access='stream', form='formatted', &
-            iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call fatal_error(error, 'cannot write the summary '//path//': '//trim(msg))
-         return
-      end if
-      write (u, '(a)', iostat=ios, iomsg=msg) csv_header
+      call open_text(path, 'summary', w, error)
+      if (allocated(error)) return
+      write (w%unit, '(a)', iostat=w%ios, iomsg=w%msg) csv_header
+      call w%note()
       do i = 1, size(items)
-         if (ios /= 0) exit
-         write (u, '(a)', iostat=ios, iomsg=msg) csv_row(items(i))
+         if (w%ios /= 0) exit
+         write (w%unit, '(a)', iostat=w%ios, iomsg=w%msg) csv_row(items(i))
+         call w%note()
       end do
-      if (ios /= 0) then
-         close (u, iostat=i)
-         call fatal_error(error, 'cannot write the summary '//path//': '//trim(msg))
-         return
-      end if
-      inquire (unit=u, pos=written, iostat=i)
-      if (i /= 0) written = -1
-      close (u, iostat=ios, iomsg=msg)
-      if (ios /= 0) then
-         call fatal_error(error, 'cannot write the summary '//path//': '//trim(msg))
-         return
-      end if
-      inquire (file=path, size=on_disk, iostat=i)
-      if (i /= 0 .or. written < 1 .or. on_disk /= written - 1) &
-         call fatal_error(error, 'cannot write the summary '//path//': the file system did not take every byte')
+      call close_text(w, error)
    end subroutine write_summary_csv
 
    !> Root attributes of the results file at `path` (written and closed): `summary`, and with

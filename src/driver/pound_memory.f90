@@ -36,6 +36,7 @@ module pound_memory
    use pound_strings, only: str
    use pound_config, only: deck_type, n_history_quantities, history_names, is_frame
    use pound_posix, only: posix_address_space_limit
+   use pound_analysis_plan, only: steps_of_int64
    use pound_response, only: history_block
    implicit none
    private
@@ -80,7 +81,7 @@ contains
       real(dp) :: joints, floors, every, frame_bytes, lines, dofs, blocks
       integer :: ib, ic, n_stored, n_held
 
-      est%n_steps = real(nint(deck%analysis%t_end/deck%analysis%dt, int64), dp)
+      est%n_steps = real(steps_of_int64(deck%analysis%t_end, deck%analysis%dt), dp)
       every = real(max(deck%analysis%output_every, 1), dp)
       est%n_out = aint(est%n_steps/every) + 1.0_dp
       n_stored = count(deck%analysis%store)
