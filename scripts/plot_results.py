@@ -286,6 +286,14 @@ def read_results(path):
             # Failed gaps (results left out, zeros in the file): not drawn as values.
             sw["failed"] = (np.asarray(arr("/sweep/failed/case", 1), dtype=int) - 1
                             if "/sweep/failed/case" in f else np.zeros(0, dtype=int))
+            # Several independent joints: each joint's own sweep (/sweep/joint/<left>-<right>).
+            sw["joints"] = {}
+            for j in (f["/sweep/joint"].keys() if "/sweep/joint" in f else []):
+                g = f"/sweep/joint/{j}"
+                sw["joints"][j] = {"gap": arr(g + "/gap", 1), "meets": arr(g + "/meets", 1).astype(bool),
+                                   "safe_gap": float(f[g + "/safe_gap"][()]),
+                                   "lambda": {b: arr(f"{g}/max_abs_lambda/{b}/storey_shear", 1) for b in r.buildings
+                                              if f"{g}/max_abs_lambda/{b}/storey_shear" in f}}
             r.sweep = sw
         if "/influence" in f:
             for b in r.buildings:
@@ -705,8 +713,9 @@ def plot_sweep(plt, r, args, written, notes):
             ax.axvline(1e3 * g, color="red", linestyle=":", linewidth=0.9,
                        label="failed gap (left out)" if k == 0 else None)
         if sw["safe_gap"] >= 0:
+            every = " (every joint)" if sw["joints"] else ""
             ax.axvline(1e3 * sw["safe_gap"], color="black", linestyle="-.", linewidth=0.9,
-                       label=f"smallest gap meeting it: {1e3 * sw['safe_gap']:.3g} mm")
+                       label=f"smallest gap meeting it{every}: {1e3 * sw['safe_gap']:.3g} mm")
         ax.set_yscale("symlog", linthresh=1.0)
         ax.set_title(f"building {b}", loc="left", fontsize=9)
         ax.set_xlabel("joint gap [mm]")
@@ -716,6 +725,39 @@ def plot_sweep(plt, r, args, written, notes):
     axes[0, -1].legend(loc="center right", fontsize=7)
     suptitle(fig, r, "Gap study: largest influence coefficient against the seismic joint gap")
     save(fig, r, "sweep", args, written)
+    plt.close(fig)
+    if sw["joints"]:
+        plot_sweep_joints(plt, r, args, written)
+
+
+def plot_sweep_joints(plt, r, args, written):
+    """Each independent joint's own sweep (its pairs at the gaps, the other joints at their deck
+    gaps): the storey-shear |lambda| of every building against the joint's gap, and its threshold."""
+    import numpy as np
+
+    joints = r.sweep["joints"]
+    fig, axes = plt.subplots(1, len(joints), figsize=(3.6 * len(joints) + 0.6, 5.0), squeeze=False, sharey=True)
+    fig.subplots_adjust(top=0.82, bottom=0.30, wspace=0.08)
+    for i, (name, jt) in enumerate(joints.items()):
+        ax = axes[0, i]
+        for k, (b, y) in enumerate(jt["lambda"].items()):
+            ax.plot(1e3 * jt["gap"], np.asarray(y, dtype=float), color=COLOURS[k % len(COLOURS)],
+                    linestyle=LINESTYLES[k % len(LINESTYLES)], linewidth=1.0, label=f"building {b}")
+        if r.sweep["target"] > 0:
+            ax.axhline(r.sweep["target"], color="black", linestyle=":", linewidth=0.9,
+                       label=f"target {r.sweep['target']:.4g} %")
+        if jt["safe_gap"] >= 0:
+            ax.axvline(1e3 * jt["safe_gap"], color="black", linestyle="-.", linewidth=0.9,
+                       label=f"joint threshold: {1e3 * jt['safe_gap']:.3g} mm")
+        ax.set_yscale("symlog", linthresh=1.0)
+        ax.set_title(f"joint {name}", loc="left", fontsize=9)
+        ax.set_xlabel(f"gap of joint {name} [mm]")
+        if i == 0:
+            ax.set_ylabel("largest storey-shear |lambda| [%]")
+        ax.grid(True, color="0.85", linewidth=0.5)
+        ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.16), ncol=2, fontsize=7)
+    suptitle(fig, r, "Gap study per joint: each joint swept alone, the other joints at their deck gaps")
+    save(fig, r, "sweep_joints", args, written)
     plt.close(fig)
 
 

@@ -50,7 +50,7 @@ set(POUND_SOURCES
   contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_influence.f90
-  analysis/pound_sweep.f90
+  analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90
   # analyses: the uncoupled runs of several motions at once
   analysis/pound_analysis_batch.f90
   # analyses: response spectra and scaling, code separation rules
@@ -69,7 +69,7 @@ set(POUND_SOURCES
   output/pound_results_h5.f90 output/pound_text_writer.f90
   output/pound_listing.f90
   # outputs: the separation rules' listing table and datasets (a run and a suite)
-  output/pound_separation_output.f90
+  output/pound_separation_output.f90 output/pound_sweep_joints_output.f90
   # outputs: the suite's listing sections and /suite
   output/pound_suite_output.f90 output/pound_suite_columns_output.f90
   # outputs: the engineering summary (terminal, top of the listing, <stem>_summary.csv, root attributes)

@@ -40,7 +40,7 @@ module pound_sweep
    private
 
    public :: sweep_result, run_sweep, sweep_gaps, sweep_from_table
-   public :: gap_cases, gap_cases_init, gap_cases_probe, gap_cases_set_probe, sweep_column_width
+   public :: gap_cases, gap_cases_init, gap_cases_probe, gap_cases_set_probe, sweep_column_width, gap_run
 
    !> Characters kept of a gap's first warning.
    integer, parameter :: warning_len = 512
@@ -119,8 +119,6 @@ contains
       real(dp), intent(out) :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      type(analysis_result) :: cpl
-      type(contact_system) :: cs
       real(dp) :: gaps(work%n_pairs)
 
       gaps = work%gap(i)
@@ -132,11 +130,28 @@ contains
             return
          end if
       end if
+      call gap_run(work, gaps, values, error)
+   end subroutine gap_case
+
+   !> The coupled run of the cases' prepared model with the gaps `gaps` (one per constraint)
+   !> into a column (`gap_cases`; also the joints' cases of `pound_sweep_joints`).
+   recursive subroutine gap_run(work, gaps, values, error)
+      !> The sweep's cases.
+      class(gap_cases), intent(in) :: work
+      !> Gap of every constraint (m).
+      real(dp), intent(in) :: gaps(:)
+      !> The column.
+      real(dp), intent(out) :: values(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(analysis_result) :: cpl
+      type(contact_system) :: cs
+
       ! An unallocated `ground` is an absent argument.
       call coupled_integrate(work%cfg, work%models, work%ag, work%prep, cpl, cs, error, gaps, work%ground)
       if (allocated(error)) return
       call result_column(work, cpl, sum(cs%joint(:)%impacts), values)
-   end subroutine gap_case
+   end subroutine gap_run
 
    !> A coupled run's column (`gap_cases`); the flag of a gap beyond the closing is 0.
    subroutine result_column(work, cpl, impacts, values)

@@ -27,6 +27,7 @@ module pound_run_case
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
    use pound_sweep, only: sweep_result, run_sweep
+   use pound_sweep_joints, only: joint_sweep, find_joints, run_joint_sweeps, joint_thresholds
    use pound_separation, only: separation_t, code_separation, levels_coincide, not_computed
    use pound_plausibility, only: period_warning, unit_suspects
    implicit none
@@ -80,10 +81,14 @@ module pound_run_case
       type(building_influence), allocatable :: influence(:)
       !> Gap study.
       type(sweep_result) :: sweep
+      !> The independent joints (`pound_sweep_joints`; allocated with the sweep) and, where
+      !> there are several, each one's own sweep (its pairs swept, the others at their deck gaps).
+      type(joint_sweep), allocatable :: joints(:)
       !> Separation rules per contact pair (the deck's `&contact` pairs in order), from the
       !> uncoupled peaks (`pair_separation`; allocated when both analyses ran). With a sweep, the
       !> no-contact gap is its probe's largest closing displacement of each joint and the
-      !> time-history gap its safe gap when found; without, both are n/a.
+      !> time-history gap its safe gap when found (with several independent joints, that of the
+      !> pair's joint's own sweep); without, both are n/a.
       type(separation_t), allocatable :: separation(:)
       !> Warnings of the deck (plausibility), of the models (period against the code estimate),
       !> of the uncoupled run, the coupled run and the sweep, in that order, one line each (size
@@ -172,7 +177,7 @@ contains
       type(ground_motion_t) :: deck_gm
       type(contact_pair), allocatable :: pairs(:)
       type(analysis_plan) :: plan
-      character(len=:), allocatable :: prefix, text
+      character(len=:), allocatable :: prefix, text, joint_warnings(:)
       real(dp), allocatable :: ag(:)
       logical :: coupled_only
       integer :: n_steps, n_out, ib, stat
@@ -263,6 +268,8 @@ contains
                   return
                end if
                res%has_sweep = .true.
+               call joint_sweeps()
+               if (allocated(error)) return
             end if
          end if
       end if
@@ -283,6 +290,7 @@ contains
       if (res%has_uncoupled) call collect(res%unc%warnings)
       if (res%has_coupled) call collect(res%cpl%warnings)
       if (res%has_sweep) call collect(res%sweep%warnings)
+      if (allocated(joint_warnings)) call collect(joint_warnings)
 
    contains
 
@@ -290,6 +298,22 @@ contains
          has_ground = .false.
          if (present(options)) has_ground = allocated(options%ground)
       end function has_ground
+
+      !> The independent joints and, where there are several, each one's sweep (its warnings
+      !> into `joint_warnings`).
+      subroutine joint_sweeps()
+         res%joints = find_joints(pairs, structure_names(res%models))
+         if (size(res%joints) < 2) return
+         allocate (character(len=1) :: joint_warnings(0))
+         if (has_ground()) then
+            call run_joint_sweeps(plan, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
+                                  joint_warnings, error, options%ground)
+         else
+            call run_joint_sweeps(plan, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
+                                  joint_warnings, error, deck_gm)
+         end if
+         if (allocated(error)) error%message = prefix//error%message
+      end subroutine joint_sweeps
 
       logical function has_uncoupled()
          has_uncoupled = .false.
@@ -300,6 +324,9 @@ contains
       !> facing floors.
       subroutine separations()
          integer :: ic, k, np
+         ! Contiguous copies for `joint_thresholds` (no array temporary at the call).
+         real(dp), allocatable :: th_gap(:)
+         logical, allocatable :: th_valid(:)
 
          np = 0
          allocate (res%separation(sum([(size(deck%contacts(ic)%floor_left), ic=1, size(deck%contacts))])))
@@ -316,8 +343,15 @@ contains
             end associate
          end do
          if (res%has_sweep) then
-            res%separation%time_history_valid = res%sweep%found
-            if (res%sweep%found) res%separation%time_history = res%sweep%safe_gap
+            allocate (th_gap(np), th_valid(np))
+            if (size(res%joints) > 1) then
+               call joint_thresholds(res%joints, np, th_gap, th_valid)
+               res%separation%time_history = th_gap
+               res%separation%time_history_valid = th_valid
+            else
+               res%separation%time_history_valid = res%sweep%found
+               if (res%sweep%found) res%separation%time_history = res%sweep%safe_gap
+            end if
             ! The sweep's probe (the uncoupled motion run as a coupled one no joint closes) gives
             ! each joint's largest closing displacement: the no-contact gap (0 if it never closes).
             if (allocated(res%sweep%closing_max)) then

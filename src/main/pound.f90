@@ -28,6 +28,8 @@ program pound
    use pound_deck, only: read_deck
    use pound_ground_motion, only: ground_motion_t
    use pound_run_case, only: case_options, case_result, run_case, deck_ground_motion
+   use pound_sweep_joints, only: deck_joints, failed_joint_gaps
+   use pound_sweep_joints_output, only: write_joint_sweep_tables
    use pound_suite, only: suite_result, run_suite
    use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_separation_output, only: write_run_separation, pair_labels
@@ -172,6 +174,12 @@ program pound
                         ' gaps of the sweep failed (named in '//outputs%listing//' and '//outputs%h5// &
                         ' /sweep/failed); the other results were written', failed_cases_status)
       end if
+      if (joint_count() > 0) then
+         if (failed_joint_gaps(res%joints) > 0) &
+            call stop_with(str(failed_joint_gaps(res%joints))//' gaps of the joints'' own sweeps failed (named in '// &
+                           outputs%listing//' and '//outputs%h5//' /sweep/joint/<joint>/failed); the other '// &
+                           'results were written', failed_cases_status)
+      end if
    end if
    call cases_stop()
 
@@ -208,7 +216,7 @@ contains
       if (res%has_sweep) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
                                res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file, &
-                               separation=res%separation)
+                               separation=res%separation, joints=res%joints)
       else if (res%has_coupled) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
                                res%unc, error, res%cpl, res%cs, res%influence, file=file, separation=res%separation)
@@ -252,11 +260,20 @@ contains
       planned_runs = 1
       if (size(deck%contacts) > 0) then
          planned_runs = 2
-         ! A sweep: its run without contact (`probe_gap`) and its gaps.
+         ! A sweep: its run without contact (`probe_gap`) and its gaps; a single motion's with
+         ! several independent joints, also each joint's gaps (`pound_sweep_joints`).
          if (deck%sweep%active) planned_runs = planned_runs + 1 + deck%sweep%n_gaps
+         if (deck%sweep%active .and. .not. is_suite .and. deck_joints(deck%contacts) > 1) &
+            planned_runs = planned_runs + deck_joints(deck%contacts)*deck%sweep%n_gaps
       end if
       if (is_suite) planned_runs = planned_runs*size(deck%motions)
    end function planned_runs
+
+   !> The number of independent joints whose own sweeps ran (0 without a sweep).
+   integer function joint_count()
+      joint_count = 0
+      if (allocated(res%joints)) joint_count = size(res%joints)
+   end function joint_count
 
    !> Refuse the run if its estimated memory exceeds what the machine can give.
    !> Plan the outputs (`plan_outputs`): they must not be the deck or any record it reads.
@@ -328,8 +345,9 @@ contains
          call write_column_tables(lst, res%models, res%buildings, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(lst, res%models, deck%sweep, res%sweep)
          if (res%has_sweep) call write_sweep_column_table(lst, res%models, deck%sweep, res%sweep)
+         if (joint_count() > 1) call write_joint_sweep_tables(lst, deck%sweep, res%joints, pair_labels(res%cs))
          if (size(deck%motions) == 1 .and. allocated(res%separation)) &
-            call write_run_separation(lst, pair_labels(res%cs), res%separation)
+            call write_run_separation(lst, pair_labels(res%cs), res%separation, per_joint=joint_count() > 1)
       end if
       if (size(deck%motions) > 1) then
          call write_suite_listing(lst, res%models, suite, res%cs)
@@ -396,6 +414,9 @@ contains
                write (line, '(a,f10.4,a)') 'smallest gap meeting the target: ', 1000.0_dp*sweep%safe_gap, ' mm'
                if (size(deck%motions) > 1) then
                   text = text//'  '//motion_heading(suite)//', '//trim(line)//' (this motion alone)'//new_line('a')
+               else if (joint_count() > 1) then
+                  text = text//'  '//trim(line)//' (every joint at this gap; each joint''s own: the pair lines)'// &
+                         new_line('a')
                else
                   text = text//'  '//trim(line)//new_line('a')
                end if

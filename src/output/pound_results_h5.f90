@@ -52,6 +52,14 @@
 !>                                               largest |lambda| over its column segments, percent
 !>                                               (attribute units = '%')
 !>     /sweep/failed/case, gap, time, step, message   (n_failed) the gaps whose run failed
+!>     /sweep/joint/<left>-<right>/...           only with several independent joints (pairs
+!>                                               between different pairs of buildings): that
+!>                                               joint's own sweep (its pairs at the gaps, the
+!>                                               others at their deck gaps): gap, impacts, meets,
+!>                                               max_abs_lambda/<b>/<q>, failed/... as /sweep;
+!>                                               safe_gap () m, -1: none; pairs (n) its pair
+!>                                               labels; attributes target_lambda, safe_gap, left,
+!>                                               right (building names)
 module pound_results_h5
    use pound_kinds, only: dp
    use pound_error, only: error_type
@@ -67,6 +75,7 @@ module pound_results_h5
    use pound_influence, only: building_influence
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
+   use pound_sweep_joints, only: joint_sweep
    use pound_separation, only: separation_t
    use pound_separation_output, only: write_separation_h5, pair_labels
    use pound_config, only: sweep_config
@@ -164,7 +173,7 @@ contains
 
    !> Write the whole results file at `path`.
    subroutine write_results_h5(path, deck, models, buildings, ground_text, ag_out, unc, error, cpl, cs, influence, sweep, &
-                               file, separation)
+                               file, separation, joints)
       !> File to create (truncated).
       character(len=*), intent(in) :: path
       !> The deck.
@@ -195,6 +204,9 @@ contains
       !> Separation rules per contact pair (`pound_separation`), written to /separation
       !> (`write_separation_h5`) for a deck with one motion; none when absent or empty.
       type(separation_t), intent(in), optional :: separation(:)
+      !> The independent joints with their own sweeps (written with `sweep` where there are
+      !> several: /sweep/joint/<name>).
+      type(joint_sweep), intent(in), optional :: joints(:)
       type(h5_file) :: h5
       type(error_type), allocatable :: close_error
       integer :: ib, q
@@ -258,11 +270,18 @@ contains
             end do
          end if
          if (present(sweep)) call write_sweep()
+         if (allocated(error)) return
+         if (present(sweep) .and. present(joints)) call write_joint_sweeps()
          if (allocated(error) .or. .not. present(separation)) return
          if (.not. present(cs)) return
          if (size(separation) > 0 .and. size(deck%motions) == 1) &
             call write_separation_h5(h5, '/separation', reshape(separation, [1, size(separation)]), &
                                      pair_labels(cs), .false., error)
+         if (allocated(error) .or. .not. (present(sweep) .and. present(joints))) return
+         if (size(joints) > 1 .and. size(separation) > 0 .and. size(deck%motions) == 1) &
+            call h5_write_attr(h5, '/separation/time_history', 'rule', 'per pair, the threshold of its joint''s own '// &
+                               'sweep (its pairs at the gaps, the other pairs at their deck gaps): '// &
+                               '/sweep/joint/<left>-<right>/safe_gap', error)
       end subroutine write_all
 
       !> lambda of the member rows by quantity: /influence/<b>/<group>/<name> (n_members).
@@ -282,25 +301,63 @@ contains
       end subroutine write_member_influence
 
       subroutine write_sweep()
-         ! A contiguous copy of each (quantity, building) row (no array temporary at the call).
-         real(dp), allocatable :: row(:)
-
-         call h5_write(h5, '/sweep/gap', sweep%gap, error, units='m')
-         if (allocated(error)) return
-         call h5_write(h5, '/sweep/impacts', sweep%impacts, error, units='1')
-         if (allocated(error)) return
-         call h5_write(h5, '/sweep/meets', merge(1, 0, sweep%meets), error, units='1')
+         call write_sweep_group('/sweep', sweep)
          if (allocated(error)) return
          call h5_write(h5, '/sweep/no_contact', merge(1, 0, sweep%beyond), error, units='1')
          if (allocated(error)) return
-         if (allocated(sweep%closing_max)) then
-            call h5_write(h5, '/sweep/closing_max', sweep%closing_max, error, units='m')
+         if (allocated(sweep%closing_max)) call h5_write(h5, '/sweep/closing_max', sweep%closing_max, error, units='m')
+      end subroutine write_sweep
+
+      !> Every joint's own sweep where there are several (`pound_sweep_joints`).
+      subroutine write_joint_sweeps()
+         character(len=:), allocatable :: g, labels(:)
+         integer :: j
+
+         if (size(joints) < 2 .or. .not. present(cs)) return
+         labels = pair_labels(cs)
+         do j = 1, size(joints)
+            if (.not. joints(j)%done) cycle
+            g = '/sweep/joint/'//joints(j)%name
+            call write_sweep_group(g, joints(j)%sweep)
             if (allocated(error)) return
-         end if
+            call h5_write(h5, g//'/safe_gap', joints(j)%sweep%safe_gap, error, units='m')
+            if (allocated(error)) return
+            call h5_write(h5, g//'/pairs', labels(joints(j)%pairs), error, units='-')
+            if (allocated(error)) return
+            call h5_write_attr(h5, g, 'left', end_name(joints(j)%left), error)
+            if (allocated(error)) return
+            call h5_write_attr(h5, g, 'right', end_name(joints(j)%right), error)
+            if (allocated(error)) return
+         end do
+      end subroutine write_joint_sweeps
+
+      !> A joint end's building name ('rigid' for a fixed neighbour).
+      function end_name(ib) result(name)
+         integer, intent(in) :: ib
+         character(len=:), allocatable :: name
+
+         name = 'rigid'
+         if (ib >= 1) name = models(ib)%name
+      end function end_name
+
+      !> A sweep's gaps, impacts, whether each meets the target, the largest |lambda| per
+      !> building and quantity, its attributes and failed gaps, under group g.
+      subroutine write_sweep_group(g, sw)
+         character(len=*), intent(in) :: g
+         type(sweep_result), intent(in) :: sw
+         ! A contiguous copy of each (quantity, building) row (no array temporary at the call).
+         real(dp), allocatable :: row(:)
+
+         call h5_write(h5, g//'/gap', sw%gap, error, units='m')
+         if (allocated(error)) return
+         call h5_write(h5, g//'/impacts', sw%impacts, error, units='1')
+         if (allocated(error)) return
+         call h5_write(h5, g//'/meets', merge(1, 0, sw%meets), error, units='1')
+         if (allocated(error)) return
          do ib = 1, size(models)
             do q = 1, n_history_quantities
-               row = sweep%max_abs_lambda(q, ib, :)
-               call h5_write(h5, '/sweep/max_abs_lambda/'//models(ib)%name//'/'//trim(history_names(q)), &
+               row = sw%max_abs_lambda(q, ib, :)
+               call h5_write(h5, g//'/max_abs_lambda/'//models(ib)%name//'/'//trim(history_names(q)), &
                              row, error, units='%')
                if (allocated(error)) return
             end do
@@ -308,25 +365,25 @@ contains
             if (models(ib)%member%n == 0) cycle
             do q = q_column_shear, q_column_moment
                if (.not. deck%sweep%target_quantities(q)) cycle
-               row = sweep%max_abs_lambda(q, ib, :)
-               call h5_write(h5, '/sweep/max_abs_lambda/'//models(ib)%name//'/'//trim(target_names(q)), &
+               row = sw%max_abs_lambda(q, ib, :)
+               call h5_write(h5, g//'/max_abs_lambda/'//models(ib)%name//'/'//trim(target_names(q)), &
                              row, error)
-               if (.not. allocated(error)) call h5_write_attr(h5, '/sweep/max_abs_lambda/'//models(ib)%name// &
+               if (.not. allocated(error)) call h5_write_attr(h5, g//'/max_abs_lambda/'//models(ib)%name// &
                                                               '/'//trim(target_names(q)), 'units', '%', error)
                if (allocated(error)) return
             end do
          end do
-         call h5_write_attr(h5, '/sweep', 'target_lambda', deck%sweep%target, error)
+         call h5_write_attr(h5, g, 'target_lambda', deck%sweep%target, error)
          if (allocated(error)) return
-         call h5_write_attr(h5, '/sweep', 'safe_gap', sweep%safe_gap, error)
-         if (allocated(error) .or. .not. any(sweep%failed)) return
-         call h5_write_attr(h5, '/sweep', 'failed_gaps', count(sweep%failed), error)
+         call h5_write_attr(h5, g, 'safe_gap', sw%safe_gap, error)
+         if (allocated(error) .or. .not. any(sw%failed)) return
+         call h5_write_attr(h5, g, 'failed_gaps', count(sw%failed), error)
          if (allocated(error)) return
-         call h5_write_attr(h5, '/sweep', 'safe_gap_note', 'failed gaps counted as not meeting the target', error)
+         call h5_write_attr(h5, g, 'safe_gap_note', 'failed gaps counted as not meeting the target', error)
          if (allocated(error)) return
-         call write_failed_cases(h5, '/sweep/failed', sweep%gap, sweep%failed, sweep%messages, sweep%time, &
-                                 sweep%step, error)
-      end subroutine write_sweep
+         call write_failed_cases(h5, g//'/failed', sw%gap, sw%failed, sw%messages, sw%time, &
+                                 sw%step, error)
+      end subroutine write_sweep_group
 
       subroutine write_model(b, s)
          type(structure_model), intent(in) :: b

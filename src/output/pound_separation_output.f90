@@ -96,18 +96,29 @@ contains
    end subroutine write_separation_legend
 
    !> The listing section of a run's separation rules: one table row per pair.
-   subroutine write_run_separation(lst, labels, sep)
+   subroutine write_run_separation(lst, labels, sep, per_joint)
       !> The listing writer (unit, first write failure).
       type(text_writer), intent(inout) :: lst
       !> Pair labels (`pair_labels`).
       character(len=*), intent(in) :: labels(:)
       !> The rules per pair.
       type(separation_t), intent(in) :: sep(:)
+      !> Whether the time-history gaps are the joints' own thresholds (several independent
+      !> joints, `pound_sweep_joints`; default: the common sweep's, one gap for every pair).
+      logical, intent(in), optional :: per_joint
       integer :: ip
 
       if (size(sep) == 0) return
       call write_section(lst, 'Separation rules per contact pair [mm]')
       call write_separation_legend(lst, .false.)
+      if (present(per_joint)) then
+         if (per_joint) then
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  time-hist. per joint: the threshold of '// &
+               'the pair''s joint''s own sweep (its pairs at the gaps, the other pairs at their deck gaps; Gap '// &
+               'study per joint).'
+            call lst%note()
+         end if
+      end if
       do ip = 1, size(sep)
          call write_separation_head(lst, trim(labels(ip)), 'run', 3)
          call write_separation_rows(lst, 'run', sep(ip), 3)

@@ -29,6 +29,7 @@ module pound_summary
    use pound_config, only: deck_type
    use pound_response, only: q_u, q_shear
    use pound_run_case, only: case_result
+   use pound_sweep_joints, only: failed_joint_gaps
    use pound_suite, only: suite_result
    use pound_separation, only: separation_t, no_contact_gap
    implicit none
@@ -102,6 +103,13 @@ contains
                                                   'failed gaps of the sweep'//motion, &
                                                   real(count(res%sweep%failed), dp), '-', &
                                                   'of '//counted(size(res%sweep%failed), 'gap')))
+         if (allocated(res%joints)) then
+            if (failed_joint_gaps(res%joints) > 0) call add(item('failed', 'run', 'failed_joint_sweep_gaps', &
+                                                                 'failed gaps of the joints'' own sweeps', &
+                                                                 real(failed_joint_gaps(res%joints), dp), '-', &
+                                                                 'of '//counted(size(res%joints)* &
+                                                                                size(res%sweep%gap), 'gap')))
+         end if
       end if
       if (allocated(res%warnings)) then
          do i = 1, size(res%warnings)
@@ -310,6 +318,7 @@ contains
             if (res%sweep%found) gap = res%sweep%safe_gap
          end if
          if (gap >= 0.0_dp) where = 'sweep threshold (one gap for every joint)'
+         if (res%has_sweep) call joint_item(ip, gap, where)
          call th_item(p, gap, where)
          have = .false.
          why = 'the separation rules were not computed'
@@ -326,6 +335,30 @@ contains
             call rule_items(p, sep, .false., why)
          end if
       end subroutine pair_items
+
+      !> With several independent joints, pair ip's threshold is its joint's own (`pound_sweep_joints`).
+      subroutine joint_item(ip, gap, where)
+         integer, intent(in) :: ip
+         real(dp), intent(inout) :: gap
+         character(len=:), allocatable, intent(inout) :: where
+         integer :: j
+
+         if (.not. allocated(res%joints)) return
+         if (size(res%joints) < 2) return
+         do j = 1, size(res%joints)
+            if (all(res%joints(j)%pairs /= ip)) cycle
+            gap = -1.0_dp
+            where = 'joint '//res%joints(j)%name//': its sweep ran no gap'
+            if (res%joints(j)%done) where = 'joint '//res%joints(j)%name//': no target_lambda, or no gap of '// &
+                                            'the sweep range meets it (other joints at their deck gaps)'
+            if (.not. res%joints(j)%done) return
+            if (res%joints(j)%sweep%found) then
+               gap = res%joints(j)%sweep%safe_gap
+               where = 'sweep threshold of joint '//res%joints(j)%name//' (its pairs swept, the other joints '// &
+                       'at their deck gaps)'
+            end if
+         end do
+      end subroutine joint_item
 
       !> The time-history threshold gap of pair p (m in, mm out; negative: n/a, `where` says why).
       subroutine th_item(p, gap, where)
