@@ -20,19 +20,17 @@
 !> steps, with the dt that would resolve it.
 module pound_analysis
    use iso_fortran_env, only: int64
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error, error_at
-   use pound_strings, only: str, add_warning, mm_text
+   use pound_strings, only: str, add_warning
    use pound_analysis_plan, only: analysis_plan, output_steps, stepping_impact, free_exact, lcp_lemke
-   use pound_structure, only: structure_model, building_label => structure_label
+   use pound_structure, only: structure_model
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
-   use pound_contact_pair, only: end_mass
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
                             newmark_predict_exact, newmark_drop_exact, newmark_advance, &
-                            kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, newmark_du, &
-                            newmark_energies, newmark_add_energies, newmark_n, en_input, en_kinetic, en_strain, &
+                            kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, &
+                            newmark_energies, newmark_add_energies, en_input, en_kinetic, en_strain, &
                             en_damping
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_flush, history_block, deformed_limit, response_block_full
@@ -148,6 +146,112 @@ module pound_analysis
    type :: state_view
       real(dp), pointer, contiguous :: u(:) => null(), v(:) => null(), a(:) => null()
    end type state_view
+
+   !> The cold part of the analyses, in submodule pound_analysis_reports: the result copy, the
+   !> warnings and their text (and a joint's effective mass), and the failure diagnostics of a step that is not finite.
+   interface
+      !> dst = src, component by component, but the substep counts of `stepping = 'impact'`
+      !> (the warnings, an array of deferred-length strings, line by line: gfortran 12 does not
+      !> copy such a component of a derived type reliably).
+      module subroutine analysis_copy(src, dst)
+         !> The result copied.
+         type(analysis_result), intent(in) :: src
+         !> The copy.
+         type(analysis_result), intent(out) :: dst
+      end subroutine analysis_copy
+      !> The warning of an uncoupled run whose relative audit residual `err` exceeds
+      !> `audit_warning_limit`.
+      pure module function uncoupled_audit_warning(err) result(text)
+         !> Relative residual of the energy audit.
+         real(dp), intent(in) :: err
+         character(len=:), allocatable :: text
+      end function uncoupled_audit_warning
+      !> The substeps an analysis with `stepping = 'impact'` took, as one line of text.
+      module function substep_text(res) result(text)
+         !> The result.
+         type(analysis_result), intent(in) :: res
+         character(len=:), allocatable :: text
+      end function substep_text
+      !> The steps an analysis with `free_steps = 'exact'` took exactly, as one line of text.
+      module function exact_text(res) result(text)
+         !> The result.
+         type(analysis_result), intent(in) :: res
+         character(len=:), allocatable :: text
+      end function exact_text
+      !> Write each warning of a list (e.g. `res%warnings`, `sweep%warnings`) as one line, `prefix`
+      !> first (e.g. 'pound: warning: '); nothing for an empty or unallocated list.
+      module subroutine write_warnings(unit, warnings, prefix)
+         !> Open formatted unit.
+         integer, intent(in) :: unit
+         !> The warnings.
+         character(len=:), allocatable, intent(in) :: warnings(:)
+         !> Text put before each warning.
+         character(len=*), intent(in) :: prefix
+      end subroutine write_warnings
+      !> The audit residual is large: name the joints whose contact half-period pi sqrt(m_eff/k0)
+      !> (m_eff = m1 m2/(m1 + m2) of the facing floor masses) spans fewer than `resolved_steps`
+      !> steps, and the dt that would resolve them (a tenth of the half-period).
+      module subroutine warn_unresolved_joints(res, models, cs, dt)
+         !> The coupled result (its warnings extended).
+         type(analysis_result), intent(inout) :: res
+         !> The buildings.
+         type(structure_model), intent(in) :: models(:)
+         !> The contact system at the end of the run.
+         type(contact_system), intent(in) :: cs
+         !> The step (s) the joints are judged by.
+         real(dp), intent(in) :: dt
+      end subroutine warn_unresolved_joints
+      !> The energy sum of a step is not finite: name the first non-finite value (building and
+      !> floor, or joint), or else the building and energy term that overflowed, with the largest
+      !> ground acceleration so far.
+      module subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
+         !> Integrator states at the end of the step.
+         type(newmark_state), intent(in), target :: st(:)
+         !> The buildings.
+         type(structure_model), intent(in) :: models(:)
+         !> The contact system.
+         type(contact_system), intent(in) :: cs
+         !> The step's energy sample (n_energy), not finite in total.
+         real(dp), intent(in) :: sample(:)
+         !> Ground acceleration samples (m/s^2) from step 0.
+         real(dp), intent(in) :: ag(0:)
+         !> Time step (s).
+         real(dp), intent(in) :: dt
+         !> The step that failed.
+         integer, intent(in) :: step
+         !> Error state: what is not finite, where and when.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine state_failure
+      !> Set `error` to the first value of the state that is not finite, if there is one: u, v,
+      !> a (and, if `predicted`, the step's increment du) of every building by floor, then every
+      !> joint's force, compression, rate, plastic penetration and closing displacement. An
+      !> `error` passed in is kept when everything is finite.
+      module subroutine locate_nonfinite(st, models, cs, t, step, error, predicted)
+         !> Integrator states.
+         type(newmark_state), intent(in), target :: st(:)
+         !> The buildings.
+         type(structure_model), intent(in) :: models(:)
+         !> The contact system.
+         type(contact_system), intent(in) :: cs
+         !> Time (s) named in the message.
+         real(dp), intent(in) :: t
+         !> Step named in the message.
+         integer, intent(in) :: step
+         !> Error state: set to the first non-finite value (kept when all is finite).
+         type(error_type), allocatable, intent(inout) :: error
+         !> Also check the step's increment du (the state was predicted).
+         logical, intent(in), optional :: predicted
+      end subroutine locate_nonfinite
+      !> m_eff = m1 m2/(m1 + m2) of a joint's facing floor masses (the mass of the one
+      !> building against a rigid neighbour) (t).
+      pure module function effective_mass(p, models) result(meff)
+         !> The constraint, its DOFs located.
+         type(contact_pair), intent(in) :: p
+         !> The buildings.
+         type(structure_model), intent(in) :: models(:)
+         real(dp) :: meff
+      end function effective_mass
+   end interface
 
 contains
 
@@ -288,27 +392,6 @@ contains
 
       half = pi*sqrt(effective_mass(p, models)/p%law%stiffness)
    end function contact_half_period
-
-   !> m_eff = m1 m2/(m1 + m2) of a joint's facing floor masses (the mass of the one
-   !> building against a rigid neighbour) (t).
-   pure real(dp) function effective_mass(p, models) result(meff)
-      !> The constraint, its DOFs located.
-      type(contact_pair), intent(in) :: p
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      real(dp) :: m(2)
-      integer :: e
-
-      do e = 1, 2
-         m(e) = 0.0_dp
-         if (p%building(e) > 0) m(e) = end_mass(p, e, models(p%building(e))%mass)
-      end do
-      if (m(1) > 0.0_dp .and. m(2) > 0.0_dp) then
-         meff = m(1)*m(2)/(m(1) + m(2))
-      else
-         meff = max(m(1), m(2))
-      end if
-   end function effective_mass
 
    !> The coupled time integration from a prepared model (left unchanged, so that it can be
    !> reused); `gaps`, when given, replace the gaps of the constraints.
@@ -706,66 +789,6 @@ contains
       call contact_swap_step(cs, sub%cs)
    end subroutine swap_steps
 
-   !> dst = src, component by component, but the substep counts of `stepping = 'impact'`
-   !> (the warnings, an array of deferred-length strings, line by line: gfortran 12 does not
-   !> copy such a component of a derived type reliably).
-   subroutine analysis_copy(src, dst)
-      !> The result copied.
-      type(analysis_result), intent(in) :: src
-      !> The copy.
-      type(analysis_result), intent(out) :: dst
-      integer :: i
-
-      dst%n_steps = src%n_steps
-      dst%n_out = src%n_out
-      dst%time = src%time
-      dst%building = src%building
-      dst%energy = src%energy
-      dst%energy_error = src%energy_error
-      dst%joints = src%joints
-      dst%seconds = src%seconds
-      dst%contact_seconds = src%contact_seconds
-      dst%write_seconds = src%write_seconds
-      allocate (character(len=1) :: dst%warnings(0))
-      if (.not. allocated(src%warnings)) return
-      do i = 1, size(src%warnings)
-         call add_warning(dst%warnings, trim(src%warnings(i)))
-      end do
-   end subroutine analysis_copy
-
-   !> The warning of an uncoupled run whose relative audit residual `err` exceeds
-   !> `audit_warning_limit`.
-   pure function uncoupled_audit_warning(err) result(text)
-      !> Relative residual of the energy audit.
-      real(dp), intent(in) :: err
-      character(len=:), allocatable :: text
-
-      text = 'energy audit (uncoupled): relative residual '//str(err)//' > '//str(audit_warning_limit)// &
-             ' without contact: the integration is not trustworthy; reduce dt'
-   end function uncoupled_audit_warning
-
-   !> The substeps an analysis with `stepping = 'impact'` took, as one line of text.
-   function substep_text(res) result(text)
-      !> The result.
-      type(analysis_result), intent(in) :: res
-      character(len=:), allocatable :: text
-
-      text = 'm = '//str(res%substep_factor)//' substeps of '//str(res%substep)//' s; '// &
-             str(res%substepped)//' of '//str(res%n_steps)//' steps substepped, '//str(res%substeps)// &
-             ' substeps taken ('//str(res%n_steps - res%substepped + res%substeps)//' steps in all)'
-   end function substep_text
-
-   !> The steps an analysis with `free_steps = 'exact'` took exactly, as one line of text.
-   function exact_text(res) result(text)
-      !> The result.
-      type(analysis_result), intent(in) :: res
-      character(len=:), allocatable :: text
-
-      text = str(res%exact_steps)//' of '//str(res%n_steps)//' steps exact (no joint acting), '// &
-             str(res%n_steps - res%exact_steps)//" by Newmark's method"
-      if (res%substep_factor > 0) text = text//' in substeps'
-   end function exact_text
-
    !> Sizes, output times, a zero energy history and (with `n_pairs`) the contact histories
    !> of a result for `n_steps` steps; no warnings yet.
    pure subroutine start_result(res, cfg, n_steps, n_buildings, error, n_pairs)
@@ -846,177 +869,5 @@ contains
          err = 0.0_dp
       end if
    end function audit_error
-
-   !> Write each warning of a list (e.g. `res%warnings`, `sweep%warnings`) as one line, `prefix`
-   !> first (e.g. 'pound: warning: '); nothing for an empty or unallocated list.
-   subroutine write_warnings(unit, warnings, prefix)
-      !> Open formatted unit.
-      integer, intent(in) :: unit
-      !> The warnings.
-      character(len=:), allocatable, intent(in) :: warnings(:)
-      !> Text put before each warning.
-      character(len=*), intent(in) :: prefix
-      integer :: i
-
-      if (.not. allocated(warnings)) return
-      do i = 1, size(warnings)
-         write (unit, '(a)') prefix//trim(warnings(i))
-      end do
-   end subroutine write_warnings
-
-   !> The audit residual is large: name the joints whose contact half-period pi sqrt(m_eff/k0)
-   !> (m_eff = m1 m2/(m1 + m2) of the facing floor masses) spans fewer than `resolved_steps`
-   !> steps, and the dt that would resolve them (a tenth of the half-period).
-   subroutine warn_unresolved_joints(res, models, cs, dt)
-      type(analysis_result), intent(inout) :: res
-      type(structure_model), intent(in) :: models(:)
-      type(contact_system), intent(in) :: cs
-      real(dp), intent(in) :: dt
-      real(dp), parameter :: pi = acos(-1.0_dp)
-      real(dp) :: meff, half, worst
-      integer :: k, found, kw
-      character(len=:), allocatable :: head
-
-      head = 'energy audit (coupled): relative residual '//str(res%energy_error)//' > '// &
-             str(audit_warning_limit)
-      found = 0
-      worst = huge(1.0_dp)
-      kw = 0
-      do k = 1, cs%m
-         associate (p => cs%pair(k))
-            if (cs%joint(k)%impacts == 0) cycle
-            meff = effective_mass(p, models)
-            half = pi*sqrt(meff/p%law%stiffness)
-            if (half < worst) then
-               worst = half
-               kw = k
-            end if
-            if (half >= resolved_steps*dt) cycle
-            found = found + 1
-            call add_warning(res%warnings, head//': joint '//p%label//' (k0 = '//str(p%law%stiffness)// &
-                             ' kN/m, m_eff = '//str(meff)//' t of the facing floors) has a contact '// &
-                             'half-period pi sqrt(m_eff/k0) = '//str(half)//' s, '//str(half/dt)// &
-                             ' steps of dt = '//str(dt)//' s: not resolved by dt; dt = '//str(0.1_dp*half)// &
-                             ' s (a tenth of it) would resolve it')
-         end associate
-      end do
-      if (found > 0) return
-      if (kw > 0) then
-         call add_warning(res%warnings, head//': the impacts are resolved (shortest contact half-period '// &
-                          str(worst)//' s at joint '//cs%pair(kw)%label//', '//str(worst/dt)// &
-                          ' steps); contact opening and closing inside the steps dominates: reduce dt')
-      else
-         call add_warning(res%warnings, head//': reduce dt')
-      end if
-   end subroutine warn_unresolved_joints
-
-   !> The energy sum of a step is not finite: name the first non-finite value (building and
-   !> floor, or joint), or else the building and energy term that overflowed, with the largest
-   !> ground acceleration so far.
-   subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
-      type(newmark_state), intent(in), target :: st(:)
-      type(structure_model), intent(in) :: models(:)
-      type(contact_system), intent(in) :: cs
-      real(dp), intent(in) :: sample(:), ag(0:), dt
-      integer, intent(in) :: step
-      type(error_type), allocatable, intent(out) :: error
-      real(dp) :: e(4), t
-      integer :: ib, i
-      character(len=:), allocatable :: hint
-
-      t = real(step, dp)*dt
-      call locate_nonfinite(st, models, cs, t, step, error)
-      if (allocated(error)) return
-      hint = ': the response overflows (ground acceleration up to '//str(maxval(abs(ag(0:step))))// &
-             ' m/s^2 so far); check the size of the ground motion (&ground), the masses and the stiffnesses'
-      do ib = 1, size(st)
-         e = newmark_energies(st(ib))
-         do i = 1, 4
-            if (ieee_is_finite(e(i))) cycle
-            call fatal_error(error, building_label(models(ib))//': the '//trim(energy_names(i))// &
-                             ' energy is not finite at t = '//str(t)//' s (step '//str(step)//') ('// &
-                             str(e(i))//' kJ, largest |u| '//mm_text(maxval(abs(newmark_u(st(ib)))))//')'//hint)
-            call error_at(error, t, step, building=ib)
-            return
-         end do
-      end do
-      do i = 1, n_energy
-         if (ieee_is_finite(sample(i))) cycle
-         call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
-                          trim(energy_names(i))//' energy is not finite ('//str(sample(i))//' kJ)'//hint)
-         call error_at(error, t, step)
-         return
-      end do
-      call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
-                       'energy total overflows'//hint)
-      call error_at(error, t, step)
-   end subroutine state_failure
-
-   !> Set `error` to the first value of the state that is not finite, if there is one: u, v,
-   !> a (and, if `predicted`, the step's increment du) of every building by floor, then every
-   !> joint's force, compression, rate, plastic penetration and closing displacement. An
-   !> `error` passed in is kept when everything is finite.
-   subroutine locate_nonfinite(st, models, cs, t, step, error, predicted)
-      type(newmark_state), intent(in), target :: st(:)
-      type(structure_model), intent(in) :: models(:)
-      type(contact_system), intent(in) :: cs
-      real(dp), intent(in) :: t
-      integer, intent(in) :: step
-      type(error_type), allocatable, intent(inout) :: error
-      logical, intent(in), optional :: predicted
-      character(len=*), parameter :: names(4) = ['u ', 'v ', 'a ', 'du']
-      character(len=*), parameter :: joint(5) = [character(len=20) :: 'force r', 'compression d', &
-                                                 'compression rate', 'plastic penetration', &
-                                                 'closing displacement']
-      real(dp) :: x(5)
-      real(dp), pointer, contiguous :: col(:)
-      integer :: ib, i, q, nq, k
-      character(len=:), allocatable :: at
-
-      at = ' is not finite at t = '//str(t)//' s (step '//str(step)//')'
-      nq = 3
-      if (present(predicted)) then
-         if (predicted) nq = 4
-      end if
-      ! The state first (u, v, a of every floor), then the step's increment it feeds.
-      do q = 1, nq
-         do ib = 1, size(st)
-            select case (q)
-            case (1)
-               col => newmark_u(st(ib))
-            case (2)
-               col => newmark_v(st(ib))
-            case (3)
-               col => newmark_a(st(ib))
-            case default
-               col => newmark_du(st(ib))
-            end select
-            do i = 1, newmark_n(st(ib))
-               x(1) = col(i)
-               if (ieee_is_finite(x(1))) cycle
-               if (allocated(error)) deallocate (error)
-               call fatal_error(error, building_label(models(ib))//': floor '//str(i)//': '//trim(names(q))// &
-                                ' = '//str(x(1))//at//': the first value of the run that is not finite '// &
-                                '(check the size of the ground motion, masses, stiffnesses and joints)')
-               call error_at(error, t, step, building=ib)
-               return
-            end do
-         end do
-      end do
-      do k = 1, cs%m
-         associate (p => cs%joint(k))
-            x = [p%r, p%d, p%ddot, p%plastic, p%v]
-            do q = 1, 5
-               if (ieee_is_finite(x(q))) cycle
-               if (allocated(error)) deallocate (error)
-               call fatal_error(error, 'contact '//cs%pair(k)%label//': joint '//trim(joint(q))//' = '//str(x(q))//at// &
-                                ': the first value of the run that is not finite (check the joint''s '// &
-                                'stiffness, dashpot and law)')
-               call error_at(error, t, step, joint=k)
-               return
-            end do
-         end associate
-      end do
-   end subroutine locate_nonfinite
 
 end module pound_analysis
