@@ -20,7 +20,7 @@ set(POUND_SOURCES
   core/pound_envelope_rules.f90
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
   deck/pound_config.f90 deck/pound_deck_variables.f90 deck/pound_deck_lexer.f90 deck/pound_deck_checks.f90
-  deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_building.f90
+  deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_building.f90
   deck/pound_deck_contact.f90 deck/pound_deck_sweep.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
   model/pound_band.f90 model/pound_structure.f90 model/pound_storey_properties.f90
@@ -49,7 +49,7 @@ set(POUND_SOURCES
   contact/pound_lcp_enumerate.f90
   contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
-  analysis/pound_response.f90 analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_influence.f90
+  analysis/pound_response.f90 analysis/pound_storey_yield.f90 analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_influence.f90
   analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90
   # analyses: the uncoupled runs of several motions at once
   analysis/pound_analysis_batch.f90

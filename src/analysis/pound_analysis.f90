@@ -39,6 +39,8 @@ module pound_analysis
                             contact_may_act, contact_carries_force, lcp_solver_lemke, contact_track_closing, &
                             contact_track_paths
    use pound_deck_variables, only: max_substeps
+   use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, yield_steps, &
+                                 yield_sample, yield_results, yield_energy_terms, yield_load_work
    use pound_contact_period, only: joint_half_period
    implicit none
    private
@@ -113,6 +115,8 @@ module pound_analysis
       !> `free_steps = 'exact'`: the steps taken exactly (no joint acting; -1: free steps by
       !> Newmark).
       integer :: exact_steps = -1
+      !> Bilinear storeys (pound_storey_yield): one result a building; unallocated: all elastic.
+      type(storey_yield_result), allocatable :: yielding(:)
    end type analysis_result
 
    !> What the coupled analysis needs that does not depend on the gaps: the factored
@@ -500,15 +504,17 @@ contains
       integer(int64) :: c0, c1, rate, write_ticks
       real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded
+      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, inelastic
       integer :: newmark_steps
+      type(storey_yield_set), allocatable :: ys(:)
 
       nb = size(models)
       allocate (view(nb))
+      call yield_sets_init(ys, models, inelastic)
       coupled = cs%m > 0
       impact = present(sub)
-      exact = cfg%free_steps == free_exact
-      plain = .not. (coupled .or. impact .or. exact)
+      exact = cfg%free_steps == free_exact .and. .not. inelastic
+      plain = .not. (coupled .or. impact .or. exact .or. inelastic)
       track = (impact .or. exact) .and. allocated(cs%closing_max)
       newmark_steps = 0
       every = cfg%output_every
@@ -618,6 +624,13 @@ contains
                   return
                end if
             end if
+            if (inelastic) then
+               call yield_steps(ys, st, cs, models, t_sub, step, error)
+               if (allocated(error)) then
+                  call error_at(error, t_sub, step)
+                  return
+               end if
+            end if
             ! win, eout: the integrators' energy balance, added up by the commits (uncoupled;
             ! replaced by the sample below when coupled)
             win = 0.0_dp
@@ -630,6 +643,7 @@ contains
                end if
                call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
                                     ag_new, t_sub, output)
+               if (inelastic) call yield_sample(ys(ib), view(ib)%u, t_sub, output, res%building(ib))
             end do
             ! The last block is handed over after the loop (writing it is not integration).
             if (output .and. present(sink) .and. step < res%n_steps) then
@@ -646,6 +660,16 @@ contains
             if (output) then
                k = k + 1
                call store_energy(res, k, st, models, cs, sample)
+            end if
+            if (inelastic) then
+               if (output) then
+                  call yield_energy_terms(ys, res%energy(e_strain, k), res%energy(e_plastic, k))
+                  sample = res%energy(:, k)
+               else if (coupled) then
+                  call yield_energy_terms(ys, sample(e_strain), sample(e_plastic))
+               else
+                  eout = eout - yield_load_work(ys)
+               end if
             end if
             if (coupled .or. output) then
                win = sample(e_input)
@@ -682,6 +706,7 @@ contains
       do ib = 1, nb
          call response_finish(res%building(ib), models(ib))
       end do
+      if (inelastic) call yield_results(ys, res%building, res%yielding)
       if (exact) res%exact_steps = res%n_steps - newmark_steps
       res%energy_error = audit_error(resid, scale)
       if (res%energy_error <= audit_warning_limit) return

@@ -76,7 +76,7 @@ module pound_contact
    private
 
    public :: contact_system, contact_init, contact_init_flexibility
-   public :: contact_step, contact_solve, contact_commit, contact_update
+   public :: contact_step, contact_solve, contact_commit, contact_update, contact_release
    public :: contact_swap_step, contact_may_act, contact_track_closing, contact_track_paths
    public :: contact_carries_force
    public :: residual_limit, fallback_max_rows, initial_hinges
@@ -238,8 +238,7 @@ contains
       integer, intent(in) :: step
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: k, e, b
-      real(dp) :: dr
+      integer :: k
 
       if (cs%m == 0) return
       ! Closing displacement if every force were released in this step.
@@ -259,11 +258,35 @@ contains
       end do
       call contact_solve(cs, cs%vp, t, step, error)
       if (allocated(error)) return
+      call apply_force_change(cs, states, .false.)
+   end subroutine contact_step
 
-      ! du -= Khat^{-1} B (r_new - r_old), only where the force changed.
+   !> Take the forces of the step's solution out of du again (du += Khat^{-1} B (r_new -
+   !> r_old)): the step's predicted du as it was before `contact_step`, so that it can be solved
+   !> again after other elements of the step changed du (bilinear storeys, pound_storey_yield).
+   subroutine contact_release(cs, states)
+      !> The contact system after `contact_step`.
+      type(contact_system), intent(inout) :: cs
+      !> Integrators.
+      type(newmark_state), intent(inout) :: states(:)
+
+      if (cs%m == 0) return
+      if (cs%idle) return
+      call apply_force_change(cs, states, .true.)
+   end subroutine contact_release
+
+   !> du -= Khat^{-1} B (r_new - r_old), only where the force changed (`undo`: du += ...).
+   subroutine apply_force_change(cs, states, undo)
+      type(contact_system), intent(inout) :: cs
+      type(newmark_state), intent(inout) :: states(:)
+      logical, intent(in) :: undo
+      integer :: k, e, b
+      real(dp) :: dr
+
       do k = 1, cs%m
          dr = cs%r_new(k) - cs%joint(k)%r
          if (dr == 0.0_dp) cycle
+         if (undo) dr = -dr
          do e = 1, 2
             b = cs%pair(k)%building(e)
             if (b == 0) cycle
@@ -278,7 +301,7 @@ contains
             end if
          end do
       end do
-   end subroutine contact_step
+   end subroutine apply_force_change
 
    !> The LCP's q of every joint into `cs%q`, the opening it would have at the end of the step
    !> with every force released: g - v_pred + (c (a d_n + b d'_n) + k0 d_p,n)/phat (the one

@@ -154,6 +154,12 @@ module pound_config
       !> Design-code factors for the separation rules (`cd`, `importance`, `behaviour_factor`,
       !> `response_reduction`).
       type(code_factors) :: factors
+      !> Storey law of a shear building: 'elastic' (default) or 'bilinear' (issue 25: Steel01-like
+      !> kinematic hardening, pound_storey_yield).
+      character(len=8) :: storey_law = 'elastic'
+      !> 'bilinear': yield shear of each storey (kN) and hardening ratio r of each storey
+      !> (post-yield stiffness r k); unallocated for elastic storeys.
+      real(dp), allocatable :: yield_shear(:), hardening_ratio(:)
    end type building_config
 
    !> A whole, validated deck.

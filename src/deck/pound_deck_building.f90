@@ -6,6 +6,7 @@ module pound_deck_building
    use pound_config, only: building_config, deck_warning_len
    use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, require_real, &
                                 site, site_of, take_ints, take_reals, unset_int, unset_real, warn
+   use pound_deck_storey_law, only: take_storey_law
    use pound_deck_lexer, only: group_ref, group_text, is_name_char, lower
    use pound_deck_variables, only: max_name_length, max_storeys, word_len, max_bays, max_column_elements, &
                                    frame_variables
@@ -39,7 +40,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> The deck's plausibility warnings, this group's appended.
       character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
-      character(len=word_len) :: name, column_ends, model, base, geometric
+      character(len=word_len) :: name, column_ends, model, base, geometric, storey_law
       integer :: n_storeys, damping_modes(2), n_bays, column_elements
       logical :: rigid_beams, rigid_diaphragm, rigid_columns
       real(dp), allocatable :: bay_width(:), column_e(:), column_area(:), column_inertia(:), &
@@ -47,7 +48,7 @@ contains
       real(dp) :: ref_floor_load, damping_ratio, cd, importance, behaviour_factor, response_reduction
       logical :: p_delta
       real(dp), allocatable :: height(:), mass(:), load_coeff(:), stiffness(:), e_modulus(:), &
-                               inertia(:), gravity_load(:)
+                               inertia(:), gravity_load(:), yield_shear(:), hardening_ratio(:)
       integer, allocatable :: n_columns(:)
       character(len=:), allocatable :: buf
       character(len=512) :: msg
@@ -57,7 +58,8 @@ contains
          n_columns, e_modulus, inertia, column_ends, damping_ratio, damping_modes, p_delta, &
          gravity_load, model, n_bays, bay_width, column_e, column_area, column_inertia, beam_e, &
          beam_area, beam_inertia, base, column_elements, rigid_beams, rigid_diaphragm, rigid_columns, &
-         geometric, cd, importance, behaviour_factor, response_reduction
+         geometric, cd, importance, behaviour_factor, response_reduction, storey_law, yield_shear, &
+         hardening_ratio
 
       allocate (height(max_storeys), mass(max_storeys), load_coeff(max_storeys), &
                 stiffness(max_storeys), e_modulus(max_storeys), inertia(max_storeys), &
@@ -89,6 +91,8 @@ contains
       rigid_beams = .false.
       rigid_diaphragm = .false.
       rigid_columns = .false.
+      storey_law = ' '
+      allocate (yield_shear(max_storeys), hardening_ratio(max_storeys), source=unset_real)
       allocate (bay_width(max_bays), column_e(max_storeys), column_area(max_storeys), &
                 column_inertia(max_storeys), beam_e(max_storeys), beam_area(max_storeys), &
                 beam_inertia(max_storeys))
@@ -194,6 +198,8 @@ contains
       call check_modes(at, n, damping_modes, cfg%damping_modes, error)
       if (allocated(error)) return
       cfg%p_delta = p_delta
+      call take_storey_law(at, storey_law, yield_shear, hardening_ratio, cfg, error)
+      if (allocated(error)) return
 
       if (given_count(gravity_load) > 0) then
          call take_reals(at, 'gravity_load', gravity_load, n, '>=', cfg%gravity_load, error)

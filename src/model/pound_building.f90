@@ -67,6 +67,10 @@ contains
          call move_alloc(sb%storey_stiffness, b%storey_stiffness)
          call move_alloc(sb%geometric_stiffness, b%geometric_stiffness)
          call move_alloc(sb%axial_load, b%axial_load)
+         if (allocated(deck_entry%yield_shear)) then
+            m%yield_shear = deck_entry%yield_shear
+            m%hardening = deck_entry%hardening_ratio
+         end if
       end if
    end subroutine build_building
 

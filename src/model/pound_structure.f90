@@ -129,6 +129,10 @@ module pound_structure
       !> Name of the member rows' group (e.g. 'columns') and of the quantities of one member.
       character(len=:), allocatable :: member_group
       character(len=16), allocatable :: member_names(:)
+      !> Bilinear storeys (`&building storey_law = 'bilinear'`, issue 25): yield shear (kN) and
+      !> hardening ratio of each drift row's storey spring, whose initial stiffness is the
+      !> shear row's scale; unallocated: elastic storeys (pound_storey_yield).
+      real(dp), allocatable :: yield_shear(:), hardening(:)
    end type structure_model
 
 contains

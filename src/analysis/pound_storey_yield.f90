@@ -1,0 +1,556 @@
+!> Bilinear storeys of shear buildings (issue 25): complementarity elements acting along the
+!> storey drift rows, solved exactly in each step on the constant factored Khat.
+!>
+!> A storey j joins the DOFs of its drift row b_j (d_j = b_j^T u); its spring has the initial
+!> stiffness k_j (the shear row's scale), the yield shear Fy_j and the hardening ratio r_j.
+!> Hysteresis is Steel01's with kinematic hardening only: from the committed (d_n, f_n)
+!>
+!>     f = max(r k d - (1-r) Fy, min(r k d + (1-r) Fy, f_n + k (d - d_n)))      (`bilinear_force`)
+!>
+!> Maier's form: f = k (d - p), the plastic drift p = p_n + lam_plus - lam_minus with
+!> lam >= 0 in complementarity with phi_plus = r k d + (1-r) Fy - f >= 0 and
+!> phi_minus = f - r k d + (1-r) Fy >= 0. The elastic k_j stays in K (Khat factored once); a
+!> plastic increment dp_j acts on the structure as the load k_j b_j dp_j, so the drift of the
+!> step is d = d_tr + A dp with A_ij = k_j b_i^T Khat^{-1} b_j (the columns Khat^{-1} b_j from
+!> the integrator's solve, kept for small buildings). Only the storeys whose trial force
+!> leaves its elastic range enter the LCP (one row each, on the side it leaves by); the
+!> solution is then checked on every storey and the LCP solved again with any storey that left
+!> its range (exact: the loop ends with every storey's conditions met), and its natural
+!> residual is checked. The LCP is non-convex where r < 0 or P-Delta makes the tangent
+!> negative: Lemke's method solves it (`pound_lemke`).
+!>
+!> Energies: the plastic load's work W_L = sum_j k_j (p_n + p_{n+1})/2 (d_{n+1} - d_n) per step
+!> (the trapezoid, consistent with Newmark's balance) enters the integrator's balance; the
+!> recoverable strain energy is sum_j k_j (d - p)^2 / 2 (plus the P-Delta part), the hysteretic
+!> energy sum_j (f_n + f_{n+1})/2 dp_j; their sum is the elastic u.(K+G)u/2 - W_L exactly, so
+!> the audit checks the step's plastic loads.
+module pound_storey_yield
+   use pound_kinds, only: dp
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
+   use pound_structure, only: structure_model, recovery_rows, recover
+   use pound_newmark, only: newmark_state, newmark_du, newmark_u, newmark_solve, newmark_dt
+   use pound_contact, only: contact_system, contact_step, contact_release
+   use pound_response, only: response_record, q_shear
+   use pound_lemke, only: lemke_workspace, lemke_report, lemke_init, lemke_solve, lemke_status_name
+   implicit none
+   private
+
+   public :: bilinear_force, storey_yield_set, storey_yield_result
+   public :: yield_set_init, yield_step, yield_steps, yield_commit, yield_energy_terms, yield_load_work, yield_finish
+   public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results
+
+   !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
+   real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
+   !> A coupled step's plastic increments have settled when no storey's changed by more than
+   !> this times its yield drift Fy/k between two solves of the joints.
+   real(dp), parameter :: settle_tolerance = 1.0e-12_dp
+   !> Largest number of alternations between the joints' LCP and the storeys' LCP in a step.
+   integer, parameter :: max_alternations = 200
+   !> Largest n_dofs x n_storeys for which the columns Khat^{-1} b_j are kept between steps.
+   integer, parameter :: cache_limit = 4000000
+
+   !> The bilinear storeys of one building (n = 0: elastic storeys, nothing to do).
+   type :: storey_yield_set
+      !> Storeys and DOFs.
+      integer :: n = 0, nd = 0
+      !> Drift rows (the model's, with each row's scale folded into its coefficients).
+      type(recovery_rows) :: rows
+      !> Initial stiffness (kN/m), yield shear (kN), hardening ratio of each storey.
+      real(dp), allocatable :: k(:), fy(:), r(:)
+      !> Committed drift (m), spring force (kN) and plastic drift (m) of each storey.
+      real(dp), allocatable :: d(:), f(:), p(:)
+      !> Peak |drift| and peak |force| with its time, over the run.
+      real(dp), allocatable :: dmax(:), fmax(:), tmax(:)
+      !> The step: trial drift (plastic increments removed), plastic increments applied, their
+      !> response Khat^{-1} sum_j k_j b_j dp_j (in du), side of each LCP row (+1, -1; 0: not in).
+      real(dp), allocatable :: dtr(:), dpl(:), xdp(:), work(:), dnew(:), dold(:)
+      integer, allocatable :: side(:), act(:)
+      integer :: na = 0
+      logical :: loaded = .false.
+      !> Columns Khat^{-1} b_j: slot of storey j (0: none yet) and the dt they belong to.
+      real(dp), allocatable :: col(:, :)
+      integer, allocatable :: slot(:)
+      integer :: n_slots = 0
+      real(dp) :: col_dt = -1.0_dp
+      !> LCP storage.
+      type(lemke_workspace) :: ws
+      real(dp), allocatable :: mat(:, :), q(:), z(:), w(:)
+      logical, allocatable :: guess(:)
+      !> Work of the plastic loads on the elastic structure (W_L) and hysteretic energy (kJ).
+      real(dp) :: load_work = 0.0_dp, hysteretic = 0.0_dp
+      !> LCP solves, storeys that entered them, largest residual.
+      integer :: solves = 0, lcp_rows = 0
+      real(dp) :: residual = 0.0_dp
+   end type storey_yield_set
+
+   !> What a run reports of a building's bilinear storeys (n = 0: elastic storeys).
+   type :: storey_yield_result
+      integer :: n = 0
+      !> Peak ductility max|d| / (Fy/k), residual drift (m) at the end, peak |force| (kN).
+      real(dp), allocatable :: ductility(:), residual_drift(:), peak_force(:)
+      !> Hysteretic (plastic) energy dissipated by the storeys (kJ).
+      real(dp) :: hysteretic = 0.0_dp
+      !> LCP solves, rows solved and the largest natural residual.
+      integer :: solves = 0, lcp_rows = 0
+      real(dp) :: residual = 0.0_dp
+   end type storey_yield_result
+
+contains
+
+   !> The end-of-step force of a bilinear storey (Steel01, kinematic hardening) from the
+   !> committed drift and force.
+   pure elemental real(dp) function bilinear_force(k, fy, r, d_n, f_n, d) result(f)
+      !> Initial stiffness, yield force, hardening ratio.
+      real(dp), intent(in) :: k, fy, r
+      !> Committed drift and force; drift at the end of the step.
+      real(dp), intent(in) :: d_n, f_n, d
+
+      f = max(r*k*d - (1.0_dp - r)*fy, min(r*k*d + (1.0_dp - r)*fy, f_n + k*(d - d_n)))
+   end function bilinear_force
+
+   !> Set up the storeys of building `b` (nothing when its storeys are elastic).
+   subroutine yield_set_init(ys, b)
+      !> The set (at rest on return).
+      type(storey_yield_set), intent(out) :: ys
+      !> The building.
+      type(structure_model), intent(in) :: b
+      integer :: j, n, i, e
+
+      if (.not. allocated(b%yield_shear)) return
+      n = b%drift%n
+      ys%n = n
+      ys%nd = b%n
+      ys%rows = b%drift
+      allocate (ys%k(n))
+      do j = 1, n
+         do e = b%drift%start(j), b%drift%start(j + 1) - 1
+            ys%rows%coef(e) = b%drift%scale(j)*b%drift%coef(e)
+         end do
+         ys%rows%scale(j) = 1.0_dp
+         ys%k(j) = b%shear%scale(j)/b%drift%scale(j)
+      end do
+      ys%fy = b%yield_shear
+      ys%r = b%hardening
+      allocate (ys%d(n), ys%f(n), ys%p(n), ys%dmax(n), ys%fmax(n), ys%tmax(n), ys%dtr(n), ys%dpl(n), &
+                ys%dnew(n), ys%dold(n), source=0.0_dp)
+      allocate (ys%xdp(b%n), ys%work(b%n), source=0.0_dp)
+      allocate (ys%side(n), ys%act(n), source=0)
+      allocate (ys%slot(n), source=0)
+      i = n
+      if (real(b%n, dp)*real(n, dp) > real(cache_limit, dp)) i = 0
+      allocate (ys%col(b%n, max(i, 1)))
+      i = min(n, 16)
+      call lemke_init(ys%ws, i)
+      allocate (ys%mat(i, i), ys%q(i), ys%z(i), ys%w(i), ys%guess(i))
+   end subroutine yield_set_init
+
+   !> Set up the storeys of every building; `inelastic`: some building has bilinear storeys
+   !> (`ys` is then allocated, one set a building).
+   subroutine yield_sets_init(ys, models, inelastic)
+      type(storey_yield_set), allocatable, intent(out) :: ys(:)
+      type(structure_model), intent(in) :: models(:)
+      logical, intent(out) :: inelastic
+      integer :: ib
+
+      inelastic = .false.
+      do ib = 1, size(models)
+         if (allocated(models(ib)%yield_shear)) inelastic = .true.
+      end do
+      if (.not. inelastic) return
+      allocate (ys(size(models)))
+      do ib = 1, size(models)
+         call yield_set_init(ys(ib), models(ib))
+      end do
+   end subroutine yield_sets_init
+
+   !> Commit a building's storeys after its integrator's commit and `response_sample`: the
+   !> storey-shear sample just stored (an output step) becomes the spring forces.
+   subroutine yield_sample(ys, u, t, output, rec)
+      type(storey_yield_set), intent(inout) :: ys
+      real(dp), intent(in) :: u(:)
+      real(dp), intent(in) :: t
+      logical, intent(in) :: output
+      type(response_record), intent(inout) :: rec
+
+      if (output .and. rec%store(q_shear)) then
+         call yield_commit(ys, u, t, rec%shear(:, rec%n_out))
+      else
+         call yield_commit(ys, u, t)
+      end if
+   end subroutine yield_sample
+
+   !> The run's storey results of every building (`yield_finish`).
+   pure subroutine yield_results(ys, rec, res)
+      type(storey_yield_set), intent(in) :: ys(:)
+      type(response_record), intent(inout) :: rec(:)
+      type(storey_yield_result), allocatable, intent(out) :: res(:)
+      integer :: ib
+
+      allocate (res(size(ys)))
+      do ib = 1, size(ys)
+         call yield_finish(ys(ib), rec(ib)%peak(:, q_shear), rec(ib)%peak_time(:, q_shear), res(ib))
+      end do
+   end subroutine yield_results
+
+   !> The drift of every storey for the DOF vector `x` into `d`.
+   pure subroutine drifts(ys, x, d)
+      type(storey_yield_set), intent(in) :: ys
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(out) :: d(:)
+      integer :: j
+
+      do j = 1, ys%n
+         d(j) = recover(ys%rows, j, x)
+      end do
+   end subroutine drifts
+
+   !> Solve the step's storey conditions for the predicted increment du of integrator `st`
+   !> (which may hold this step's plastic loads of an earlier call: they are replaced).
+   !> `changed`: the plastic loads in du changed (a coupled step then solves its joints again).
+   subroutine yield_step(ys, st, u, t, step, label, changed, error)
+      !> The building's storeys.
+      type(storey_yield_set), intent(inout) :: ys
+      !> Its integrator, with the predicted du.
+      type(newmark_state), intent(inout), target :: st
+      !> Committed displacements.
+      real(dp), intent(in) :: u(:)
+      !> Time and step, building name, for messages.
+      real(dp), intent(in) :: t
+      integer, intent(in) :: step
+      character(len=*), intent(in) :: label
+      !> The plastic loads applied to du changed.
+      logical, intent(out) :: changed
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), pointer :: du(:)
+      integer :: j, round
+      logical :: added
+
+      changed = .false.
+      if (ys%n == 0) return
+      du => newmark_du(st)
+      ! The trial (elastic) state: du without this step's plastic loads.
+      if (ys%loaded) du = du - ys%xdp
+      ys%work = u + du
+      call drifts(ys, ys%work, ys%dtr)
+      ys%na = 0
+      do j = 1, ys%n
+         call enter(j)
+      end do
+      ys%dold = ys%dpl
+      if (ys%na == 0) then
+         ys%dpl = 0.0_dp
+         ys%xdp = 0.0_dp
+         changed = ys%loaded
+         ys%loaded = .false.
+         return
+      end if
+      if (newmark_dt(st) /= ys%col_dt) then
+         ys%slot = 0
+         ys%n_slots = 0
+         ys%col_dt = newmark_dt(st)
+      end if
+      do round = 1, ys%n + 1
+         call solve_rows(ys, st, u, du, t, step, label, error)
+         if (allocated(error)) return
+         ! Every storey outside its range enters (on its side); the others are met.
+         added = .false.
+         do j = 1, ys%n
+            if (ys%side(j) /= 0) cycle
+            call enter(j, ys%dnew(j))
+            if (ys%side(j) /= 0) added = .true.
+         end do
+         if (.not. added) exit
+      end do
+      call check_step(ys, t, step, label, error)
+      if (allocated(error)) return
+      du = du + ys%xdp
+      ys%loaded = .true.
+      ! Changed beyond round-off (a coupled step solves its joints again).
+      do j = 1, ys%n
+         if (abs(ys%dpl(j) - ys%dold(j)) > settle_tolerance*ys%fy(j)/ys%k(j)) changed = .true.
+      end do
+      do j = 1, ys%na
+         ys%side(ys%act(j)) = 0
+      end do
+
+   contains
+
+      !> Storey j enters the LCP when its force for the drift `dj` (default the trial drift) is
+      !> outside its elastic range, on the side it leaves by.
+      subroutine enter(j, dj)
+         integer, intent(in) :: j
+         real(dp), intent(in), optional :: dj
+         real(dp) :: d, f, c, h
+
+         if (present(dj)) then
+            d = dj
+         else
+            d = ys%dtr(j)
+         end if
+         f = ys%f(j) + ys%k(j)*(d - ys%d(j))
+         c = ys%r(j)*ys%k(j)*d
+         h = (1.0_dp - ys%r(j))*ys%fy(j)
+         if (present(dj)) h = h*(1.0_dp + yield_residual_limit)
+         if (f > c + h) then
+            ys%side(j) = 1
+         else if (f < c - h) then
+            ys%side(j) = -1
+         else
+            return
+         end if
+         ys%na = ys%na + 1
+         ys%act(ys%na) = j
+      end subroutine enter
+   end subroutine yield_step
+
+   !> The storeys of every building in the step whose predicted du the integrators hold (after
+   !> `contact_step` when there are joints). With joints, the joints' LCP and the storeys' are
+   !> solved in turn (each exactly, from the step's predicted du with the other's forces) until
+   !> the storeys' plastic increments no longer change (`settle_tolerance`): the end of the
+   !> step then meets the joints' and the storeys' conditions together.
+   subroutine yield_steps(ys, st, cs, models, t, step, error)
+      !> The buildings' storeys.
+      type(storey_yield_set), intent(inout) :: ys(:)
+      !> The integrators with the predicted du.
+      type(newmark_state), intent(inout), target :: st(:)
+      !> The contact system (after `contact_step`; m = 0: none).
+      type(contact_system), intent(inout) :: cs
+      !> The buildings (names for messages).
+      type(structure_model), intent(in) :: models(:)
+      !> Time and step, for messages.
+      real(dp), intent(in) :: t
+      integer, intent(in) :: step
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: it, ib
+      logical :: changed, any_change
+
+      do it = 1, max_alternations
+         any_change = .false.
+         do ib = 1, size(ys)
+            if (ys(ib)%n == 0) cycle
+            call yield_step(ys(ib), st(ib), newmark_u(st(ib)), t, step, models(ib)%name, changed, error)
+            if (allocated(error)) return
+            any_change = any_change .or. changed
+         end do
+         if (cs%m == 0 .or. .not. any_change) return
+         call contact_release(cs, st)
+         call contact_step(cs, st, t, step, error)
+         if (allocated(error)) return
+      end do
+      call fatal_error(error, 'the yielding storeys and the joints did not settle in '//str(max_alternations)// &
+                       ' alternations of their LCPs at t = '//str(t)//' s (step '//str(step)//'; reduce dt)')
+   end subroutine yield_steps
+
+   !> Column Khat^{-1} b_j of storey j (solved once per dt, kept when the building is small).
+   subroutine column_of(ys, st, j, x)
+      type(storey_yield_set), intent(inout) :: ys
+      type(newmark_state), intent(in) :: st
+      integer, intent(in) :: j
+      real(dp), intent(out) :: x(:)
+      integer :: e
+
+      if (size(ys%col, 2) >= ys%n) then
+         if (ys%slot(j) > 0) then
+            x = ys%col(:, ys%slot(j))
+            return
+         end if
+      end if
+      x = 0.0_dp
+      do e = ys%rows%start(j), ys%rows%start(j + 1) - 1
+         x(ys%rows%dof(e)) = x(ys%rows%dof(e)) + ys%rows%coef(e)
+      end do
+      call newmark_solve(st, x)
+      if (size(ys%col, 2) >= ys%n) then
+         ys%n_slots = ys%n_slots + 1
+         ys%slot(j) = ys%n_slots
+         ys%col(:, ys%n_slots) = x
+      end if
+   end subroutine column_of
+
+
+   !> One LCP over the storeys `act(1:na)` (each on its side): the plastic increments `dpl`,
+   !> their response `xdp` and the drifts `dnew` of every storey at the end of the step.
+   subroutine solve_rows(ys, st, u, du, t, step, label, error)
+      type(storey_yield_set), intent(inout) :: ys
+      type(newmark_state), intent(in) :: st
+      real(dp), intent(in) :: u(:), du(:)
+      real(dp), intent(in) :: t
+      integer, intent(in) :: step
+      character(len=*), intent(in) :: label
+      type(error_type), allocatable, intent(out) :: error
+      type(lemke_report) :: rep
+      real(dp) :: h, ftr
+      integer :: a, b, i, j, m
+
+      m = ys%na
+      if (m > ys%ws%m_max) then
+         call lemke_init(ys%ws, max(m, 2*ys%ws%m_max))
+         deallocate (ys%mat, ys%q, ys%z, ys%w, ys%guess)
+         allocate (ys%mat(ys%ws%m_max, ys%ws%m_max), ys%q(ys%ws%m_max), ys%z(ys%ws%m_max), &
+                   ys%w(ys%ws%m_max), ys%guess(ys%ws%m_max))
+      end if
+      ys%xdp = 0.0_dp
+      ys%dpl = 0.0_dp
+      ! mat = S (K - D A) S with A_ij = k_j b_i^T Khat^{-1} b_j, D = diag((1-r) k), S the sides.
+      do b = 1, m
+         j = ys%act(b)
+         call column_of(ys, st, j, ys%work)
+         do a = 1, m
+            i = ys%act(a)
+            ys%mat(a, b) = -real(ys%side(i)*ys%side(j), dp)*(1.0_dp - ys%r(i))*ys%k(i)*ys%k(j)*recover(ys%rows, i, ys%work)
+         end do
+         ys%mat(b, b) = ys%mat(b, b) + ys%k(j)
+         h = (1.0_dp - ys%r(j))*ys%fy(j)
+         ftr = ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j))
+         ys%q(b) = h - real(ys%side(j), dp)*(ftr - ys%r(j)*ys%k(j)*ys%dtr(j))
+      end do
+      ys%guess(1:m) = .true.
+      call lemke_solve(ys%ws, m, ys%mat, ys%q, ys%z, ys%w, rep, active_guess=ys%guess(1:m))
+      ys%solves = ys%solves + 1
+      ys%lcp_rows = ys%lcp_rows + m
+      if (.not. rep%ok) then
+         call fatal_error(error, 'building '//label//': the yielding storeys'' LCP ('//str(m)//' storeys) at t = '// &
+                          str(t)//' s (step '//str(step)//') was not solved: '//lemke_status_name(rep%status)// &
+                          ', natural residual '//str(rep%residual)//' (reduce dt)')
+         return
+      end if
+      do b = 1, m
+         j = ys%act(b)
+         ys%dpl(j) = real(ys%side(j), dp)*ys%z(b)
+         if (ys%dpl(j) == 0.0_dp) cycle
+         call column_of(ys, st, j, ys%work)
+         ys%xdp = ys%xdp + (ys%k(j)*ys%dpl(j))*ys%work
+      end do
+      ys%work = u + du + ys%xdp
+      call drifts(ys, ys%work, ys%dnew)
+   end subroutine solve_rows
+
+   !> The natural residual of the step over every storey (relative to its yield shear): both
+   !> yield functions >= 0, the plastic increment on the side whose function is 0.
+   subroutine check_step(ys, t, step, label, error)
+      type(storey_yield_set), intent(inout) :: ys
+      real(dp), intent(in) :: t
+      integer, intent(in) :: step
+      character(len=*), intent(in) :: label
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: f, c, h, up, lo, res, worst
+      integer :: j, at
+
+      worst = 0.0_dp
+      at = 0
+      do j = 1, ys%n
+         f = ys%f(j) + ys%k(j)*(ys%dnew(j) - ys%d(j)) - ys%k(j)*ys%dpl(j)
+         c = ys%r(j)*ys%k(j)*ys%dnew(j)
+         h = (1.0_dp - ys%r(j))*ys%fy(j)
+         up = c + h - f
+         lo = f - c + h
+         res = max(0.0_dp, -up, -lo)
+         if (ys%dpl(j) > 0.0_dp) res = max(res, abs(min(ys%k(j)*ys%dpl(j), up)))
+         if (ys%dpl(j) < 0.0_dp) res = max(res, abs(min(-ys%k(j)*ys%dpl(j), lo)))
+         res = res/ys%fy(j)
+         if (res > worst) then
+            worst = res
+            at = j
+         end if
+      end do
+      ys%residual = max(ys%residual, worst)
+      if (worst <= yield_residual_limit) return
+      call fatal_error(error, 'building '//label//', storey '//str(at)//': the yielding storeys'' step at t = '// &
+                       str(t)//' s (step '//str(step)//') has the natural residual '//str(worst)// &
+                       ' (limit '//str(yield_residual_limit)//'; reduce dt)')
+   end subroutine check_step
+
+   !> Commit the step: drift, force (`bilinear_force`), plastic drift, energies and peaks of
+   !> every storey from the committed displacements u; the storey shears of an output sample
+   !> (`shear`, the response's history column) become the spring forces.
+   pure subroutine yield_commit(ys, u, t, shear)
+      !> The building's storeys.
+      type(storey_yield_set), intent(inout) :: ys
+      !> Committed displacements.
+      real(dp), intent(in) :: u(:)
+      !> Time (s).
+      real(dp), intent(in) :: t
+      !> The storey-shear history column of this output step, when one is stored.
+      real(dp), intent(inout), optional :: shear(:)
+      real(dp) :: d, f, pn
+      integer :: j
+
+      if (ys%n == 0) return
+      call drifts(ys, u, ys%dnew)
+      do j = 1, ys%n
+         d = ys%dnew(j)
+         f = bilinear_force(ys%k(j), ys%fy(j), ys%r(j), ys%d(j), ys%f(j), d)
+         pn = ys%p(j)
+         ys%p(j) = pn + ys%dpl(j)
+         ys%load_work = ys%load_work + ys%k(j)*0.5_dp*(pn + ys%p(j))*(d - ys%d(j))
+         ys%hysteretic = ys%hysteretic + 0.5_dp*(ys%f(j) + f)*ys%dpl(j)
+         ys%d(j) = d
+         ys%f(j) = f
+         ys%dmax(j) = max(ys%dmax(j), abs(d))
+         if (abs(f) > ys%fmax(j)) then
+            ys%fmax(j) = abs(f)
+            ys%tmax(j) = t
+         end if
+      end do
+      if (present(shear)) shear = ys%f
+      ys%dpl = 0.0_dp
+      ys%xdp = 0.0_dp
+      ys%loaded = .false.
+   end subroutine yield_commit
+
+   !> Total work W_L of the plastic loads of every building (kJ): what the integrators'
+   !> balance counts beyond the elastic structure.
+   pure real(dp) function yield_load_work(ys) result(w)
+      type(storey_yield_set), intent(in) :: ys(:)
+      integer :: ib
+
+      w = 0.0_dp
+      do ib = 1, size(ys)
+         w = w + ys(ib)%load_work
+      end do
+   end function yield_load_work
+
+   !> Turn an energy sample of the elastic integrators into that of the bilinear storeys:
+   !> strain energy sum k (d - p)^2 / 2 in place of sum k d^2 / 2, hysteretic energy added to
+   !> the plastic work.
+   pure subroutine yield_energy_terms(ys, strain, plastic)
+      type(storey_yield_set), intent(in) :: ys(:)
+      !> The sample's strain energy and plastic work (kJ).
+      real(dp), intent(inout) :: strain, plastic
+      integer :: ib, j
+
+      do ib = 1, size(ys)
+         do j = 1, ys(ib)%n
+            associate (k => ys(ib)%k(j), d => ys(ib)%d(j), p => ys(ib)%p(j))
+               strain = strain + 0.5_dp*k*((d - p)**2 - d**2)
+            end associate
+         end do
+         plastic = plastic + ys(ib)%hysteretic
+      end do
+   end subroutine yield_energy_terms
+
+   !> The run's results of the storeys; the response's storey-shear peaks and their times
+   !> become the spring forces'.
+   pure subroutine yield_finish(ys, peak, peak_time, res)
+      type(storey_yield_set), intent(in) :: ys
+      !> The response's storey-shear peaks and times (n_storeys).
+      real(dp), intent(inout) :: peak(:), peak_time(:)
+      type(storey_yield_result), intent(out) :: res
+
+      if (ys%n == 0) return
+      res%n = ys%n
+      res%ductility = ys%dmax/(ys%fy/ys%k)
+      res%residual_drift = ys%d
+      res%peak_force = ys%fmax
+      res%hysteretic = ys%hysteretic
+      res%solves = ys%solves
+      res%lcp_rows = ys%lcp_rows
+      res%residual = ys%residual
+      peak = ys%fmax
+      peak_time = ys%tmax
+   end subroutine yield_finish
+
+end module pound_storey_yield
