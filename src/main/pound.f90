@@ -41,6 +41,7 @@ program pound
    use pound_summary_output, only: write_summary_csv, write_summary_attributes
    use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
    use pound_h5, only: h5_file
+   use pound_yield_output, only: write_yield_tables
    use pound_files, only: output_set, plan_outputs, publish_outputs, discard_outputs, &
                           install_signal_cleanup
    use pound_memory, only: estimate_memory, memory_available, memory_refusal
@@ -338,10 +339,12 @@ contains
       end if
       call write_peak_tables(lst, 'Uncoupled', res%models, res%unc)
       if (.not. res%has_coupled) call write_column_tables(lst, res%models, res%buildings, res%unc)
+      if (.not. res%has_coupled) call write_yield_tables(lst, res%models, res%unc)
       if (res%has_coupled) then
          call write_peak_tables(lst, 'Coupled', res%models, res%cpl)
          call write_contact_summary(lst, res%cs)
          call write_influence_tables(lst, res%models, res%influence)
+         call write_yield_tables(lst, res%models, res%unc, res%cpl)
          call write_column_tables(lst, res%models, res%buildings, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(lst, res%models, deck%sweep, res%sweep)
          if (res%has_sweep) call write_sweep_column_table(lst, res%models, deck%sweep, res%sweep)

@@ -78,6 +78,7 @@ module pound_results_h5
    use pound_sweep_joints, only: joint_sweep
    use pound_separation, only: separation_t
    use pound_separation_output, only: write_separation_h5, pair_labels
+   use pound_yield_output, only: write_yield_h5, write_yield_influence_h5
    use pound_config, only: sweep_config
    use pound_constants, only: g_accel
    implicit none
@@ -268,6 +269,8 @@ contains
                if (allocated(influence(ib)%member_lambda)) call write_member_influence(models(ib), influence(ib))
                if (allocated(error)) return
             end do
+            if (present(cpl)) call write_yield_influence_h5(h5, models, unc, cpl, error)
+            if (allocated(error)) return
          end if
          if (present(sweep)) call write_sweep()
          if (allocated(error)) return
@@ -660,6 +663,7 @@ contains
             end if
          end associate
       end do
+      call write_yield_h5(h5, g, models, res, error)
 
    contains
 

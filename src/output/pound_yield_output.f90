@@ -1,0 +1,166 @@
+!> Outputs of bilinear storeys (issue 25, pound_storey_yield): the HDF5 datasets
+!>
+!>     /<analysis>/<b>/peak/ductility     (n_storeys) mu = max|drift| / (Fy/k)
+!>     /<analysis>/<b>/residual_drift     (n_storeys) m, the storey drift at the end
+!>     /<analysis>/<b>/hysteretic_energy  ()          kJ, dissipated by the storeys
+!>     /influence/<b>/ductility           (n_storeys) %, lambda of the ductility
+!>     /influence/<b>/residual_drift      (n_storeys) %, lambda of |residual drift|
+!>
+!> (the storey-shear histories and peaks of such a building are its spring forces), and the
+!> listing's table of the storeys. Only buildings with bilinear storeys get them.
+module pound_yield_output
+   use pound_kinds, only: dp
+   use pound_error, only: error_type
+   use pound_strings, only: fixed_cell, right_cell, str
+   use pound_structure, only: structure_model
+   use pound_analysis, only: analysis_result
+   use pound_storey_yield, only: storey_yield_result
+   use pound_influence, only: influence_coefficient
+   use pound_h5, only: h5_file, h5_write, h5_write_attr
+   use pound_text_writer, only: text_writer
+   implicit none
+   private
+
+   public :: write_yield_h5, write_yield_influence_h5, write_yield_tables, yield_influence
+
+contains
+
+   !> The storey results of analysis `g` (e.g. '/uncoupled') of every building with bilinear storeys.
+   subroutine write_yield_h5(h5, g, models, res, error)
+      !> Open file.
+      type(h5_file), intent(inout) :: h5
+      !> Group path of the analysis.
+      character(len=*), intent(in) :: g
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> The analysis.
+      type(analysis_result), intent(in) :: res
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: ib
+
+      if (.not. allocated(res%yielding)) return
+      do ib = 1, size(models)
+         associate (y => res%yielding(ib), gb => g//'/'//models(ib)%name//'/')
+            if (y%n == 0) cycle
+            call h5_write(h5, gb//'peak/ductility', y%ductility, error, units='-')
+            if (.not. allocated(error)) call h5_write_attr(h5, gb//'peak/ductility', 'description', &
+                                                          'max |storey drift| / (yield_shear / k) per storey', error)
+            if (.not. allocated(error)) call h5_write(h5, gb//'residual_drift', y%residual_drift, error, units='m')
+            if (.not. allocated(error)) call h5_write(h5, gb//'hysteretic_energy', y%hysteretic, error, units='kJ')
+            if (.not. allocated(error)) call h5_write_attr(h5, gb//'hysteretic_energy', 'lcp_residual', &
+                                                          y%residual, error)
+            if (allocated(error)) return
+         end associate
+      end do
+   end subroutine write_yield_h5
+
+   !> lambda of the ductility and of |residual drift| of storey j: (Qc - Qu)/Qu * 100.
+   pure subroutine yield_influence(unc, cpl, lam_mu, lam_res)
+      !> The building's storeys, uncoupled and coupled.
+      type(storey_yield_result), intent(in) :: unc, cpl
+      !> The coefficients (n_storeys each, %).
+      real(dp), allocatable, intent(out) :: lam_mu(:), lam_res(:)
+
+      lam_mu = influence_coefficient(cpl%ductility, unc%ductility)
+      lam_res = influence_coefficient(abs(cpl%residual_drift), abs(unc%residual_drift))
+   end subroutine yield_influence
+
+   !> /influence/<b>/ductility and /influence/<b>/residual_drift of every building with
+   !> bilinear storeys.
+   subroutine write_yield_influence_h5(h5, models, unc, cpl, error)
+      !> Open file.
+      type(h5_file), intent(inout) :: h5
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> The uncoupled and coupled analyses.
+      type(analysis_result), intent(in) :: unc, cpl
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: lam_mu(:), lam_res(:)
+      integer :: ib
+
+      if (.not. (allocated(unc%yielding) .and. allocated(cpl%yielding))) return
+      do ib = 1, size(models)
+         if (unc%yielding(ib)%n == 0) cycle
+         call yield_influence(unc%yielding(ib), cpl%yielding(ib), lam_mu, lam_res)
+         call h5_write(h5, '/influence/'//models(ib)%name//'/ductility', lam_mu, error, units='%')
+         if (.not. allocated(error)) call h5_write(h5, '/influence/'//models(ib)%name//'/residual_drift', &
+                                                   lam_res, error, units='%')
+         if (allocated(error)) return
+      end do
+   end subroutine write_yield_influence_h5
+
+   !> The listing's table of every building with bilinear storeys: yield shear, hardening,
+   !> ductility, residual drift (uncoupled, coupled and their lambdas) and hysteretic energy.
+   subroutine write_yield_tables(lst, models, unc, cpl)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> The uncoupled analysis.
+      type(analysis_result), intent(in) :: unc
+      !> The coupled analysis, when there is one.
+      type(analysis_result), intent(in), optional :: cpl
+      real(dp), allocatable :: lam_mu(:), lam_res(:)
+      character(len=:), allocatable :: line
+      logical :: both
+      integer :: ib, j
+
+      if (.not. allocated(unc%yielding)) return
+      both = .false.
+      if (present(cpl)) both = allocated(cpl%yielding)
+      do ib = 1, size(models)
+         if (unc%yielding(ib)%n == 0) cycle
+         call put('')
+         call put('  Bilinear storeys of '//models(ib)%name//' (storey shear Q = spring force; mu = max|drift| '// &
+                  '/ (Fy/k), residual drift at the end)')
+         line = '  '//right_cell('storey', 6)//right_cell('Fy [kN]', 12)//right_cell('r', 8)// &
+                right_cell('mu unc', 10)//right_cell('resid unc [mm]', 16)
+         if (both) line = line//right_cell('mu cpl', 10)//right_cell('resid cpl [mm]', 16)// &
+                          right_cell('lambda mu [%]', 15)//right_cell('lambda res [%]', 16)
+         call put(line)
+         if (both) call yield_influence(unc%yielding(ib), cpl%yielding(ib), lam_mu, lam_res)
+         do j = unc%yielding(ib)%n, 1, -1
+            line = '  '//right_cell(str(j), 6)//fixed_cell(models(ib)%yield_shear(j), 12, 2)// &
+                   fixed_cell(models(ib)%hardening(j), 8, 3)//fixed_cell(unc%yielding(ib)%ductility(j), 10, 3)// &
+                   fixed_cell(1.0e3_dp*unc%yielding(ib)%residual_drift(j), 16, 4)
+            if (both) line = line//fixed_cell(cpl%yielding(ib)%ductility(j), 10, 3)// &
+                             fixed_cell(1.0e3_dp*cpl%yielding(ib)%residual_drift(j), 16, 4)// &
+                             lambda_cell(lam_mu(j), 15)//lambda_cell(lam_res(j), 16)
+            call put(line)
+         end do
+         line = '  hysteretic energy: uncoupled '//str(unc%yielding(ib)%hysteretic)//' kJ'
+         if (both) line = line//', coupled '//str(cpl%yielding(ib)%hysteretic)//' kJ'
+         call put(line)
+         line = '  storey LCPs: uncoupled '//str(unc%yielding(ib)%solves)//' solves ('// &
+                str(unc%yielding(ib)%lcp_rows)//' rows), largest residual '//str(unc%yielding(ib)%residual)
+         if (both) line = line//'; coupled '//str(cpl%yielding(ib)%solves)//' solves ('// &
+                          str(cpl%yielding(ib)%lcp_rows)//' rows), largest residual '//str(cpl%yielding(ib)%residual)
+         call put(line)
+      end do
+
+   contains
+
+      subroutine put(text)
+         character(len=*), intent(in) :: text
+
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) text
+         call lst%note()
+      end subroutine put
+
+      !> A lambda right-aligned in `w` columns ('inf' for an infinite one).
+      function lambda_cell(lambda, w) result(cell)
+         real(dp), intent(in) :: lambda
+         integer, intent(in) :: w
+         character(len=:), allocatable :: cell
+
+         if (lambda >= huge(1.0_dp)) then
+            cell = right_cell('inf', w)
+         else
+            cell = fixed_cell(lambda, w, 2)
+         end if
+      end function lambda_cell
+   end subroutine write_yield_tables
+
+end module pound_yield_output
