@@ -47,6 +47,9 @@ module pound_storey_yield
    real(dp), parameter :: settle_tolerance = 1.0e-12_dp
    !> Largest number of alternations between the joints' LCP and the storeys' LCP in a step.
    integer, parameter :: max_alternations = 200
+   !> After a solve, a storey outside its elastic range by more than this times its yield
+   !> shear enters the LCP.
+   real(dp), parameter :: enter_tolerance = 1.0e-11_dp
    !> Largest n_dofs x n_storeys for which the columns Khat^{-1} b_j are kept between steps.
    integer, parameter :: cache_limit = 4000000
 
@@ -79,8 +82,9 @@ module pound_storey_yield
       logical, allocatable :: guess(:)
       !> Work of the plastic loads on the elastic structure (W_L) and hysteretic energy (kJ).
       real(dp) :: load_work = 0.0_dp, hysteretic = 0.0_dp
-      !> LCP solves, storeys that entered them, largest residual.
-      integer :: solves = 0, lcp_rows = 0
+      !> LCP solves, storeys that entered them, the most in one solve, steps with storeys
+      !> yielding while joints act (the LCPs alternated), largest residual.
+      integer :: solves = 0, lcp_rows = 0, max_rows = 0, joint_steps = 0
       real(dp) :: residual = 0.0_dp
    end type storey_yield_set
 
@@ -91,8 +95,9 @@ module pound_storey_yield
       real(dp), allocatable :: ductility(:), residual_drift(:), peak_force(:)
       !> Hysteretic (plastic) energy dissipated by the storeys (kJ).
       real(dp) :: hysteretic = 0.0_dp
-      !> LCP solves, rows solved and the largest natural residual.
-      integer :: solves = 0, lcp_rows = 0
+      !> LCP solves, rows solved, the most rows in one solve, steps with storeys yielding while
+      !> joints act, and the largest natural residual.
+      integer :: solves = 0, lcp_rows = 0, max_rows = 0, joint_steps = 0
       real(dp) :: residual = 0.0_dp
    end type storey_yield_result
 
@@ -292,7 +297,8 @@ contains
          f = ys%f(j) + ys%k(j)*(d - ys%d(j))
          c = ys%r(j)*ys%k(j)*d
          h = (1.0_dp - ys%r(j))*ys%fy(j)
-         if (present(dj)) h = h*(1.0_dp + yield_residual_limit)
+         ! (After a solve: outside by more than round-off.)
+         if (present(dj)) h = h + enter_tolerance*ys%fy(j)
          if (f > c + h) then
             ys%side(j) = 1
          else if (f < c - h) then
@@ -335,7 +341,14 @@ contains
             if (allocated(error)) return
             any_change = any_change .or. changed
          end do
-         if (cs%m == 0 .or. .not. any_change) return
+         if (cs%m == 0) return
+         if (.not. any_change) then
+            if (cs%idle) return
+            do ib = 1, size(ys)
+               if (ys(ib)%loaded) ys(ib)%joint_steps = ys(ib)%joint_steps + 1
+            end do
+            return
+         end if
          call contact_release(cs, st)
          call contact_step(cs, st, t, step, error)
          if (allocated(error)) return
@@ -411,6 +424,7 @@ contains
       call lemke_solve(ys%ws, m, ys%mat, ys%q, ys%z, ys%w, rep, active_guess=ys%guess(1:m))
       ys%solves = ys%solves + 1
       ys%lcp_rows = ys%lcp_rows + m
+      ys%max_rows = max(ys%max_rows, m)
       if (.not. rep%ok) then
          call fatal_error(error, 'building '//label//': the yielding storeys'' LCP ('//str(m)//' storeys) at t = '// &
                           str(t)//' s (step '//str(step)//') was not solved: '//lemke_status_name(rep%status)// &
@@ -548,6 +562,8 @@ contains
       res%hysteretic = ys%hysteretic
       res%solves = ys%solves
       res%lcp_rows = ys%lcp_rows
+      res%max_rows = ys%max_rows
+      res%joint_steps = ys%joint_steps
       res%residual = ys%residual
       peak = ys%fmax
       peak_time = ys%tmax
