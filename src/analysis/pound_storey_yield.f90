@@ -57,6 +57,8 @@ module pound_storey_yield
    type :: storey_yield_set
       !> Storeys and DOFs.
       integer :: n = 0, nd = 0
+      !> The rows are a stick's chain: storey j joins DOFs j-1 and j with coefficients -1, 1.
+      logical :: stick = .false.
       !> Drift rows (the model's, with each row's scale folded into its coefficients).
       type(recovery_rows) :: rows
       !> Initial stiffness (kN/m), yield shear (kN), hardening ratio of each storey.
@@ -135,6 +137,8 @@ contains
          ys%rows%scale(j) = 1.0_dp
          ys%k(j) = b%shear%scale(j)/b%drift%scale(j)
       end do
+      ys%stick = b%stick .and. b%n == n
+      if (ys%stick) ys%stick = all(b%drift%scale == 1.0_dp)
       ys%fy = b%yield_shear
       ys%r = b%hardening
       allocate (ys%d(n), ys%f(n), ys%p(n), ys%dmax(n), ys%fmax(n), ys%tmax(n), ys%dtr(n), ys%dpl(n), &
@@ -198,16 +202,45 @@ contains
       end do
    end subroutine yield_results
 
-   !> The drift of every storey for the DOF vector `x` into `d`.
-   pure subroutine drifts(ys, x, d)
+   !> The drift of every storey of `ys` for the DOF vector x (+ y, when given) into `d`
+   !> (`work`: the sum x + y on the general path).
+   pure subroutine drifts(ys, x, d, work, y)
       type(storey_yield_set), intent(in) :: ys
       real(dp), intent(in) :: x(:)
-      real(dp), intent(out) :: d(:)
+      real(dp), intent(out) :: d(:), work(:)
+      real(dp), intent(in), optional :: y(:)
+      real(dp) :: below, here
       integer :: j
 
-      do j = 1, ys%n
-         d(j) = recover(ys%rows, j, x)
-      end do
+      if (ys%stick) then
+         ! Storey j joins floors j-1 and j (DOFs; the ground below storey 1).
+         below = 0.0_dp
+         if (present(y)) then
+            do j = 1, ys%n
+               here = x(j) + y(j)
+               d(j) = here - below
+               below = here
+            end do
+         else
+            do j = 1, ys%n
+               d(j) = x(j) - below
+               below = x(j)
+            end do
+         end if
+         return
+      end if
+      if (present(y)) then
+         do j = 1, ys%nd
+            work(j) = x(j) + y(j)
+         end do
+         do j = 1, ys%n
+            d(j) = recover(ys%rows, j, work)
+         end do
+      else
+         do j = 1, ys%n
+            d(j) = recover(ys%rows, j, x)
+         end do
+      end if
    end subroutine drifts
 
    !> Solve the step's storey conditions for the predicted increment du of integrator `st`
@@ -229,6 +262,7 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       real(dp), pointer :: du(:)
+      real(dp) :: f, c, h
       integer :: j, round
       logical :: added
 
@@ -237,11 +271,15 @@ contains
       du => newmark_du(st)
       ! The trial (elastic) state: du without this step's plastic loads.
       if (ys%loaded) du = du - ys%xdp
-      ys%work = u + du
-      call drifts(ys, ys%work, ys%dtr)
+      call drifts_of(ys, u, du, trial=.true.)
       ys%na = 0
+      ! Every storey whose trial force is outside its elastic range (the loop of an elastic
+      ! step: one test a storey).
       do j = 1, ys%n
-         call enter(j)
+         f = ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j))
+         c = ys%r(j)*ys%k(j)*ys%dtr(j)
+         h = (1.0_dp - ys%r(j))*ys%fy(j)
+         if (abs(f - c) > h) call enter(j)
       end do
       ys%dold = ys%dpl
       if (ys%na == 0) then
@@ -357,6 +395,29 @@ contains
                        ' alternations of their LCPs at t = '//str(t)//' s (step '//str(step)//'; reduce dt)')
    end subroutine yield_steps
 
+   !> The drifts for u (+ y): into `dtr` (`trial`) or `dnew` (moved out of `ys` for the call:
+   !> no copy).
+   pure subroutine drifts_of(ys, u, y, trial)
+      type(storey_yield_set), intent(inout) :: ys
+      real(dp), intent(in) :: u(:)
+      real(dp), intent(in), optional :: y(:)
+      logical, intent(in), optional :: trial
+      real(dp), allocatable :: d(:)
+      logical :: into_trial
+
+      into_trial = .false.
+      if (present(trial)) into_trial = trial
+      if (into_trial) then
+         call move_alloc(ys%dtr, d)
+         call drifts(ys, u, d, ys%work, y)
+         call move_alloc(d, ys%dtr)
+      else
+         call move_alloc(ys%dnew, d)
+         call drifts(ys, u, d, ys%work, y)
+         call move_alloc(d, ys%dnew)
+      end if
+   end subroutine drifts_of
+
    !> Column Khat^{-1} b_j of storey j (solved once per dt, kept when the building is small).
    subroutine column_of(ys, st, j, x)
       type(storey_yield_set), intent(inout) :: ys
@@ -438,8 +499,13 @@ contains
          call column_of(ys, st, j, ys%work)
          ys%xdp = ys%xdp + (ys%k(j)*ys%dpl(j))*ys%work
       end do
-      ys%work = u + du + ys%xdp
-      call drifts(ys, ys%work, ys%dnew)
+      do j = 1, ys%nd
+         ys%xdp(j) = ys%xdp(j) + du(j)
+      end do
+      call drifts_of(ys, u, ys%xdp, trial=.false.)
+      do j = 1, ys%nd
+         ys%xdp(j) = ys%xdp(j) - du(j)
+      end do
    end subroutine solve_rows
 
    !> The natural residual of the step over every storey (relative to its yield shear): both
@@ -493,7 +559,7 @@ contains
       integer :: j
 
       if (ys%n == 0) return
-      call drifts(ys, u, ys%dnew)
+      call drifts_of(ys, u)
       do j = 1, ys%n
          d = ys%dnew(j)
          f = bilinear_force(ys%k(j), ys%fy(j), ys%r(j), ys%d(j), ys%f(j), d)
