@@ -1,0 +1,50 @@
+# Bilinear storeys (issue 25): the example deck runs and lists its storeys; each bad input of
+# the storey law gets one message naming deck file:line, group, variable and rule; exit 1.
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
+file(READ ${SOURCE_DIR}/input/seed_bilinear.nml good)
+
+file(WRITE ${WORK_DIR}/seed_bilinear.nml "${good}")
+run_pound(r seed_bilinear.nml)
+expect_equal("exit status of the example" 0 "${r_rc}")
+expect_equal("standard error of the example" "" "${r_err}")
+file(READ ${WORK_DIR}/seed_bilinear.out listing)
+expect_contains("listing" "${listing}" "Bilinear storeys of A")
+expect_contains("listing" "${listing}" "Bilinear storeys of B")
+expect_contains("listing" "${listing}" "hysteretic energy: uncoupled")
+file(REMOVE ${WORK_DIR}/seed_bilinear.out ${WORK_DIR}/seed_bilinear.h5 ${WORK_DIR}/seed_bilinear_summary.csv)
+
+# bad(<name> <from> <to> <message>): the example deck with <from> replaced by <to> fails with <message>.
+function(bad name from to needle)
+  string(REPLACE "${from}" "${to}" deck "${good}")
+  if("${deck}" STREQUAL "${good}")
+    message(FATAL_ERROR "${name}: '${from}' not in the deck")
+  endif()
+  file(WRITE ${WORK_DIR}/${name}.nml "${deck}")
+  run_pound(r ${name}.nml)
+  expect_equal("${name}: exit status" 1 "${r_rc}")
+  expect_contains("${name}: message" "${r_err}" "${name}.nml:")
+  expect_contains("${name}: message" "${r_err}" "${needle}")
+  expect_no_outputs(${name}.nml)
+endfunction()
+
+bad(missing_yield "yield_shear = 200.0, 150.0, 100.0" ""
+    "&building #1 (A): yield_shear is missing: storey_law = 'bilinear' needs the yield shear of every storey")
+bad(r_one "hardening_ratio = 0.05" "hardening_ratio = 1.0"
+    "&building #1 (A): hardening_ratio(1) = 1.000000, must be > -1 and < 1")
+bad(r_below "hardening_ratio = 0.02" "hardening_ratio = -1.5"
+    "&building #2 (B): hardening_ratio(1) = -1.500000, must be > -1 and < 1")
+bad(yield_elastic "storey_law = 'bilinear'" "storey_law = 'elastic'"
+    "&building #1 (A): yield_shear applies only with storey_law = 'bilinear'")
+bad(count "yield_shear = 200.0, 150.0, 100.0" "yield_shear = 200.0, 150.0"
+    "&building #1 (A): yield_shear has 2 values, must have n_storeys = 3")
+bad(zero_yield "yield_shear = 200.0, 150.0, 100.0" "yield_shear = 200.0, 0.0, 100.0"
+    "&building #1 (A): yield_shear(2) = 0.000000, must be > 0")
+bad(law_name "storey_law = 'bilinear'  ! yielding storeys\n   yield_shear = 200.0" "storey_law = 'plastic'\n   yield_shear = 200.0"
+    "&building #1 (A): storey_law = 'plastic', must be 'elastic' or 'bilinear'")
+bad(hardening_count "hardening_ratio = 0.05" "hardening_ratio = 0.05, 0.05"
+    "&building #1 (A): hardening_ratio has 2 values, must have one (for every storey) or n_storeys = 3")
+
+# A frame takes no storey law (plastic hinges of frames are not available).
+file(READ ${SOURCE_DIR}/input/two_frames_fe.nml good)
+bad(frame_law "model = 'frame'" "model = 'frame'\n   storey_law = 'bilinear'"
+    "&building #1 (A): storey_law = 'bilinear' applies only to a shear building (model = 'shear')")
