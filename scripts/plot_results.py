@@ -28,7 +28,7 @@ import sys
 import tempfile
 
 PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite", "frame",
-         "deformed", "columns")
+         "deformed", "columns", "hysteresis")
 # The sweep's column-segment target quantities of frames (/sweep/max_abs_lambda/<b>/<q>, where targeted).
 COLUMN_TARGETS = {"column_shear": "column segment shear V", "column_moment": "column segment end moment M"}
 CONTACT_PLOTS = ("displacement", "force", "loops")
@@ -234,6 +234,9 @@ def read_results(path):
                     pname = f"/{an}/{b}/peak/{q}"
                     if pname in f:
                         d["peak"][q] = arr(pname, 1)
+                for y in ("peak/ductility", "residual_drift"):
+                    if f"/{an}/{b}/{y}" in f:
+                        d[y] = arr(f"/{an}/{b}/{y}", 1)
                 if f"/{an}/{b}/deformed" in f and f"/{an}/{b}/deformed_time" in f:
                     d["deformed"] = arr(f"/{an}/{b}/deformed", 2)
                     d["deformed_time"] = arr(f"/{an}/{b}/deformed_time", 1)
@@ -599,6 +602,50 @@ def plot_shear(plt, r, args, written, notes):
     plt.close(fig)
 
 
+def bilinear_buildings(r):
+    """The buildings with bilinear storeys (a ductility in the uncoupled analysis)."""
+    return [b for b in r.buildings if "peak/ductility" in r.analyses["uncoupled"][b]]
+
+
+def plot_hysteresis(plt, r, args, written, notes):
+    """Bilinear storeys: the force-drift loop of each building's most ductile storey (uncoupled
+    against coupled) and the residual drift profile."""
+    import numpy as np
+
+    names = bilinear_buildings(r)
+    coupled = "coupled" in r.analyses
+    fig, axes = plt.subplots(len(names), 2, figsize=(9.0, 3.6 * len(names)), squeeze=False)
+    for ib, b in enumerate(names):
+        ax, ax2 = axes[ib, 0], axes[ib, 1]
+        runs = [("uncoupled", "0.45", "--")] + ([("coupled", "black", "-")] if coupled else [])
+        mu = r.analyses["coupled" if coupled else "uncoupled"][b]["peak/ductility"]
+        j = int(np.argmax(mu))
+        for an, color, ls in runs:
+            d = r.analyses[an][b]
+            if "drift" in d and "storey_shear" in d:
+                ax.plot(1.0e3 * d["drift"][:, j], d["storey_shear"][:, j], color=color, linestyle=ls,
+                        linewidth=1.0, label=f"{an} (mu = {d['peak/ductility'][j]:.2f})")
+            res = d["residual_drift"]
+            n = len(res)
+            x, y = _storey_profile(1.0e3 * res)
+            ax2.plot(x, y, color=color, linestyle=ls, linewidth=1.3, label=an)
+        if not ax.lines:
+            notes.append(f"hysteresis: building {b}: no drift and storey_shear histories (history = 'all')")
+        ax.set_xlabel(f"storey {j + 1} drift [mm]")
+        ax.set_ylabel("storey shear Q [kN]")
+        ax.set_title(f"building {b}: storey {j + 1}")
+        ax.legend(loc="upper left")
+        ax2.axvline(0.0, color="0.7", linewidth=0.8)
+        ax2.set_ylim(0.0, n)
+        ax2.set_xlabel("residual drift [mm]")
+        ax2.set_ylabel("storey")
+        ax2.set_title(f"building {b}: residual drift")
+        ax2.legend(loc="upper right")
+    suptitle(fig, r, "Bilinear storeys: hysteresis loops and residual drifts")
+    save(fig, r, "hysteresis", args, written)
+    plt.close(fig)
+
+
 def plot_influence(plt, r, args, written, notes):
     import numpy as np
 
@@ -784,7 +831,7 @@ def has_suite(path):
 
 PLOTTERS = {"displacement": plot_displacement, "force": plot_force, "loops": plot_loops,
             "shear": plot_shear, "influence": plot_influence, "ground": plot_ground, "sweep": plot_sweep,
-            "suite": plot_suite_group}
+            "suite": plot_suite_group, "hysteresis": plot_hysteresis}
 
 
 # --------------------------------------------------------------------------------------------
@@ -1078,6 +1125,10 @@ def run(argv):
         if name == "columns" and not r.columns:
             if "columns" in args.explicit:
                 notes.append("columns: skipped (no frame with column-segment influence in this file)")
+            continue
+        if name == "hysteresis" and not bilinear_buildings(r):
+            if "hysteresis" in args.explicit:
+                notes.append("hysteresis: skipped (no building with bilinear storeys in this file)")
             continue
         if name == "sweep" and r.sweep is None:
             if "sweep" in args.explicit:
