@@ -95,9 +95,15 @@ contains
             call pair_items(ip)
          end do
       end if
-      call add(item('collapse', 'run', 'collapse', 'collapses', unit='', &
-                    location='not modelled: the buildings of this version are elastic and cannot collapse', &
-                    available=.false.))
+      if (any([(allocated(res%models(ib)%yield_shear), ib=1, size(res%models))])) then
+         call add(item('collapse', 'run', 'collapse', 'collapses', unit='', &
+                       location='not checked: bilinear storeys are modelled, collapse is not yet detected', &
+                       available=.false.))
+      else
+         call add(item('collapse', 'run', 'collapse', 'collapses', unit='', &
+                       location='not modelled: the buildings of this version are elastic and cannot collapse', &
+                       available=.false.))
+      end if
       if (res%has_sweep) then
          if (any(res%sweep%failed)) call add(item('failed', 'run', 'failed_sweep_gaps', &
                                                   'failed gaps of the sweep'//motion, &
