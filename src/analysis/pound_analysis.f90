@@ -40,7 +40,7 @@ module pound_analysis
                             contact_track_paths
    use pound_deck_variables, only: max_substeps
    use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, yield_steps, &
-                                 yield_sample, yield_results, yield_energy_terms, yield_load_work
+                                 yield_sample, yield_results, yield_energy_step, yield_collapsed, yield_hold
    use pound_contact_period, only: joint_half_period
    implicit none
    private
@@ -510,7 +510,7 @@ contains
 
       nb = size(models)
       allocate (view(nb))
-      call yield_sets_init(ys, models, inelastic)
+      call yield_sets_init(ys, models, cfg%collapse_drift, inelastic)
       coupled = cs%m > 0
       impact = present(sub)
       exact = cfg%free_steps == free_exact .and. .not. inelastic
@@ -555,7 +555,7 @@ contains
       until_out = every
       call system_clock(c0, rate)
       if (plain .and. res%n_steps > 0) call predict_newmark(st, models, ag(1) - ag(0))
-      do step = 1, res%n_steps
+      steps: do step = 1, res%n_steps
          if (mod(step, progress_stride) == 0) call progress_steps(step, res%n_steps)
          t = real(step, dp)*cfg%dt
          ag_old = ag(step - 1)
@@ -661,16 +661,7 @@ contains
                k = k + 1
                call store_energy(res, k, st, models, cs, sample)
             end if
-            if (inelastic) then
-               if (output) then
-                  call yield_energy_terms(ys, res%energy(e_strain, k), res%energy(e_plastic, k))
-                  sample = res%energy(:, k)
-               else if (coupled) then
-                  call yield_energy_terms(ys, sample(e_strain), sample(e_plastic))
-               else
-                  eout = eout - yield_load_work(ys)
-               end if
-            end if
+            if (inelastic) call yield_energy_step(ys, output, coupled, e_strain, e_plastic, res%energy(:, k), sample, eout)
             if (coupled .or. output) then
                win = sample(e_input)
                eout = sum(sample(e_kinetic:n_energy))
@@ -691,7 +682,12 @@ contains
             ag_old = ag_new
          end do
          if (n_sub > 1) call swap_steps(st, cs, sub)
-      end do
+         ! A collapsed building stops its analysis (the samples not reached hold the last).
+         if (inelastic) then
+            if (yield_collapsed(ys)) exit steps
+         end if
+      end do steps
+      if (inelastic) call yield_hold(res%building, res%energy, k)
       call system_clock(c1)
       if (present(sink)) then
          do ib = 1, nb

@@ -38,7 +38,8 @@ module pound_storey_yield
 
    public :: bilinear_force, storey_yield_set, storey_yield_result
    public :: yield_set_init, yield_step, yield_steps, yield_commit, yield_energy_terms, yield_load_work, yield_finish
-   public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results
+   public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step, &
+             yield_collapsed, yield_hold
 
    !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
    real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
@@ -82,6 +83,11 @@ module pound_storey_yield
       type(lemke_workspace) :: ws
       real(dp), allocatable :: mat(:, :), q(:), z(:), w(:)
       logical, allocatable :: guess(:)
+      !> Collapse: drift limit of each storey (collapse_drift x height; m), the storey that
+      !> passed it first (0: none) and when (s).
+      real(dp), allocatable :: limit(:)
+      integer :: collapse_storey = 0
+      real(dp) :: collapse_time = 0.0_dp
       !> Work of the plastic loads on the elastic structure (W_L) and hysteretic energy (kJ).
       real(dp) :: load_work = 0.0_dp, hysteretic = 0.0_dp
       !> LCP solves, storeys that entered them, the most in one solve, steps with storeys
@@ -97,6 +103,10 @@ module pound_storey_yield
       real(dp), allocatable :: ductility(:), residual_drift(:), peak_force(:)
       !> Hysteretic (plastic) energy dissipated by the storeys (kJ).
       real(dp) :: hysteretic = 0.0_dp
+      !> The storey whose drift / height passed `collapse_drift` first (0: no collapse) and when
+      !> (s): the analysis stopped at the end of that step.
+      integer :: collapse_storey = 0
+      real(dp) :: collapse_time = 0.0_dp
       !> LCP solves, rows solved, the most rows in one solve, steps with storeys yielding while
       !> joints act, and the largest natural residual.
       integer :: solves = 0, lcp_rows = 0, max_rows = 0, joint_steps = 0
@@ -117,11 +127,13 @@ contains
    end function bilinear_force
 
    !> Set up the storeys of building `b` (nothing when its storeys are elastic).
-   subroutine yield_set_init(ys, b)
+   subroutine yield_set_init(ys, b, collapse_drift)
       !> The set (at rest on return).
       type(storey_yield_set), intent(out) :: ys
       !> The building.
       type(structure_model), intent(in) :: b
+      !> Storey drift / height at which the building collapses (none: no check).
+      real(dp), intent(in), optional :: collapse_drift
       integer :: j, n, i, e
 
       if (.not. allocated(b%yield_shear)) return
@@ -139,6 +151,8 @@ contains
       end do
       ys%stick = b%stick .and. b%n == n
       if (ys%stick) ys%stick = all(b%drift%scale == 1.0_dp)
+      ys%limit = spread(huge(1.0_dp), 1, n)
+      if (present(collapse_drift) .and. allocated(b%yield_height)) ys%limit = collapse_drift*b%yield_height
       ys%fy = b%yield_shear
       ys%r = b%hardening
       allocate (ys%d(n), ys%f(n), ys%p(n), ys%dmax(n), ys%fmax(n), ys%tmax(n), ys%dtr(n), ys%dpl(n), &
@@ -156,9 +170,10 @@ contains
 
    !> Set up the storeys of every building; `inelastic`: some building has bilinear storeys
    !> (`ys` is then allocated, one set a building).
-   subroutine yield_sets_init(ys, models, inelastic)
+   subroutine yield_sets_init(ys, models, collapse_drift, inelastic)
       type(storey_yield_set), allocatable, intent(out) :: ys(:)
       type(structure_model), intent(in) :: models(:)
+      real(dp), intent(in) :: collapse_drift
       logical, intent(out) :: inelastic
       integer :: ib
 
@@ -169,7 +184,7 @@ contains
       if (.not. inelastic) return
       allocate (ys(size(models)))
       do ib = 1, size(models)
-         call yield_set_init(ys(ib), models(ib))
+         call yield_set_init(ys(ib), models(ib), collapse_drift)
       end do
    end subroutine yield_sets_init
 
@@ -188,6 +203,60 @@ contains
          call yield_commit(ys, u, t)
       end if
    end subroutine yield_sample
+
+   !> The energy terms of the step (after the integrators' commits and the sample of the
+   !> energies): an output sample `stored` (and `sample`, its copy) or the coupled step's
+   !> `sample` gets the storeys' strain and hysteretic energies (`yield_energy_terms`, at the
+   !> positions `i_strain`, `i_plastic`); an uncoupled step's integrator sum `e_out` loses W_L.
+   pure subroutine yield_energy_step(ys, output, coupled, i_strain, i_plastic, stored, sample, e_out)
+      type(storey_yield_set), intent(in) :: ys(:)
+      logical, intent(in) :: output, coupled
+      integer, intent(in) :: i_strain, i_plastic
+      real(dp), intent(inout) :: stored(:), sample(:), e_out
+
+      if (output) then
+         call yield_energy_terms(ys, stored(i_strain), stored(i_plastic))
+         sample = stored
+      else if (coupled) then
+         call yield_energy_terms(ys, sample(i_strain), sample(i_plastic))
+      else
+         e_out = e_out - yield_load_work(ys)
+      end if
+   end subroutine yield_energy_step
+
+   !> A building collapsed (its analysis stops at the end of this step).
+   pure logical function yield_collapsed(ys)
+      type(storey_yield_set), intent(in) :: ys(:)
+
+      yield_collapsed = any(ys%collapse_storey > 0)
+   end function yield_collapsed
+
+   !> After a collapse: the output samples not reached hold the last one taken (histories held
+   !> in memory, energies); `k` samples were taken.
+   pure subroutine yield_hold(rec, energy, k)
+      type(response_record), intent(inout) :: rec(:)
+      real(dp), intent(inout) :: energy(:, :)
+      integer, intent(in) :: k
+      integer :: ib, i
+
+      do i = k + 1, size(energy, 2)
+         energy(:, i) = energy(:, k)
+      end do
+      do ib = 1, size(rec)
+         associate (r => rec(ib))
+            if (r%streamed .or. r%n_out < 1) cycle
+            do i = r%n_out + 1, r%capacity
+               if (allocated(r%u)) r%u(:, i) = r%u(:, r%n_out)
+               if (allocated(r%v)) r%v(:, i) = r%v(:, r%n_out)
+               if (allocated(r%a_abs)) r%a_abs(:, i) = r%a_abs(:, r%n_out)
+               if (allocated(r%drift)) r%drift(:, i) = r%drift(:, r%n_out)
+               if (allocated(r%shear)) r%shear(:, i) = r%shear(:, r%n_out)
+               if (allocated(r%u_nodes)) r%u_nodes(:, i) = r%u_nodes(:, r%n_out)
+            end do
+            r%n_out = r%capacity
+         end associate
+      end do
+   end subroutine yield_hold
 
    !> The run's storey results of every building (`yield_finish`).
    pure subroutine yield_results(ys, rec, res)
@@ -570,6 +639,10 @@ contains
          ys%d(j) = d
          ys%f(j) = f
          ys%dmax(j) = max(ys%dmax(j), abs(d))
+         if (abs(d) > ys%limit(j) .and. ys%collapse_storey == 0) then
+            ys%collapse_storey = j
+            ys%collapse_time = t
+         end if
          if (abs(f) > ys%fmax(j)) then
             ys%fmax(j) = abs(f)
             ys%tmax(j) = t
@@ -626,6 +699,8 @@ contains
       res%residual_drift = ys%d
       res%peak_force = ys%fmax
       res%hysteretic = ys%hysteretic
+      res%collapse_storey = ys%collapse_storey
+      res%collapse_time = ys%collapse_time
       res%solves = ys%solves
       res%lcp_rows = ys%lcp_rows
       res%max_rows = ys%max_rows

@@ -54,6 +54,8 @@ module pound_analysis_plan
       integer :: free_steps = free_newmark
       !> LCP method (`lcp_auto`, `lcp_lemke`).
       integer :: lcp_solver = lcp_auto
+      !> A building with bilinear storeys collapses when a storey's drift / height passes this.
+      real(dp) :: collapse_drift = 0.10_dp
    contains
       !> Number of output samples of a whole history (t = 0 included).
       procedure :: outputs => plan_outputs

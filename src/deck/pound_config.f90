@@ -44,6 +44,8 @@ module pound_config
       !> acceleration, as every other step) or 'exact' (the exact step of the linear structure
       !> under the ground acceleration linear between its samples, mode by mode).
       character(len=8) :: free_steps = 'newmark'
+      !> Collapse of a building with bilinear storeys: a storey drift / height beyond this (issue 25).
+      real(dp) :: collapse_drift = 0.10_dp
       !> Histories in the HDF5 file in compressed (deflate) chunks.
       logical :: compress = .false.
       !> Every DOF's displacement history of each frame building (`u_nodes` in the HDF5 file,

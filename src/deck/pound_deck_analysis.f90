@@ -1,5 +1,5 @@
 !> Reader of `&analysis`: title, dt, t_end, output_every, history, stepping, impact_substeps,
-!> compress, node_histories, lcp_solver, free_steps.
+!> compress, node_histories, lcp_solver, free_steps, collapse_drift.
 module pound_deck_analysis
    use pound_config, only: analysis_config
    use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
@@ -31,14 +31,14 @@ contains
       character(len=title_len) :: title
       character(len=path_len) :: history
       character(len=word_len) :: stepping, lcp_solver, free_steps
-      real(dp) :: dt, t_end
+      real(dp) :: dt, t_end, collapse_drift
       integer :: output_every, ios, impact_substeps
       logical :: compress, node_histories
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
       namelist /analysis/ title, dt, t_end, output_every, history, stepping, impact_substeps, compress, &
-                          node_histories, lcp_solver, free_steps
+                          node_histories, lcp_solver, free_steps, collapse_drift
 
       title = ' '
       history = ' '
@@ -51,6 +51,7 @@ contains
       node_histories = .false.
       lcp_solver = 'auto'
       free_steps = 'newmark'
+      collapse_drift = 0.10_dp
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -107,6 +108,9 @@ contains
       if (allocated(error)) return
       call one_of('free_steps', free_steps, 'newmark', 'exact', cfg%free_steps)
       if (allocated(error)) return
+      call check_real(at, 'collapse_drift', collapse_drift, '>', 0.0_dp, error)
+      if (allocated(error)) return
+      cfg%collapse_drift = collapse_drift
       call parse_history(at, history, cfg%store, error)
 
    contains

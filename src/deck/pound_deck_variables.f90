@@ -59,7 +59,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(100) = [ &
+   type(var_spec), parameter :: variables(101) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -115,7 +115,7 @@ module pound_deck_variables
       var_spec('building', 'behaviour_factor', 'r', 0), var_spec('building', 'response_reduction', 'r', 0), &
       var_spec('ground', 'target_g', 'r', 0), &
       var_spec('building', 'storey_law', 'c', 0), var_spec('building', 'yield_shear', 'r', max_storeys), &
-      var_spec('building', 'hardening_ratio', 'r', max_storeys)]
+      var_spec('building', 'hardening_ratio', 'r', max_storeys), var_spec('analysis', 'collapse_drift', 'r', 0)]
 
 contains
 

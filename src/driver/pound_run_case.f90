@@ -118,6 +118,7 @@ contains
       plan%impact_substeps = cfg%impact_substeps
       plan%free_steps = merge(free_exact, free_newmark, cfg%free_steps == 'exact')
       plan%lcp_solver = merge(lcp_lemke, lcp_auto, cfg%lcp_solver == 'lemke')
+      plan%collapse_drift = cfg%collapse_drift
    end function analysis_plan_of
 
    !> The ground motion the configuration `&ground` describes: a pulse, or a record read

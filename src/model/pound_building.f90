@@ -70,6 +70,7 @@ contains
          if (allocated(deck_entry%yield_shear)) then
             m%yield_shear = deck_entry%yield_shear
             m%hardening = deck_entry%hardening_ratio
+            m%yield_height = deck_entry%height
          end if
       end if
    end subroutine build_building

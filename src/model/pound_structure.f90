@@ -133,6 +133,8 @@ module pound_structure
       !> hardening ratio of each drift row's storey spring, whose initial stiffness is the
       !> shear row's scale; unallocated: elastic storeys (pound_storey_yield).
       real(dp), allocatable :: yield_shear(:), hardening(:)
+      !> Their storey heights (m), for the collapse check (drift / height).
+      real(dp), allocatable :: yield_height(:)
    end type structure_model
 
 contains

@@ -95,10 +95,12 @@ contains
             call pair_items(ip)
          end do
       end if
-      if (any([(allocated(res%models(ib)%yield_shear), ib=1, size(res%models))])) then
-         call add(item('collapse', 'run', 'collapse', 'collapses', unit='', &
-                       location='not checked: bilinear storeys are modelled, collapse is not yet detected', &
-                       available=.false.))
+      if (allocated(res%unc%yielding)) then
+         i = count(res%unc%yielding%collapse_storey > 0)
+         if (allocated(res%cpl%yielding)) i = i + count(res%cpl%yielding%collapse_storey > 0)
+         call add(item('collapse', 'run', 'collapse', 'collapses', real(i, dp), '-', &
+                       location='buildings x analyses whose storey drift / height passed collapse_drift '// &
+                       '(the listing''s bilinear-storey tables say which storey when)'))
       else
          call add(item('collapse', 'run', 'collapse', 'collapses', unit='', &
                        location='not modelled: the buildings of this version are elastic and cannot collapse', &

@@ -6,6 +6,9 @@
 !>     /influence/<b>/ductility           (n_storeys) %, lambda of the ductility
 !>     /influence/<b>/residual_drift      (n_storeys) %, lambda of |residual drift|
 !>
+!> and the attributes `collapse_storey` (0: none) and `collapse_time` (s) of `/<analysis>/<b>`,
+!> and `meaningful` of `/influence/<b>` ('no: ...') when the building collapsed in an analysis
+!>
 !> (the storey-shear histories and peaks of such a building are its spring forces), and the
 !> listing's table of the storeys. Only buildings with bilinear storeys get them.
 module pound_yield_output
@@ -21,7 +24,7 @@ module pound_yield_output
    implicit none
    private
 
-   public :: write_yield_h5, write_yield_influence_h5, write_yield_tables, yield_influence
+   public :: write_yield_h5, write_yield_influence_h5, write_yield_tables, yield_influence, collapse_text
 
 contains
 
@@ -50,6 +53,10 @@ contains
             if (.not. allocated(error)) call h5_write(h5, gb//'hysteretic_energy', y%hysteretic, error, units='kJ')
             if (.not. allocated(error)) call h5_write_attr(h5, gb//'hysteretic_energy', 'lcp_residual', &
                                                           y%residual, error)
+            if (.not. allocated(error)) call h5_write_attr(h5, g//'/'//models(ib)%name, 'collapse_storey', &
+                                                          y%collapse_storey, error)
+            if (.not. allocated(error) .and. y%collapse_storey > 0) &
+               call h5_write_attr(h5, g//'/'//models(ib)%name, 'collapse_time', y%collapse_time, error)
             if (allocated(error)) return
          end associate
       end do
@@ -87,9 +94,28 @@ contains
          call h5_write(h5, '/influence/'//models(ib)%name//'/ductility', lam_mu, error, units='%')
          if (.not. allocated(error)) call h5_write(h5, '/influence/'//models(ib)%name//'/residual_drift', &
                                                    lam_res, error, units='%')
+         if (.not. allocated(error) .and. max(unc%yielding(ib)%collapse_storey, cpl%yielding(ib)%collapse_storey) > 0) &
+            call h5_write_attr(h5, '/influence/'//models(ib)%name, 'meaningful', 'no: '// &
+                               collapse_text(unc%yielding(ib), cpl%yielding(ib)), error)
          if (allocated(error)) return
       end do
    end subroutine write_yield_influence_h5
+
+   !> Where and when a building collapsed, in which analyses (empty: no collapse).
+   pure function collapse_text(unc, cpl) result(text)
+      !> The building's storeys, uncoupled and coupled (n = 0: not run).
+      type(storey_yield_result), intent(in) :: unc, cpl
+      character(len=:), allocatable :: text
+
+      text = ''
+      if (unc%collapse_storey > 0) text = 'collapsed in the uncoupled analysis (storey '//str(unc%collapse_storey)// &
+                                         ', t = '//str(unc%collapse_time)//' s)'
+      if (cpl%collapse_storey > 0) then
+         if (len(text) > 0) text = text//'; '
+         text = text//'collapsed in the coupled analysis (storey '//str(cpl%collapse_storey)//', t = '// &
+                str(cpl%collapse_time)//' s)'
+      end if
+   end function collapse_text
 
    !> The listing's table of every building with bilinear storeys: yield shear, hardening,
    !> ductility, residual drift (uncoupled, coupled and their lambdas) and hysteretic energy.
@@ -138,6 +164,14 @@ contains
          if (both) line = line//'; coupled '//str(cpl%yielding(ib)%solves)//' solves ('// &
                           str(cpl%yielding(ib)%lcp_rows)//' rows), largest residual '//str(cpl%yielding(ib)%residual)
          call put(line)
+         if (both) then
+            line = collapse_text(unc%yielding(ib), cpl%yielding(ib))
+         else
+            line = collapse_text(unc%yielding(ib), storey_yield_result())
+         end if
+         if (len(line) > 0) call put('  COLLAPSE: '//line//': storey drift / height passed collapse_drift, '// &
+                                     'that analysis stopped at the end of the step (later samples hold the last); '// &
+                                     'the influence coefficients of '//models(ib)%name//' are not meaningful')
       end do
 
    contains

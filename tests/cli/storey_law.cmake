@@ -44,6 +44,17 @@ bad(law_name "storey_law = 'bilinear'  ! yielding storeys\n   yield_shear = 200.
 bad(hardening_count "hardening_ratio = 0.05" "hardening_ratio = 0.05, 0.05"
     "&building #1 (A): hardening_ratio has 2 values, must have one (for every storey) or n_storeys = 3")
 
+# collapse_drift: > 0; a collapse is a result (exit 0, the listing says which storey when).
+bad(collapse_zero "history = 'all'" "history = 'all', collapse_drift = 0.0"
+    "&analysis: collapse_drift = 0")
+string(REPLACE "history = 'all'" "history = 'all', collapse_drift = 1.0e-4" deck "${good}")
+file(WRITE ${WORK_DIR}/collapse.nml "${deck}")
+run_pound(r collapse.nml)
+expect_equal("collapse: exit status" 0 "${r_rc}")
+file(READ ${WORK_DIR}/collapse.out listing)
+expect_contains("collapse: listing" "${listing}" "COLLAPSE: collapsed in the uncoupled analysis (storey 1, t = ")
+file(REMOVE ${WORK_DIR}/collapse.out ${WORK_DIR}/collapse.h5 ${WORK_DIR}/collapse_summary.csv)
+
 # A frame takes no storey law (plastic hinges of frames are not available).
 file(READ ${SOURCE_DIR}/input/two_frames_fe.nml good)
 bad(frame_law "model = 'frame'" "model = 'frame'\n   storey_law = 'bilinear'"
