@@ -98,6 +98,7 @@ module pound_storey_yield
 
    !> What a run reports of a building's bilinear storeys (n = 0: elastic storeys).
    type :: storey_yield_result
+      !> Storeys (0: elastic).
       integer :: n = 0
       !> Peak ductility max|d| / (Fy/k), residual drift (m) at the end, peak |force| (kN).
       real(dp), allocatable :: ductility(:), residual_drift(:), peak_force(:)
@@ -171,9 +172,13 @@ contains
    !> Set up the storeys of every building; `inelastic`: some building has bilinear storeys
    !> (`ys` is then allocated, one set a building).
    subroutine yield_sets_init(ys, models, collapse_drift, inelastic)
+      !> One set a building (unallocated when every building is elastic).
       type(storey_yield_set), allocatable, intent(out) :: ys(:)
+      !> The buildings.
       type(structure_model), intent(in) :: models(:)
+      !> Storey drift / height at which a building collapses.
       real(dp), intent(in) :: collapse_drift
+      !> Some building has bilinear storeys.
       logical, intent(out) :: inelastic
       integer :: ib
 
@@ -191,10 +196,15 @@ contains
    !> Commit a building's storeys after its integrator's commit and `response_sample`: the
    !> storey-shear sample just stored (an output step) becomes the spring forces.
    subroutine yield_sample(ys, u, t, output, rec)
+      !> The building's storeys.
       type(storey_yield_set), intent(inout) :: ys
+      !> Committed displacements.
       real(dp), intent(in) :: u(:)
+      !> Time (s).
       real(dp), intent(in) :: t
+      !> An output step (its sample was just stored).
       logical, intent(in) :: output
+      !> The building's response record.
       type(response_record), intent(inout) :: rec
 
       if (output .and. rec%store(q_shear)) then
@@ -209,10 +219,16 @@ contains
    !> `sample` gets the storeys' strain and hysteretic energies (`yield_energy_terms`, at the
    !> positions `i_strain`, `i_plastic`); an uncoupled step's integrator sum `e_out` loses W_L.
    pure subroutine yield_energy_step(ys, output, coupled, i_strain, i_plastic, stored, sample, e_out)
+      !> The buildings' storeys after the step's commit.
       type(storey_yield_set), intent(in) :: ys(:)
+      !> An output step; a coupled analysis.
       logical, intent(in) :: output, coupled
+      !> Positions of the strain energy and of the plastic work in a sample.
       integer, intent(in) :: i_strain, i_plastic
-      real(dp), intent(inout) :: stored(:), sample(:), e_out
+      !> The stored output sample, the step's sample (kJ).
+      real(dp), intent(inout) :: stored(:), sample(:)
+      !> The integrators' sum kinetic + strain + damping of an uncoupled step (kJ).
+      real(dp), intent(inout) :: e_out
 
       if (output) then
          call yield_energy_terms(ys, stored(i_strain), stored(i_plastic))
@@ -226,6 +242,7 @@ contains
 
    !> A building collapsed (its analysis stops at the end of this step).
    pure logical function yield_collapsed(ys)
+      !> The buildings' storeys.
       type(storey_yield_set), intent(in) :: ys(:)
 
       yield_collapsed = any(ys%collapse_storey > 0)
@@ -234,8 +251,11 @@ contains
    !> After a collapse: the output samples not reached hold the last one taken (histories held
    !> in memory, energies); `k` samples were taken.
    pure subroutine yield_hold(rec, energy, k)
+      !> The buildings' response records.
       type(response_record), intent(inout) :: rec(:)
+      !> The energy history (n_energy, n_out).
       real(dp), intent(inout) :: energy(:, :)
+      !> Output samples taken.
       integer, intent(in) :: k
       integer :: ib, i
 
@@ -260,8 +280,11 @@ contains
 
    !> The run's storey results of every building (`yield_finish`).
    pure subroutine yield_results(ys, rec, res)
+      !> The buildings' storeys at the end of the run.
       type(storey_yield_set), intent(in) :: ys(:)
+      !> The buildings' response records (storey-shear peaks replaced).
       type(response_record), intent(inout) :: rec(:)
+      !> One result a building.
       type(storey_yield_result), allocatable, intent(out) :: res(:)
       integer :: ib
 
@@ -657,6 +680,7 @@ contains
    !> Total work W_L of the plastic loads of every building (kJ): what the integrators'
    !> balance counts beyond the elastic structure.
    pure real(dp) function yield_load_work(ys) result(w)
+      !> The buildings' storeys.
       type(storey_yield_set), intent(in) :: ys(:)
       integer :: ib
 
@@ -670,6 +694,7 @@ contains
    !> strain energy sum k (d - p)^2 / 2 in place of sum k d^2 / 2, hysteretic energy added to
    !> the plastic work.
    pure subroutine yield_energy_terms(ys, strain, plastic)
+      !> The buildings' storeys.
       type(storey_yield_set), intent(in) :: ys(:)
       !> The sample's strain energy and plastic work (kJ).
       real(dp), intent(inout) :: strain, plastic
@@ -688,9 +713,11 @@ contains
    !> The run's results of the storeys; the response's storey-shear peaks and their times
    !> become the spring forces'.
    pure subroutine yield_finish(ys, peak, peak_time, res)
+      !> The building's storeys at the end of the run.
       type(storey_yield_set), intent(in) :: ys
       !> The response's storey-shear peaks and times (n_storeys).
       real(dp), intent(inout) :: peak(:), peak_time(:)
+      !> The building's result.
       type(storey_yield_result), intent(out) :: res
 
       if (ys%n == 0) return
