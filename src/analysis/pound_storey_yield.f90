@@ -93,6 +93,8 @@ module pound_storey_yield
       !> LCP solves, storeys that entered them, the most in one solve, steps with storeys
       !> yielding while joints act (the LCPs alternated), largest residual.
       integer :: solves = 0, lcp_rows = 0, max_rows = 0, joint_steps = 0
+      !> Most solves of the joints' LCP in one step beyond the first (alternations).
+      integer :: alternations = 0
       real(dp) :: residual = 0.0_dp
    end type storey_yield_set
 
@@ -111,6 +113,8 @@ module pound_storey_yield
       !> LCP solves, rows solved, the most rows in one solve, steps with storeys yielding while
       !> joints act, and the largest natural residual.
       integer :: solves = 0, lcp_rows = 0, max_rows = 0, joint_steps = 0
+      !> Most solves of the joints' LCP in one step beyond the first (alternations).
+      integer :: alternations = 0
       real(dp) :: residual = 0.0_dp
    end type storey_yield_result
 
@@ -472,6 +476,7 @@ contains
             any_change = any_change .or. changed
          end do
          if (cs%m == 0) return
+         if (it > 1) ys%alternations = max(ys%alternations, it - 1)
          if (.not. any_change) then
             if (cs%idle) return
             do ib = 1, size(ys)
@@ -732,6 +737,7 @@ contains
       res%lcp_rows = ys%lcp_rows
       res%max_rows = ys%max_rows
       res%joint_steps = ys%joint_steps
+      res%alternations = ys%alternations
       res%residual = ys%residual
       peak = ys%fmax
       peak_time = ys%tmax

@@ -162,7 +162,9 @@ contains
          line = '  storey LCPs: uncoupled '//str(unc%yielding(ib)%solves)//' solves ('// &
                 str(unc%yielding(ib)%lcp_rows)//' rows), largest residual '//str(unc%yielding(ib)%residual)
          if (both) line = line//'; coupled '//str(cpl%yielding(ib)%solves)//' solves ('// &
-                          str(cpl%yielding(ib)%lcp_rows)//' rows), largest residual '//str(cpl%yielding(ib)%residual)
+                          str(cpl%yielding(ib)%lcp_rows)//' rows), largest residual '//str(cpl%yielding(ib)%residual)// &
+                          ', steps yielding with joints acting '//str(cpl%yielding(ib)%joint_steps)// &
+                          ', joint LCPs solved again in a step at most '//str(cpl%yielding(ib)%alternations)
          call put(line)
          if (both) then
             line = collapse_text(unc%yielding(ib), cpl%yielding(ib))
