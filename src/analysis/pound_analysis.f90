@@ -687,7 +687,8 @@ contains
             if (yield_collapsed(ys)) exit steps
          end if
       end do steps
-      if (inelastic) call yield_hold(res%building, res%energy, k)
+      if (inelastic) call yield_hold(res%building, res%energy, k, coupled, error, sink)
+      if (allocated(error)) return
       call system_clock(c1)
       if (present(sink)) then
          do ib = 1, nb

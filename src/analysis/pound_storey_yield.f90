@@ -31,7 +31,7 @@ module pound_storey_yield
    use pound_structure, only: structure_model, recovery_rows, recover
    use pound_newmark, only: newmark_state, newmark_du, newmark_u, newmark_solve, newmark_dt
    use pound_contact, only: contact_system, contact_step, contact_release
-   use pound_response, only: response_record, q_shear
+   use pound_response, only: response_record, q_shear, history_sink, response_flush
    use pound_lemke, only: lemke_workspace, lemke_report, lemke_init, lemke_solve, lemke_status_name
    implicit none
    private
@@ -252,34 +252,58 @@ contains
       yield_collapsed = any(ys%collapse_storey > 0)
    end function yield_collapsed
 
-   !> After a collapse: the output samples not reached hold the last one taken (histories held
-   !> in memory, energies); `k` samples were taken.
-   pure subroutine yield_hold(rec, energy, k)
+   !> After a collapse: the output samples not reached hold the last one taken (energies;
+   !> the histories held in memory, or streamed to `sink` block by block); `k` samples were
+   !> taken of `size(energy, 2)`.
+   subroutine yield_hold(rec, energy, k, coupled, error, sink)
       !> The buildings' response records.
       type(response_record), intent(inout) :: rec(:)
       !> The energy history (n_energy, n_out).
       real(dp), intent(inout) :: energy(:, :)
       !> Output samples taken.
       integer, intent(in) :: k
-      integer :: ib, i
+      !> The coupled analysis (for the sink).
+      logical, intent(in) :: coupled
+      !> Error state (a failed write to the sink).
+      type(error_type), allocatable, intent(out) :: error
+      !> Where streamed histories go.
+      class(history_sink), intent(inout), optional :: sink
+      integer :: ib, i, last
 
       do i = k + 1, size(energy, 2)
          energy(:, i) = energy(:, k)
       end do
       do ib = 1, size(rec)
          associate (r => rec(ib))
-            if (r%streamed .or. r%n_out < 1) cycle
-            do i = r%n_out + 1, r%capacity
-               if (allocated(r%u)) r%u(:, i) = r%u(:, r%n_out)
-               if (allocated(r%v)) r%v(:, i) = r%v(:, r%n_out)
-               if (allocated(r%a_abs)) r%a_abs(:, i) = r%a_abs(:, r%n_out)
-               if (allocated(r%drift)) r%drift(:, i) = r%drift(:, r%n_out)
-               if (allocated(r%shear)) r%shear(:, i) = r%shear(:, r%n_out)
-               if (allocated(r%u_nodes)) r%u_nodes(:, i) = r%u_nodes(:, r%n_out)
+            ! The last sample taken: in the block, or the block's last column after a flush.
+            last = r%n_out
+            if (last == 0) last = r%capacity
+            do i = r%first + r%n_out, size(energy, 2)
+               call hold_column(r, last, r%n_out + 1)
+               r%n_out = r%n_out + 1
+               if (r%streamed .and. present(sink)) then
+                  call response_flush(r, sink, coupled, ib, .true., error)
+                  if (allocated(error)) return
+               end if
             end do
-            r%n_out = r%capacity
          end associate
       end do
+
+   contains
+
+      !> Column `from` of every stored history into column `to` (no copy when the same).
+      pure subroutine hold_column(r, from, to)
+         type(response_record), intent(inout) :: r
+         integer, intent(in) :: from, to
+
+         if (from == to) return
+         if (allocated(r%u)) r%u(:, to) = r%u(:, from)
+         if (allocated(r%v)) r%v(:, to) = r%v(:, from)
+         if (allocated(r%a_abs)) r%a_abs(:, to) = r%a_abs(:, from)
+         if (allocated(r%drift)) r%drift(:, to) = r%drift(:, from)
+         if (allocated(r%shear)) r%shear(:, to) = r%shear(:, from)
+         if (allocated(r%u_nodes)) r%u_nodes(:, to) = r%u_nodes(:, from)
+      end subroutine hold_column
    end subroutine yield_hold
 
    !> The run's storey results of every building (`yield_finish`).
