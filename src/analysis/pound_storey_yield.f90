@@ -38,6 +38,7 @@ module pound_storey_yield
 
    public :: bilinear_force, storey_yield_set, storey_yield_result
    public :: yield_set_init, yield_step, yield_steps, yield_commit, yield_energy_terms, yield_load_work, yield_finish
+   public :: stick_khat, stick_active_set
    public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step, &
              yield_collapsed, yield_hold
 
@@ -88,6 +89,13 @@ module pound_storey_yield
       real(dp), allocatable :: limit(:)
       integer :: collapse_storey = 0
       real(dp) :: collapse_time = 0.0_dp
+      !> A stick's tridiagonal Khat (diagonal, off-diagonal) of the dt `col_dt`, and the work
+      !> arrays of its tangent system (`stick_active_set`).
+      real(dp), allocatable :: khat_d(:), khat_e(:), td(:), te(:), ty(:)
+      !> A stick's K+G (band storage), masses and Rayleigh coefficients.
+      real(dp), allocatable :: kt(:, :), mass(:)
+      real(dp) :: a0 = 0.0_dp, a1 = 0.0_dp
+      integer :: stick_solves = 0
       !> Work of the plastic loads on the elastic structure (W_L) and hysteretic energy (kJ).
       real(dp) :: load_work = 0.0_dp, hysteretic = 0.0_dp
       !> LCP solves, storeys that entered them, the most in one solve, steps with storeys
@@ -117,6 +125,32 @@ module pound_storey_yield
       integer :: alternations = 0
       real(dp) :: residual = 0.0_dp
    end type storey_yield_result
+
+   interface
+      !> A stick's tridiagonal Khat = (1 + c2 a1) (K+G) + (c1 + c2 a0) M for the step dt, as
+      !> the integrator forms it (`yield_set_init` keeps K+G, M, a0, a1 for it).
+      module subroutine stick_khat(ys, dt)
+         !> The building's storeys (a stick).
+         type(storey_yield_set), intent(inout) :: ys
+         !> The time step (s).
+         real(dp), intent(in) :: dt
+      end subroutine stick_khat
+
+      !> The storeys' step of a stick by the primal-dual active-set method on the tangent
+      !> system: with the active storeys (`act`, `side`) on their yield lines the step is the
+      !> tridiagonal solve (Khat - sum_A (1-r) k b b^T) y = sum_A k b dp_trial; storeys whose
+      !> plastic increment has the wrong sign leave, storeys outside their range enter, until
+      !> the set repeats. `solved` false (set restored): the method did not settle or the
+      !> tangent system is not positive definite (Lemke's method takes the step).
+      module subroutine stick_active_set(ys, u, du, solved)
+         !> The building's storeys with the entering storeys in `act`, `side`.
+         type(storey_yield_set), intent(inout) :: ys
+         !> Committed displacements and the trial du (plastic loads removed).
+         real(dp), intent(in) :: u(:), du(:)
+         !> The step was solved (`dpl`, `xdp`, `dnew`, `act`, `side` set).
+         logical, intent(out) :: solved
+      end subroutine stick_active_set
+   end interface
 
 contains
 
@@ -154,7 +188,7 @@ contains
          ys%rows%scale(j) = 1.0_dp
          ys%k(j) = b%shear%scale(j)/b%drift%scale(j)
       end do
-      ys%stick = b%stick .and. b%n == n
+      ys%stick = b%stick .and. b%n == n .and. b%kd == 1
       if (ys%stick) ys%stick = all(b%drift%scale == 1.0_dp)
       ys%limit = spread(huge(1.0_dp), 1, n)
       if (present(collapse_drift) .and. allocated(b%yield_height)) ys%limit = collapse_drift*b%yield_height
@@ -168,6 +202,14 @@ contains
       i = n
       if (real(b%n, dp)*real(n, dp) > real(cache_limit, dp)) i = 0
       allocate (ys%col(b%n, max(i, 1)))
+      if (ys%stick) then
+         ys%kt = b%kt
+         ys%mass = b%mass
+         ys%a0 = b%a0
+         ys%a1 = b%a1
+         allocate (ys%khat_d(n), ys%khat_e(max(n - 1, 1)), ys%td(n), ys%te(max(n - 1, 1)), ys%ty(n), &
+                   source=0.0_dp)
+      end if
       i = min(n, 16)
       call lemke_init(ys%ws, i)
       allocate (ys%mat(i, i), ys%q(i), ys%z(i), ys%w(i), ys%guess(i))
@@ -384,7 +426,7 @@ contains
       real(dp), pointer :: du(:)
       real(dp) :: f, c, h
       integer :: j, round
-      logical :: added
+      logical :: added, solved
 
       changed = .false.
       if (ys%n == 0) return
@@ -413,8 +455,18 @@ contains
          ys%slot = 0
          ys%n_slots = 0
          ys%col_dt = newmark_dt(st)
+         if (ys%stick) call stick_khat(ys, ys%col_dt)
+      end if
+      ! A stick: the active-set method on the tridiagonal tangent system first (O(n) a pass).
+      solved = .false.
+      if (ys%stick) call stick_active_set(ys, u, du, solved)
+      if (solved) then
+         ys%solves = ys%solves + 1
+         ys%lcp_rows = ys%lcp_rows + ys%na
+         ys%max_rows = max(ys%max_rows, ys%na)
       end if
       do round = 1, ys%n + 1
+         if (solved) exit
          call solve_rows(ys, st, u, du, t, step, label, error)
          if (allocated(error)) return
          ! Every storey outside its range enters (on its side); the others are met.
