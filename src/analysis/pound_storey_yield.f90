@@ -365,7 +365,8 @@ contains
    end subroutine yield_results
 
    !> The drift of every storey of `ys` for the DOF vector x (+ y, when given) into `d`
-   !> (`work`: the sum x + y on the general path).
+   !> (`work`: the sum x + y on the general path). `d` and `work` may be components of `ys`:
+   !> only its rows and sizes are read through `ys`.
    pure subroutine drifts(ys, x, d, work, y)
       type(storey_yield_set), intent(in) :: ys
       real(dp), intent(in) :: x(:)
@@ -433,7 +434,7 @@ contains
       du => newmark_du(st)
       ! The trial (elastic) state: du without this step's plastic loads.
       if (ys%loaded) du = du - ys%xdp
-      call drifts_of(ys, u, du, trial=.true.)
+      call drifts(ys, u, ys%dtr, ys%work, du)
       ys%na = 0
       ! Every storey whose trial force is outside its elastic range (the loop of an elastic
       ! step: one test a storey).
@@ -568,29 +569,6 @@ contains
                        ' alternations of their LCPs at t = '//str(t)//' s (step '//str(step)//'; reduce dt)')
    end subroutine yield_steps
 
-   !> The drifts for u (+ y): into `dtr` (`trial`) or `dnew` (moved out of `ys` for the call:
-   !> no copy).
-   pure subroutine drifts_of(ys, u, y, trial)
-      type(storey_yield_set), intent(inout) :: ys
-      real(dp), intent(in) :: u(:)
-      real(dp), intent(in), optional :: y(:)
-      logical, intent(in), optional :: trial
-      real(dp), allocatable :: d(:)
-      logical :: into_trial
-
-      into_trial = .false.
-      if (present(trial)) into_trial = trial
-      if (into_trial) then
-         call move_alloc(ys%dtr, d)
-         call drifts(ys, u, d, ys%work, y)
-         call move_alloc(d, ys%dtr)
-      else
-         call move_alloc(ys%dnew, d)
-         call drifts(ys, u, d, ys%work, y)
-         call move_alloc(d, ys%dnew)
-      end if
-   end subroutine drifts_of
-
    !> Column Khat^{-1} b_j of storey j (solved once per dt, kept when the building is small).
    subroutine column_of(ys, st, j, x)
       type(storey_yield_set), intent(inout) :: ys
@@ -675,7 +653,7 @@ contains
       do j = 1, ys%nd
          ys%xdp(j) = ys%xdp(j) + du(j)
       end do
-      call drifts_of(ys, u, ys%xdp, trial=.false.)
+      call drifts(ys, u, ys%dnew, ys%work, ys%xdp)
       do j = 1, ys%nd
          ys%xdp(j) = ys%xdp(j) - du(j)
       end do
@@ -732,7 +710,7 @@ contains
       integer :: j
 
       if (ys%n == 0) return
-      call drifts_of(ys, u)
+      call drifts(ys, u, ys%dnew, ys%work)
       do j = 1, ys%n
          d = ys%dnew(j)
          f = bilinear_force(ys%k(j), ys%fy(j), ys%r(j), ys%d(j), ys%f(j), d)
