@@ -78,7 +78,7 @@ module pound_results_h5
    use pound_sweep_joints, only: joint_sweep
    use pound_separation, only: separation_t
    use pound_separation_output, only: write_separation_h5, pair_labels
-   use pound_yield_output, only: write_yield_h5, write_yield_influence_h5
+   use pound_yield_output, only: write_yield_h5, write_yield_influence_h5, write_yield_model_h5
    use pound_config, only: sweep_config
    use pound_constants, only: g_accel
    implicit none
@@ -407,6 +407,7 @@ contains
             call h5_write(h5, g//'geometric_stiffness', s%geometric_stiffness, error, units='kN/m')
             if (allocated(error)) return
             call h5_write(h5, g//'axial_load', s%axial_load, error, units='kN')
+            if (.not. allocated(error)) call write_yield_model_h5(h5, g, b, error)
          end if
          if (allocated(error)) return
          call h5_write(h5, g//'periods', b%period, error, units='s')

@@ -9,6 +9,9 @@
 !> and the attributes `collapse_storey` (0: none) and `collapse_time` (s) of `/<analysis>/<b>`,
 !> and `meaningful` of `/influence/<b>` ('no: ...') when the building collapsed in an analysis
 !>
+!>     /model/<b>/yield_shear             (n_storeys) kN; attribute storey_law = 'bilinear'
+!>     /model/<b>/hardening_ratio         (n_storeys) -
+!>
 !> (the storey-shear histories and peaks of such a building are its spring forces), and the
 !> listing's table of the storeys. Only buildings with bilinear storeys get them.
 module pound_yield_output
@@ -24,9 +27,26 @@ module pound_yield_output
    implicit none
    private
 
-   public :: write_yield_h5, write_yield_influence_h5, write_yield_tables, yield_influence, collapse_text
+   public :: write_yield_model_h5, write_yield_h5, write_yield_influence_h5, write_yield_tables, yield_influence, collapse_text
 
 contains
+
+   !> The storey law of a building with bilinear storeys under its model group `g` ('/model/<b>/').
+   subroutine write_yield_model_h5(h5, g, b, error)
+      !> Open file.
+      type(h5_file), intent(inout) :: h5
+      !> The building's model group, with a trailing '/'.
+      character(len=*), intent(in) :: g
+      !> The building.
+      type(structure_model), intent(in) :: b
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. allocated(b%yield_shear)) return
+      call h5_write(h5, g//'yield_shear', b%yield_shear, error, units='kN')
+      if (.not. allocated(error)) call h5_write(h5, g//'hardening_ratio', b%hardening, error, units='-')
+      if (.not. allocated(error)) call h5_write_attr(h5, g(1:len(g) - 1), 'storey_law', 'bilinear', error)
+   end subroutine write_yield_model_h5
 
    !> The storey results of analysis `g` (e.g. '/uncoupled') of every building with bilinear storeys.
    subroutine write_yield_h5(h5, g, models, res, error)
