@@ -31,6 +31,8 @@ program pound
    use pound_sweep_joints, only: deck_joints, failed_joint_gaps
    use pound_sweep_joints_output, only: write_joint_sweep_tables
    use pound_suite, only: suite_result, run_suite
+   use pound_study_output, only: write_study_tables, write_stiffness_rules, write_study_h5
+   use pound_case_studies, only: has_parameter_sweep, has_law_study
    use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_separation_output, only: write_run_separation, pair_labels
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, write_warning_lines, &
@@ -151,6 +153,7 @@ program pound
    end if
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
       call write_suite_h5(outputs%h5_tmp, res%models, suite, error, res%cs)
+   if (.not. allocated(error)) call write_studies_h5(error)
    if (.not. allocated(error)) call write_summary_h5(error)
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
@@ -168,13 +171,16 @@ program pound
                         ' motions left out of the suite statistics; named in '//outputs%listing//' and '// &
                         outputs%h5//' /suite/failed); the other results were written', failed_cases_status)
       end if
-   else if (res%has_sweep) then
-      if (any(res%sweep%failed)) then
+   else if (res%has_sweep .or. res%has_parameter_sweep .or. res%has_law_study) then
+      call stop_on_failed_studies()
+      if (.not. res%has_sweep) then
+         ! No gap sweep: nothing more to check.
+      else if (any(res%sweep%failed)) then
          call stop_with(str(count(res%sweep%failed))//' of '//str(size(res%sweep%failed))// &
                         ' gaps of the sweep failed (named in '//outputs%listing//' and '//outputs%h5// &
                         ' /sweep/failed); the other results were written', failed_cases_status)
       end if
-      if (joint_count() > 0) then
+      if (joint_count() > 0 .and. res%has_sweep) then
          if (failed_joint_gaps(res%joints) > 0) &
             call stop_with(str(failed_joint_gaps(res%joints))//' gaps of the joints'' own sweeps failed (named in '// &
                            outputs%listing//' and '//outputs%h5//' /sweep/joint/<joint>/failed); the other '// &
@@ -184,6 +190,31 @@ program pound
    call cases_stop()
 
 contains
+
+   !> The studies of the joint (`pound_study_output`) appended to this run's results file.
+   subroutine write_studies_h5(err)
+      type(error_type), allocatable, intent(out) :: err
+
+      if (res%has_parameter_sweep .and. res%has_law_study) then
+         call write_study_h5(outputs%h5_tmp, deck, res%models, err, sweep=res%parameter_sweep, law=res%law_study)
+      else if (res%has_parameter_sweep) then
+         call write_study_h5(outputs%h5_tmp, deck, res%models, err, sweep=res%parameter_sweep)
+      else if (res%has_law_study) then
+         call write_study_h5(outputs%h5_tmp, deck, res%models, err, law=res%law_study)
+      end if
+   end subroutine write_studies_h5
+
+   !> Results written, but some runs of a stiffness or restitution sweep or of a law study
+   !> failed: status 3, as failed gaps.
+   subroutine stop_on_failed_studies()
+      integer :: n
+
+      n = 0
+      if (res%has_parameter_sweep) n = n + count(res%parameter_sweep%failed)
+      if (res%has_law_study) n = n + count(res%law_study%failed)
+      if (n > 0) call stop_with(str(n)//' runs of the joint studies failed (named in '//outputs%listing// &
+                                '); the other results were written', failed_cases_status)
+   end subroutine stop_on_failed_studies
 
    !> The engineering summary's items and text lines (a suite: its answer first).
    subroutine make_summary()
@@ -267,6 +298,9 @@ contains
             planned_runs = planned_runs + deck_joints(deck%contacts)*deck%sweep%n_gaps
       end if
       if (is_suite) planned_runs = planned_runs*size(deck%motions)
+      ! The studies of the joint (single motion only): one run per value or variant.
+      if (has_parameter_sweep(deck)) planned_runs = planned_runs + size(deck%sweep%values)
+      if (has_law_study(deck)) planned_runs = planned_runs + size(deck%variants) + 1
    end function planned_runs
 
    !> The number of independent joints whose own sweeps ran (0 without a sweep).
@@ -341,6 +375,7 @@ contains
       if (res%has_coupled) then
          call write_peak_tables(lst, 'Coupled', res%models, res%cpl)
          call write_contact_summary(lst, res%cs)
+         call write_stiffness_rules(lst, deck%contacts)
          call write_influence_tables(lst, res%models, res%influence)
          call write_column_tables(lst, res%models, res%buildings, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(lst, res%models, deck%sweep, res%sweep)
@@ -348,6 +383,8 @@ contains
          if (joint_count() > 1) call write_joint_sweep_tables(lst, deck%sweep, res%joints, pair_labels(res%cs))
          if (size(deck%motions) == 1 .and. allocated(res%separation)) &
             call write_run_separation(lst, pair_labels(res%cs), res%separation, per_joint=joint_count() > 1)
+         if (res%has_parameter_sweep) call write_study_tables(lst, res%models, res%parameter_sweep, deck%sweep%target)
+         if (res%has_law_study) call write_study_tables(lst, res%models, res%law_study, deck%sweep%target)
       end if
       if (size(deck%motions) > 1) then
          call write_suite_listing(lst, res%models, suite, res%cs)
