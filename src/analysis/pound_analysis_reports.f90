@@ -149,7 +149,9 @@ contains
                              ' kN/m, m_eff = '//str(meff)//' t of the facing floors) has a contact '// &
                              'half-period pi sqrt(m_eff/k0) = '//str(half)//' s, '//str(half/dt)// &
                              ' steps of dt = '//str(dt)//' s: not resolved by dt; dt = '//str(0.1_dp*half)// &
-                             ' s (a tenth of it) would resolve it')
+                             ' s (a tenth of it) would resolve it; k0 itself is uncertain: a stiffness '// &
+                             "study (&sweep parameter = 'stiffness', or a law study, &contact variant) "// &
+                             'shows how much the lambdas and impact forces depend on it')
          end associate
       end do
       if (found > 0) return

@@ -1,0 +1,34 @@
+# The example decks of the studies of the joint (issue 26): the stiffness sweep and the law study
+# run, their listing tables and HDF5 groups are written and plotted.
+include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
+set(PY /usr/bin/python3)
+foreach(stem joint_stiffness_study joint_law_study)
+  configure_file(${SOURCE_DIR}/input/${stem}.nml ${WORK_DIR}/${stem}.nml COPYONLY)
+  run_pound(r ${stem}.nml --quiet)
+  expect_equal("${stem}: exit status (${r_err})" 0 "${r_rc}")
+  expect_published(. ${stem})
+  file(READ ${WORK_DIR}/${stem}.out listing)
+  execute_process(COMMAND ${PY} ${SOURCE_DIR}/scripts/plot_results.py ${WORK_DIR}/${stem}.h5 --only study
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  expect_equal("${stem}: plot exit (${err})" 0 "${rc}")
+  if(stem STREQUAL "joint_stiffness_study")
+    expect_contains("listing" "${listing}" "Stiffness sweep: largest |lambda| [%] over the storeys (floors) against the joint stiffness k0")
+    # The deck's own k0 = 1e6 kN/m: the row has the coupled run's 18 impacts.
+    expect_contains("listing" "${listing}" "  1.0000E+06         18     33.65     33.65     28.02     79.47      no")
+    expect_contains("listing" "${listing}" " 1.0000E+05          8")
+    expect_png("stiffness sweep plot" ${WORK_DIR}/${stem}_stiffness_sweep.png)
+    set(paths /stiffness_sweep/value /stiffness_sweep/impacts /stiffness_sweep/max_abs_lambda/A/storey_shear
+        /stiffness_sweep/peak_force/A:3-B:3 /stiffness_sweep/realised_restitution/A:3-B:3)
+  else()
+    expect_contains("listing" "${listing}" "Law study: the deck's joints (base) and each &contact variant")
+    expect_contains("listing" "${listing}" "  crushing: law elastic_plastic")
+    expect_png("law study plot" ${WORK_DIR}/${stem}_law_study.png)
+    set(paths /law_study/base/impacts /law_study/stiff/peak_force /law_study/crushing/max_abs_lambda/B/storey_shear
+        /law_study/damped/realised_restitution)
+  endif()
+  foreach(p ${paths})
+    execute_process(COMMAND ${PY} -c "import h5py,sys; sys.exit(0 if sys.argv[2] in h5py.File(sys.argv[1],'r') else 1)"
+                    ${WORK_DIR}/${stem}.h5 ${p} RESULT_VARIABLE rc)
+    expect_equal("${stem}: ${p} in the results file" 0 "${rc}")
+  endforeach()
+endforeach()
