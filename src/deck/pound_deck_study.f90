@@ -321,8 +321,9 @@ contains
          allocate (d%variants(0))
          return
       end if
-      allocate (names(0), owner(size(d%contacts)))
+      allocate (names(size(d%contacts)), owner(size(d%contacts)))
       owner = 0
+      nv = 0
       do i = 1, size(d%contacts)
          if (len_trim(d%contacts(i)%variant) == 0) cycle
          at = site_of(path, groups(gi(i)))
@@ -330,12 +331,13 @@ contains
          call check_name(at, d%contacts(i)%variant, error)
          if (allocated(error)) return
          j = 0
-         do k = 1, size(names)
+         do k = 1, nv
             if (lower(names(k)) == lower(d%contacts(i)%variant)) j = k
          end do
          if (j == 0) then
-            names = [names, d%contacts(i)%variant]
-            j = size(names)
+            nv = nv + 1
+            names(nv) = d%contacts(i)%variant
+            j = nv
          end if
          owner(i) = j
       end do
@@ -352,7 +354,6 @@ contains
          return
       end if
       base = pack(d%contacts, owner == 0)
-      nv = size(names)
       allocate (d%variants(nv))
       do j = 1, nv
          d%variants(j)%name = names(j)
