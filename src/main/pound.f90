@@ -382,8 +382,10 @@ contains
          if (joint_count() > 1) call write_joint_sweep_tables(lst, deck%sweep, res%joints, pair_labels(res%cs))
          if (size(deck%motions) == 1 .and. allocated(res%separation)) &
             call write_run_separation(lst, pair_labels(res%cs), res%separation, per_joint=joint_count() > 1)
-         if (res%has_parameter_sweep) call write_study_tables(lst, res%models, res%parameter_sweep, deck%sweep%target)
-         if (res%has_law_study) call write_study_tables(lst, res%models, res%law_study, deck%sweep%target)
+         if (res%has_parameter_sweep) call write_study_tables(lst, res%models, res%parameter_sweep, &
+                                                              deck%sweep%target, deck%sweep%target_quantities)
+         if (res%has_law_study) call write_study_tables(lst, res%models, res%law_study, deck%sweep%target, &
+                                                        deck%sweep%target_quantities)
       end if
       if (size(deck%motions) > 1) then
          call write_suite_listing(lst, res%models, suite, res%cs)

@@ -71,7 +71,7 @@ contains
 
    !> A joint study's tables: per building the largest |lambda| of the shown quantities per
    !> configuration, then the peak force and the realised restitution of each pair.
-   subroutine write_study_tables(lst, models, res, target)
+   subroutine write_study_tables(lst, models, res, target, targeted)
       !> The listing writer.
       type(text_writer), intent(inout) :: lst
       !> The buildings.
@@ -80,8 +80,10 @@ contains
       type(joint_study_result), intent(in) :: res
       !> `&sweep target_lambda` (<= 0: none).
       real(dp), intent(in) :: target
+      !> `&sweep target_quantities`: a frame's column quantities are listed where targeted.
+      logical, intent(in) :: targeted(:)
       character(len=:), allocatable :: line, head
-      integer :: i, ib, k, n
+      integer :: i, ib, k, n, q
 
       n = size(res%label)
       select case (res%kind)
@@ -114,6 +116,9 @@ contains
          do k = 1, size(shown)
             line = line//right_cell(trim(heads(k)), 10)
          end do
+         do q = n_history_quantities + 1, q_column_moment
+            if (column_listed(ib, q)) line = line//right_cell(trim(target_names(q)), 15)
+         end do
          if (target > 0.0_dp) line = line//'  target'
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
          call lst%note()
@@ -127,6 +132,9 @@ contains
             line = line//right_cell(str(res%impacts(i)), 11)
             do k = 1, size(shown)
                line = line//lambda_cell(res%max_abs_lambda(shown(k), ib, i))
+            end do
+            do q = n_history_quantities + 1, q_column_moment
+               if (column_listed(ib, q)) line = line//'     '//lambda_cell(res%max_abs_lambda(q, ib, i))
             end do
             if (target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
             write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
@@ -157,6 +165,13 @@ contains
          call lst%note()
       end do
    contains
+      !> Whether a frame's column quantity q (column_shear, column_moment) of building ib is listed.
+      pure logical function column_listed(ib, q)
+         integer, intent(in) :: ib, q
+
+         column_listed = models(ib)%member%n > 0 .and. targeted(q)
+      end function column_listed
+
       pure function lambda_cell(x) result(cell)
          real(dp), intent(in) :: x
          character(len=:), allocatable :: cell

@@ -32,3 +32,28 @@ foreach(stem joint_stiffness_study joint_law_study)
     expect_equal("${stem}: ${p} in the results file" 0 "${rc}")
   endforeach()
 endforeach()
+
+# A frame deck with pairs at column points (input/frame_to_column.nml): a stiffness sweep lists
+# the targeted column-segment lambdas of the struck columns beside the storey quantities.
+file(READ ${SOURCE_DIR}/input/frame_to_column.nml deck)
+file(WRITE ${WORK_DIR}/ftc.nml "${deck}
+&sweep
+   parameter = 'stiffness'
+   values = 1.0e5, 1.0e6, 1.0e7
+   target_lambda = 100.0
+   target_quantities = 'storey_shear column_shear'
+/
+")
+run_pound(r ftc.nml --quiet)
+expect_equal("ftc: exit status (${r_err})" 0 "${r_rc}")
+file(READ ${WORK_DIR}/ftc.out listing)
+expect_contains("frame listing" "${listing}" "   k0 [kN/m]    impacts         Q     drift         u     a_abs   column_shear  target")
+expect_contains("frame listing" "${listing}" "A:z=9.00m-B:3")
+# An explicit parameter = 'gap' is the gap sweep.
+file(READ ${SOURCE_DIR}/input/two_frames_gap_study.nml deck)
+string(REPLACE "&sweep\n" "&sweep\n   parameter = 'gap'\n" deck "${deck}")
+file(WRITE ${WORK_DIR}/gap_explicit.nml "${deck}")
+run_pound(r gap_explicit.nml --quiet)
+expect_equal("gap_explicit: exit status (${r_err})" 0 "${r_rc}")
+file(READ ${WORK_DIR}/gap_explicit.out listing)
+expect_contains("explicit gap sweep" "${listing}" "Smallest gap with every targeted |lambda| <=   10.00 % at it and at every larger gap of the sweep:     3.4694 mm")
