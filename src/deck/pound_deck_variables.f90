@@ -10,7 +10,7 @@ module pound_deck_variables
    private
 
    public :: var_spec, variables, known_groups, known_variable, variable_index, variable_type, &
-             variable_list, group_variable_count, group_max_size, findloc_name, join
+             variable_list, group_variable_count, findloc_name, join
    public :: max_storeys, max_name_length, max_pairs, max_columns, max_steps, title_len, path_len, &
              word_len, max_substeps, max_envelope_points, max_segments, max_bays, max_column_elements, &
              frame_variables
@@ -186,14 +186,6 @@ contains
 
       n = count(variables%group == group)
    end function group_variable_count
-
-   !> Most elements of one variable of `group` (at least 2).
-   pure integer function group_max_size(group) result(n)
-      !> Group name, lower case.
-      character(len=*), intent(in) :: group
-
-      n = max(2, maxval(variables%vsize, mask=variables%group == group))
-   end function group_max_size
 
    !> Position of `word` in `names` (0 if absent).
    pure integer function findloc_name(names, word) result(k)

@@ -40,7 +40,7 @@ program pound
                             write_sweep_column_table, write_section
    use pound_text_writer, only: text_writer, open_text, close_text
    use pound_summary, only: summary_item, build_summary, summary_lines, motion_heading, summary_text_len
-   use pound_summary_output, only: write_summary_csv, write_summary_attributes
+   use pound_summary_output, only: write_summary_csv, write_summary_attributes, summary_attribute_text
    use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
    use pound_h5, only: h5_file
    use pound_files, only: output_set, plan_outputs, publish_outputs, discard_outputs, &
@@ -154,7 +154,7 @@ program pound
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
       call write_suite_h5(outputs%h5_tmp, res%models, suite, error, res%cs)
    if (.not. allocated(error)) call write_studies_h5(error)
-   if (.not. allocated(error)) call write_summary_h5(error)
+   if (.not. allocated(error) .and. size(deck%motions) > 1) call write_summary_h5(error)
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
    call write_summary_csv(outputs%summary_tmp, summary_items, error)
@@ -230,29 +230,31 @@ contains
    subroutine write_summary_h5(err)
       type(error_type), allocatable, intent(out) :: err
 
-      if (size(deck%motions) > 1) then
-         call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err, suite)
-      else
-         call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err)
-      end if
+      call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err, suite)
    end subroutine write_summary_h5
 
    !> The results file: this run's temporary, created here or (`file`) open since the
    !> analyses streamed their histories into it.
    subroutine write_h5(file)
       type(h5_file), intent(inout), optional :: file
+      ! The summary attribute, written with the rest for one motion (unallocated: absent; a
+      ! suite adds it after /suite, `write_summary_h5`).
+      character(len=:), allocatable :: summary
+
+      if (size(deck%motions) == 1) summary = summary_attribute_text(summary_text)
 
       if (.not. allocated(res%separation)) allocate (res%separation(0))
       if (res%has_sweep) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
                                res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file, &
-                               separation=res%separation, joints=res%joints)
+                               separation=res%separation, joints=res%joints, summary=summary)
       else if (res%has_coupled) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, res%cpl, res%cs, res%influence, file=file, separation=res%separation)
+                               res%unc, error, res%cpl, res%cs, res%influence, file=file, separation=res%separation, &
+                               summary=summary)
       else
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, file=file)
+                               res%unc, error, file=file, summary=summary)
       end if
    end subroutine write_h5
 
