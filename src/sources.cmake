@@ -38,8 +38,8 @@ set(POUND_SOURCES
   solver/pound_modal_step.f90 solver/pound_newmark_exact.f90
   # solver: several ground motions of one shear building at once (motion-fastest lanes)
   solver/pound_newmark_batch.f90
-  # solver: the integrator an analysis plan names
-  solver/pound_integrators.f90
+  # solver: HHT-alpha; the integrator an analysis plan names
+  solver/pound_hht.f90 solver/pound_integrators.f90
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
   contact/pound_joint_law.f90 contact/pound_contact_law.f90 contact/pound_law_elastic.f90
   contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90

@@ -27,7 +27,7 @@ module pound_analysis
    use pound_structure, only: structure_model
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
-   use pound_integrator, only: integrator, en_input, en_damping, n_integrator_energies
+   use pound_integrator, only: integrator, en_input, en_damping, en_numerical, n_integrator_energies
    use pound_integrators, only: integrators_for
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_flush, history_block, deformed_limit, response_block_full
@@ -74,6 +74,9 @@ module pound_analysis
    integer, parameter :: e_input = 1, e_kinetic = 2, e_strain = 3, e_damping = 4, e_contact = 5
    integer, parameter :: e_plastic = 6
    integer, parameter :: n_energy = 6
+   !> The step's energy sample also holds the integrators' numerical dissipation (zero for
+   !> average acceleration), after the `n_energy` components of the history.
+   integer, parameter :: e_numerical = n_energy + 1
    !> Energy component names (HDF5 attribute, listing).
    character(len=*), parameter :: energy_names(n_energy) = &
       [character(len=8) :: 'input', 'kinetic', 'strain', 'damping', 'contact', 'plastic']
@@ -88,6 +91,10 @@ module pound_analysis
       type(response_record), allocatable :: building(:)
       !> Energy history (n_energy, n_out), summed over the buildings (kJ).
       real(dp), allocatable :: energy(:, :)
+      !> Numerical dissipation of the integrators at the output times, summed over the buildings
+      !> (kJ; allocated when the integrator dissipates: HHT-alpha with alpha < 0). The energy audit
+      !> counts it among the terms that balance the input.
+      real(dp), allocatable :: numerical(:)
       !> Audit: max over all steps of |W_in - sum of the other terms| / max energy scale.
       real(dp) :: energy_error = 0.0_dp
       !> Warnings for the user (e.g. a large audit residual and its likely cause), one per
@@ -495,7 +502,7 @@ contains
       class(history_sink), intent(inout), optional :: sink
       integer :: ib, step, k, every, nb, j, n_sub, capacity, until_out
       integer(int64) :: c0, c1, rate, write_ticks
-      real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
+      real(dp) :: t, sample(e_numerical), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
       logical :: out, coupled, finite, impact, output, track, exact, plain, loaded
       integer :: method_steps
@@ -646,7 +653,7 @@ contains
             end if
             if (coupled .or. output) then
                win = sample(e_input)
-               eout = sum(sample(e_kinetic:n_energy))
+               eout = sum(sample(e_kinetic:e_numerical))
             end if
             ! One test per step: every value of the state feeds these sums.
             if (coupled) then
@@ -736,8 +743,9 @@ contains
       type(structure_model), intent(in) :: models(:)
       !> The contact system.
       type(contact_system), intent(in) :: cs
-      !> The stored sample.
-      real(dp), intent(out) :: sample(n_energy)
+      !> The stored sample and the numerical dissipation (`e_numerical`).
+      real(dp), intent(out) :: sample(e_numerical)
+      real(dp) :: e(n_integrator_energies)
       integer :: ib
 
       do ib = 1, size(st)
@@ -748,7 +756,14 @@ contains
          res%energy(e_plastic, k) = cs%plastic_work
          call joint_history_record(res%joints, k, cs%joint)
       end if
-      sample = res%energy(:, k)
+      sample(1:n_energy) = res%energy(:, k)
+      sample(e_numerical) = 0.0_dp
+      if (.not. allocated(res%numerical)) return
+      do ib = 1, size(st)
+         e = st(ib)%energies()
+         sample(e_numerical) = sample(e_numerical) + e(en_numerical)
+      end do
+      res%numerical(k) = sample(e_numerical)
    end subroutine store_energy
 
    !> Predict the step of every building by Newmark, dropping any exact step predicted
@@ -820,6 +835,14 @@ contains
       end if
       res%time = [(real((k - 1)*cfg%output_every, dp)*cfg%dt, k=1, n)]
       res%energy = 0.0_dp
+      if (.not. cfg%average_acceleration()) then
+         allocate (res%numerical(n), stat=stat)
+         if (stat /= 0) then
+            call fatal_error(error, 'cannot allocate the numerical dissipation history ('//str(n)//' samples)')
+            return
+         end if
+         res%numerical = 0.0_dp
+      end if
    end subroutine start_result
 
    !> Add one building's input work and kinetic, strain and damping energy to an energy sample.
@@ -851,7 +874,8 @@ contains
 
       sample = 0.0_dp
       do ib = 1, size(st)
-         call st(ib)%add_energies(sample(e_input), sample(e_kinetic), sample(e_strain), sample(e_damping))
+         call st(ib)%add_energies(sample(e_input), sample(e_kinetic), sample(e_strain), sample(e_damping), &
+                                  sample(e_numerical))
       end do
    end subroutine step_energy
 

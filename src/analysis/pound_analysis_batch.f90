@@ -40,7 +40,8 @@ contains
    !> tridiagonal path (half-bandwidth 1, every DOF moved by the ground), is a stick (response
    !> points DOFs 1..n, chain storey rows) and has two storeys or more (the one-storey kernel of
    !> `pound_newmark_step` is straight-line code that the compiler fuses differently), and the
-   !> steps are Newmark's (`free_steps = 'newmark'`: the batch has no exact steps).
+   !> steps are Newmark's (`free_steps = 'newmark'`: the batch has no exact steps; the integrator
+   !> is average acceleration, `analysis_plan%average_acceleration`).
    pure logical function batch_eligible(cfg, models)
       !> The analysis plan (`&analysis`).
       type(analysis_plan), intent(in) :: cfg
@@ -48,7 +49,7 @@ contains
       type(structure_model), intent(in) :: models(:)
       integer :: ib
 
-      batch_eligible = size(models) > 0 .and. cfg%free_steps == free_newmark
+      batch_eligible = size(models) > 0 .and. cfg%free_steps == free_newmark .and. cfg%average_acceleration()
       do ib = 1, size(models)
          if (models(ib)%kd /= 1 .or. .not. models(ib)%stick .or. models(ib)%n < 2) batch_eligible = .false.
          if (batch_eligible) batch_eligible = all(models(ib)%ground == 1.0_dp)

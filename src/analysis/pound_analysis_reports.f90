@@ -27,6 +27,7 @@ contains
       dst%time = src%time
       dst%building = src%building
       dst%energy = src%energy
+      if (allocated(src%numerical)) dst%numerical = src%numerical
       dst%energy_error = src%energy_error
       dst%joints = src%joints
       dst%seconds = src%seconds

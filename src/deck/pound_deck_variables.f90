@@ -59,7 +59,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(97) = [ &
+   type(var_spec), parameter :: variables(99) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -113,7 +113,8 @@ module pound_deck_variables
       var_spec('analysis', 'lcp_solver', 'c', 0), var_spec('analysis', 'free_steps', 'c', 0), &
       var_spec('building', 'cd', 'r', 0), var_spec('building', 'importance', 'r', 0), &
       var_spec('building', 'behaviour_factor', 'r', 0), var_spec('building', 'response_reduction', 'r', 0), &
-      var_spec('ground', 'target_g', 'r', 0)]
+      var_spec('ground', 'target_g', 'r', 0), &
+      var_spec('analysis', 'integrator', 'c', 0), var_spec('analysis', 'hht_alpha', 'r', 0)]
 
 contains
 

@@ -73,7 +73,7 @@ module pound_integrator
       procedure(at_i), deferred :: u_at, v_at, predicted
       !> The running energies (`en_input` ... `en_numerical`), kJ.
       procedure(energies_i), deferred :: energies
-      !> Add input work, kinetic, strain and damping (+ numerical) energy to four sums.
+      !> Add input work, kinetic, strain and damping energy and numerical dissipation to five sums.
       procedure(add_energies_i), deferred :: add_energies
       !> Kinetic and strain energy of the state (kJ).
       procedure(model_energy_i), deferred :: kinetic_energy, strain_energy
@@ -180,10 +180,10 @@ module pound_integrator
          class(integrator), intent(in) :: st
          real(dp) :: e(n_integrator_energies)
       end function energies_i
-      pure subroutine add_energies_i(st, w_in, e_kinetic, e_strain, e_damping)
+      pure subroutine add_energies_i(st, w_in, e_kinetic, e_strain, e_damping, e_numerical)
          import :: integrator, dp
          class(integrator), intent(in) :: st
-         real(dp), intent(inout) :: w_in, e_kinetic, e_strain, e_damping
+         real(dp), intent(inout) :: w_in, e_kinetic, e_strain, e_damping, e_numerical
       end subroutine add_energies_i
       pure function model_energy_i(st, b) result(e)
          import :: integrator, structure_model, dp

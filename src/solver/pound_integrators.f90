@@ -4,6 +4,7 @@ module pound_integrators
    use pound_analysis_plan, only: analysis_plan
    use pound_integrator, only: integrator
    use pound_newmark, only: newmark_state
+   use pound_hht, only: hht_new
    implicit none
    private
 
@@ -12,7 +13,8 @@ module pound_integrators
 contains
 
    !> Allocate `n` integrators of the kind the plan names (not yet initialised: each
-   !> building's `init`).
+   !> building's `init`): Newmark average acceleration, also for HHT-alpha with alpha = 0 (the
+   !> same method: the same code and numbers); HHT-alpha (`pound_hht`) otherwise.
    subroutine integrators_for(plan, n, st)
       !> The analysis plan.
       type(analysis_plan), intent(in) :: plan
@@ -21,9 +23,11 @@ contains
       !> The integrators (allocated).
       class(integrator), allocatable, intent(out) :: st(:)
 
-      associate (unused => plan%dt)
-      end associate
-      allocate (newmark_state :: st(n))
+      if (plan%average_acceleration()) then
+         allocate (newmark_state :: st(n))
+      else
+         allocate (st(n), source=hht_new(plan%hht_alpha))
+      end if
    end subroutine integrators_for
 
 end module pound_integrators

@@ -629,11 +629,13 @@ contains
    !> Add the running energies of the integrator (kJ) to four sums: `newmark_energies`
    !> without an array result (the per-step audit of the coupled analysis, where loading
    !> the result just stored stalls).
-   pure subroutine newmark_add_energies(st, w_in, e_kinetic, e_strain, e_damping)
+   pure subroutine newmark_add_energies(st, w_in, e_kinetic, e_strain, e_damping, e_numerical)
       !> Integrator state.
       class(newmark_state), intent(in) :: st
       !> Input work, kinetic, strain and damping energy so far (added to).
       real(dp), intent(inout) :: w_in, e_kinetic, e_strain, e_damping
+      !> Numerical dissipation so far (average acceleration has none: unchanged).
+      real(dp), intent(inout) :: e_numerical
 
       w_in = w_in + st%input_work
       e_kinetic = e_kinetic + st%kinetic
