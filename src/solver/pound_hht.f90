@@ -53,6 +53,9 @@ module pound_hht
       private
       !> alpha, beta, gamma; time step; c0 = 1/(beta dt^2), c1 = gamma/(beta dt).
       real(dp) :: alpha = -0.05_dp, beta = 0.0_dp, gamma = 0.0_dp, dt = 0.0_dp, c0 = 0.0_dp, c1 = 0.0_dp
+      !> a* = -ca v_n - cb a_n, v* = cc v_n + cd a_n: ca = 1/(beta dt), cb = 1/(2 beta) - 1,
+      !> cc = 1 - gamma/beta, cd = dt (1 - gamma/(2 beta)) (held with dt, swapped with it).
+      real(dp) :: ca = 0.0_dp, cb = 0.0_dp, cc = 0.0_dp, cd = 0.0_dp
       !> Number of DOFs and half-bandwidth.
       integer :: n = 0, kd = 0
       !> Cholesky factor of Khat (kd+1, n).
@@ -146,6 +149,7 @@ contains
       st%dt = dt
       st%c0 = 1.0_dp/(st%beta*dt**2)
       st%c1 = st%gamma/(st%beta*dt)
+      call kinematic_constants(st)
       fk = (1.0_dp + alpha)*(1.0_dp + st%c1*b%a1)
       fm = st%c0 + (1.0_dp + alpha)*st%c1*b%a0
       st%chol = fk*b%kt
@@ -193,11 +197,11 @@ contains
       alpha = st%alpha
       ! w1 = v*, then C v* = a0 M v* + a1 (K+G) v* (w2 = (K+G) v*).
       do i = 1, st%n
-         st%w1(i) = (1.0_dp - st%gamma/st%beta)*st%v(i) + st%dt*(1.0_dp - st%gamma/(2.0_dp*st%beta))*st%a(i)
+         st%w1(i) = st%cc*st%v(i) + st%cd*st%a(i)
       end do
       call band_symv(b%kt, st%w1, st%w2)
       do i = 1, st%n
-         ap = -st%v(i)/(st%beta*st%dt) - (0.5_dp/st%beta - 1.0_dp)*st%a(i)
+         ap = -st%ca*st%v(i) - st%cb*st%a(i)
          vp = b%a0*b%mass(i)*st%w1(i) + b%a1*st%w2(i)
          st%du(i) = -b%mass(i)*b%ground(i)*(st%ag + (1.0_dp + alpha)*dag) + st%f(i) - b%mass(i)*ap - &
                     (1.0_dp + alpha)*vp - st%ku(i) + alpha*st%cv(i)
@@ -205,6 +209,16 @@ contains
       call dpbtrs_vec(st, st%du)
       st%df = 0.0_dp
    end subroutine hht_predict
+
+   !> The constants of a* and v* for the state's beta, gamma and dt.
+   pure subroutine kinematic_constants(st)
+      type(hht_state), intent(inout) :: st
+
+      st%ca = 1.0_dp/(st%beta*st%dt)
+      st%cb = 0.5_dp/st%beta - 1.0_dp
+      st%cc = 1.0_dp - st%gamma/st%beta
+      st%cd = st%dt*(1.0_dp - st%gamma/(2.0_dp*st%beta))
+   end subroutine kinematic_constants
 
    !> HHT-alpha has no exact steps: predicts by `hht_predict`.
    subroutine hht_predict_exact(st, b, ag_old, ag_new)
@@ -245,9 +259,8 @@ contains
       st%w1 = st%a
       st%w2 = st%v
       do i = 1, st%n
-         a1 = st%c0*st%du(i) - st%v(i)/(st%beta*st%dt) - (0.5_dp/st%beta - 1.0_dp)*st%a(i)
-         v1 = st%c1*st%du(i) + (1.0_dp - st%gamma/st%beta)*st%v(i) + &
-              st%dt*(1.0_dp - st%gamma/(2.0_dp*st%beta))*st%a(i)
+         a1 = st%c0*st%du(i) - st%ca*st%v(i) - st%cb*st%a(i)
+         v1 = st%c1*st%du(i) + st%cc*st%v(i) + st%cd*st%a(i)
          st%u(i) = st%u(i) + st%du(i)
          st%v(i) = v1
          st%a(i) = a1
@@ -371,6 +384,10 @@ contains
          call swap(st%dt, other%dt)
          call swap(st%c0, other%c0)
          call swap(st%c1, other%c1)
+         call swap(st%ca, other%ca)
+         call swap(st%cb, other%cb)
+         call swap(st%cc, other%cc)
+         call swap(st%cd, other%cd)
          call swap(st%chol, other%chol)
       end select
    end subroutine hht_swap_step
