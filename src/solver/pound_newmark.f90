@@ -634,13 +634,14 @@ contains
       class(newmark_state), intent(in) :: st
       !> Input work, kinetic, strain and damping energy so far (added to).
       real(dp), intent(inout) :: w_in, e_kinetic, e_strain, e_damping
-      !> Numerical dissipation so far (average acceleration has none: unchanged).
+      !> Numerical dissipation so far (added to: average acceleration has none).
       real(dp), intent(inout) :: e_numerical
 
       w_in = w_in + st%input_work
       e_kinetic = e_kinetic + st%kinetic
       e_strain = e_strain + st%strain
       e_damping = e_damping + st%damping_energy
+      e_numerical = e_numerical + 0.0_dp
    end subroutine newmark_add_energies
 
    !> Kinetic energy of the relative motion, v^T M v / 2 (kJ).
