@@ -80,6 +80,7 @@ module pound_integrator
    end type integrator
 
    abstract interface
+      !> Interface of the binding(s) declared with `init_i` (see the type).
       subroutine init_i(st, b, dt, ag0, error, general, refresh, exact)
          import :: integrator, structure_model, dp, error_type
          class(integrator), intent(inout) :: st
@@ -90,22 +91,26 @@ module pound_integrator
          integer, intent(in), optional :: refresh
          logical, intent(in), optional :: exact
       end subroutine init_i
+      !> Interface of the binding(s) declared with `predict_i` (see the type).
       subroutine predict_i(st, b, dag)
          import :: integrator, structure_model, dp
          class(integrator), intent(inout) :: st
          type(structure_model), intent(in) :: b
          real(dp), intent(in), value :: dag
       end subroutine predict_i
+      !> Interface of the binding(s) declared with `predict_exact_i` (see the type).
       subroutine predict_exact_i(st, b, ag_old, ag_new)
          import :: integrator, structure_model, dp
          class(integrator), intent(inout) :: st
          type(structure_model), intent(in) :: b
          real(dp), intent(in), value :: ag_old, ag_new
       end subroutine predict_exact_i
+      !> Interface of the binding(s) declared with `drop_exact_i` (see the type).
       pure subroutine drop_exact_i(st)
          import :: integrator
          class(integrator), intent(inout) :: st
       end subroutine drop_exact_i
+      !> Interface of the binding(s) declared with `commit_i` (see the type).
       subroutine commit_i(st, b, ag_old, ag_new, w_in, e_out)
          import :: integrator, structure_model, dp
          class(integrator), intent(inout) :: st
@@ -113,6 +118,7 @@ module pound_integrator
          real(dp), intent(in), value :: ag_old, ag_new
          real(dp), intent(inout), optional :: w_in, e_out
       end subroutine commit_i
+      !> Interface of the binding(s) declared with `advance_i` (see the type).
       subroutine advance_i(st, b, ag_old, ag_new, dag_next, w_in, e_out)
          import :: integrator, structure_model, dp
          class(integrator), intent(inout) :: st
@@ -120,11 +126,13 @@ module pound_integrator
          real(dp), intent(in), value :: ag_old, ag_new, dag_next
          real(dp), intent(inout) :: w_in, e_out
       end subroutine advance_i
+      !> Interface of the binding(s) declared with `solve_i` (see the type).
       subroutine solve_i(st, x)
          import :: integrator, dp
          class(integrator), intent(in) :: st
          real(dp), intent(inout) :: x(:)
       end subroutine solve_i
+      !> Interface of the binding(s) declared with `add_load_i` (see the type).
       pure subroutine add_load_i(st, s, dof, x)
          import :: integrator, dp
          class(integrator), intent(inout) :: st
@@ -132,6 +140,7 @@ module pound_integrator
          integer, intent(in) :: dof
          real(dp), intent(in) :: x(:)
       end subroutine add_load_i
+      !> Interface of the binding(s) declared with `add_load_rows_i` (see the type).
       pure subroutine add_load_rows_i(st, s, dof, w, x)
          import :: integrator, dp
          class(integrator), intent(inout) :: st
@@ -140,51 +149,61 @@ module pound_integrator
          real(dp), intent(in) :: w(:)
          real(dp), intent(in) :: x(:)
       end subroutine add_load_rows_i
+      !> Interface of the binding(s) declared with `swap_step_i` (see the type).
       subroutine swap_step_i(st, other)
          import :: integrator
          class(integrator), intent(inout) :: st
          class(integrator), intent(inout) :: other
       end subroutine swap_step_i
+      !> Interface of the binding(s) declared with `set_state_i` (see the type).
       subroutine set_state_i(st, b, u, v, a)
          import :: integrator, structure_model, dp
          class(integrator), intent(inout) :: st
          type(structure_model), intent(in) :: b
          real(dp), intent(in), optional :: u(:), v(:), a(:)
       end subroutine set_state_i
+      !> Interface of the binding(s) declared with `int_i` (see the type).
       pure integer function int_i(st)
          import :: integrator
          class(integrator), intent(in) :: st
       end function int_i
+      !> Interface of the binding(s) declared with `real_i` (see the type).
       pure real(dp) function real_i(st)
          import :: integrator, dp
          class(integrator), intent(in) :: st
       end function real_i
+      !> Interface of the binding(s) declared with `path_i` (see the type).
       pure subroutine path_i(st, i, u0, v0, am)
          import :: integrator, dp
          class(integrator), intent(in) :: st
          integer, intent(in) :: i
          real(dp), intent(out) :: u0, v0, am
       end subroutine path_i
+      !> Interface of the binding(s) declared with `view_i` (see the type).
       function view_i(st) result(p)
          import :: integrator, dp
          class(integrator), intent(in), target :: st
          real(dp), pointer, contiguous :: p(:)
       end function view_i
+      !> Interface of the binding(s) declared with `at_i` (see the type).
       pure real(dp) function at_i(st, i)
          import :: integrator, dp
          class(integrator), intent(in) :: st
          integer, intent(in) :: i
       end function at_i
+      !> Interface of the binding(s) declared with `energies_i` (see the type).
       pure function energies_i(st) result(e)
          import :: integrator, dp, n_integrator_energies
          class(integrator), intent(in) :: st
          real(dp) :: e(n_integrator_energies)
       end function energies_i
+      !> Interface of the binding(s) declared with `add_energies_i` (see the type).
       pure subroutine add_energies_i(st, w_in, e_kinetic, e_strain, e_damping, e_numerical)
          import :: integrator, dp
          class(integrator), intent(in) :: st
          real(dp), intent(inout) :: w_in, e_kinetic, e_strain, e_damping, e_numerical
       end subroutine add_energies_i
+      !> Interface of the binding(s) declared with `model_energy_i` (see the type).
       pure function model_energy_i(st, b) result(e)
          import :: integrator, structure_model, dp
          class(integrator), intent(in) :: st
