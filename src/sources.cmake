@@ -33,11 +33,13 @@ set(POUND_SOURCES
   model/pound_band_lapack.f90 model/pound_band_solve.f90 model/pound_band_eigen.f90 model/pound_frame_element.f90
   model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_building.f90 model/pound_building.f90
   # solver: Newmark average acceleration
-  solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
+  solver/pound_integrator.f90 solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
   # solver: exact free steps (modes of (K+G, M), each mode's exact step)
   solver/pound_modal_step.f90 solver/pound_newmark_exact.f90
   # solver: several ground motions of one shear building at once (motion-fastest lanes)
   solver/pound_newmark_batch.f90
+  # solver: HHT-alpha; the integrator an analysis plan names
+  solver/pound_hht.f90 solver/pound_integrators.f90
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
   contact/pound_joint_law.f90 contact/pound_contact_law.f90 contact/pound_law_elastic.f90
   contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90

@@ -7,7 +7,6 @@ submodule(pound_analysis) pound_analysis_reports
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_strings, only: mm_text
    use pound_structure, only: building_label => structure_label
-   use pound_newmark, only: newmark_du, newmark_n
    use pound_contact_pair, only: end_mass
    implicit none
 
@@ -28,6 +27,7 @@ contains
       dst%time = src%time
       dst%building = src%building
       dst%energy = src%energy
+      if (allocated(src%numerical)) dst%numerical = src%numerical
       dst%energy_error = src%energy_error
       dst%joints = src%joints
       dst%seconds = src%seconds
@@ -169,7 +169,7 @@ contains
    !> ground acceleration so far.
    module subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
       !> Integrator states at the end of the step.
-      type(newmark_state), intent(in), target :: st(:)
+      class(integrator), intent(in), target :: st(:)
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> The contact system.
@@ -184,7 +184,9 @@ contains
       integer, intent(in) :: step
       !> Error state: what is not finite, where and when.
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: e(4), t
+      character(len=*), parameter :: term(n_integrator_energies) = [character(len=21) :: 'input', 'kinetic', &
+                                                                    'strain', 'damping', 'numerical dissipation']
+      real(dp) :: e(n_integrator_energies), t
       integer :: ib, i
       character(len=:), allocatable :: hint
 
@@ -194,12 +196,12 @@ contains
       hint = ': the response overflows (ground acceleration up to '//str(maxval(abs(ag(0:step))))// &
              ' m/s^2 so far); check the size of the ground motion (&ground), the masses and the stiffnesses'
       do ib = 1, size(st)
-         e = newmark_energies(st(ib))
-         do i = 1, 4
+         e = st(ib)%energies()
+         do i = 1, n_integrator_energies
             if (ieee_is_finite(e(i))) cycle
-            call fatal_error(error, building_label(models(ib))//': the '//trim(energy_names(i))// &
+            call fatal_error(error, building_label(models(ib))//': the '//trim(term(i))// &
                              ' energy is not finite at t = '//str(t)//' s (step '//str(step)//') ('// &
-                             str(e(i))//' kJ, largest |u| '//mm_text(maxval(abs(newmark_u(st(ib)))))//')'//hint)
+                             str(e(i))//' kJ, largest |u| '//mm_text(maxval(abs(st(ib)%u_view())))//')'//hint)
             call error_at(error, t, step, building=ib)
             return
          end do
@@ -222,7 +224,7 @@ contains
    !> `error` passed in is kept when everything is finite.
    module subroutine locate_nonfinite(st, models, cs, t, step, error, predicted)
       !> Integrator states.
-      type(newmark_state), intent(in), target :: st(:)
+      class(integrator), intent(in), target :: st(:)
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> The contact system.
@@ -254,15 +256,15 @@ contains
          do ib = 1, size(st)
             select case (q)
             case (1)
-               col => newmark_u(st(ib))
+               col => st(ib)%u_view()
             case (2)
-               col => newmark_v(st(ib))
+               col => st(ib)%v_view()
             case (3)
-               col => newmark_a(st(ib))
+               col => st(ib)%a_view()
             case default
-               col => newmark_du(st(ib))
+               col => st(ib)%du_view()
             end select
-            do i = 1, newmark_n(st(ib))
+            do i = 1, st(ib)%dofs()
                x(1) = col(i)
                if (ieee_is_finite(x(1))) cycle
                if (allocated(error)) deallocate (error)

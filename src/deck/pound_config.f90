@@ -53,6 +53,10 @@ module pound_config
       !> LCP method of the coupled steps: 'auto' (the active-set method for steps whose acting
       !> joints are all elastic, Lemke otherwise and when it fails) or 'lemke' (every step).
       character(len=8) :: lcp_solver = 'auto'
+      !> Time integrator: 'newmark' (average acceleration) or 'hht' (HHT-alpha).
+      character(len=8) :: integrator = 'newmark'
+      !> HHT-alpha's alpha, in [-1/3, 0] (integrator = 'hht').
+      real(dp) :: hht_alpha = -0.05_dp
    end type analysis_config
 
    !> `&ground`: one ground motion (a deck with several `&ground` groups is a suite).

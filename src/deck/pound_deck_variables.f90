@@ -59,7 +59,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(104) = [ &
+   type(var_spec), parameter :: variables(106) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -117,7 +117,8 @@ module pound_deck_variables
       var_spec('sweep', 'parameter', 'c', 0), var_spec('sweep', 'values', 'r', 10000), &
       var_spec('sweep', 'value_from', 'r', 0), var_spec('sweep', 'value_to', 'r', 0), &
       var_spec('sweep', 'n_values', 'i', 0), var_spec('sweep', 'spacing', 'c', 0), &
-      var_spec('contact', 'variant', 'c', 0)]
+      var_spec('contact', 'variant', 'c', 0), &
+      var_spec('analysis', 'integrator', 'c', 0), var_spec('analysis', 'hht_alpha', 'r', 0)]
 
 contains
 

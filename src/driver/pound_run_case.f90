@@ -17,7 +17,7 @@ module pound_run_case
    use pound_strings, only: str
    use pound_config, only: deck_type, ground_config, analysis_config
    use pound_analysis_plan, only: analysis_plan, steps_of, stepping_uniform, stepping_impact, free_newmark, &
-                                  free_exact, lcp_auto, lcp_lemke
+                                  free_exact, lcp_auto, lcp_lemke, integrator_newmark, integrator_hht
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_building, only: building_model, build_building
@@ -124,6 +124,8 @@ contains
       plan%impact_substeps = cfg%impact_substeps
       plan%free_steps = merge(free_exact, free_newmark, cfg%free_steps == 'exact')
       plan%lcp_solver = merge(lcp_lemke, lcp_auto, cfg%lcp_solver == 'lemke')
+      plan%integrator = merge(integrator_hht, integrator_newmark, cfg%integrator == 'hht')
+      if (plan%integrator == integrator_hht) plan%hht_alpha = cfg%hht_alpha
    end function analysis_plan_of
 
    !> The ground motion the configuration `&ground` describes: a pulse, or a record read

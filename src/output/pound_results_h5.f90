@@ -637,6 +637,14 @@ contains
       if (allocated(error)) return
       call h5_write_attr(h5, g//'/energy', 'relative_error', res%energy_error, error)
       if (allocated(error)) return
+      if (allocated(res%numerical)) then
+         call h5_write(h5, g//'/energy_numerical', res%numerical, error, units='kJ')
+         if (allocated(error)) return
+         call h5_write_attr(h5, g//'/energy_numerical', 'description', 'numerical dissipation of the '// &
+                            'integrator (HHT-alpha), summed over the buildings; the energy audit balances '// &
+                            'input = kinetic + strain + damping + contact + plastic + numerical', error)
+         if (allocated(error)) return
+      end if
       call h5_write_attr(h5, g, 'integration_seconds', res%seconds, error)
       if (allocated(error)) return
       do i = 1, size(models)
