@@ -14,7 +14,10 @@ scaled, at the peak storey shear of its most affected storey (largest |lambda| o
 shear), uncoupled and coupled side by side: only for frames with /<analysis>/<b>/deformed and a
 coupled analysis), columns (influence coefficients of the column segments of each frame, shear
 and end moment, against the segment's mid-height, one line per column line facing a neighbour,
-the contact elevations marked: only for frames with /influence/<b>/columns). Files are named
+the contact elevations marked: only for frames with /influence/<b>/columns), study (the studies of
+the joint, scripts/plot_studies.py: <stem>_stiffness_sweep or _restitution_sweep, the largest
+|lambda| and every pair's peak force against the swept value; <stem>_law_study, one bar per
+variant: only when the file holds /stiffness_sweep, /restitution_sweep or /law_study). Files are named
 <stem>_<plot>.png / .pdf.
 
 Any problem with the file (missing, not HDF5, not a pound results file) gives one line
@@ -28,7 +31,7 @@ import sys
 import tempfile
 
 PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite", "frame",
-         "deformed", "columns", "hysteresis")
+         "deformed", "columns", "study", "hysteresis")
 # The sweep's column-segment target quantities of frames (/sweep/max_abs_lambda/<b>/<q>, where targeted).
 COLUMN_TARGETS = {"column_shear": "column segment shear V", "column_moment": "column segment end moment M"}
 CONTACT_PLOTS = ("displacement", "force", "loops")
@@ -823,6 +826,30 @@ def plot_suite_group(plt, r, args, written, notes):
         plot_suite.plot_all(f["suite"], plt, np, save_suite)
 
 
+def plot_study_group(plt, r, args, written, notes):
+    """The studies of the joint (scripts/plot_studies.py) of /stiffness_sweep,
+    /restitution_sweep and /law_study."""
+    import h5py
+    import numpy as np
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import plot_studies
+
+    def save_study(fig, what):
+        save(fig, r, what, args, written)
+        plt.close(fig)
+
+    with h5py.File(r.path, "r") as f:
+        plot_studies.plot_all(f, plt, np, save_study, (COLOURS, LINESTYLES, MARKERS))
+
+
+def has_study(path):
+    import h5py
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import plot_studies
+    with h5py.File(path, "r") as f:
+        return plot_studies.has_study(f)
+
+
 def has_suite(path):
     import h5py
     with h5py.File(path, "r") as f:
@@ -831,7 +858,7 @@ def has_suite(path):
 
 PLOTTERS = {"displacement": plot_displacement, "force": plot_force, "loops": plot_loops,
             "shear": plot_shear, "influence": plot_influence, "ground": plot_ground, "sweep": plot_sweep,
-            "suite": plot_suite_group, "hysteresis": plot_hysteresis}
+            "suite": plot_suite_group, "study": plot_study_group, "hysteresis": plot_hysteresis}
 
 
 # --------------------------------------------------------------------------------------------
@@ -1129,6 +1156,10 @@ def run(argv):
         if name == "hysteresis" and not bilinear_buildings(r):
             if "hysteresis" in args.explicit:
                 notes.append("hysteresis: skipped (no building with bilinear storeys in this file)")
+            continue
+        if name == "study" and not has_study(r.path):
+            if "study" in args.explicit:
+                notes.append("study: skipped (no /stiffness_sweep, /restitution_sweep or /law_study in this file)")
             continue
         if name == "sweep" and r.sweep is None:
             if "sweep" in args.explicit:

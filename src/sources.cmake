@@ -21,7 +21,7 @@ set(POUND_SOURCES
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
   deck/pound_config.f90 deck/pound_deck_variables.f90 deck/pound_deck_lexer.f90 deck/pound_deck_checks.f90
   deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_building.f90
-  deck/pound_deck_contact.f90 deck/pound_deck_sweep.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
+  deck/pound_deck_stiffness.f90 deck/pound_deck_contact.f90 deck/pound_deck_study.f90 deck/pound_deck_sweep.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
   model/pound_band.f90 model/pound_structure.f90 model/pound_storey_properties.f90
   model/pound_shear_building.f90 model/pound_ground_motion.f90
@@ -33,11 +33,13 @@ set(POUND_SOURCES
   model/pound_band_lapack.f90 model/pound_band_solve.f90 model/pound_band_eigen.f90 model/pound_frame_element.f90
   model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_building.f90 model/pound_building.f90
   # solver: Newmark average acceleration
-  solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
+  solver/pound_integrator.f90 solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
   # solver: exact free steps (modes of (K+G, M), each mode's exact step)
   solver/pound_modal_step.f90 solver/pound_newmark_exact.f90
   # solver: several ground motions of one shear building at once (motion-fastest lanes)
   solver/pound_newmark_batch.f90
+  # solver: HHT-alpha; the integrator an analysis plan names
+  solver/pound_hht.f90 solver/pound_integrators.f90
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
   contact/pound_joint_law.f90 contact/pound_contact_law.f90 contact/pound_law_elastic.f90
   contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90
@@ -50,13 +52,13 @@ set(POUND_SOURCES
   contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_storey_yield.f90 analysis/pound_storey_yield_stick.f90 analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_influence.f90
-  analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90
+  analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90 analysis/pound_joint_study.f90
   # analyses: the uncoupled runs of several motions at once
   analysis/pound_analysis_batch.f90
   # analyses: response spectra and scaling, code separation rules
   analysis/pound_spectrum.f90 analysis/pound_separation.f90
   # driver: one case from a validated configuration to all results (program, tests, suites)
-  driver/pound_run_case.f90
+  driver/pound_case_studies.f90 driver/pound_run_case.f90
   # driver: the memory a deck's run needs (estimated from the deck) and what the machine gives
   driver/pound_memory.f90
   # driver: a suite of ground motions (scaling, one case per motion, suite statistics, rules)
@@ -71,7 +73,7 @@ set(POUND_SOURCES
   # outputs: the separation rules' listing table and datasets (a run and a suite)
   output/pound_separation_output.f90 output/pound_sweep_joints_output.f90
   # outputs: the suite's listing sections and /suite
-  output/pound_suite_output.f90 output/pound_suite_columns_output.f90
+  output/pound_suite_output.f90 output/pound_suite_columns_output.f90 output/pound_study_output.f90
   # outputs: the engineering summary (terminal, top of the listing, <stem>_summary.csv, root attributes)
   output/pound_summary.f90 output/pound_summary_output.f90
 )

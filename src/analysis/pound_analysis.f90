@@ -27,11 +27,8 @@ module pound_analysis
    use pound_structure, only: structure_model
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
-   use pound_newmark, only: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_swap_step, &
-                            newmark_predict_exact, newmark_drop_exact, newmark_advance, &
-                            kinetic_energy, strain_energy, newmark_u, newmark_v, newmark_a, &
-                            newmark_energies, newmark_add_energies, en_input, en_kinetic, en_strain, &
-                            en_damping
+   use pound_integrator, only: integrator, en_input, en_damping, en_numerical, n_integrator_energies
+   use pound_integrators, only: integrators_for
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
@@ -40,7 +37,7 @@ module pound_analysis
                             contact_track_paths
    use pound_deck_variables, only: max_substeps
    use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, yield_steps, &
-                                 yield_sample, yield_results, yield_energy_step, yield_collapsed, yield_hold
+                                 yield_sample, yield_results, yield_energy_step, yield_hold
    use pound_contact_period, only: joint_half_period
    implicit none
    private
@@ -79,6 +76,9 @@ module pound_analysis
    integer, parameter :: e_input = 1, e_kinetic = 2, e_strain = 3, e_damping = 4, e_contact = 5
    integer, parameter :: e_plastic = 6
    integer, parameter :: n_energy = 6
+   !> The step's energy sample also holds the integrators' numerical dissipation (zero for
+   !> average acceleration), after the `n_energy` components of the history.
+   integer, parameter :: e_numerical = n_energy + 1
    !> Energy component names (HDF5 attribute, listing).
    character(len=*), parameter :: energy_names(n_energy) = &
       [character(len=8) :: 'input', 'kinetic', 'strain', 'damping', 'contact', 'plastic']
@@ -93,6 +93,10 @@ module pound_analysis
       type(response_record), allocatable :: building(:)
       !> Energy history (n_energy, n_out), summed over the buildings (kJ).
       real(dp), allocatable :: energy(:, :)
+      !> Numerical dissipation of the integrators at the output times, summed over the buildings
+      !> (kJ; allocated when the integrator dissipates: HHT-alpha with alpha < 0). The energy audit
+      !> counts it among the terms that balance the input.
+      real(dp), allocatable :: numerical(:)
       !> Audit: max over all steps of |W_in - sum of the other terms| / max energy scale.
       real(dp) :: energy_error = 0.0_dp
       !> Warnings for the user (e.g. a large audit residual and its likely cause), one per
@@ -124,14 +128,14 @@ module pound_analysis
    !> reused for every gap of a sweep.
    type :: coupled_model
       !> Integrators at t = 0.
-      type(newmark_state), allocatable :: st(:)
+      class(integrator), allocatable :: st(:)
       !> Contact system at t = 0.
       type(contact_system) :: cs
       !> `stepping = 'impact'`: substeps per impact step (0: uniform stepping), and the
       !> integrators and the condensed constraints at the substep dt/m (only their step data
-      !> are used: `newmark_swap_step`, `contact_swap_step`).
+      !> are used: `integrator%swap_step`, `contact_swap_step`).
       integer :: substeps = 0
-      type(newmark_state), allocatable :: st_sub(:)
+      class(integrator), allocatable :: st_sub(:)
       type(contact_system) :: cs_sub
    end type coupled_model
 
@@ -140,7 +144,7 @@ module pound_analysis
       !> Substeps per impact step.
       integer :: m = 1
       !> Integrators and contact system holding the substep's step data.
-      type(newmark_state), allocatable :: st(:)
+      class(integrator), allocatable :: st(:)
       type(contact_system) :: cs
       !> The ground motion, evaluated at the substep times.
       type(ground_motion_t) :: ground
@@ -210,7 +214,7 @@ module pound_analysis
       !> ground acceleration so far.
       module subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
          !> Integrator states at the end of the step.
-         type(newmark_state), intent(in), target :: st(:)
+         class(integrator), intent(in), target :: st(:)
          !> The buildings.
          type(structure_model), intent(in) :: models(:)
          !> The contact system.
@@ -232,7 +236,7 @@ module pound_analysis
       !> `error` passed in is kept when everything is finite.
       module subroutine locate_nonfinite(st, models, cs, t, step, error, predicted)
          !> Integrator states.
-         type(newmark_state), intent(in), target :: st(:)
+         class(integrator), intent(in), target :: st(:)
          !> The buildings.
          type(structure_model), intent(in) :: models(:)
          !> The contact system.
@@ -255,6 +259,14 @@ module pound_analysis
          type(structure_model), intent(in) :: models(:)
          real(dp) :: meff
       end function effective_mass
+      !> Hand the histories' blocks over to the sink when one of them is full (time in `write_ticks`).
+      module subroutine flush_full_blocks(res, sink, coupled, write_ticks, error)
+         type(analysis_result), intent(inout) :: res
+         class(history_sink), intent(inout) :: sink
+         logical, intent(in) :: coupled
+         integer(int64), intent(inout) :: write_ticks
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine flush_full_blocks
    end interface
 
 contains
@@ -273,7 +285,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Where the histories are streamed (none: held whole in `res`).
       class(history_sink), intent(inout), optional :: sink
-      type(newmark_state), allocatable :: st(:)
+      class(integrator), allocatable :: st(:)
       type(contact_system) :: cs
       integer :: ib, nb
 
@@ -283,9 +295,9 @@ contains
       nb = size(models)
       call start_result(res, cfg, size(ag) - 1, nb, error)
       if (allocated(error)) return
-      allocate (st(nb))
+      call integrators_for(cfg, nb, st)
       do ib = 1, nb
-         call newmark_init(st(ib), models(ib), cfg%dt, ag(0), error, exact=cfg%free_steps == free_exact)
+         call st(ib)%init(models(ib), cfg%dt, ag(0), error, exact=cfg%free_steps == free_exact)
          if (allocated(error)) return
       end do
       call integrate(cfg, models, ag, st, cs, res, error, sink=sink)
@@ -335,11 +347,11 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: ib
 
-      allocate (prep%st(size(models)))
+      call integrators_for(cfg, size(models), prep%st)
       call check_ground_samples([ag0], cfg%dt, error)
       if (allocated(error)) return
       do ib = 1, size(models)
-         call newmark_init(prep%st(ib), models(ib), cfg%dt, ag0, error, exact=cfg%free_steps == free_exact)
+         call prep%st(ib)%init(models(ib), cfg%dt, ag0, error, exact=cfg%free_steps == free_exact)
          if (allocated(error)) return
       end do
       call contact_init(prep%cs, pairs, prep%st, models, error)
@@ -348,9 +360,9 @@ contains
       if (cfg%stepping /= stepping_impact .or. size(pairs) == 0) return
       ! Impact-aware substeps: Khat and F factored once more, for dt/m.
       prep%substeps = impact_substeps_of(cfg, models, prep%cs)
-      allocate (prep%st_sub(size(models)))
+      call integrators_for(cfg, size(models), prep%st_sub)
       do ib = 1, size(models)
-         call newmark_init(prep%st_sub(ib), models(ib), cfg%dt/real(prep%substeps, dp), ag0, error)
+         call prep%st_sub(ib)%init(models(ib), cfg%dt/real(prep%substeps, dp), ag0, error)
          if (allocated(error)) return
       end do
       call contact_init(prep%cs_sub, pairs, prep%st_sub, models, error)
@@ -423,14 +435,14 @@ contains
       !> Record the joints' largest closing displacements in `cs%closing_max`
       !> (`contact_track_closing`; default: no).
       logical, intent(in), optional :: track
-      type(newmark_state), allocatable :: st(:)
+      class(integrator), allocatable :: st(:)
       type(impact_stepping) :: sub
       integer :: nb
 
       nb = size(models)
       call check_ground_samples(ag, cfg%dt, error)
       if (allocated(error)) return
-      st = prep%st
+      allocate (st, source=prep%st)
       cs = prep%cs
       if (present(gaps)) cs%pair(:)%gap = gaps
       if (present(track)) then
@@ -447,7 +459,7 @@ contains
          return
       end if
       sub%m = prep%substeps
-      sub%st = prep%st_sub
+      allocate (sub%st, source=prep%st_sub)
       sub%cs = prep%cs_sub
       sub%ground = ground
       call integrate(cfg, models, ag, st, cs, res, error, sub, sink)
@@ -469,7 +481,7 @@ contains
    !> contact forces, commit, sample the response, audit the energy, store output samples.
    !>
    !> A plain run (no constraints, no substeps, no exact free steps) predicts each step at
-   !> the end of the one before (`newmark_advance`: commit, then predict the next) and
+   !> the end of the one before (`integrator%advance`: commit, then predict the next) and
    !> samples the committed response after that, which the prediction leaves untouched: the
    !> same numbers, with the sampling free to overlap the tridiagonal solve, a chain of
    !> dependent operations.
@@ -486,7 +498,7 @@ contains
       !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
       real(dp), intent(in) :: ag(0:)
       !> Integrators at t = 0 (advanced to the end).
-      type(newmark_state), intent(inout), target :: st(:)
+      class(integrator), intent(inout), target :: st(:)
       !> The contact system at t = 0 (at the end on return).
       type(contact_system), intent(inout) :: cs
       !> The result, set up by `start_result` (contact histories when cs%m > 0).
@@ -502,21 +514,22 @@ contains
       class(history_sink), intent(inout), optional :: sink
       integer :: ib, step, k, every, nb, j, n_sub, capacity, until_out
       integer(int64) :: c0, c1, rate, write_ticks
-      real(dp) :: t, sample(n_energy), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
+      real(dp) :: t, sample(e_numerical), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, inelastic
-      integer :: newmark_steps
+      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, inelastic, collapsed
+      integer :: method_steps
       type(storey_yield_set), allocatable :: ys(:)
 
       nb = size(models)
       allocate (view(nb))
-      call yield_sets_init(ys, models, cfg%collapse_drift, inelastic)
+      call yield_sets_init(ys, models, cfg, inelastic, collapsed, error)
+      if (allocated(error)) return
       coupled = cs%m > 0
       impact = present(sub)
       exact = cfg%free_steps == free_exact .and. .not. inelastic
       plain = .not. (coupled .or. impact .or. exact .or. inelastic)
       track = (impact .or. exact) .and. allocated(cs%closing_max)
-      newmark_steps = 0
+      method_steps = 0
       every = cfg%output_every
       h = cfg%dt
       if (impact) then
@@ -537,9 +550,9 @@ contains
                                       real(models(ib)%n, dp)*real(models(ib)%shear%n, dp) <= deformed_limit)
          if (allocated(error)) return
          res%building(ib)%streamed = present(sink)
-         view(ib)%u => newmark_u(st(ib))
-         view(ib)%v => newmark_v(st(ib))
-         view(ib)%a => newmark_a(st(ib))
+         view(ib)%u => st(ib)%u_view()
+         view(ib)%v => st(ib)%v_view()
+         view(ib)%a => st(ib)%a_view()
          call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, ag(0), &
                               0.0_dp, .true.)
          if (present(sink)) then
@@ -554,7 +567,7 @@ contains
       write_ticks = 0
       until_out = every
       call system_clock(c0, rate)
-      if (plain .and. res%n_steps > 0) call predict_newmark(st, models, ag(1) - ag(0))
+      if (plain .and. res%n_steps > 0) call predict_again(st, models, ag(1) - ag(0))
       steps: do step = 1, res%n_steps
          if (mod(step, progress_stride) == 0) call progress_steps(step, res%n_steps)
          t = real(step, dp)*cfg%dt
@@ -567,12 +580,12 @@ contains
          if (exact) then
             if (.not. loaded) then
                do ib = 1, nb
-                  call newmark_predict_exact(st(ib), models(ib), ag_old, ag_new)
+                  call st(ib)%predict_exact(models(ib), ag_old, ag_new)
                end do
             end if
          else if (.not. plain) then
             do ib = 1, nb
-               call newmark_predict(st(ib), models(ib), ag_new - ag_old)
+               call st(ib)%predict(models(ib), ag_new - ag_old)
             end do
          end if
          ! out = mod(step, every) == 0, counted down (no division per step)
@@ -587,13 +600,13 @@ contains
          if (impact .or. (exact .and. coupled)) then
             if (track) call contact_track_paths(cs, st)
             if (loaded .or. contact_may_act(cs, st)) then
-               newmark_steps = newmark_steps + 1
+               method_steps = method_steps + 1
                if (impact) then
                   n_sub = sub%m
                   res%substepped = res%substepped + 1
                   call swap_steps(st, cs, sub)
                else
-                  call predict_newmark(st, models, ag_new - ag_old)
+                  call predict_again(st, models, ag_new - ag_old)
                end if
             end if
          end if
@@ -610,7 +623,7 @@ contains
                   ag_new = ag(step)
                end if
                do ib = 1, nb
-                  call newmark_predict(st(ib), models(ib), ag_new - ag_old)
+                  call st(ib)%predict(models(ib), ag_new - ag_old)
                end do
                res%substeps = res%substeps + 1
             end if
@@ -624,26 +637,21 @@ contains
                   return
                end if
             end if
-            if (inelastic) then
-               call yield_steps(ys, st, cs, models, t_sub, step, error)
-               if (allocated(error)) then
-                  call error_at(error, t_sub, step)
-                  return
-               end if
-            end if
+            if (inelastic) call yield_steps(ys, st, cs, models, t_sub, step, error)
+            if (allocated(error)) return
             ! win, eout: the integrators' energy balance, added up by the commits (uncoupled;
             ! replaced by the sample below when coupled)
             win = 0.0_dp
             eout = 0.0_dp
             do ib = 1, nb
                if (plain .and. step < res%n_steps) then
-                  call newmark_advance(st(ib), models(ib), ag_old, ag_new, ag(step + 1) - ag_new, win, eout)
+                  call st(ib)%advance(models(ib), ag_old, ag_new, ag(step + 1) - ag_new, win, eout)
                else
-                  call newmark_commit(st(ib), models(ib), ag_old, ag_new, win, eout)
+                  call st(ib)%commit(models(ib), ag_old, ag_new, win, eout)
                end if
                call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
                                     ag_new, t_sub, output)
-               if (inelastic) call yield_sample(ys(ib), view(ib)%u, t_sub, output, res%building(ib))
+               if (inelastic) call yield_sample(ys(ib), view(ib)%u, t_sub, output, res%building(ib), collapsed)
             end do
             ! The last block is handed over after the loop (writing it is not integration).
             if (output .and. present(sink) .and. step < res%n_steps) then
@@ -664,7 +672,7 @@ contains
             if (inelastic) call yield_energy_step(ys, output, coupled, e_strain, e_plastic, res%energy(:, k), sample, eout)
             if (coupled .or. output) then
                win = sample(e_input)
-               eout = sum(sample(e_kinetic:n_energy))
+               eout = sum(sample(e_kinetic:e_numerical))
             end if
             ! One test per step: every value of the state feeds these sums.
             if (coupled) then
@@ -683,9 +691,7 @@ contains
          end do
          if (n_sub > 1) call swap_steps(st, cs, sub)
          ! A collapsed building stops its analysis (the samples not reached hold the last).
-         if (inelastic) then
-            if (yield_collapsed(ys)) exit steps
-         end if
+         if (collapsed) exit steps
       end do steps
       if (inelastic) call yield_hold(res%building, res%energy, k, coupled, error, sink)
       if (allocated(error)) return
@@ -704,7 +710,7 @@ contains
          call response_finish(res%building(ib), models(ib))
       end do
       if (inelastic) call yield_results(ys, res%building, res%yielding)
-      if (exact) res%exact_steps = res%n_steps - newmark_steps
+      if (exact) res%exact_steps = res%n_steps - method_steps
       res%energy_error = audit_error(resid, scale)
       if (res%energy_error <= audit_warning_limit) return
       if (coupled) then
@@ -717,37 +723,6 @@ contains
    ! The rarely taken parts of `integrate`'s step, kept out of its loop so that the loop's
    ! own state stays in registers (public only so that the compiler does not inline them).
 
-   !> Hand the histories' blocks over to the sink when one of them is full; the time spent
-   !> is added to `write_ticks`.
-   subroutine flush_full_blocks(res, sink, coupled, write_ticks, error)
-      !> The result being integrated.
-      type(analysis_result), intent(inout) :: res
-      !> Where the histories are streamed.
-      class(history_sink), intent(inout) :: sink
-      !> Whether the run has constraints.
-      logical, intent(in) :: coupled
-      !> Clock ticks spent writing (added to).
-      integer(int64), intent(inout) :: write_ticks
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      integer(int64) :: w0, w1
-      integer :: ib
-      logical :: full
-
-      full = .false.
-      do ib = 1, size(res%building)
-         full = full .or. response_block_full(res%building(ib))
-      end do
-      if (.not. full) return
-      call system_clock(w0)
-      do ib = 1, size(res%building)
-         call response_flush(res%building(ib), sink, coupled, ib, .true., error)
-         if (allocated(error)) return
-      end do
-      call system_clock(w1)
-      write_ticks = write_ticks + (w1 - w0)
-   end subroutine flush_full_blocks
-
    !> The energy sample `k` of an output step (and the joints' history when constrained);
    !> `sample` is set to it.
    subroutine store_energy(res, k, st, models, cs, sample)
@@ -756,13 +731,14 @@ contains
       !> Index of the output sample.
       integer, intent(in) :: k
       !> The integrators.
-      type(newmark_state), intent(in) :: st(:)
+      class(integrator), intent(in) :: st(:)
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> The contact system.
       type(contact_system), intent(in) :: cs
-      !> The stored sample.
-      real(dp), intent(out) :: sample(n_energy)
+      !> The stored sample and the numerical dissipation (`e_numerical`).
+      real(dp), intent(out) :: sample(e_numerical)
+      real(dp) :: e(n_integrator_energies)
       integer :: ib
 
       do ib = 1, size(st)
@@ -773,14 +749,21 @@ contains
          res%energy(e_plastic, k) = cs%plastic_work
          call joint_history_record(res%joints, k, cs%joint)
       end if
-      sample = res%energy(:, k)
+      sample(1:n_energy) = res%energy(:, k)
+      sample(e_numerical) = 0.0_dp
+      if (.not. allocated(res%numerical)) return
+      do ib = 1, size(st)
+         e = st(ib)%energies()
+         sample(e_numerical) = sample(e_numerical) + e(en_numerical)
+      end do
+      res%numerical(k) = sample(e_numerical)
    end subroutine store_energy
 
    !> Predict the step of every building by Newmark, dropping any exact step predicted
    !> (`free_steps = 'exact'`, a step in which a joint can act; a plain run's first step).
-   subroutine predict_newmark(st, models, dag)
+   subroutine predict_again(st, models, dag)
       !> Integrators.
-      type(newmark_state), intent(inout) :: st(:)
+      class(integrator), intent(inout) :: st(:)
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> Ground acceleration increment of the step (m/s^2).
@@ -788,17 +771,17 @@ contains
       integer :: ib
 
       do ib = 1, size(st)
-         call newmark_drop_exact(st(ib))
-         call newmark_predict(st(ib), models(ib), dag)
+         call st(ib)%drop_exact()
+         call st(ib)%predict(models(ib), dag)
       end do
-   end subroutine predict_newmark
+   end subroutine predict_again
 
    !> Exchange the step data of the integrators and the contact system with `sub`'s (a
    !> procedure of the module, not of `integrate`: an internal one would keep the time loop's
    !> variables that it reaches in memory).
    subroutine swap_steps(st, cs, sub)
       !> Integrators.
-      type(newmark_state), intent(inout) :: st(:)
+      class(integrator), intent(inout) :: st(:)
       !> The contact system.
       type(contact_system), intent(inout) :: cs
       !> The substep data of `stepping = 'impact'`.
@@ -806,7 +789,7 @@ contains
       integer :: i
 
       do i = 1, size(st)
-         call newmark_swap_step(st(i), sub%st(i))
+         call st(i)%swap_step(sub%st(i))
       end do
       call contact_swap_step(cs, sub%cs)
    end subroutine swap_steps
@@ -845,6 +828,14 @@ contains
       end if
       res%time = [(real((k - 1)*cfg%output_every, dp)*cfg%dt, k=1, n)]
       res%energy = 0.0_dp
+      if (.not. cfg%average_acceleration()) then
+         allocate (res%numerical(n), stat=stat)
+         if (stat /= 0) then
+            call fatal_error(error, 'cannot allocate the numerical dissipation history ('//str(n)//' samples)')
+            return
+         end if
+         res%numerical = 0.0_dp
+      end if
    end subroutine start_result
 
    !> Add one building's input work and kinetic, strain and damping energy to an energy sample.
@@ -852,16 +843,16 @@ contains
       !> Energy sample (n_energy).
       real(dp), intent(inout) :: sample(:)
       !> Integrator state.
-      type(newmark_state), intent(in) :: st
+      class(integrator), intent(in) :: st
       !> The building.
       type(structure_model), intent(in) :: b
 
-      real(dp) :: e(4)
+      real(dp) :: e(n_integrator_energies)
 
-      e = newmark_energies(st)
+      e = st%energies()
       sample(e_input) = sample(e_input) + e(en_input)
-      sample(e_kinetic) = sample(e_kinetic) + kinetic_energy(st, b)
-      sample(e_strain) = sample(e_strain) + strain_energy(st, b)
+      sample(e_kinetic) = sample(e_kinetic) + st%kinetic_energy(b)
+      sample(e_strain) = sample(e_strain) + st%strain_energy(b)
       sample(e_damping) = sample(e_damping) + e(en_damping)
    end subroutine add_structure_energy
 
@@ -869,15 +860,15 @@ contains
    !> (contact and plastic terms zero).
    pure subroutine step_energy(st, sample)
       !> Integrator states.
-      type(newmark_state), intent(in) :: st(:)
+      class(integrator), intent(in) :: st(:)
       !> Energy sample (n_energy).
       real(dp), intent(out) :: sample(:)
       integer :: ib
 
       sample = 0.0_dp
       do ib = 1, size(st)
-         call newmark_add_energies(st(ib), sample(e_input), sample(e_kinetic), sample(e_strain), &
-                                   sample(e_damping))
+         call st(ib)%add_energies(sample(e_input), sample(e_kinetic), sample(e_strain), sample(e_damping), &
+                                  sample(e_numerical))
       end do
    end subroutine step_energy
 

@@ -19,8 +19,7 @@ module pound_analysis_batch
    use pound_structure, only: structure_model, structure_strain_energy
    use pound_ground_motion, only: check_ground_samples
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
-   use pound_newmark, only: newmark_state, newmark_init
-   use pound_newmark_batch, only: batch_lanes, newmark_batch, batch_init, batch_step, batch_lane_state, &
+   use pound_newmark_batch, only: batch_lanes, newmark_batch, batch_start, batch_step, batch_lane_state, &
                                   batch_reset_lane
    use pound_response, only: response_init, response_sample, response_store, response_finish
    use pound_analysis, only: analysis_result, start_result, audit_error, audit_warning_limit, add_warning, &
@@ -41,8 +40,8 @@ contains
    !> tridiagonal path (half-bandwidth 1, every DOF moved by the ground), is a stick (response
    !> points DOFs 1..n, chain storey rows) and has two storeys or more (the one-storey kernel of
    !> `pound_newmark_step` is straight-line code that the compiler fuses differently), and the
-   !> steps are Newmark's (`free_steps = 'newmark'`: the batch has no exact steps); no building has
-   !> bilinear storeys.
+   !> steps are Newmark's (`free_steps = 'newmark'`: the batch has no exact steps; the integrator
+   !> is average acceleration, `analysis_plan%average_acceleration`); no building has bilinear storeys.
    pure logical function batch_eligible(cfg, models)
       !> The analysis plan (`&analysis`).
       type(analysis_plan), intent(in) :: cfg
@@ -50,7 +49,7 @@ contains
       type(structure_model), intent(in) :: models(:)
       integer :: ib
 
-      batch_eligible = size(models) > 0 .and. cfg%free_steps == free_newmark
+      batch_eligible = size(models) > 0 .and. cfg%free_steps == free_newmark .and. cfg%average_acceleration()
       do ib = 1, size(models)
          if (models(ib)%kd /= 1 .or. .not. models(ib)%stick .or. models(ib)%n < 2) batch_eligible = .false.
          ! Bilinear storeys (pound_storey_yield) are stepped by `integrate` only.
@@ -99,7 +98,6 @@ contains
       type(analysis_result), intent(inout) :: res(:)
       !> Whether each motion can run / ran (m1..m2 updated).
       logical, intent(inout) :: ok(:)
-      type(newmark_state) :: st
       type(newmark_batch), allocatable :: bt(:)
       type(lane_peaks), allocatable :: pk(:)
       type(error_type), allocatable :: error
@@ -124,8 +122,7 @@ contains
       allocate (wu(nmax), wv(nmax), wa(nmax))
       do ib = 1, nb
          n = models(ib)%n
-         call newmark_init(st, models(ib), cfg%dt, ag_new(1), error)
-         if (.not. allocated(error)) call batch_init(bt(ib), st, models(ib), ag_new, error)
+         call batch_start(bt(ib), models(ib), cfg%dt, ag_new, error)
          if (allocated(error)) then
             ok(m1:m2) = .false.
             return

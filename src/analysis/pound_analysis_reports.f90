@@ -7,7 +7,6 @@ submodule(pound_analysis) pound_analysis_reports
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_strings, only: mm_text
    use pound_structure, only: building_label => structure_label
-   use pound_newmark, only: newmark_du, newmark_n
    use pound_contact_pair, only: end_mass
    implicit none
 
@@ -28,6 +27,7 @@ contains
       dst%time = src%time
       dst%building = src%building
       dst%energy = src%energy
+      if (allocated(src%numerical)) dst%numerical = src%numerical
       dst%energy_error = src%energy_error
       dst%joints = src%joints
       dst%seconds = src%seconds
@@ -149,7 +149,9 @@ contains
                              ' kN/m, m_eff = '//str(meff)//' t of the facing floors) has a contact '// &
                              'half-period pi sqrt(m_eff/k0) = '//str(half)//' s, '//str(half/dt)// &
                              ' steps of dt = '//str(dt)//' s: not resolved by dt; dt = '//str(0.1_dp*half)// &
-                             ' s (a tenth of it) would resolve it')
+                             ' s (a tenth of it) would resolve it; k0 itself is uncertain: a stiffness '// &
+                             "study (&sweep parameter = 'stiffness', or a law study, &contact variant) "// &
+                             'shows how much the lambdas and impact forces depend on it')
          end associate
       end do
       if (found > 0) return
@@ -167,7 +169,7 @@ contains
    !> ground acceleration so far.
    module subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
       !> Integrator states at the end of the step.
-      type(newmark_state), intent(in), target :: st(:)
+      class(integrator), intent(in), target :: st(:)
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> The contact system.
@@ -182,7 +184,9 @@ contains
       integer, intent(in) :: step
       !> Error state: what is not finite, where and when.
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: e(4), t
+      character(len=*), parameter :: term(n_integrator_energies) = [character(len=21) :: 'input', 'kinetic', &
+                                                                    'strain', 'damping', 'numerical dissipation']
+      real(dp) :: e(n_integrator_energies), t
       integer :: ib, i
       character(len=:), allocatable :: hint
 
@@ -192,12 +196,12 @@ contains
       hint = ': the response overflows (ground acceleration up to '//str(maxval(abs(ag(0:step))))// &
              ' m/s^2 so far); check the size of the ground motion (&ground), the masses and the stiffnesses'
       do ib = 1, size(st)
-         e = newmark_energies(st(ib))
-         do i = 1, 4
+         e = st(ib)%energies()
+         do i = 1, n_integrator_energies
             if (ieee_is_finite(e(i))) cycle
-            call fatal_error(error, building_label(models(ib))//': the '//trim(energy_names(i))// &
+            call fatal_error(error, building_label(models(ib))//': the '//trim(term(i))// &
                              ' energy is not finite at t = '//str(t)//' s (step '//str(step)//') ('// &
-                             str(e(i))//' kJ, largest |u| '//mm_text(maxval(abs(newmark_u(st(ib)))))//')'//hint)
+                             str(e(i))//' kJ, largest |u| '//mm_text(maxval(abs(st(ib)%u_view())))//')'//hint)
             call error_at(error, t, step, building=ib)
             return
          end do
@@ -220,7 +224,7 @@ contains
    !> `error` passed in is kept when everything is finite.
    module subroutine locate_nonfinite(st, models, cs, t, step, error, predicted)
       !> Integrator states.
-      type(newmark_state), intent(in), target :: st(:)
+      class(integrator), intent(in), target :: st(:)
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       !> The contact system.
@@ -252,15 +256,15 @@ contains
          do ib = 1, size(st)
             select case (q)
             case (1)
-               col => newmark_u(st(ib))
+               col => st(ib)%u_view()
             case (2)
-               col => newmark_v(st(ib))
+               col => st(ib)%v_view()
             case (3)
-               col => newmark_a(st(ib))
+               col => st(ib)%a_view()
             case default
-               col => newmark_du(st(ib))
+               col => st(ib)%du_view()
             end select
-            do i = 1, newmark_n(st(ib))
+            do i = 1, st(ib)%dofs()
                x(1) = col(i)
                if (ieee_is_finite(x(1))) cycle
                if (allocated(error)) deallocate (error)
@@ -287,5 +291,36 @@ contains
          end associate
       end do
    end subroutine locate_nonfinite
+
+   !> Hand the histories' blocks over to the sink when one of them is full; the time spent
+   !> is added to `write_ticks`.
+   module subroutine flush_full_blocks(res, sink, coupled, write_ticks, error)
+      !> The result being integrated.
+      type(analysis_result), intent(inout) :: res
+      !> Where the histories are streamed.
+      class(history_sink), intent(inout) :: sink
+      !> Whether the run has constraints.
+      logical, intent(in) :: coupled
+      !> Clock ticks spent writing (added to).
+      integer(int64), intent(inout) :: write_ticks
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer(int64) :: w0, w1
+      integer :: ib
+      logical :: full
+
+      full = .false.
+      do ib = 1, size(res%building)
+         full = full .or. response_block_full(res%building(ib))
+      end do
+      if (.not. full) return
+      call system_clock(w0)
+      do ib = 1, size(res%building)
+         call response_flush(res%building(ib), sink, coupled, ib, .true., error)
+         if (allocated(error)) return
+      end do
+      call system_clock(w1)
+      write_ticks = write_ticks + (w1 - w0)
+   end subroutine flush_full_blocks
 
 end submodule pound_analysis_reports

@@ -26,10 +26,11 @@
 !> the audit checks the step's plastic loads.
 module pound_storey_yield
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str
    use pound_structure, only: structure_model, recovery_rows, recover
-   use pound_newmark, only: newmark_state, newmark_du, newmark_u, newmark_solve, newmark_dt
+   use pound_integrator, only: integrator
+   use pound_analysis_plan, only: analysis_plan
    use pound_contact, only: contact_system, contact_step, contact_release
    use pound_response, only: response_record, q_shear, history_sink, response_flush
    use pound_lemke, only: lemke_workspace, lemke_report, lemke_init, lemke_solve, lemke_status_name
@@ -40,7 +41,7 @@ module pound_storey_yield
    public :: yield_set_init, yield_step, yield_steps, yield_commit, yield_energy_terms, yield_load_work, yield_finish
    public :: stick_khat, stick_active_set
    public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step, &
-             yield_collapsed, yield_hold
+             yield_hold
 
    !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
    real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
@@ -217,31 +218,40 @@ contains
 
    !> Set up the storeys of every building; `inelastic`: some building has bilinear storeys
    !> (`ys` is then allocated, one set a building).
-   subroutine yield_sets_init(ys, models, collapse_drift, inelastic)
+   subroutine yield_sets_init(ys, models, cfg, inelastic, collapsed, error)
       !> One set a building (unallocated when every building is elastic).
       type(storey_yield_set), allocatable, intent(out) :: ys(:)
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
-      !> Storey drift / height at which a building collapses.
-      real(dp), intent(in) :: collapse_drift
-      !> Some building has bilinear storeys.
-      logical, intent(out) :: inelastic
+      !> The analysis plan (`collapse_drift`, the integrator).
+      type(analysis_plan), intent(in) :: cfg
+      !> Some building has bilinear storeys; none has collapsed (false).
+      logical, intent(out) :: inelastic, collapsed
+      !> Error state: bilinear storeys with an integrator other than average acceleration.
+      type(error_type), allocatable, intent(out) :: error
       integer :: ib
 
       inelastic = .false.
+      collapsed = .false.
       do ib = 1, size(models)
-         if (allocated(models(ib)%yield_shear)) inelastic = .true.
+         if (.not. allocated(models(ib)%yield_shear)) cycle
+         inelastic = .true.
+         if (cfg%average_acceleration()) cycle
+         call fatal_error(error, 'building '//models(ib)%name//': bilinear storeys (storey_law = ''bilinear'') '// &
+                          'need integrator = ''newmark'' (or hht_alpha = 0): HHT-alpha with alpha < 0 is not '// &
+                          'available with them')
+         return
       end do
       if (.not. inelastic) return
       allocate (ys(size(models)))
       do ib = 1, size(models)
-         call yield_set_init(ys(ib), models(ib), collapse_drift)
+         call yield_set_init(ys(ib), models(ib), cfg%collapse_drift)
       end do
    end subroutine yield_sets_init
 
    !> Commit a building's storeys after its integrator's commit and `response_sample`: the
    !> storey-shear sample just stored (an output step) becomes the spring forces.
-   subroutine yield_sample(ys, u, t, output, rec)
+   subroutine yield_sample(ys, u, t, output, rec, collapsed)
       !> The building's storeys.
       type(storey_yield_set), intent(inout) :: ys
       !> Committed displacements.
@@ -252,12 +262,15 @@ contains
       logical, intent(in) :: output
       !> The building's response record.
       type(response_record), intent(inout) :: rec
+      !> Set when the building has collapsed (its analysis stops at the end of the step).
+      logical, intent(inout) :: collapsed
 
       if (output .and. rec%store(q_shear)) then
          call yield_commit(ys, u, t, rec%shear(:, rec%n_out))
       else
          call yield_commit(ys, u, t)
       end if
+      if (ys%collapse_storey > 0) collapsed = .true.
    end subroutine yield_sample
 
    !> The energy terms of the step (after the integrators' commits and the sample of the
@@ -285,14 +298,6 @@ contains
          e_out = e_out - yield_load_work(ys)
       end if
    end subroutine yield_energy_step
-
-   !> A building collapsed (its analysis stops at the end of this step).
-   pure logical function yield_collapsed(ys)
-      !> The buildings' storeys.
-      type(storey_yield_set), intent(in) :: ys(:)
-
-      yield_collapsed = any(ys%collapse_storey > 0)
-   end function yield_collapsed
 
    !> After a collapse: the output samples not reached hold the last one taken (energies;
    !> the histories held in memory, or streamed to `sink` block by block); `k` samples were
@@ -413,7 +418,7 @@ contains
       !> The building's storeys.
       type(storey_yield_set), intent(inout) :: ys
       !> Its integrator, with the predicted du.
-      type(newmark_state), intent(inout), target :: st
+      class(integrator), intent(inout), target :: st
       !> Committed displacements.
       real(dp), intent(in) :: u(:)
       !> Time and step, building name, for messages.
@@ -431,7 +436,7 @@ contains
 
       changed = .false.
       if (ys%n == 0) return
-      du => newmark_du(st)
+      du => st%du_view()
       ! The trial (elastic) state: du without this step's plastic loads.
       if (ys%loaded) du = du - ys%xdp
       call drifts(ys, u, ys%dtr, ys%work, du)
@@ -452,10 +457,10 @@ contains
          ys%loaded = .false.
          return
       end if
-      if (newmark_dt(st) /= ys%col_dt) then
+      if (st%step_size() /= ys%col_dt) then
          ys%slot = 0
          ys%n_slots = 0
-         ys%col_dt = newmark_dt(st)
+         ys%col_dt = st%step_size()
          if (ys%stick) call stick_khat(ys, ys%col_dt)
       end if
       ! A stick: the active-set method on the tridiagonal tangent system first (O(n) a pass).
@@ -531,7 +536,7 @@ contains
       !> The buildings' storeys.
       type(storey_yield_set), intent(inout) :: ys(:)
       !> The integrators with the predicted du.
-      type(newmark_state), intent(inout), target :: st(:)
+      class(integrator), intent(inout), target :: st(:)
       !> The contact system (after `contact_step`; m = 0: none).
       type(contact_system), intent(inout) :: cs
       !> The buildings (names for messages).
@@ -548,8 +553,11 @@ contains
          any_change = .false.
          do ib = 1, size(ys)
             if (ys(ib)%n == 0) cycle
-            call yield_step(ys(ib), st(ib), newmark_u(st(ib)), t, step, models(ib)%name, changed, error)
-            if (allocated(error)) return
+            call yield_step(ys(ib), st(ib), st(ib)%u_view(), t, step, models(ib)%name, changed, error)
+            if (allocated(error)) then
+               call error_at(error, t, step)
+               return
+            end if
             any_change = any_change .or. changed
          end do
          if (cs%m == 0) return
@@ -563,16 +571,20 @@ contains
          end if
          call contact_release(cs, st)
          call contact_step(cs, st, t, step, error)
-         if (allocated(error)) return
+         if (allocated(error)) then
+            call error_at(error, t, step)
+            return
+         end if
       end do
       call fatal_error(error, 'the yielding storeys and the joints did not settle in '//str(max_alternations)// &
                        ' alternations of their LCPs at t = '//str(t)//' s (step '//str(step)//'; reduce dt)')
+      call error_at(error, t, step)
    end subroutine yield_steps
 
    !> Column Khat^{-1} b_j of storey j (solved once per dt, kept when the building is small).
    subroutine column_of(ys, st, j, x)
       type(storey_yield_set), intent(inout) :: ys
-      type(newmark_state), intent(in) :: st
+      class(integrator), intent(in) :: st
       integer, intent(in) :: j
       real(dp), intent(out) :: x(:)
       integer :: e
@@ -587,7 +599,7 @@ contains
       do e = ys%rows%start(j), ys%rows%start(j + 1) - 1
          x(ys%rows%dof(e)) = x(ys%rows%dof(e)) + ys%rows%coef(e)
       end do
-      call newmark_solve(st, x)
+      call st%solve(x)
       if (size(ys%col, 2) >= ys%n) then
          ys%n_slots = ys%n_slots + 1
          ys%slot(j) = ys%n_slots
@@ -600,7 +612,7 @@ contains
    !> their response `xdp` and the drifts `dnew` of every storey at the end of the step.
    subroutine solve_rows(ys, st, u, du, t, step, label, error)
       type(storey_yield_set), intent(inout) :: ys
-      type(newmark_state), intent(in) :: st
+      class(integrator), intent(in) :: st
       real(dp), intent(in) :: u(:), du(:)
       real(dp), intent(in) :: t
       integer, intent(in) :: step

@@ -55,8 +55,7 @@ module pound_contact
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: mm_text, str
-   use pound_newmark, only: newmark_state, newmark_predicted, newmark_u_at, newmark_add_response, newmark_path, &
-                            newmark_add_response_rows
+   use pound_integrator, only: integrator
    use pound_structure, only: recovery_rows
    use pound_contact_law, only: is_plastic, yield_segment
    use pound_contact_pair, only: contact_pair, pairs_from_config, end_sign
@@ -107,15 +106,15 @@ contains
       end do
    end function contact_carries_force
 
-   !> Whether a joint can act in the step predicted in `states` (after `newmark_predict`,
+   !> Whether a joint can act in the step predicted in `states` (after `integrator%predict`,
    !> before `contact_step`): one carries force at the start, or one would close with every
    !> force released, at the end of the step (the LCP's q < 0) or inside it (the closing
-   !> displacement along the step's average-acceleration path, a parabola, reaches the gap).
+   !> displacement along the step's path, `integrator%path`, a parabola, reaches the gap).
    logical function contact_may_act(cs, states) result(acts)
       !> The contact system (not changed).
       type(contact_system), intent(in) :: cs
       !> Integrators with the predicted increments du.
-      type(newmark_state), intent(in) :: states(:)
+      class(integrator), intent(in) :: states(:)
       real(dp) :: vmax, q
       integer :: k
 
@@ -145,13 +144,13 @@ contains
       !> The contact system.
       type(contact_system), intent(in) :: cs
       !> Integrators with the predicted increments du.
-      type(newmark_state), intent(in) :: states(:)
+      class(integrator), intent(in) :: states(:)
       !> Joint.
       integer, intent(in) :: k
       real(dp) :: c0, cv, ca, u0, v0, am, s, h
       integer :: e, b
 
-      h = 2.0_dp/cs%c2
+      h = cs%span
       c0 = 0.0_dp
       cv = 0.0_dp
       ca = 0.0_dp
@@ -159,7 +158,7 @@ contains
          b = cs%pair(k)%building(e)
          if (b == 0) cycle
          if (cs%pair(k)%dof(e) > 0) then
-            call newmark_path(states(b), cs%pair(k)%dof(e), u0, v0, am)
+            call states(b)%path(cs%pair(k)%dof(e), u0, v0, am)
          else
             call row_path(cs%pair(k)%end_row(e), states(b), u0, v0, am)
          end if
@@ -174,11 +173,11 @@ contains
       end if
    end function path_closing_max
 
-   !> `newmark_path` of an end that is a row of several DOFs: the row's values of u, v and
+   !> `integrator%path` of an end that is a row of several DOFs: the row's values of u, v and
    !> the average acceleration.
    pure subroutine row_path(row, st, u0, v0, am)
       type(recovery_rows), intent(in) :: row
-      type(newmark_state), intent(in) :: st
+      class(integrator), intent(in) :: st
       real(dp), intent(out) :: u0, v0, am
       real(dp) :: u, v, a
       integer :: i
@@ -187,7 +186,7 @@ contains
       v0 = 0.0_dp
       am = 0.0_dp
       do i = row%start(1), row%start(2) - 1
-         call newmark_path(st, row%dof(i), u, v, a)
+         call st%path(row%dof(i), u, v, a)
          u0 = u0 + row%coef(i)*u
          v0 = v0 + row%coef(i)*v
          am = am + row%coef(i)*a
@@ -216,7 +215,7 @@ contains
       !> The contact system, tracking.
       type(contact_system), intent(inout) :: cs
       !> Integrators with the predicted increments du.
-      type(newmark_state), intent(in) :: states(:)
+      class(integrator), intent(in) :: states(:)
       integer :: k
 
       do k = 1, cs%m
@@ -226,12 +225,12 @@ contains
 
    !> Decide the contact forces at the end of the step and add their effect to du.
    !>
-   !> Call after `newmark_predict` of every building and before `newmark_commit`.
+   !> Call after `integrator%predict` of every building and before `integrator%commit`.
    subroutine contact_step(cs, states, t, step, error)
       !> The contact system.
       type(contact_system), intent(inout) :: cs
       !> Integrators with the predicted increments du.
-      type(newmark_state), intent(inout) :: states(:)
+      class(integrator), intent(inout) :: states(:)
       !> Time at the end of the step (s), for messages.
       real(dp), intent(in) :: t
       !> Step number, for messages.
@@ -268,7 +267,7 @@ contains
       !> The contact system after `contact_step`.
       type(contact_system), intent(inout) :: cs
       !> Integrators.
-      type(newmark_state), intent(inout) :: states(:)
+      class(integrator), intent(inout) :: states(:)
 
       if (cs%m == 0) return
       if (cs%idle) return
@@ -278,7 +277,7 @@ contains
    !> du -= Khat^{-1} B (r_new - r_old), only where the force changed (`undo`: du += ...).
    subroutine apply_force_change(cs, states, undo)
       type(contact_system), intent(inout) :: cs
-      type(newmark_state), intent(inout) :: states(:)
+      class(integrator), intent(inout) :: states(:)
       logical, intent(in) :: undo
       integer :: k, e, b
       real(dp) :: dr
@@ -291,12 +290,12 @@ contains
             b = cs%pair(k)%building(e)
             if (b == 0) cycle
             if (cs%pair(k)%dof(e) > 0) then
-               call newmark_add_response(states(b), -(end_sign(e)*dr), cs%pair(k)%dof(e), cs%y(e, k)%x)
+               call states(b)%add_load(-(end_sign(e)*dr), cs%pair(k)%dof(e), cs%y(e, k)%x)
             else
                associate (row => cs%pair(k)%end_row(e))
                   ! (`contact_init` folded the row's scale into its weights.)
-                  call newmark_add_response_rows(states(b), -(end_sign(e)*dr), row%dof(row%start(1):row%start(2) - 1), &
-                                                 row%coef(row%start(1):row%start(2) - 1), cs%y(e, k)%x)
+                  call states(b)%add_load_rows(-(end_sign(e)*dr), row%dof(row%start(1):row%start(2) - 1), &
+                                               row%coef(row%start(1):row%start(2) - 1), cs%y(e, k)%x)
                end associate
             end if
          end do
@@ -680,12 +679,12 @@ contains
                                                         solutions=nsol, pairs=who))
    end subroutine fallback
 
-   !> Update the joints after `newmark_commit`: compression, statistics and energy.
+   !> Update the joints after `integrator%commit`: compression, statistics and energy.
    subroutine contact_commit(cs, states, t, dt)
       !> The contact system.
       type(contact_system), intent(inout) :: cs
       !> Integrators at the end of the step.
-      type(newmark_state), intent(in) :: states(:)
+      class(integrator), intent(in) :: states(:)
       !> Time at the end of the step (s).
       real(dp), intent(in) :: t
       !> Time step (s).
@@ -708,7 +707,7 @@ contains
    !> end - u): of the displacements predicted for the end of the step, or of the committed.
    subroutine closing_displacements(cs, states, predicted)
       type(contact_system), intent(inout) :: cs
-      type(newmark_state), intent(in) :: states(:)
+      class(integrator), intent(in) :: states(:)
       logical, intent(in) :: predicted
       integer :: k, b
       real(dp) :: v
@@ -753,13 +752,13 @@ contains
       end function row_u
 
       real(dp) function end_u(st, i)
-         type(newmark_state), intent(in) :: st
+         class(integrator), intent(in) :: st
          integer, intent(in) :: i
 
          if (predicted) then
-            end_u = newmark_predicted(st, i)
+            end_u = st%predicted(i)
          else
-            end_u = newmark_u_at(st, i)
+            end_u = st%u_at(i)
          end if
       end function end_u
    end subroutine closing_displacements

@@ -8,7 +8,7 @@ module pound_contact_system
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_newmark, only: newmark_state, newmark_solve, newmark_n, newmark_dt
+   use pound_integrator, only: integrator, trapezoid_rate
    use pound_structure, only: structure_model, structure_end_row
    use pound_contact_law, only: is_plastic, rate_trapezoidal
    use pound_contact_pair, only: contact_pair, end_sign, end_value, end_load, end_mass, end_single_dof
@@ -56,8 +56,10 @@ module pound_contact_system
       real(dp), allocatable :: f(:, :)
       !> Per joint: phat = k0 + a c, beta = k0/phat, dashpot rate coefficients a, b.
       real(dp), allocatable :: phat(:), beta(:), rate_a(:), rate_b(:)
-      !> Newmark c2 = 2/dt.
-      real(dp) :: c2 = 0.0_dp
+      !> The integrator's velocity per displacement increment (`integrator%velocity_rate`), the
+      !> dashpot rate coefficient of a joint whose compression rate follows the structure's
+      !> step (`rate_trapezoidal`), and the span of the step's path (`integrator%path_span`).
+      real(dp) :: rate = 0.0_dp, span = 0.0_dp
       !> Largest LCP size (rows) the workspace holds.
       integer :: n_max = 0
       !> Step work arrays: contact q, new forces and plastic increments, LCP data.
@@ -118,7 +120,7 @@ contains
       !> The constraints (ends, gaps, laws).
       type(contact_pair), intent(in) :: pairs(:)
       !> Initialised integrators (their factored Khat).
-      type(newmark_state), intent(in) :: states(:)
+      class(integrator), intent(in) :: states(:)
       !> The structural models of the integrators (the DOF of each floor).
       type(structure_model), intent(in) :: models(:)
       !> Error state.
@@ -144,9 +146,9 @@ contains
                   return
                end if
                if (any(row%dof(row%start(1):row%start(2) - 1) < 1 .or. &
-                       row%dof(row%start(1):row%start(2) - 1) > newmark_n(states(b)))) then
+                       row%dof(row%start(1):row%start(2) - 1) > states(b)%dofs())) then
                   call fatal_error(error, 'contact '//pairs(k)%label//': an end row names a DOF outside '// &
-                                   'building '//models(b)%name//' (1..'//str(newmark_n(states(b)))//')')
+                                   'building '//models(b)%name//' (1..'//str(states(b)%dofs())//')')
                   return
                end if
                ! The scale folded into the weights (scale 1: the step passes the weights to the
@@ -172,15 +174,15 @@ contains
          do e = 1, 2
             b = pairs(k)%building(e)
             if (b == 0) cycle
-            allocate (y(e, k)%x(newmark_n(states(b))), stat=stat)
+            allocate (y(e, k)%x(states(b)%dofs()), stat=stat)
             if (stat /= 0) then
                call fatal_error(error, 'contact '//pairs(k)%label//': cannot allocate Khat^{-1} B ('// &
-                                str(newmark_n(states(b)))//' reals per pair end; fewer pairs or storeys)')
+                                str(states(b)%dofs())//' reals per pair end; fewer pairs or storeys)')
                return
             end if
             y(e, k)%x = 0.0_dp
             call end_load(located(k), e, y(e, k)%x)
-            call newmark_solve(states(b), y(e, k)%x)
+            call states(b)%solve(y(e, k)%x)
             if (.not. all(ieee_is_finite(y(e, k)%x))) then
                call fatal_error(error, 'contact '//pairs(k)%label//': Khat^{-1} B (the response of the '// &
                                 'building to a unit force at floor '//str(pairs(k)%floor(e))//') is not '// &
@@ -210,8 +212,9 @@ contains
             return
          end if
       end do
-      call contact_init_flexibility(cs, located, f, newmark_dt(states(1)), error)
+      call contact_init_flexibility(cs, located, f, states(1)%step_size(), error, states(1)%velocity_rate())
       if (allocated(error)) return
+      cs%span = states(1)%path_span()
       call move_alloc(y, cs%y)
    end subroutine contact_init
 
@@ -244,7 +247,7 @@ contains
 
    !> Set up the joints for a given condensed flexibility F (the structure enters only
    !> through F and v_pred, so F = 0 drives the joints by prescribed closing displacements).
-   subroutine contact_init_flexibility(cs, pairs, f, dt, error)
+   subroutine contact_init_flexibility(cs, pairs, f, dt, error, rate)
       !> The contact system.
       type(contact_system), intent(out) :: cs
       !> The constraints (ends, gaps, laws).
@@ -255,6 +258,9 @@ contains
       real(dp), intent(in) :: dt
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      !> The integrator's velocity per displacement increment (1/s; default: the trapezoidal
+      !> rule's, `trapezoid_rate`).
+      real(dp), intent(in), optional :: rate
       integer :: k, m, ns, e
 
       m = size(pairs)
@@ -263,7 +269,12 @@ contains
       cs%f = f
       allocate (cs%joint(m), cs%stats%events(0))
       if (m == 0) return
-      cs%c2 = 2.0_dp/dt
+      if (present(rate)) then
+         cs%rate = rate
+      else
+         cs%rate = trapezoid_rate(dt)
+      end if
+      cs%span = dt
       allocate (cs%phat(m), cs%beta(m), cs%rate_a(m), cs%rate_b(m), cs%q(m), cs%vp(m), cs%r_new(m), &
                 cs%x_new(m), cs%in_lcp(m), cs%yrow(m), cs%nh(m), cs%phat_inv(m), cs%wm(m), cs%role(m), stat=k)
       if (k /= 0) then
@@ -278,7 +289,7 @@ contains
                return
             end if
             if (law%dashpot_rate == rate_trapezoidal) then
-               cs%rate_a(k) = cs%c2
+               cs%rate_a(k) = cs%rate
                cs%rate_b(k) = 1.0_dp
             else
                cs%rate_a(k) = 1.0_dp/dt
@@ -359,7 +370,7 @@ contains
 
 
    !> Exchange the data that depend on the time step (Khat^{-1} B, F, the joints' phat, beta
-   !> and dashpot rate coefficients, c2) with `other`, a contact system of the same
+   !> and dashpot rate coefficients, the integrator's rate and path span) with `other`, a contact system of the same
    !> constraints initialised for another dt; the joints' state and the statistics stay.
    !> No copy, no allocation (`move_alloc`); swapping back restores both.
    subroutine contact_swap_step(cs, other)
@@ -370,7 +381,8 @@ contains
       type(column), allocatable :: ty(:, :)
       type(active_set_workspace), allocatable :: ta
 
-      call swap(cs%c2, other%c2)
+      call swap(cs%rate, other%rate)
+      call swap(cs%span, other%span)
       call move_alloc(cs%y, ty)
       call move_alloc(other%y, cs%y)
       call move_alloc(ty, other%y)

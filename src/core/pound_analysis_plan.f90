@@ -12,6 +12,7 @@
 !> | `impact_substeps` | `impact_substeps` (0: from the joints' contact half-periods) |
 !> | `free_steps` | `free_steps`: `free_newmark` ('newmark') or `free_exact` ('exact') |
 !> | `lcp_solver` | `lcp_solver`: `lcp_auto` ('auto') or `lcp_lemke` ('lemke') |
+!> | `integrator`, `hht_alpha` | `integrator`: `integrator_newmark` ('newmark') or `integrator_hht` ('hht'); `hht_alpha` |
 module pound_analysis_plan
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
@@ -21,6 +22,7 @@ module pound_analysis_plan
 
    public :: analysis_plan, steps_of, steps_of_int64, output_steps
    public :: stepping_uniform, stepping_impact, free_newmark, free_exact, lcp_auto, lcp_lemke
+   public :: integrator_newmark, integrator_hht
 
    !> Stepping policy of the coupled analysis: every step dt, or a step in which a joint is
    !> closed or predicted to close taken as `impact_substeps` substeps.
@@ -31,6 +33,8 @@ module pound_analysis_plan
    !> LCP method of the coupled steps: the active-set method where it applies (Lemke
    !> otherwise), or Lemke at every step.
    integer, parameter :: lcp_auto = 1, lcp_lemke = 2
+   !> Time integrator: Newmark average acceleration or HHT-alpha.
+   integer, parameter :: integrator_newmark = 1, integrator_hht = 2
 
    !> What the time integration does, decided once from `&analysis`.
    type :: analysis_plan
@@ -56,12 +60,28 @@ module pound_analysis_plan
       integer :: lcp_solver = lcp_auto
       !> A building with bilinear storeys collapses when a storey's drift / height passes this.
       real(dp) :: collapse_drift = 0.10_dp
+      !> Time integrator (`integrator_newmark`, `integrator_hht`) and HHT-alpha's alpha.
+      integer :: integrator = integrator_newmark
+      real(dp) :: hht_alpha = 0.0_dp
    contains
+
       !> Number of output samples of a whole history (t = 0 included).
       procedure :: outputs => plan_outputs
+      !> Whether the steps are Newmark's average acceleration (HHT-alpha with alpha = 0 is).
+      procedure :: average_acceleration => plan_average_acceleration
    end type analysis_plan
 
 contains
+
+   !> Whether the steps are Newmark's average acceleration: integrator = 'newmark', or 'hht'
+   !> with alpha = 0 (beta = 1/4, gamma = 1/2 and no alpha term: the same method, so the same
+   !> code and the same numbers).
+   pure logical function plan_average_acceleration(plan)
+      !> The plan.
+      class(analysis_plan), intent(in) :: plan
+
+      plan_average_acceleration = plan%integrator == integrator_newmark .or. plan%hht_alpha == 0.0_dp
+   end function plan_average_acceleration
 
    !> Number of time steps of a run of duration `t_end` with step `dt`: nint(t_end/dt), the
    !> one place this is computed (a validated deck has at most 10^9 steps: a default integer).

@@ -8,7 +8,7 @@ module pound_contact_settings
    implicit none
    private
 
-   public :: contact_config
+   public :: contact_config, contact_variant
 
    !> `&contact`: unilateral constraints between facing floors of two buildings.
    !>
@@ -45,6 +45,21 @@ module pound_contact_settings
       !> chords per curved branch.
       real(dp) :: peak_force = 0.0_dp, peak_penetration = 0.0_dp, fracture_penetration = 0.0_dp
       integer :: n_segments = 8
+      !> Law-study variant the group belongs to (`&contact variant`); blank: the deck's own
+      !> joints (the study's base).
+      character(len=32) :: variant = ''
+      !> How the stiffness was found when the deck gives none (the default's rule, for the
+      !> listing); blank: given by the deck.
+      character(len=:), allocatable :: stiffness_rule
    end type contact_config
+
+   !> A law-study variant: the `&contact` groups of one `variant` name, the same pairs as the
+   !> base with other laws (`pound_deck_study`).
+   type :: contact_variant
+      !> The variant's name as the deck gives it.
+      character(len=32) :: name = ''
+      !> Its groups, in deck order.
+      type(contact_config), allocatable :: contacts(:)
+   end type contact_variant
 
 end module pound_contact_settings

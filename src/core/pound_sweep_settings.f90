@@ -25,6 +25,12 @@ module pound_sweep_settings
          [spread(.true., 1, n_history_quantities), .false., .false.]
       !> Tolerance (m) of the bisection refinement of a suite's threshold gaps (pound_suite).
       real(dp) :: refine_tolerance = 1.0e-5_dp
+      !> What the sweep varies: 'gap' (the gap sweep above, `active`), 'stiffness' or
+      !> 'restitution' (a joint study, `pound_joint_study`: `active` stays false).
+      character(len=16) :: parameter = 'gap'
+      !> The values of a stiffness (kN/m) or restitution sweep, in the deck's order (listed or
+      !> spaced from `value_from` to `value_to`); unallocated for a gap sweep.
+      real(dp), allocatable :: values(:)
    end type sweep_config
 
 end module pound_sweep_settings

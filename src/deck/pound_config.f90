@@ -10,11 +10,12 @@ module pound_config
                                q_column_shear, q_column_moment
    use pound_sweep_settings, only: sweep_config
    use pound_code_factors, only: code_factors
-   use pound_contact_settings, only: contact_config
+   use pound_contact_settings, only: contact_config, contact_variant
    implicit none
    private
 
-   public :: analysis_config, ground_config, building_config, code_factors, contact_config, sweep_config, deck_type
+   public :: analysis_config, ground_config, building_config, code_factors, contact_config, sweep_config, deck_type, &
+             contact_variant
    public :: is_frame, deck_warning_len
    ! The quantities (pound_quantities), named here too for the deck's readers.
    public :: n_history_quantities, history_names, n_target_quantities, target_names, q_column_shear, q_column_moment
@@ -54,6 +55,10 @@ module pound_config
       !> LCP method of the coupled steps: 'auto' (the active-set method for steps whose acting
       !> joints are all elastic, Lemke otherwise and when it fails) or 'lemke' (every step).
       character(len=8) :: lcp_solver = 'auto'
+      !> Time integrator: 'newmark' (average acceleration) or 'hht' (HHT-alpha).
+      character(len=8) :: integrator = 'newmark'
+      !> HHT-alpha's alpha, in [-1/3, 0] (integrator = 'hht').
+      real(dp) :: hht_alpha = -0.05_dp
    end type analysis_config
 
    !> `&ground`: one ground motion (a deck with several `&ground` groups is a suite).
@@ -180,6 +185,9 @@ module pound_config
       type(building_config), allocatable :: buildings(:)
       !> `&contact` occurrences (size 0 when the deck declares none).
       type(contact_config), allocatable :: contacts(:)
+      !> Law-study variants (`&contact variant = 'name'`; size 0: no law study). `contacts`
+      !> holds the groups without a variant, the study's base.
+      type(contact_variant), allocatable :: variants(:)
       !> `&sweep` (inactive when the deck has none).
       type(sweep_config) :: sweep
       !> Plausibility warnings of the deck's values (one line each, 'deck.nml:12: &group: ...',

@@ -68,6 +68,7 @@ module pound_deck
    use pound_deck_ground, only: read_ground
    use pound_deck_lexer, only: find_single, group_ref, normalize_text, scan_groups
    use pound_deck_sweep, only: read_sweep
+   use pound_deck_study, only: split_variants, check_parameter_sweep
    use pound_deck_variables, only: max_name_length, max_pairs, max_storeys
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
@@ -168,14 +169,19 @@ contains
          k = k + 1
          call read_contact(path, text, groups(i), d%buildings, d%contacts(k), error)
          if (allocated(error)) return
-         call add_contact_points(d%contacts(k), d%buildings)
+         ! A law-study variant has the base's pairs (pound_deck_study): no points of its own.
+         if (len_trim(d%contacts(k)%variant) == 0) call add_contact_points(d%contacts(k), d%buildings)
       end do
+      call split_variants(path, groups(1:n_groups), d, error)
+      if (allocated(error)) return
       k = count([(groups(i)%name == 'sweep', i=1, n_groups)])
       if (k == 0) return
       call find_single(path, groups(1:n_groups), 'sweep', 'gap_from, gap_to, n_gaps', i, error)
       if (allocated(error)) return
       call read_sweep(path, text, groups(i), size(d%contacts), &
                       any([(is_frame(d%buildings(k)), k=1, size(d%buildings))]), d%sweep, error)
+      if (allocated(error)) return
+      call check_parameter_sweep(path, groups(i), d, error)
    end subroutine parse_deck
 
    !> The pairs of `c` between floors (by elevation) become column nodes of the frames: the

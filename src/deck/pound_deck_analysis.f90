@@ -1,5 +1,5 @@
 !> Reader of `&analysis`: title, dt, t_end, output_every, history, stepping, impact_substeps,
-!> compress, node_histories, lcp_solver, free_steps, collapse_drift.
+!> compress, node_histories, lcp_solver, free_steps, integrator, hht_alpha, collapse_drift.
 module pound_deck_analysis
    use pound_config, only: analysis_config
    use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
@@ -30,15 +30,15 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=title_len) :: title
       character(len=path_len) :: history
-      character(len=word_len) :: stepping, lcp_solver, free_steps
-      real(dp) :: dt, t_end, collapse_drift
+      character(len=word_len) :: stepping, lcp_solver, free_steps, integrator
+      real(dp) :: dt, t_end, hht_alpha, collapse_drift
       integer :: output_every, ios, impact_substeps
       logical :: compress, node_histories
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
       namelist /analysis/ title, dt, t_end, output_every, history, stepping, impact_substeps, compress, &
-                          node_histories, lcp_solver, free_steps, collapse_drift
+                          node_histories, lcp_solver, free_steps, integrator, hht_alpha, collapse_drift
 
       title = ' '
       history = ' '
@@ -51,6 +51,8 @@ contains
       node_histories = .false.
       lcp_solver = 'auto'
       free_steps = 'newmark'
+      integrator = 'newmark'
+      hht_alpha = unset_real
       collapse_drift = 0.10_dp
       at = site_of(path, g)
       call group_text(text, g, buf)
@@ -108,12 +110,38 @@ contains
       if (allocated(error)) return
       call one_of('free_steps', free_steps, 'newmark', 'exact', cfg%free_steps)
       if (allocated(error)) return
+      call one_of('integrator', integrator, 'newmark', 'hht', cfg%integrator)
+      if (allocated(error)) return
+      call read_hht(error)
+      if (allocated(error)) return
       call check_real(at, 'collapse_drift', collapse_drift, '>', 0.0_dp, error)
       if (allocated(error)) return
       cfg%collapse_drift = collapse_drift
       call parse_history(at, history, cfg%store, error)
 
    contains
+
+      !> `hht_alpha` (only with integrator = 'hht'; default `cfg%hht_alpha`) in [-1/3, 0], and
+      !> HHT-alpha without exact free steps.
+      subroutine read_hht(error)
+         type(error_type), allocatable, intent(out) :: error
+
+         if (cfg%integrator /= 'hht') then
+            if (hht_alpha /= unset_real) call fail(at, 'hht_alpha', "hht_alpha is only for integrator = 'hht' "// &
+                                                   "(integrator = '"//trim(cfg%integrator)//"')", error)
+            return
+         end if
+         if (hht_alpha /= unset_real) then
+            if (.not. (hht_alpha >= -1.0_dp/3.0_dp .and. hht_alpha <= 0.0_dp)) then
+               call fail(at, 'hht_alpha', 'hht_alpha = '//str(hht_alpha)//', must be in [-1/3, 0]', error)
+               return
+            end if
+            cfg%hht_alpha = hht_alpha
+         end if
+         if (cfg%free_steps == 'exact') call fail(at, 'free_steps', "free_steps = 'exact' is for integrator = "// &
+                                                 "'newmark' only (integrator = 'hht': every step is HHT-alpha's)", &
+                                                 error)
+      end subroutine read_hht
 
       !> A text variable that must be `a` or `b` (any case, blanks around): `word` set, or
       !> `error`.

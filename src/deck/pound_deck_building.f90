@@ -4,10 +4,10 @@
 module pound_deck_building
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_config, only: building_config, deck_warning_len
-   use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, require_real, &
+   use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, require_real, widen, &
                                 site, site_of, take_ints, take_reals, unset_int, unset_real, warn
    use pound_deck_storey_law, only: take_storey_law
-   use pound_deck_lexer, only: group_ref, group_text, is_name_char, lower
+   use pound_deck_lexer, only: group_extent, group_ref, group_text, is_name_char, lower
    use pound_deck_variables, only: max_name_length, max_storeys, word_len, max_bays, max_column_elements, &
                                    frame_variables
    use pound_error, only: error_type
@@ -53,7 +53,7 @@ contains
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
-      integer :: ios, n, i
+      integer :: ios, n, i, cap
       namelist /building/ name, n_storeys, height, mass, load_coeff, ref_floor_load, stiffness, &
          n_columns, e_modulus, inertia, column_ends, damping_ratio, damping_modes, p_delta, &
          gravity_load, model, n_bays, bay_width, column_e, column_area, column_inertia, beam_e, &
@@ -61,9 +61,12 @@ contains
          geometric, cd, importance, behaviour_factor, response_reduction, storey_law, yield_shear, &
          hardening_ratio
 
-      allocate (height(max_storeys), mass(max_storeys), load_coeff(max_storeys), &
-                stiffness(max_storeys), e_modulus(max_storeys), inertia(max_storeys), &
-                gravity_load(max_storeys), n_columns(max_storeys))
+      ! The per-storey arrays as long as the deck's highest element (the lexer checked it
+      ! against max_storeys), widened to n_storeys once it is known: a few storeys do not
+      ! touch max_storeys elements of each.
+      cap = group_extent(g)
+      allocate (height(cap), mass(cap), load_coeff(cap), stiffness(cap), e_modulus(cap), &
+                inertia(cap), gravity_load(cap), n_columns(cap))
       name = ' '
       column_ends = ' '
       n_storeys = unset_int
@@ -92,10 +95,9 @@ contains
       rigid_diaphragm = .false.
       rigid_columns = .false.
       storey_law = ' '
-      allocate (yield_shear(max_storeys), hardening_ratio(max_storeys), source=unset_real)
-      allocate (bay_width(max_bays), column_e(max_storeys), column_area(max_storeys), &
-                column_inertia(max_storeys), beam_e(max_storeys), beam_area(max_storeys), &
-                beam_inertia(max_storeys))
+      allocate (yield_shear(cap), hardening_ratio(cap), source=unset_real)
+      allocate (bay_width(max_bays), column_e(cap), column_area(cap), column_inertia(cap), &
+                beam_e(cap), beam_area(cap), beam_inertia(cap))
       bay_width = unset_real
       column_e = unset_real
       column_area = unset_real
@@ -126,6 +128,22 @@ contains
       end if
       n = n_storeys
       cfg%n_storeys = n
+      if (n > cap) then
+         call widen(height, n)
+         call widen(mass, n)
+         call widen(load_coeff, n)
+         call widen(stiffness, n)
+         call widen(e_modulus, n)
+         call widen(inertia, n)
+         call widen(gravity_load, n)
+         call widen(n_columns, n)
+         call widen(column_e, n)
+         call widen(column_area, n)
+         call widen(column_inertia, n)
+         call widen(beam_e, n)
+         call widen(beam_area, n)
+         call widen(beam_inertia, n)
+      end if
 
       call take_reals(at, 'height', height, n, '>', cfg%height, error)
       if (allocated(error)) return

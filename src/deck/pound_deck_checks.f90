@@ -19,7 +19,7 @@ module pound_deck_checks
    end interface given_count
 
    public :: check_plausible, check_real, fail, warn, site_text, given_count, is_set, parse_history, read_failed, &
-             require_real, site, site_of, take_ints, take_reals, unset_int, unset_real, values_text
+             require_real, site, site_of, take_ints, take_reals, unset_int, unset_real, values_text, widen
 
    !> Marks namelist values the deck did not give.
    real(dp), parameter :: unset_real = -huge(1.0_dp)
@@ -104,6 +104,13 @@ module pound_deck_checks
       bound_t('contact:envelope_r', 0.0_dp, 1.0e10_dp, 'kN', .false.), &
       bound_t('sweep:target_lambda', 0.0_dp, 1.0e6_dp, '%', .false.), &
       bound_t('sweep:refine_tolerance', 1.0e-9_dp, 1.0_dp, 'm', .false.)]
+
+
+   !> `call widen(raw, n)`: lengthen a namelist array as read to `n` elements, the new ones
+   !> unset (`unset_real`, `unset_int`).
+   interface widen
+      module procedure widen_real, widen_int
+   end interface widen
 
 contains
 
@@ -209,6 +216,32 @@ contains
       end do
       k = 0
    end function given_count_int
+
+   !> Lengthen the real namelist array `raw` to `n` elements, the new ones `unset_real`.
+   pure subroutine widen_real(raw, n)
+      !> Namelist array as read.
+      real(dp), allocatable, intent(inout) :: raw(:)
+      !> New length (>= its length).
+      integer, intent(in) :: n
+      real(dp), allocatable :: wide(:)
+
+      allocate (wide(n), source=unset_real)
+      wide(1:size(raw)) = raw
+      call move_alloc(wide, raw)
+   end subroutine widen_real
+
+   !> Lengthen the integer namelist array `raw` to `n` elements, the new ones `unset_int`.
+   pure subroutine widen_int(raw, n)
+      !> Namelist array as read.
+      integer, allocatable, intent(inout) :: raw(:)
+      !> New length (>= its length).
+      integer, intent(in) :: n
+      integer, allocatable :: wide(:)
+
+      allocate (wide(n), source=unset_int)
+      wide(1:size(raw)) = raw
+      call move_alloc(wide, raw)
+   end subroutine widen_int
 
    !> Check a per-storey real array (exactly `n` values, each finite and `rule` 0); return them.
    pure subroutine take_reals(at, var, raw, n, rule, values, error)

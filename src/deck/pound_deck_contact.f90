@@ -8,6 +8,7 @@ module pound_deck_contact
    use pound_law_registry, only: registered_law_names, law_is_registered, law_reads, law_restitution, law_take_deck
    use pound_joint_law, only: law_input
    use pound_deck_variables, only: max_envelope_points, max_pairs, word_len
+   use pound_deck_stiffness, only: stiffness_has_default, default_joint_stiffness
    use pound_error, only: error_type
    use pound_kinds, only: dp
    use pound_strings, only: str
@@ -35,7 +36,7 @@ contains
       type(contact_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      character(len=word_len) :: left, right, law, dashpot_rate
+      character(len=word_len) :: left, right, law, dashpot_rate, variant
       integer, allocatable :: floors_left(:), floors_right(:)
       real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:), elevations(:)
       real(dp) :: stiffness, dashpot, yield_force, second_slope, peak_force, peak_penetration, &
@@ -48,7 +49,7 @@ contains
       integer :: ios, n, k, i
       namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot, &
          dashpot_rate, yield_force, second_slope, envelope_d, envelope_r, peak_force, peak_penetration, &
-         fracture_penetration, n_segments, restitution, elevations
+         fracture_penetration, n_segments, restitution, elevations, variant
 
       ! One slot more than allowed, so that too many pairs get our message, not gfortran's.
       allocate (floors_left(max_pairs + 1), floors_right(max_pairs + 1), gap(max_pairs + 1), &
@@ -58,6 +59,7 @@ contains
       right = ' '
       law = ' '
       dashpot_rate = 'backward_euler'
+      variant = ' '
       floors_left = unset_int
       floors_right = unset_int
       gap = unset_real
@@ -178,6 +180,17 @@ contains
       if (allocated(error)) return
       call unused('n_segments', n_segments /= unset_int, error)
       if (allocated(error)) return
+
+      ! No stiffness: the default of the facing floors (pound_deck_stiffness), as if given.
+      if (.not. is_set(stiffness) .and. stiffness_has_default(cfg%law) .and. law_reads(cfg%law, 'stiffness')) then
+         call default_joint_stiffness(at, cfg, buildings, stiffness, cfg%stiffness_rule, error)
+         if (allocated(error)) return
+      end if
+      if (len_trim(variant) > 32) then
+         call fail(at, 'variant', "variant = '"//trim(adjustl(variant))//"' is longer than 32 characters", error)
+         return
+      end if
+      cfg%variant = trim(adjustl(variant))
 
       ! The law's own variables, checked by the law's module (pound_law_registry).
       raw = law_input(stiffness=stiffness, yield_force=yield_force, second_slope=second_slope, &

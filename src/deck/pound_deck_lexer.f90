@@ -4,14 +4,13 @@
 !> subscript, value types, repeat counts, sizes, duplicates) before gfortran reads it.
 module pound_deck_lexer
    use, intrinsic :: iso_fortran_env, only: int64
-   use pound_deck_variables, only: group_max_size, group_variable_count, known_groups, known_variable, &
-                                   variable_index, variable_list, variable_type
+   use pound_deck_variables, only: known_groups, known_variable, variable_list, variable_type
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: decimal_exponent, number_end, shorten, str
    implicit none
    private
 
-   public :: base_name, find_single, group_label, group_ref, group_text, is_name_char, lower, &
+   public :: base_name, find_single, group_extent, group_label, group_ref, group_text, is_name_char, lower, &
              normalize_text, scan_groups
 
    character(len=*), parameter :: lf = achar(10), cr = achar(13), tab = achar(9)
@@ -373,10 +372,10 @@ contains
       type(group_ref), intent(inout) :: g
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      integer, allocatable :: starts(:), eqs(:), owner(:, :)
+      integer, allocatable :: starts(:), eqs(:)
       character(len=:), allocatable :: label, left, right, designator, vname, why
       character :: vtype
-      integer :: na, k, m, neq, first, last, vsize, lo, hi_lim, line, i, rep, tline, iv
+      integer :: na, k, m, neq, first, last, vsize, lo, hi_lim, line, i, rep, tline, before
       integer(int64) :: positions, hi
       logical :: seen, null
 
@@ -415,8 +414,7 @@ contains
       if (g%name == 'contact' .and. len(left) > 0 .and. len(right) > 0) &
          label = label//' ('//printable(left)//', '//printable(right)//')'
 
-      ! Pass 2: each assignment. owner(e, iv): line that gave element e of variable iv.
-      allocate (owner(group_max_size(g%name), group_variable_count(g%name)), source=0)
+      ! Pass 2: each assignment, checked against the group's earlier ones (`earlier_owner`).
       do m = 1, na
          k = starts(m)
          line = toks%t(4, k)
@@ -494,20 +492,18 @@ contains
             call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
             return
          end if
-         iv = variable_index(g%name, vname)
-         do k = lo, int(hi)
-            if (owner(k, iv) == 0) cycle
+         call earlier_owner(g, vname, lo, int(hi), k, before)
+         if (k > 0) then
             if (vsize > 0) then
                why = vname//'('//str(k)//') is given twice (also on line '// &
-                     str(owner(k, iv))//'); give each value once per group'
+                     str(before)//'); give each value once per group'
             else
-               why = vname//' is given twice (also on line '//str(owner(k, iv))// &
+               why = vname//' is given twice (also on line '//str(before)// &
                      '); give each variable once per group'
             end if
             call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
             return
-         end do
-         owner(lo:int(hi), iv) = line
+         end if
          call add_var(g, vname, line, lo, int(hi))
       end do
    end subroutine check_assignments
@@ -740,6 +736,46 @@ contains
    end function name_end
 
    !> Record an assignment of `name` on `line` in group `g`, covering elements `lo`..`hi`
+   !> The highest element any assignment of group `g` gives (at least 1): the length a
+   !> namelist array of the group needs to read the deck's values.
+   pure integer function group_extent(g) result(n)
+      !> The group occurrence, scanned.
+      type(group_ref), intent(in) :: g
+      integer :: j
+
+      n = 1
+      do j = 1, g%n_vars
+         n = max(n, g%vars(j)%hi)
+      end do
+   end function group_extent
+
+   !> The first element `k` of `lo..hi` of variable `name` that an earlier assignment of group
+   !> `g` gave, and the `line` of that assignment (k = 0: none). Each element is given at most
+   !> once (a second time is an error), so the earlier assignments do not overlap each other.
+   pure subroutine earlier_owner(g, name, lo, hi, k, line)
+      !> The group occurrence, with the assignments seen so far.
+      type(group_ref), intent(in) :: g
+      !> Variable name, lower case.
+      character(len=*), intent(in) :: name
+      !> First and last element of the new assignment (hi < lo: none).
+      integer, intent(in) :: lo, hi
+      !> First element given before (0: none) and the line that gave it.
+      integer, intent(out) :: k, line
+      integer :: j, first
+
+      k = 0
+      line = 0
+      do j = 1, g%n_vars
+         if (g%vars(j)%name /= name) cycle
+         first = max(lo, g%vars(j)%lo)
+         if (first > min(hi, g%vars(j)%hi)) cycle
+         if (k == 0 .or. first < k) then
+            k = first
+            line = g%vars(j)%line
+         end if
+      end do
+   end subroutine earlier_owner
+
    !> (scalars: 1..1; `hi < lo` when only null values were given).
    pure subroutine add_var(g, name, line, lo, hi)
       !> Group the assignment belongs to.

@@ -1,9 +1,10 @@
 !> Reader of `&sweep`: the range of seismic-joint gaps and the optional target for |lambda|.
 module pound_deck_sweep
    use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment
-   use pound_deck_checks, only: check_real, fail, is_set, parse_history, read_failed, require_real, &
+   use pound_deck_checks, only: check_real, fail, given_count, is_set, parse_history, read_failed, require_real, &
                                 site, site_of, unset_int, unset_real
    use pound_deck_lexer, only: group_ref, group_text, lower
+   use pound_deck_study, only: take_parameter_sweep, max_study_values
    use pound_deck_variables, only: path_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
@@ -31,13 +32,16 @@ contains
       type(sweep_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: gap_from, gap_to, target_lambda, refine_tolerance
-      integer :: n_gaps, ios
+      real(dp) :: gap_from, gap_to, target_lambda, refine_tolerance, value_from, value_to
+      real(dp), allocatable :: values(:)
+      integer :: n_gaps, ios, n_values
       character(len=path_len) :: target_quantities
+      character(len=64) :: parameter, spacing
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
-      namelist /sweep/ gap_from, gap_to, n_gaps, target_lambda, target_quantities, refine_tolerance
+      namelist /sweep/ gap_from, gap_to, n_gaps, target_lambda, target_quantities, refine_tolerance, &
+         parameter, values, value_from, value_to, n_values, spacing
 
       gap_from = unset_real
       gap_to = unset_real
@@ -45,6 +49,14 @@ contains
       refine_tolerance = unset_real
       n_gaps = unset_int
       target_quantities = 'u a_abs drift storey_shear'
+      parameter = 'gap'
+      spacing = ' '
+      value_from = unset_real
+      value_to = unset_real
+      n_values = unset_int
+      ! One slot more than allowed, so that too many values get our message.
+      allocate (values(max_study_values + 1))
+      values = unset_real
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -54,6 +66,21 @@ contains
       if (n_contacts == 0) then
          call fail(at, 'gap_from', 'a sweep varies the gaps of the &contact groups, and the deck '// &
                    'has none', error)
+         return
+      end if
+      if (lower(trim(adjustl(parameter))) /= 'gap') then
+         ! A stiffness or restitution sweep (pound_deck_study): the gap variables are refused.
+         call take_parameter_sweep(at, parameter, values, value_from, value_to, n_values, spacing, &
+                                   is_set(gap_from) .or. is_set(gap_to) .or. n_gaps /= unset_int, cfg, error)
+         if (allocated(error)) return
+         call take_target(error)
+         return
+      end if
+      if (given_count(values) > 0 .or. is_set(value_from) .or. is_set(value_to) .or. n_values /= unset_int .or. &
+          len_trim(spacing) > 0) then
+         call fail(at, 'parameter', "values, value_from, value_to, n_values and spacing are for parameter = "// &
+                   "'stiffness' or 'restitution'; a gap sweep (parameter = 'gap', the default) takes gap_from, "// &
+                   'gap_to and n_gaps', error)
          return
       end if
       call require_real(at, 'gap_from', gap_from, 'first gap in m', error)
@@ -72,36 +99,47 @@ contains
          call fail(at, 'n_gaps', 'n_gaps = '//str(n_gaps)//', must be in 2..10000', error)
          return
       end if
-      if (is_set(target_lambda)) then
-         call check_real(at, 'target_lambda', target_lambda, '>', 0.0_dp, error)
-         if (allocated(error)) return
-         cfg%target = target_lambda
-      end if
-      if (is_set(refine_tolerance)) then
-         call check_real(at, 'refine_tolerance', refine_tolerance, '>', 0.0_dp, error)
-         if (allocated(error)) return
-         cfg%refine_tolerance = refine_tolerance
-      end if
-      call parse_history(at, target_quantities, cfg%target_quantities, error, 'target_quantities', target_names)
+      call take_target(error)
       if (allocated(error)) return
-      if (.not. has_frame .and. any(cfg%target_quantities([q_column_shear, q_column_moment]))) then
-         ! 'all' (or blank) names every quantity that exists: no column segments without a frame.
-         if (index(lower(target_quantities), 'column_') > 0) then
-            call fail(at, 'target_quantities', "target_quantities = '"//trim(adjustl(target_quantities))// &
-                      "': column_shear and column_moment are the column segments' lambdas of frames, "// &
-                      "and no building of the deck is a frame (model = 'frame')", error)
-            return
-         end if
-         cfg%target_quantities([q_column_shear, q_column_moment]) = .false.
-      end if
-      if (.not. any(cfg%target_quantities)) then
-         call fail(at, 'target_quantities', "target_quantities = 'none' leaves nothing to check", error)
-         return
-      end if
       cfg%active = .true.
       cfg%gap_from = gap_from
       cfg%gap_to = gap_to
       cfg%n_gaps = n_gaps
+
+   contains
+
+      !> The target and its quantities, the refinement tolerance (every kind of sweep).
+      subroutine take_target(error)
+         type(error_type), allocatable, intent(out) :: error
+
+         if (is_set(target_lambda)) then
+            call check_real(at, 'target_lambda', target_lambda, '>', 0.0_dp, error)
+            if (allocated(error)) return
+            cfg%target = target_lambda
+         end if
+         if (is_set(refine_tolerance)) then
+            call check_real(at, 'refine_tolerance', refine_tolerance, '>', 0.0_dp, error)
+            if (allocated(error)) return
+            cfg%refine_tolerance = refine_tolerance
+         end if
+         call parse_history(at, target_quantities, cfg%target_quantities, error, 'target_quantities', target_names)
+         if (allocated(error)) return
+         if (.not. has_frame .and. any(cfg%target_quantities([q_column_shear, q_column_moment]))) then
+            ! 'all' (or blank) names every quantity that exists: no column segments without a frame.
+            if (index(lower(target_quantities), 'column_') > 0) then
+               call fail(at, 'target_quantities', "target_quantities = '"//trim(adjustl(target_quantities))// &
+                         "': column_shear and column_moment are the column segments' lambdas of frames, "// &
+                         "and no building of the deck is a frame (model = 'frame')", error)
+               return
+            end if
+            cfg%target_quantities([q_column_shear, q_column_moment]) = .false.
+         end if
+         if (.not. any(cfg%target_quantities)) then
+            call fail(at, 'target_quantities', "target_quantities = 'none' leaves nothing to check", error)
+            return
+         end if
+      end subroutine take_target
+
    end subroutine read_sweep
 
 end module pound_deck_sweep

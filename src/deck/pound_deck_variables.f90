@@ -10,7 +10,7 @@ module pound_deck_variables
    private
 
    public :: var_spec, variables, known_groups, known_variable, variable_index, variable_type, &
-             variable_list, group_variable_count, group_max_size, findloc_name, join
+             variable_list, group_variable_count, findloc_name, join
    public :: max_storeys, max_name_length, max_pairs, max_columns, max_steps, title_len, path_len, &
              word_len, max_substeps, max_envelope_points, max_segments, max_bays, max_column_elements, &
              frame_variables
@@ -59,7 +59,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(101) = [ &
+   type(var_spec), parameter :: variables(110) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -114,6 +114,11 @@ module pound_deck_variables
       var_spec('building', 'cd', 'r', 0), var_spec('building', 'importance', 'r', 0), &
       var_spec('building', 'behaviour_factor', 'r', 0), var_spec('building', 'response_reduction', 'r', 0), &
       var_spec('ground', 'target_g', 'r', 0), &
+      var_spec('sweep', 'parameter', 'c', 0), var_spec('sweep', 'values', 'r', 10000), &
+      var_spec('sweep', 'value_from', 'r', 0), var_spec('sweep', 'value_to', 'r', 0), &
+      var_spec('sweep', 'n_values', 'i', 0), var_spec('sweep', 'spacing', 'c', 0), &
+      var_spec('contact', 'variant', 'c', 0), &
+      var_spec('analysis', 'integrator', 'c', 0), var_spec('analysis', 'hht_alpha', 'r', 0), &
       var_spec('building', 'storey_law', 'c', 0), var_spec('building', 'yield_shear', 'r', max_storeys), &
       var_spec('building', 'hardening_ratio', 'r', max_storeys), var_spec('analysis', 'collapse_drift', 'r', 0)]
 
@@ -184,14 +189,6 @@ contains
 
       n = count(variables%group == group)
    end function group_variable_count
-
-   !> Most elements of one variable of `group` (at least 2).
-   pure integer function group_max_size(group) result(n)
-      !> Group name, lower case.
-      character(len=*), intent(in) :: group
-
-      n = max(2, maxval(variables%vsize, mask=variables%group == group))
-   end function group_max_size
 
    !> Position of `word` in `names` (0 if absent).
    pure integer function findloc_name(names, word) result(k)

@@ -17,7 +17,7 @@ module pound_run_case
    use pound_strings, only: str
    use pound_config, only: deck_type, ground_config, analysis_config
    use pound_analysis_plan, only: analysis_plan, steps_of, stepping_uniform, stepping_impact, free_newmark, &
-                                  free_exact, lcp_auto, lcp_lemke
+                                  free_exact, lcp_auto, lcp_lemke, integrator_newmark, integrator_hht
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
                                   describe_ground
    use pound_building, only: building_model, build_building
@@ -30,6 +30,8 @@ module pound_run_case
    use pound_sweep_joints, only: joint_sweep, find_joints, run_joint_sweeps, joint_thresholds
    use pound_separation, only: separation_t, code_separation, levels_coincide, not_computed
    use pound_plausibility, only: period_warning, unit_suspects
+   use pound_joint_study, only: joint_study_result
+   use pound_case_studies, only: has_parameter_sweep, has_law_study, run_deck_study
    implicit none
    private
 
@@ -81,6 +83,10 @@ module pound_run_case
       type(building_influence), allocatable :: influence(:)
       !> Gap study.
       type(sweep_result) :: sweep
+      !> Studies of the joint (`pound_case_studies`): the stiffness or restitution sweep
+      !> (`&sweep parameter`) and the law study (`&contact variant`), and whether they ran.
+      type(joint_study_result) :: parameter_sweep, law_study
+      logical :: has_parameter_sweep = .false., has_law_study = .false.
       !> The independent joints (`pound_sweep_joints`; allocated with the sweep) and, where
       !> there are several, each one's own sweep (its pairs swept, the others at their deck gaps).
       type(joint_sweep), allocatable :: joints(:)
@@ -119,6 +125,8 @@ contains
       plan%free_steps = merge(free_exact, free_newmark, cfg%free_steps == 'exact')
       plan%lcp_solver = merge(lcp_lemke, lcp_auto, cfg%lcp_solver == 'lemke')
       plan%collapse_drift = cfg%collapse_drift
+      plan%integrator = merge(integrator_hht, integrator_newmark, cfg%integrator == 'hht')
+      if (plan%integrator == integrator_hht) plan%hht_alpha = cfg%hht_alpha
    end function analysis_plan_of
 
    !> The ground motion the configuration `&ground` describes: a pulse, or a record read
@@ -272,6 +280,8 @@ contains
                call joint_sweeps()
                if (allocated(error)) return
             end if
+            call joint_studies()
+            if (allocated(error)) return
          end if
       end if
 
@@ -292,8 +302,36 @@ contains
       if (res%has_coupled) call collect(res%cpl%warnings)
       if (res%has_sweep) call collect(res%sweep%warnings)
       if (allocated(joint_warnings)) call collect(joint_warnings)
+      if (res%has_parameter_sweep) call collect(res%parameter_sweep%warnings)
+      if (res%has_law_study) call collect(res%law_study%warnings)
 
    contains
+
+      !> The stiffness or restitution sweep and the law study of the deck, if it asks for them.
+      subroutine joint_studies()
+         if (has_parameter_sweep(deck)) then
+            call deck_study(.false., res%parameter_sweep)
+            if (allocated(error)) return
+            res%has_parameter_sweep = .true.
+         end if
+         if (has_law_study(deck)) then
+            call deck_study(.true., res%law_study)
+            if (allocated(error)) return
+            res%has_law_study = .true.
+         end if
+      end subroutine joint_studies
+
+      subroutine deck_study(law, study)
+         logical, intent(in) :: law
+         type(joint_study_result), intent(out) :: study
+
+         if (has_ground()) then
+            call run_deck_study(law, deck, plan, res%models, ag, res%unc, study, error, options%ground)
+         else
+            call run_deck_study(law, deck, plan, res%models, ag, res%unc, study, error, deck_gm)
+         end if
+         if (allocated(error)) error%message = prefix//error%message
+      end subroutine deck_study
 
       logical function has_ground()
          has_ground = .false.

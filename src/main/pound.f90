@@ -31,6 +31,8 @@ program pound
    use pound_sweep_joints, only: deck_joints, failed_joint_gaps
    use pound_sweep_joints_output, only: write_joint_sweep_tables
    use pound_suite, only: suite_result, run_suite
+   use pound_study_output, only: write_study_tables, write_stiffness_rules, write_study_h5
+   use pound_case_studies, only: has_parameter_sweep, has_law_study
    use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_separation_output, only: write_run_separation, pair_labels
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, write_warning_lines, &
@@ -38,7 +40,7 @@ program pound
                             write_sweep_column_table, write_section
    use pound_text_writer, only: text_writer, open_text, close_text
    use pound_summary, only: summary_item, build_summary, summary_lines, motion_heading, summary_text_len
-   use pound_summary_output, only: write_summary_csv, write_summary_attributes
+   use pound_summary_output, only: write_summary_csv, write_summary_attributes, summary_attribute_text
    use pound_results_h5, only: write_results_h5, h5_history_sink, history_sink_init
    use pound_h5, only: h5_file
    use pound_yield_output, only: write_yield_tables
@@ -152,7 +154,8 @@ program pound
    end if
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
       call write_suite_h5(outputs%h5_tmp, res%models, suite, error, res%cs)
-   if (.not. allocated(error)) call write_summary_h5(error)
+   if (.not. allocated(error)) call write_studies_h5(error)
+   if (.not. allocated(error) .and. size(deck%motions) > 1) call write_summary_h5(error)
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
    call write_summary_csv(outputs%summary_tmp, summary_items, error)
@@ -182,9 +185,36 @@ program pound
                            'results were written', failed_cases_status)
       end if
    end if
+   ! The studies of the joint (single motion only): failed runs give status 3 as failed gaps.
+   if (size(deck%motions) == 1) call stop_on_failed_studies()
    call cases_stop()
 
 contains
+
+   !> The studies of the joint (`pound_study_output`) appended to this run's results file.
+   subroutine write_studies_h5(err)
+      type(error_type), allocatable, intent(out) :: err
+
+      if (res%has_parameter_sweep .and. res%has_law_study) then
+         call write_study_h5(outputs%h5_tmp, deck, res%models, err, sweep=res%parameter_sweep, law=res%law_study)
+      else if (res%has_parameter_sweep) then
+         call write_study_h5(outputs%h5_tmp, deck, res%models, err, sweep=res%parameter_sweep)
+      else if (res%has_law_study) then
+         call write_study_h5(outputs%h5_tmp, deck, res%models, err, law=res%law_study)
+      end if
+   end subroutine write_studies_h5
+
+   !> Results written, but some runs of a stiffness or restitution sweep or of a law study
+   !> failed: status 3, as failed gaps.
+   subroutine stop_on_failed_studies()
+      integer :: n
+
+      n = 0
+      if (res%has_parameter_sweep) n = n + count(res%parameter_sweep%failed)
+      if (res%has_law_study) n = n + count(res%law_study%failed)
+      if (n > 0) call stop_with(str(n)//' runs of the joint studies failed (named in '//outputs%listing// &
+                                '); the other results were written', failed_cases_status)
+   end subroutine stop_on_failed_studies
 
    !> The engineering summary's items and text lines (a suite: its answer first).
    subroutine make_summary()
@@ -201,29 +231,31 @@ contains
    subroutine write_summary_h5(err)
       type(error_type), allocatable, intent(out) :: err
 
-      if (size(deck%motions) > 1) then
-         call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err, suite)
-      else
-         call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err)
-      end if
+      call write_summary_attributes(outputs%h5_tmp, summary_items, summary_text, err, suite)
    end subroutine write_summary_h5
 
    !> The results file: this run's temporary, created here or (`file`) open since the
    !> analyses streamed their histories into it.
    subroutine write_h5(file)
       type(h5_file), intent(inout), optional :: file
+      ! The summary attribute, written with the rest for one motion (unallocated: absent; a
+      ! suite adds it after /suite, `write_summary_h5`).
+      character(len=:), allocatable :: summary
+
+      if (size(deck%motions) == 1) summary = summary_attribute_text(summary_text)
 
       if (.not. allocated(res%separation)) allocate (res%separation(0))
       if (res%has_sweep) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
                                res%unc, error, res%cpl, res%cs, res%influence, res%sweep, file=file, &
-                               separation=res%separation, joints=res%joints)
+                               separation=res%separation, joints=res%joints, summary=summary)
       else if (res%has_coupled) then
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, res%cpl, res%cs, res%influence, file=file, separation=res%separation)
+                               res%unc, error, res%cpl, res%cs, res%influence, file=file, separation=res%separation, &
+                               summary=summary)
       else
          call write_results_h5(outputs%h5_tmp, deck, res%models, res%buildings, trim(ground_text(1)), res%ag_out, &
-                               res%unc, error, file=file)
+                               res%unc, error, file=file, summary=summary)
       end if
    end subroutine write_h5
 
@@ -268,6 +300,9 @@ contains
             planned_runs = planned_runs + deck_joints(deck%contacts)*deck%sweep%n_gaps
       end if
       if (is_suite) planned_runs = planned_runs*size(deck%motions)
+      ! The studies of the joint (single motion only): one run per value or variant.
+      if (has_parameter_sweep(deck)) planned_runs = planned_runs + size(deck%sweep%values)
+      if (has_law_study(deck)) planned_runs = planned_runs + size(deck%variants) + 1
    end function planned_runs
 
    !> The number of independent joints whose own sweeps ran (0 without a sweep).
@@ -343,6 +378,7 @@ contains
       if (res%has_coupled) then
          call write_peak_tables(lst, 'Coupled', res%models, res%cpl)
          call write_contact_summary(lst, res%cs)
+         call write_stiffness_rules(lst, deck%contacts)
          call write_influence_tables(lst, res%models, res%influence)
          call write_yield_tables(lst, res%models, res%unc, res%cpl)
          call write_column_tables(lst, res%models, res%buildings, res%unc, res%cpl, res%influence)
@@ -351,6 +387,10 @@ contains
          if (joint_count() > 1) call write_joint_sweep_tables(lst, deck%sweep, res%joints, pair_labels(res%cs))
          if (size(deck%motions) == 1 .and. allocated(res%separation)) &
             call write_run_separation(lst, pair_labels(res%cs), res%separation, per_joint=joint_count() > 1)
+         if (res%has_parameter_sweep) call write_study_tables(lst, res%models, res%parameter_sweep, &
+                                                              deck%sweep%target, deck%sweep%target_quantities)
+         if (res%has_law_study) call write_study_tables(lst, res%models, res%law_study, deck%sweep%target, &
+                                                        deck%sweep%target_quantities)
       end if
       if (size(deck%motions) > 1) then
          call write_suite_listing(lst, res%models, suite, res%cs)

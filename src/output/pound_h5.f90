@@ -1,5 +1,5 @@
-!> pound's result files over HDF5's own high-level Fortran API (H5LT), with a thin layer
-!> for what H5LT lacks.
+!> pound's result files over HDF5's Fortran API (datasets, attributes, groups; the library
+!> does not use the high-level H5LT layer, which only the tests' reader links).
 !>
 !> A file is reached through a handle, `type(h5_file)`: `h5_create` (truncates), `h5_open`
 !> (read-only) and `h5_close`. Objects are named by absolute paths such as
@@ -7,13 +7,13 @@
 !> dataset creates the missing groups on its path. Attributes go on the root ('/'), a group
 !> or a dataset, given by its path; writing an attribute that exists replaces it.
 !>
-!> **What H5LT does and what this module adds.** Numeric datasets (real(dp) scalar, 1-D and
-!> 2-D; default integer 1-D and 2-D) and real 1-D attributes are written by H5LT
-!> (`h5ltmake_dataset_double_f`, `h5ltmake_dataset_int_f`, `h5ltset_attribute_double_f`).
-!> H5LT lacks the rest, kept here: parent groups created on demand; scalar attributes
-!> (H5LT writes every numeric attribute as a 1-D array, which h5py would read as shape (1,));
-!> variable-length UTF-8 strings (H5LT writes fixed-length ASCII); HDF5's error stack kept
-!> quiet, with a failure turned into one message naming the file, the object and the call.
+!> **What this module adds to HDF5.** Numeric datasets (real(dp) scalar, 1-D and 2-D;
+!> default integer 1-D and 2-D) with their `units` attribute written on the new dataset's
+!> own identifier (`new_dataset`: no second look-up by path); parent groups created on
+!> demand (one look-up when the parent exists); scalar attributes (h5py reads a number,
+!> not shape (1,)); variable-length UTF-8 strings (with a conversion buffer sized to the
+!> strings: HDF5's default zeroes 1 MiB for every write); HDF5's error stack kept quiet,
+!> with a failure turned into one message naming the file, the object and the call.
 !> Readers are not part of the library: the tests read files back through
 !> `tests/support/pound_test_h5.f90` (with `h5_file_id`).
 !>
@@ -24,7 +24,7 @@
 !> in Fortran as `hist(n_floors, n_out)`, so that h5py reads them as shape
 !> (n_out, n_floors): one row per output time.
 !>
-!> Storage: reals as IEEE 64-bit little-endian (H5LT's native double on the little-endian
+!> Storage: reals as IEEE 64-bit little-endian (the native double on the little-endian
 !> machines pound runs on), integers as 32-bit signed little-endian, strings as
 !> variable-length UTF-8 strings (h5py reads those attributes as `str`, and there is no
 !> 64 KiB object-header limit on long attributes such as the deck text). String array
@@ -54,9 +54,9 @@ module pound_h5
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char
    use hdf5, only: hid_t, hsize_t, h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, &
                    H5F_ACC_RDWR_F, h5pcreate_f, h5pclose_f, h5dcreate_f, h5dwrite_f, h5dopen_f, &
-                   h5dget_space_f, h5sselect_hyperslab_f, H5S_SELECT_SET_F, H5T_NATIVE_DOUBLE, &
-                   H5T_IEEE_F64LE, H5P_DATASET_CREATE_F, h5pset_chunk_f, h5pset_shuffle_f, h5pset_deflate_f
-   use h5lt, only: h5ltmake_dataset_double_f, h5ltmake_dataset_int_f
+                   h5dget_space_f, h5sselect_hyperslab_f, H5S_SELECT_SET_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
+                   H5T_IEEE_F64LE, H5P_DATASET_CREATE_F, h5pset_chunk_f, h5pset_shuffle_f, h5pset_deflate_f, &
+                   H5P_DATASET_XFER_F, h5pset_buffer_f
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_posix, only: posix_set_errno
@@ -80,7 +80,7 @@ module pound_h5
 
    !> Write a new dataset at a path, creating missing groups:
    !> `call h5_write(file, path, values, error[, units])` with `values` real(dp) scalar, 1-D
-   !> or 2-D, default integer 1-D or 2-D (H5LT), or character 1-D (trailing blanks dropped);
+   !> or 2-D, default integer 1-D or 2-D, or character 1-D (trailing blanks dropped);
    !> `units` becomes the dataset's string attribute `units`.
    interface h5_write
       module procedure write_real_0d, write_real_1d, write_real_2d, write_int_1d, write_int_2d, &
@@ -89,7 +89,7 @@ module pound_h5
 
    !> Set an attribute of the object at a path ('/' is the root), replacing an existing one:
    !> `call h5_write_attr(file, path, name, value, error)` with `value` a character string,
-   !> real(dp) scalar or 1-D (H5LT), or default integer scalar (submodule pound_h5_attributes).
+   !> real(dp) scalar or 1-D, or default integer scalar (submodule pound_h5_attributes).
    interface h5_write_attr
       !> String attribute (variable-length UTF-8, stored exactly as given).
       module subroutine write_attr_string(file, path, name, value, error)
@@ -117,7 +117,7 @@ module pound_h5
          !> Error state.
          type(error_type), allocatable, intent(out) :: error
       end subroutine write_attr_real_0d
-      !> Real 1-D attribute (H5LT).
+      !> Real 1-D attribute.
       module subroutine write_attr_real_1d(file, path, name, value, error)
          !> File open for writing.
          type(h5_file), intent(in) :: file
@@ -194,6 +194,14 @@ module pound_h5
          logical, intent(in) :: whole
          type(error_type), allocatable, intent(out) :: error
       end subroutine make_groups
+      !> String attribute `name` (variable-length UTF-8) of the open object `obj` at `p`, which
+      !> has none of that name.
+      module subroutine string_attribute_on(obj, file, p, name, value, error)
+         integer(hid_t), intent(in) :: obj
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: p, name, value
+         type(error_type), allocatable, intent(inout) :: error
+      end subroutine string_attribute_on
       !> Check the handle and `path` for a new dataset, create the groups above it and
       !> refuse an existing object; `p` is the normalised path.
       module subroutine dataset_path(file, path, p, error)
@@ -202,13 +210,6 @@ module pound_h5
          character(len=:), allocatable, intent(out) :: p
          type(error_type), allocatable, intent(out) :: error
       end subroutine dataset_path
-      !> Turn an H5LT return code into the module's message.
-      module subroutine check_lt(hdferr, file, p, call_name, error)
-         integer, intent(in) :: hdferr
-         type(h5_file), intent(in) :: file
-         character(len=*), intent(in) :: p, call_name
-         type(error_type), allocatable, intent(out) :: error
-      end subroutine check_lt
       !> Scalar (empty `dims`) or simple dataspace.
       module subroutine new_space(dims, ids, file, action, what, path, error)
          integer(hsize_t), intent(in) :: dims(:)
@@ -395,7 +396,7 @@ contains
       call path_exists(file, p, exists, error)
    end subroutine h5_exists
 
-   ! ------------------------------------------------------------------ datasets (H5LT)
+   ! ------------------------------------------------------------------ datasets
 
    !> Real scalar dataset.
    subroutine write_real_0d(file, path, values, error, units)
@@ -411,13 +412,12 @@ contains
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
       integer(hsize_t) :: dims(0)
-      integer :: hdferr
+      real(dp), allocatable, target :: packed(:)
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
-      call h5ltmake_dataset_double_f(file%id, p, 0, dims, values, hdferr)
-      call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
-      call put_units(file, path, units, error)
+      packed = [values]
+      call new_dataset(file, p, dims, H5T_NATIVE_DOUBLE, c_loc(packed), error, units)
    end subroutine write_real_0d
 
    !> Real 1-D dataset.
@@ -433,13 +433,12 @@ contains
       !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
-      integer :: hdferr
+      real(dp), allocatable, target :: packed(:)
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
-      call h5ltmake_dataset_double_f(file%id, p, 1, shape(values, kind=hsize_t), values, hdferr)
-      call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
-      call put_units(file, path, units, error)
+      packed = values
+      call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(packed), error, units)
    end subroutine write_real_1d
 
    !> Real 2-D dataset, written as given: Fortran (n1, n2) is seen by h5py as (n2, n1).
@@ -455,17 +454,13 @@ contains
       !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
-      real(dp), allocatable :: packed(:, :)
-      integer :: hdferr
+      real(dp), allocatable, target :: packed(:, :)
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
-      ! A contiguous copy: the caller may pass a section or a component of a derived-type array
-      ! (H5LT takes a plain buffer).
+      ! A contiguous copy: the caller may pass a section or a component of a derived-type array.
       packed = values
-      call h5ltmake_dataset_double_f(file%id, p, 2, shape(values, kind=hsize_t), packed, hdferr)
-      call check_lt(hdferr, file, p, 'h5ltmake_dataset_double_f', error)
-      call put_units(file, path, units, error)
+      call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(packed), error, units)
    end subroutine write_real_2d
 
    !> Integer 1-D dataset (stored as 32-bit signed).
@@ -481,13 +476,12 @@ contains
       !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
-      integer :: hdferr
+      integer, allocatable, target :: packed(:)
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
-      call h5ltmake_dataset_int_f(file%id, p, 1, shape(values, kind=hsize_t), values, hdferr)
-      call check_lt(hdferr, file, p, 'h5ltmake_dataset_int_f', error)
-      call put_units(file, path, units, error)
+      packed = values
+      call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_INTEGER, c_loc(packed), error, units)
    end subroutine write_int_1d
 
    !> Integer 2-D dataset (stored as 32-bit signed; h5py sees the transpose, see the notes).
@@ -503,13 +497,12 @@ contains
       !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
       character(len=*), intent(in), optional :: units
       character(len=:), allocatable :: p
-      integer :: hdferr
+      integer, allocatable, target :: packed(:, :)
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
-      call h5ltmake_dataset_int_f(file%id, p, 2, shape(values, kind=hsize_t), values, hdferr)
-      call check_lt(hdferr, file, p, 'h5ltmake_dataset_int_f', error)
-      call put_units(file, path, units, error)
+      packed = values
+      call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_INTEGER, c_loc(packed), error, units)
    end subroutine write_int_2d
 
    ! ------------------------------------------------------------------ chunked histories
@@ -561,8 +554,8 @@ contains
          end if
       end if
       call h5pclose_f(dcpl, ignore)
+      if (present(units) .and. .not. allocated(error)) call string_attribute_on(ids%obj, file, p, 'units', units, error)
       call release(ids, file, 'write', 'dataset', p, error)
-      call put_units(file, path, units, error)
    end subroutine h5_create_history
 
    !> Write `values` (rows, k) into columns first .. first+k-1 of the history `path`
@@ -612,23 +605,46 @@ contains
       call release(ids, file, 'write', 'dataset', p, error)
    end subroutine h5_write_columns
 
-   ! ------------------------------------------------------------------ what H5LT lacks
+   ! ------------------------------------------------------------------ histories, strings, helpers
 
    !> The `units` attribute of the dataset just written at `path` (nothing when `units` is
-   !> absent or the write failed).
-   subroutine put_units(file, path, units, error)
+   !> A new dataset at the normalised path `p` (its groups made, no object there: see
+   !> `dataset_path`) of element type `mtype` (stored as that type), filled from `buf`, with
+   !> its `units` attribute when given.
+   subroutine new_dataset(file, p, dims, mtype, buf, error, units)
       !> File open for writing.
       type(h5_file), intent(in) :: file
-      !> Dataset path.
-      character(len=*), intent(in) :: path
-      !> The units, if any.
-      character(len=*), intent(in), optional :: units
-      !> Error state of the write (kept when set).
+      !> Normalised dataset path.
+      character(len=*), intent(in) :: p
+      !> Shape (none: a scalar).
+      integer(hsize_t), intent(in) :: dims(:)
+      !> Element type, in memory and in the file (H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER).
+      integer(hid_t), intent(in) :: mtype
+      !> Address of the contiguous values.
+      type(c_ptr), intent(in) :: buf
+      !> Error state (kept when set).
       type(error_type), allocatable, intent(inout) :: error
+      !> Its `units` attribute, if any.
+      character(len=*), intent(in), optional :: units
+      type(h5_ids) :: ids
+      integer :: hdferr
 
-      if (allocated(error) .or. .not. present(units)) return
-      call write_attr_string(file, path, 'units', units, error)
-   end subroutine put_units
+      if (allocated(error)) return
+      call new_space(dims, ids, file, 'write', 'dataset', p, error)
+      if (.not. allocated(error)) then
+         call h5dcreate_f(file%id, p, mtype, ids%space, ids%obj, hdferr)
+         if (hdferr /= 0) then
+            ids%obj = -1_hid_t
+            call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+         end if
+      end if
+      if (.not. allocated(error)) then
+         call h5dwrite_f(ids%obj, mtype, buf, hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
+      end if
+      if (present(units) .and. .not. allocated(error)) call string_attribute_on(ids%obj, file, p, 'units', units, error)
+      call release(ids, file, 'write', 'dataset', p, error)
+   end subroutine new_dataset
 
    !> 1-D dataset of variable-length UTF-8 strings; trailing blanks of each element are dropped.
    subroutine write_string_1d(file, path, values, error, units)
@@ -646,7 +662,8 @@ contains
       character(len=:), allocatable :: p
       character(kind=c_char), allocatable, target :: chars(:)
       type(c_ptr), allocatable, target :: ptrs(:)
-      integer :: hdferr, i
+      integer(hid_t) :: xfer
+      integer :: hdferr, i, ignore
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
@@ -665,11 +682,16 @@ contains
       end if
       if (.not. allocated(error) .and. size(values) > 0) then
          call pack_strings([(len_trim(values(i)), i=1, size(values))], values, chars, ptrs)
-         call h5dwrite_f(ids%obj, ids%ftype, c_loc(ptrs), hdferr)
+         ! A conversion buffer for these strings only: HDF5's default (1 MiB, zeroed) costs
+         ! more than the whole write of a short list.
+         call h5pcreate_f(H5P_DATASET_XFER_F, xfer, hdferr)
+         if (hdferr == 0) call h5pset_buffer_f(xfer, int(max(4096, 64*size(values)), hsize_t), hdferr)
+         if (hdferr == 0) call h5dwrite_f(ids%obj, ids%ftype, c_loc(ptrs), hdferr, xfer_prp=xfer)
          if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, 'h5dwrite_f failed')
+         call h5pclose_f(xfer, ignore)
       end if
+      if (present(units) .and. .not. allocated(error)) call string_attribute_on(ids%obj, file, p, 'units', units, error)
       call release(ids, file, 'write', 'dataset', p, error)
-      call put_units(file, path, units, error)
    end subroutine write_string_1d
 
    !> File name of a handle, for messages ('(none)' before the first open).

@@ -1,11 +1,9 @@
 !> The attribute writers of pound_h5 (generic `h5_write_attr`): an attribute goes on the
 !> root, a group or a dataset named by its path and replaces one of the same name. Scalars
 !> are written as HDF5 scalars (h5py reads a number, not shape (1,)), strings as
-!> variable-length UTF-8, real 1-D attributes by H5LT.
+!> variable-length UTF-8, real 1-D attributes as native doubles.
 submodule(pound_h5) pound_h5_attributes
-   use hdf5, only: size_t, h5oopen_f, h5acreate_f, h5awrite_f, h5aexists_f, h5adelete_f, &
-                   H5T_NATIVE_INTEGER, H5T_STD_I32LE
-   use h5lt, only: h5ltset_attribute_double_f
+   use hdf5, only: h5lexists_f, h5oopen_f, h5acreate_f, h5awrite_f, h5aexists_f, h5adelete_f, H5T_STD_I32LE
    implicit none
 
 contains
@@ -24,8 +22,6 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(h5_ids) :: ids
       character(len=:), allocatable :: what
-      character(kind=c_char), allocatable, target :: chars(:)
-      type(c_ptr), allocatable, target :: ptrs(:)
       integer(hsize_t) :: dims(0)
       integer :: hdferr
 
@@ -36,13 +32,63 @@ contains
       else
          call new_attribute(file, path, name, ids%ftype, dims, ids, error)
       end if
-      if (.not. allocated(error)) then
-         call pack_strings([len(value)], [value], chars, ptrs)
-         call h5awrite_f(ids%attr, ids%ftype, c_loc(ptrs), hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', what, path, 'h5awrite_f failed')
-      end if
+      if (.not. allocated(error)) call put_string(ids, file, what, path, value, error)
       call release(ids, file, 'write', what, path, error)
    end subroutine write_attr_string
+
+   !> String attribute `name` (variable-length UTF-8) of the open object `obj` at `p`, which
+   !> has none of that name (a dataset just created): no path walk.
+   module subroutine string_attribute_on(obj, file, p, name, value, error)
+      !> The open object.
+      integer(hid_t), intent(in) :: obj
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Its path (named in messages).
+      character(len=*), intent(in) :: p
+      !> Attribute name.
+      character(len=*), intent(in) :: name
+      !> Text.
+      character(len=*), intent(in) :: value
+      !> Error state (kept when set).
+      type(error_type), allocatable, intent(inout) :: error
+      type(h5_ids) :: ids
+      character(len=:), allocatable :: what
+      integer(hsize_t) :: dims(0)
+      integer :: hdferr
+
+      if (allocated(error)) return
+      what = "attribute '"//name//"' of"
+      call string_type(ids%ftype, hdferr)
+      if (hdferr /= 0) then
+         call fail(error, file, 'write', what, p, 'h5tcopy_f/h5tset_size_f failed')
+      else
+         call new_space(dims, ids, file, 'write', what, p, error)
+      end if
+      if (.not. allocated(error)) then
+         call h5acreate_f(obj, name, ids%ftype, ids%space, ids%attr, hdferr)
+         if (hdferr /= 0) then
+            ids%attr = -1_hid_t
+            call fail(error, file, 'write', what, p, 'h5acreate_f failed')
+         end if
+      end if
+      if (.not. allocated(error)) call put_string(ids, file, what, p, value, error)
+      call release(ids, file, 'write', what, p, error)
+   end subroutine string_attribute_on
+
+   !> Write `value` into the open variable-length string attribute of `ids`.
+   subroutine put_string(ids, file, what, path, value, error)
+      type(h5_ids), intent(in) :: ids
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: what, path, value
+      type(error_type), allocatable, intent(inout) :: error
+      character(kind=c_char), allocatable, target :: chars(:)
+      type(c_ptr), allocatable, target :: ptrs(:)
+      integer :: hdferr
+
+      call pack_strings([len(value)], [value], chars, ptrs)
+      call h5awrite_f(ids%attr, ids%ftype, c_loc(ptrs), hdferr)
+      if (hdferr /= 0) call fail(error, file, 'write', what, path, 'h5awrite_f failed')
+   end subroutine put_string
 
    !> Real scalar attribute.
    module subroutine write_attr_real_0d(file, path, name, value, error)
@@ -69,7 +115,7 @@ contains
       call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
    end subroutine write_attr_real_0d
 
-   !> Real 1-D attribute (H5LT).
+   !> Real 1-D attribute (native doubles).
    module subroutine write_attr_real_1d(file, path, name, value, error)
       !> File open for writing.
       type(h5_file), intent(in) :: file
@@ -82,15 +128,16 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       type(h5_ids) :: ids
-      character(len=:), allocatable :: p
+      real(dp), allocatable, target :: packed(:)
       integer :: hdferr
 
-      call open_carrier(file, path, .true., 'write', "attribute '"//name//"' of", ids, p, error)
-      call release(ids, file, 'write', "attribute '"//name//"' of", p, error)
-      if (allocated(error)) return
-      call h5ltset_attribute_double_f(file%id, p, name, value, size(value, kind=size_t), hdferr)
-      if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", p, &
-                                 'h5ltset_attribute_double_f failed')
+      packed = value
+      call new_attribute(file, path, name, H5T_NATIVE_DOUBLE, shape(value, kind=hsize_t), ids, error)
+      if (.not. allocated(error)) then
+         call h5awrite_f(ids%attr, H5T_NATIVE_DOUBLE, c_loc(packed), hdferr)
+         if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, 'h5awrite_f failed')
+      end if
+      call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
    end subroutine write_attr_real_1d
 
    !> Integer scalar attribute (stored as 32-bit signed).
@@ -168,8 +215,12 @@ contains
 
       call check_path(file, path, write, action, p, error)
       if (allocated(error)) return
-      call path_exists(file, p, there, error)
-      if (allocated(error)) return
+      ! One look-up of the whole path (h5lexists_f fails when a group above it is missing).
+      there = .true.
+      if (p /= '/') then
+         call h5lexists_f(file%id, p, there, hdferr)
+         if (hdferr /= 0) there = .false.
+      end if
       if (.not. there) then
          call fail(error, file, action, what, p, 'no such object')
          return

@@ -162,11 +162,21 @@ contains
       logical, intent(in) :: whole
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: gid
+      logical :: there
       integer :: i, last, state, hdferr
 
       if (p == '/') return
       last = len(p)
       if (.not. whole) last = index(p, '/', back=.true.) - 1
+      if (last <= 1) return
+      ! Most paths go into a group that exists already: one look-up, no walk. (h5lexists_f
+      ! fails when a group above the link is missing: then the walk below creates it.)
+      call h5lexists_f(file%id, p(:last), there, hdferr)
+      if (hdferr == 0 .and. there) then
+         call link_state(file, p(:last), state, error)
+         if (allocated(error)) return
+         if (state == link_group) return
+      end if
       do i = 2, last + 1
          if (i <= last) then
             if (p(i:i) /= '/') cycle
@@ -199,7 +209,7 @@ contains
       character(len=*), intent(in) :: path
       character(len=:), allocatable, intent(out) :: p
       type(error_type), allocatable, intent(out) :: error
-      logical :: there
+      integer :: state
 
       call check_path(file, path, .true., 'write', p, error)
       if (allocated(error)) return
@@ -209,20 +219,11 @@ contains
       end if
       call make_groups(file, p, .false., error)
       if (allocated(error)) return
-      call path_exists(file, p, there, error)
+      ! The groups above `p` exist now: only its last link can be there already.
+      call link_state(file, p, state, error)
       if (allocated(error)) return
-      if (there) call fail(error, file, 'write', 'dataset', p, 'an object with this path already exists')
+      if (state /= link_missing) call fail(error, file, 'write', 'dataset', p, 'an object with this path already exists')
    end subroutine dataset_path
-
-   !> Turn an H5LT return code into the module's message.
-   module subroutine check_lt(hdferr, file, p, call_name, error)
-      integer, intent(in) :: hdferr
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: p, call_name
-      type(error_type), allocatable, intent(out) :: error
-
-      if (hdferr /= 0) call fail(error, file, 'write', 'dataset', p, call_name//' failed')
-   end subroutine check_lt
 
    !> Scalar (empty `dims`) or simple dataspace.
    module subroutine new_space(dims, ids, file, action, what, path, error)

@@ -327,9 +327,15 @@ contains
             end do
          end associate
       end do
-      write (lst%unit, '(/,a,es10.3)', iostat=lst%ios, iomsg=lst%msg) &
-         '  Energy audit (input = kinetic + strain + damping + contact + plastic), '// &
-         'max relative error over time: ', res%energy_error
+      if (allocated(res%numerical)) then
+         write (lst%unit, '(/,a,es10.3)', iostat=lst%ios, iomsg=lst%msg) &
+            '  Energy audit (input = kinetic + strain + damping + contact + plastic + numerical), '// &
+            'max relative error over time: ', res%energy_error
+      else
+         write (lst%unit, '(/,a,es10.3)', iostat=lst%ios, iomsg=lst%msg) &
+            '  Energy audit (input = kinetic + strain + damping + contact + plastic), '// &
+            'max relative error over time: ', res%energy_error
+      end if
       call lst%note()
       call write_warning_lines(lst, res%warnings)
       j = res%n_out
@@ -340,6 +346,12 @@ contains
       call lst%note()
       write (lst%unit, '(a,6es12.4)', iostat=lst%ios, iomsg=lst%msg) '  ', res%energy(:, j)
       call lst%note()
+      if (allocated(res%numerical)) then
+         write (lst%unit, '(a,es12.4)', iostat=lst%ios, iomsg=lst%msg) &
+            '  numerical dissipation of the integrator (HHT-alpha) [kJ], in the audit beside the above:', &
+            res%numerical(j)
+         call lst%note()
+      end if
    end subroutine write_peak_tables
 
    !> Contact pairs and laws, impacts, time in contact, peak forces, plastic penetration

@@ -164,17 +164,23 @@ contains
 
       path = merge('/coupled  ', '/uncoupled', coupled)
       path = trim(path)//'/'//trim(sink%names(building))//'/'//trim(history_names(quantity))
-      if (first == 1) then
-         call h5_create_history(sink%h5, path, size(values, 1), sink%n_out, sink%compress, error, &
-                                  units=quantity_units(quantity))
+      if (first == 1 .and. size(values, 2) == sink%n_out .and. .not. sink%compress) then
+         ! The whole history in one block (a short run): one contiguous dataset, as a history
+         ! held in memory is written.
+         call h5_write(sink%h5, path, values, error, units=quantity_units(quantity))
+      else
+         if (first == 1) then
+            call h5_create_history(sink%h5, path, size(values, 1), sink%n_out, sink%compress, error, &
+                                   units=quantity_units(quantity))
+         end if
+         if (.not. allocated(error)) call h5_write_columns(sink%h5, path, first, values, error)
       end if
-      if (.not. allocated(error)) call h5_write_columns(sink%h5, path, first, values, error)
       if (allocated(error)) error%message = 'cannot write '//sink%label//': '//error%message
    end subroutine h5_sink_put
 
    !> Write the whole results file at `path`.
    subroutine write_results_h5(path, deck, models, buildings, ground_text, ag_out, unc, error, cpl, cs, influence, sweep, &
-                               file, separation, joints)
+                               file, separation, joints, summary)
       !> File to create (truncated).
       character(len=*), intent(in) :: path
       !> The deck.
@@ -208,6 +214,9 @@ contains
       !> The independent joints with their own sweeps (written with `sweep` where there are
       !> several: /sweep/joint/<name>).
       type(joint_sweep), intent(in), optional :: joints(:)
+      !> The engineering summary's text, written as the root attribute `summary` before the
+      !> file is closed (else the caller adds it: `write_summary_attributes`).
+      character(len=*), intent(in), optional :: summary
       type(h5_file) :: h5
       type(error_type), allocatable :: close_error
       integer :: ib, q
@@ -239,6 +248,8 @@ contains
          call h5_write_attr(h5, '/', 'deck', deck%text, error)
          if (allocated(error)) return
          call h5_write_attr(h5, '/', 'dt', deck%analysis%dt, error)
+         if (allocated(error)) return
+         if (present(summary)) call h5_write_attr(h5, '/', 'summary', summary, error)
          if (allocated(error)) return
          call h5_write(h5, '/ground/time', unc%time, error, units='s')
          if (allocated(error)) return
@@ -630,6 +641,14 @@ contains
       if (allocated(error)) return
       call h5_write_attr(h5, g//'/energy', 'relative_error', res%energy_error, error)
       if (allocated(error)) return
+      if (allocated(res%numerical)) then
+         call h5_write(h5, g//'/energy_numerical', res%numerical, error, units='kJ')
+         if (allocated(error)) return
+         call h5_write_attr(h5, g//'/energy_numerical', 'description', 'numerical dissipation of the '// &
+                            'integrator (HHT-alpha), summed over the buildings; the energy audit balances '// &
+                            'input = kinetic + strain + damping + contact + plastic + numerical', error)
+         if (allocated(error)) return
+      end if
       call h5_write_attr(h5, g, 'integration_seconds', res%seconds, error)
       if (allocated(error)) return
       do i = 1, size(models)

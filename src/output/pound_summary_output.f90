@@ -36,7 +36,7 @@ module pound_summary_output
    implicit none
    private
 
-   public :: write_summary_csv, write_summary_attributes, csv_header, csv_row
+   public :: write_summary_csv, write_summary_attributes, summary_attribute_text, csv_header, csv_row
 
    !> The header line of the CSV file.
    character(len=*), parameter :: csv_header = 'kind,subject,quantity,value,unit,location,time'
@@ -114,6 +114,20 @@ contains
    end subroutine write_summary_csv
 
    !> Root attributes of the results file at `path` (written and closed): `summary`, and with
+   !> The summary's text lines as one text (the root attribute `summary`), each line ended
+   !> by a line feed.
+   pure function summary_attribute_text(lines) result(text)
+      !> The summary's text lines (`summary_lines`).
+      character(len=*), intent(in) :: lines(:)
+      character(len=:), allocatable :: text
+      integer :: i
+
+      text = ''
+      do i = 1, size(lines)
+         text = text//trim(lines(i))//new_line('a')
+      end do
+   end function summary_attribute_text
+
    !> `suite` its answer and single-motion case (see the module notes).
    subroutine write_summary_attributes(path, items, lines, error, suite)
       !> Results file.
@@ -129,12 +143,8 @@ contains
       type(error_type), allocatable :: close_error
       type(h5_file) :: h5
       character(len=:), allocatable :: text
-      integer :: i
 
-      text = ''
-      do i = 1, size(lines)
-         text = text//trim(lines(i))//new_line('a')
-      end do
+      text = summary_attribute_text(lines)
       call h5_open(h5, path, error, writable=.true.)
       if (allocated(error)) return
       call h5_write_attr(h5, '/', 'summary', text, error)

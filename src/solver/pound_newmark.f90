@@ -37,6 +37,8 @@ module pound_newmark
    use pound_swap, only: swap
    use pound_band_lapack, only: dpbtrf, dpbtrs
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
+   use pound_integrator, only: integrator, en_input, en_kinetic, en_strain, en_damping, en_numerical, &
+                               n_integrator_energies
    implicit none
    private
 
@@ -51,13 +53,12 @@ module pound_newmark
    !> O(n^2) a step.
    integer, parameter, public :: exact_max_dofs = 2000
 
-   !> Indices of `newmark_energies`.
-   integer, parameter :: en_input = 1, en_kinetic = 2, en_strain = 3, en_damping = 4
    !> Default steps between exact band products of the general path (see pound_newmark_band).
    integer, parameter, public :: band_refresh_steps = 100
 
-   !> Integrator state of one structural model (components private: see the module doc).
-   type :: newmark_state
+   !> Integrator state of one structural model (components private: see the module doc): the
+   !> Newmark average-acceleration extension of `integrator`.
+   type, extends(integrator) :: newmark_state
       private
       !> Number of DOFs and half-bandwidth.
       integer :: n = 0, kd = 1
@@ -122,13 +123,41 @@ module pound_newmark
       real(dp), allocatable :: q(:), qd(:), xq(:), xqd(:), xw(:), xv(:), xa(:)
       !> Exact free steps: input work and damping energy of the predicted step (kJ).
       real(dp) :: x_input = 0.0_dp, x_damping = 0.0_dp
+   contains
+      procedure :: init => init_binding
+      procedure :: predict => newmark_predict
+      procedure :: predict_exact => newmark_predict_exact
+      procedure :: drop_exact => newmark_drop_exact
+      procedure :: commit => newmark_commit
+      procedure :: advance => newmark_advance
+      procedure :: solve => newmark_solve
+      procedure :: add_load => newmark_add_response
+      procedure :: add_load_rows => newmark_add_response_rows
+      procedure :: swap_step => swap_binding
+      procedure :: set_state => newmark_set_state
+      procedure :: dofs => newmark_n
+      procedure :: step_size => newmark_dt
+      procedure :: velocity_rate => newmark_velocity_rate
+      procedure :: path_span => newmark_path_span
+      procedure :: path => newmark_path
+      procedure :: u_view => newmark_u
+      procedure :: v_view => newmark_v
+      procedure :: a_view => newmark_a
+      procedure :: du_view => newmark_du
+      procedure :: u_at => newmark_u_at
+      procedure :: v_at => newmark_v_at
+      procedure :: predicted => newmark_predicted
+      procedure :: energies => energies_binding
+      procedure :: add_energies => newmark_add_energies
+      procedure :: kinetic_energy => kinetic_energy
+      procedure :: strain_energy => strain_energy
    end type newmark_state
 
    interface
       !> Increment du of the step for the ground acceleration increment `dag` alone
       !> (in submodule pound_newmark_step, with the tridiagonal kernels).
       module subroutine newmark_predict(st, b, dag)
-         type(newmark_state), intent(inout) :: st
+         class(newmark_state), intent(inout) :: st
          type(structure_model), intent(in) :: b
          real(dp), intent(in), value :: dag
       end subroutine newmark_predict
@@ -136,7 +165,7 @@ module pound_newmark
       !> `e_out`, add the integrator's input work and its kinetic + strain + damping energy to
       !> them (the per-step audit; in submodule pound_newmark_step).
       module subroutine newmark_commit(st, b, ag_old, ag_new, w_in, e_out)
-         type(newmark_state), intent(inout) :: st
+         class(newmark_state), intent(inout) :: st
          type(structure_model), intent(in) :: b
          real(dp), intent(in), value :: ag_old, ag_new
          real(dp), intent(inout), optional :: w_in, e_out
@@ -144,7 +173,7 @@ module pound_newmark
       !> `newmark_commit`, then `newmark_predict` of the next step (in submodule
       !> pound_newmark_step).
       module subroutine newmark_advance(st, b, ag_old, ag_new, dag_next, w_in, e_out)
-         type(newmark_state), intent(inout) :: st
+         class(newmark_state), intent(inout) :: st
          type(structure_model), intent(in) :: b
          real(dp), intent(in), value :: ag_old, ag_new, dag_next
          real(dp), intent(inout) :: w_in, e_out
@@ -177,7 +206,7 @@ module pound_newmark
       !> (du, and v, a at the end); an integrator without exact steps predicts by Newmark
       !> (`newmark_predict`). Submodule pound_newmark_exact.
       module subroutine newmark_predict_exact(st, b, ag_old, ag_new)
-         type(newmark_state), intent(inout) :: st
+         class(newmark_state), intent(inout) :: st
          type(structure_model), intent(in) :: b
          real(dp), intent(in), value :: ag_old, ag_new
       end subroutine newmark_predict_exact
@@ -382,7 +411,7 @@ contains
    !> at the next exact step.
    pure subroutine newmark_drop_exact(st)
       !> Integrator state.
-      type(newmark_state), intent(inout) :: st
+      class(newmark_state), intent(inout) :: st
 
       st%pending = .false.
       st%modal_valid = .false.
@@ -393,7 +422,7 @@ contains
    !> energy are recomputed from the state.
    subroutine newmark_set_state(st, b, u, v, a)
       !> Integrator state.
-      type(newmark_state), intent(inout) :: st
+      class(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       !> Displacement, velocity and acceleration (n each).
@@ -413,7 +442,7 @@ contains
    !> Overwrite x with Khat^{-1} x (one tridiagonal or banded solve).
    subroutine newmark_solve(st, x)
       !> Integrator state (factors).
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
       !> Right-hand side on entry, solution on return.
       real(dp), intent(inout) :: x(:)
       integer :: info
@@ -430,7 +459,7 @@ contains
    !> the load increment (it derives (K+G) du from the step's right-hand side).
    pure subroutine newmark_add_response(st, s, dof, x)
       !> Integrator state with the predicted `du`.
-      type(newmark_state), intent(inout) :: st
+      class(newmark_state), intent(inout) :: st
       !> The load increment (kN).
       real(dp), intent(in) :: s
       !> The DOF it acts on.
@@ -449,7 +478,7 @@ contains
    !> (a contact end that is a sparse row), x = Khat^{-1} sum_i w_i e_dof(i) (computed once).
    pure subroutine newmark_add_response_rows(st, s, dof, w, x)
       !> Integrator state with the predicted `du`.
-      type(newmark_state), intent(inout) :: st
+      class(newmark_state), intent(inout) :: st
       !> The load increment (kN).
       real(dp), intent(in) :: s
       !> The DOFs it acts on and their weights.
@@ -492,7 +521,7 @@ contains
    !> Number of DOFs.
    pure integer function newmark_n(st)
       !> Integrator state.
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
 
       newmark_n = st%n
    end function newmark_n
@@ -500,7 +529,7 @@ contains
    !> The time step (s).
    pure real(dp) function newmark_dt(st)
       !> Integrator state.
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
 
       newmark_dt = st%dt
    end function newmark_dt
@@ -508,7 +537,7 @@ contains
    !> Relative displacements at the current time (a view of the state: `st` must be a target).
    function newmark_u(st) result(p)
       !> Integrator state.
-      type(newmark_state), intent(in), target :: st
+      class(newmark_state), intent(in), target :: st
       real(dp), pointer, contiguous :: p(:)
 
       p => st%u
@@ -517,7 +546,7 @@ contains
    !> Relative velocities at the current time (a view of the state).
    function newmark_v(st) result(p)
       !> Integrator state.
-      type(newmark_state), intent(in), target :: st
+      class(newmark_state), intent(in), target :: st
       real(dp), pointer, contiguous :: p(:)
 
       p => st%v
@@ -526,7 +555,7 @@ contains
    !> Relative accelerations at the current time (a view of the state).
    function newmark_a(st) result(p)
       !> Integrator state.
-      type(newmark_state), intent(in), target :: st
+      class(newmark_state), intent(in), target :: st
       real(dp), pointer, contiguous :: p(:)
 
       p => st%a
@@ -535,7 +564,7 @@ contains
    !> Displacement increment of the step in progress (a view of the state).
    function newmark_du(st) result(p)
       !> Integrator state.
-      type(newmark_state), intent(in), target :: st
+      class(newmark_state), intent(in), target :: st
       real(dp), pointer, contiguous :: p(:)
 
       p => st%du
@@ -544,7 +573,7 @@ contains
    !> u of DOF i at the current time.
    pure real(dp) function newmark_u_at(st, i)
       !> Integrator state.
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
       !> DOF.
       integer, intent(in) :: i
 
@@ -554,7 +583,7 @@ contains
    !> v of DOF i at the current time.
    pure real(dp) function newmark_v_at(st, i)
       !> Integrator state.
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
       !> DOF.
       integer, intent(in) :: i
 
@@ -564,7 +593,7 @@ contains
    !> u + du of DOF i: the displacement at the end of the step in progress as predicted so far.
    pure real(dp) function newmark_predicted(st, i)
       !> Integrator state.
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
       !> DOF.
       integer, intent(in) :: i
 
@@ -576,7 +605,7 @@ contains
    !> accelerations at the ends (u(dt) = u + du).
    pure subroutine newmark_path(st, i, u0, v0, am)
       !> Integrator state with the predicted `du`.
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
       !> DOF.
       integer, intent(in) :: i
       !> Displacement and velocity at the start of the step, mean acceleration of the step.
@@ -600,22 +629,25 @@ contains
    !> Add the running energies of the integrator (kJ) to four sums: `newmark_energies`
    !> without an array result (the per-step audit of the coupled analysis, where loading
    !> the result just stored stalls).
-   pure subroutine newmark_add_energies(st, w_in, e_kinetic, e_strain, e_damping)
+   pure subroutine newmark_add_energies(st, w_in, e_kinetic, e_strain, e_damping, e_numerical)
       !> Integrator state.
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
       !> Input work, kinetic, strain and damping energy so far (added to).
       real(dp), intent(inout) :: w_in, e_kinetic, e_strain, e_damping
+      !> Numerical dissipation so far (added to: average acceleration has none).
+      real(dp), intent(inout) :: e_numerical
 
       w_in = w_in + st%input_work
       e_kinetic = e_kinetic + st%kinetic
       e_strain = e_strain + st%strain
       e_damping = e_damping + st%damping_energy
+      e_numerical = e_numerical + 0.0_dp
    end subroutine newmark_add_energies
 
    !> Kinetic energy of the relative motion, v^T M v / 2 (kJ).
    pure function kinetic_energy(st, b) result(e)
       !> Integrator state.
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       real(dp) :: e
@@ -629,7 +661,7 @@ contains
    !> product; equal to the band product to round-off, exact on refresh steps).
    pure function strain_energy(st, b) result(e)
       !> Integrator state.
-      type(newmark_state), intent(in) :: st
+      class(newmark_state), intent(in) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       real(dp) :: e
@@ -640,5 +672,65 @@ contains
          e = structure_strain_energy(b, st%u)
       end if
    end function strain_energy
+
+   !> `newmark_init` as the integrator's `init`.
+   subroutine init_binding(st, b, dt, ag0, error, general, refresh, exact)
+      !> Integrator state.
+      class(newmark_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Time step and ground acceleration at t = 0.
+      real(dp), intent(in) :: dt, ag0
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      !> As `newmark_init`.
+      logical, intent(in), optional :: general
+      !> As `newmark_init`.
+      integer, intent(in), optional :: refresh
+      !> As `newmark_init`.
+      logical, intent(in), optional :: exact
+
+      call newmark_init(st, b, dt, ag0, error, general, refresh, exact)
+   end subroutine init_binding
+
+   !> `newmark_swap_step` as the integrator's `swap_step` (`other` is a Newmark integrator).
+   subroutine swap_binding(st, other)
+      !> Integrator whose state continues with the other step.
+      class(newmark_state), intent(inout) :: st
+      !> Integrator of the same model at the other step.
+      class(integrator), intent(inout) :: other
+
+      select type (other)
+      class is (newmark_state)
+         call newmark_swap_step(st, other)
+      end select
+   end subroutine swap_binding
+
+   !> Velocity per displacement increment of the step: v_{n+1} = c2 du - v_n, c2 = 2/dt.
+   pure real(dp) function newmark_velocity_rate(st)
+      !> Integrator state.
+      class(newmark_state), intent(in) :: st
+
+      newmark_velocity_rate = st%c2
+   end function newmark_velocity_rate
+
+   !> The step length along which `newmark_path` is evaluated, 2/c2 (s).
+   pure real(dp) function newmark_path_span(st)
+      !> Integrator state.
+      class(newmark_state), intent(in) :: st
+
+      newmark_path_span = 2.0_dp/st%c2
+   end function newmark_path_span
+
+   !> `newmark_energies` and a numerical dissipation of zero (average acceleration conserves
+   !> the energy of a free undamped system).
+   pure function energies_binding(st) result(e)
+      !> Integrator state.
+      class(newmark_state), intent(in) :: st
+      real(dp) :: e(n_integrator_energies)
+
+      e = 0.0_dp
+      e(1:4) = newmark_energies(st)
+   end function energies_binding
 
 end module pound_newmark

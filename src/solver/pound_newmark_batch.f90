@@ -19,11 +19,11 @@ module pound_newmark_batch
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_structure, only: structure_model, structure_label
-   use pound_newmark, only: newmark_state, newmark_tridiagonal_factors
+   use pound_newmark, only: newmark_state, newmark_init, newmark_tridiagonal_factors
    implicit none
    private
 
-   public :: batch_lanes, newmark_batch, batch_init, batch_step, batch_lane_state, batch_reset_lane
+   public :: batch_lanes, newmark_batch, batch_start, batch_init, batch_step, batch_lane_state, batch_reset_lane
 
    !> Motions advanced together (two AVX2 vectors of doubles).
    integer, parameter :: batch_lanes = 8
@@ -45,6 +45,25 @@ module pound_newmark_batch
    end type newmark_batch
 
 contains
+
+   !> Factor Khat of the model for dt (`newmark_init`) and start every lane at rest
+   !> (`batch_init`): the batch's own set-up, so that the caller names no integrator type.
+   subroutine batch_start(bt, b, dt, ag0, error)
+      !> The batch (set up).
+      type(newmark_batch), intent(out) :: bt
+      !> The structural model (a shear building: kd = 1, every DOF moved by the ground).
+      type(structure_model), intent(in) :: b
+      !> Time step (s).
+      real(dp), intent(in) :: dt
+      !> Ground acceleration of each lane at t = 0 (m/s^2).
+      real(dp), intent(in) :: ag0(batch_lanes)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(newmark_state) :: st
+
+      call newmark_init(st, b, dt, ag0(1), error)
+      if (.not. allocated(error)) call batch_init(bt, st, b, ag0, error)
+   end subroutine batch_start
 
    !> Start every lane at rest relative to the ground, in equilibrium with its ground
    !> acceleration at t = 0 (as `newmark_init`), with the factors of `st`.

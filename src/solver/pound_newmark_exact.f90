@@ -249,7 +249,7 @@ contains
    !> its input work and damping energy (committed by `newmark_commit`).
    module subroutine newmark_predict_exact(st, b, ag_old, ag_new)
       !> Integrator state; `du` is set.
-      type(newmark_state), intent(inout) :: st
+      class(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       !> Ground acceleration at the start and the end of the step (m/s^2).

@@ -32,7 +32,7 @@ contains
    !> floors, no division. General path: the right-hand side, then dpbtrs.
    module subroutine newmark_predict(st, b, dag)
       !> Integrator state; `du` is set.
-      type(newmark_state), intent(inout) :: st
+      class(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       !> Ground acceleration increment a_g(t+dt) - a_g(t) (m/s^2; by value, as the time loop's
@@ -77,7 +77,7 @@ contains
    !> of dependent operations.
    module subroutine newmark_advance(st, b, ag_old, ag_new, dag_next, w_in, e_out)
       !> Integrator state.
-      type(newmark_state), intent(inout) :: st
+      class(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       !> Ground acceleration at the start and end of the step, and the increment of the next
@@ -104,7 +104,7 @@ contains
    !> own).
    module subroutine newmark_commit(st, b, ag_old, ag_new, w_in, e_out)
       !> Integrator state.
-      type(newmark_state), intent(inout) :: st
+      class(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       !> Ground acceleration at the start and end of the step (m/s^2; by value).

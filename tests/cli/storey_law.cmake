@@ -55,6 +55,13 @@ file(READ ${WORK_DIR}/collapse.out listing)
 expect_contains("collapse: listing" "${listing}" "COLLAPSE: collapsed in the uncoupled analysis (storey 1, t = ")
 file(REMOVE ${WORK_DIR}/collapse.out ${WORK_DIR}/collapse.h5 ${WORK_DIR}/collapse_summary.csv)
 
+# HHT-alpha with alpha < 0 is refused with bilinear storeys (when the run starts).
+string(REPLACE "history = 'all'" "history = 'all', integrator = 'hht', hht_alpha = -0.1" deck "${good}")
+file(WRITE ${WORK_DIR}/hht.nml "${deck}")
+run_pound(r hht.nml)
+expect_equal("hht: exit status" 1 "${r_rc}")
+expect_contains("hht: message" "${r_err}" "building A: bilinear storeys (storey_law = 'bilinear') need integrator = 'newmark'")
+
 # A frame takes no storey law (plastic hinges of frames are not available).
 file(READ ${SOURCE_DIR}/input/two_frames_fe.nml good)
 bad(frame_law "model = 'frame'" "model = 'frame'\n   storey_law = 'bilinear'"

@@ -1,0 +1,227 @@
+!> The integrator interface: what the time loop (`pound_analysis`), contact
+!> (`pound_contact`, `pound_contact_system`) and the reports see of the time integration of
+!> one structural model.
+!>
+!> An integrator holds its state privately (u, v, a of the model, the step's increment du,
+!> its factored effective matrix Khat and its running energies). A step is `predict` (the
+!> increment du for the ground acceleration alone), then any number of `add_load` /
+!> `add_load_rows` (contact: du += s Khat^{-1} w, with Khat^{-1} w from `solve`, computed
+!> once), then `commit`. `advance` is `commit` and the next step's `predict` in one call
+!> (a run without constraints). Contact reads the predicted end displacements
+!> (`predicted`), the motion inside the step (`path`, over `path_span`) and the velocity per
+!> displacement increment (`velocity_rate`: v_{n+1} = velocity_rate du + terms of the state
+!> at t_n) and never a constant of a particular method.
+!>
+!> Extensions: Newmark average acceleration (`newmark_state`, `pound_newmark`, with its
+!> tridiagonal, banded, batched and exact paths in submodules), HHT-alpha (`hht_state`,
+!> `pound_hht`). `pound_integrators` allocates the one the analysis plan names.
+module pound_integrator
+   use pound_kinds, only: dp
+   use pound_error, only: error_type
+   use pound_structure, only: structure_model
+   implicit none
+   private
+
+   public :: integrator, trapezoid_rate
+   public :: en_input, en_kinetic, en_strain, en_damping, en_numerical, n_integrator_energies
+
+   !> Indices of `energies`: input work, kinetic, strain and viscous damping energy, and the
+   !> energy the method itself dissipates (numerical dissipation; zero for Newmark).
+   integer, parameter :: en_input = 1, en_kinetic = 2, en_strain = 3, en_damping = 4, en_numerical = 5
+   !> Size of `energies`.
+   integer, parameter :: n_integrator_energies = 5
+
+   !> The time integration of one structural model (state private to each extension).
+   type, abstract :: integrator
+   contains
+      !> Factor Khat for dt, start at rest in equilibrium with the ground acceleration ag0.
+      procedure(init_i), deferred :: init
+      !> The step's increment du for the ground acceleration increment alone.
+      procedure(predict_i), deferred :: predict
+      !> Predict the step exactly (exact free steps; an integrator without them predicts).
+      procedure(predict_exact_i), deferred :: predict_exact
+      !> Drop an exact prediction (the step is predicted again by `predict`).
+      procedure(drop_exact_i), deferred :: drop_exact
+      !> Complete the step with du, account the energies (optionally add them to two sums).
+      procedure(commit_i), deferred :: commit
+      !> `commit`, then `predict` of the next step.
+      procedure(advance_i), deferred :: advance
+      !> x = Khat^{-1} x.
+      procedure(solve_i), deferred :: solve
+      !> du = du + s x for a load increment s at one DOF, x = Khat^{-1} e_dof.
+      procedure(add_load_i), deferred :: add_load
+      !> du = du + s x for a load increment s along the weights w of the DOFs dof.
+      procedure(add_load_rows_i), deferred :: add_load_rows
+      !> Exchange the step data (dt, constants, factors) with an integrator of the same model
+      !> and kind set up for another dt.
+      procedure(swap_step_i), deferred :: swap_step
+      !> Overwrite the state (tests).
+      procedure(set_state_i), deferred :: set_state
+      !> Number of DOFs.
+      procedure(int_i), deferred :: dofs
+      !> Time step (s).
+      procedure(real_i), deferred :: step_size
+      !> Velocity per displacement increment of the step (1/s).
+      procedure(real_i), deferred :: velocity_rate
+      !> Length of the step along which `path` is evaluated (s).
+      procedure(real_i), deferred :: path_span
+      !> The motion of DOF i inside the step as predicted so far: u0 + v0 s + am s^2/2.
+      procedure(path_i), deferred :: path
+      !> Views of u, v, a and du (pointers into the state of a target).
+      procedure(view_i), deferred :: u_view, v_view, a_view, du_view
+      !> u, v of DOF i now; u + du of DOF i.
+      procedure(at_i), deferred :: u_at, v_at, predicted
+      !> The running energies (`en_input` ... `en_numerical`), kJ.
+      procedure(energies_i), deferred :: energies
+      !> Add input work, kinetic, strain and damping energy and numerical dissipation to five sums.
+      procedure(add_energies_i), deferred :: add_energies
+      !> Kinetic and strain energy of the state (kJ).
+      procedure(model_energy_i), deferred :: kinetic_energy, strain_energy
+   end type integrator
+
+   abstract interface
+      !> Interface of the binding(s) declared with `init_i` (see the type).
+      subroutine init_i(st, b, dt, ag0, error, general, refresh, exact)
+         import :: integrator, structure_model, dp, error_type
+         class(integrator), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in) :: dt, ag0
+         type(error_type), allocatable, intent(out) :: error
+         logical, intent(in), optional :: general
+         integer, intent(in), optional :: refresh
+         logical, intent(in), optional :: exact
+      end subroutine init_i
+      !> Interface of the binding(s) declared with `predict_i` (see the type).
+      subroutine predict_i(st, b, dag)
+         import :: integrator, structure_model, dp
+         class(integrator), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in), value :: dag
+      end subroutine predict_i
+      !> Interface of the binding(s) declared with `predict_exact_i` (see the type).
+      subroutine predict_exact_i(st, b, ag_old, ag_new)
+         import :: integrator, structure_model, dp
+         class(integrator), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in), value :: ag_old, ag_new
+      end subroutine predict_exact_i
+      !> Interface of the binding(s) declared with `drop_exact_i` (see the type).
+      pure subroutine drop_exact_i(st)
+         import :: integrator
+         class(integrator), intent(inout) :: st
+      end subroutine drop_exact_i
+      !> Interface of the binding(s) declared with `commit_i` (see the type).
+      subroutine commit_i(st, b, ag_old, ag_new, w_in, e_out)
+         import :: integrator, structure_model, dp
+         class(integrator), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in), value :: ag_old, ag_new
+         real(dp), intent(inout), optional :: w_in, e_out
+      end subroutine commit_i
+      !> Interface of the binding(s) declared with `advance_i` (see the type).
+      subroutine advance_i(st, b, ag_old, ag_new, dag_next, w_in, e_out)
+         import :: integrator, structure_model, dp
+         class(integrator), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in), value :: ag_old, ag_new, dag_next
+         real(dp), intent(inout) :: w_in, e_out
+      end subroutine advance_i
+      !> Interface of the binding(s) declared with `solve_i` (see the type).
+      subroutine solve_i(st, x)
+         import :: integrator, dp
+         class(integrator), intent(in) :: st
+         real(dp), intent(inout) :: x(:)
+      end subroutine solve_i
+      !> Interface of the binding(s) declared with `add_load_i` (see the type).
+      pure subroutine add_load_i(st, s, dof, x)
+         import :: integrator, dp
+         class(integrator), intent(inout) :: st
+         real(dp), intent(in) :: s
+         integer, intent(in) :: dof
+         real(dp), intent(in) :: x(:)
+      end subroutine add_load_i
+      !> Interface of the binding(s) declared with `add_load_rows_i` (see the type).
+      pure subroutine add_load_rows_i(st, s, dof, w, x)
+         import :: integrator, dp
+         class(integrator), intent(inout) :: st
+         real(dp), intent(in) :: s
+         integer, intent(in) :: dof(:)
+         real(dp), intent(in) :: w(:)
+         real(dp), intent(in) :: x(:)
+      end subroutine add_load_rows_i
+      !> Interface of the binding(s) declared with `swap_step_i` (see the type).
+      subroutine swap_step_i(st, other)
+         import :: integrator
+         class(integrator), intent(inout) :: st
+         class(integrator), intent(inout) :: other
+      end subroutine swap_step_i
+      !> Interface of the binding(s) declared with `set_state_i` (see the type).
+      subroutine set_state_i(st, b, u, v, a)
+         import :: integrator, structure_model, dp
+         class(integrator), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in), optional :: u(:), v(:), a(:)
+      end subroutine set_state_i
+      !> Interface of the binding(s) declared with `int_i` (see the type).
+      pure integer function int_i(st)
+         import :: integrator
+         class(integrator), intent(in) :: st
+      end function int_i
+      !> Interface of the binding(s) declared with `real_i` (see the type).
+      pure real(dp) function real_i(st)
+         import :: integrator, dp
+         class(integrator), intent(in) :: st
+      end function real_i
+      !> Interface of the binding(s) declared with `path_i` (see the type).
+      pure subroutine path_i(st, i, u0, v0, am)
+         import :: integrator, dp
+         class(integrator), intent(in) :: st
+         integer, intent(in) :: i
+         real(dp), intent(out) :: u0, v0, am
+      end subroutine path_i
+      !> Interface of the binding(s) declared with `view_i` (see the type).
+      function view_i(st) result(p)
+         import :: integrator, dp
+         class(integrator), intent(in), target :: st
+         real(dp), pointer, contiguous :: p(:)
+      end function view_i
+      !> Interface of the binding(s) declared with `at_i` (see the type).
+      pure real(dp) function at_i(st, i)
+         import :: integrator, dp
+         class(integrator), intent(in) :: st
+         integer, intent(in) :: i
+      end function at_i
+      !> Interface of the binding(s) declared with `energies_i` (see the type).
+      pure function energies_i(st) result(e)
+         import :: integrator, dp, n_integrator_energies
+         class(integrator), intent(in) :: st
+         real(dp) :: e(n_integrator_energies)
+      end function energies_i
+      !> Interface of the binding(s) declared with `add_energies_i` (see the type).
+      pure subroutine add_energies_i(st, w_in, e_kinetic, e_strain, e_damping, e_numerical)
+         import :: integrator, dp
+         class(integrator), intent(in) :: st
+         real(dp), intent(inout) :: w_in, e_kinetic, e_strain, e_damping, e_numerical
+      end subroutine add_energies_i
+      !> Interface of the binding(s) declared with `model_energy_i` (see the type).
+      pure function model_energy_i(st, b) result(e)
+         import :: integrator, structure_model, dp
+         class(integrator), intent(in) :: st
+         type(structure_model), intent(in) :: b
+         real(dp) :: e
+      end function model_energy_i
+   end interface
+
+contains
+
+   !> The velocity per displacement increment of the trapezoidal rule, 2/dt (1/s): the
+   !> default rate of a joint's compression when no integrator is given
+   !> (`contact_init_flexibility`).
+   pure real(dp) function trapezoid_rate(dt)
+      !> Time step (s).
+      real(dp), intent(in) :: dt
+
+      trapezoid_rate = 2.0_dp/dt
+   end function trapezoid_rate
+
+end module pound_integrator
