@@ -60,6 +60,9 @@ module pound_joint_law
       integer :: n_segments = 0
       !> Envelope points as read (the namelist's whole arrays: unset beyond those given).
       real(dp), allocatable :: envelope_d(:), envelope_r(:)
+      !> The common `dashpot` (kN s/m) and `restitution` as read (a smooth law refuses a
+      !> dashpot and may require a restitution; the deck's own checks of them follow).
+      real(dp) :: dashpot = 0.0_dp, restitution = 0.0_dp
    end type law_input
 
    !> A joint law, as described to the listing, the HDF5 writer and the step.
@@ -75,6 +78,17 @@ module pound_joint_law
       !> Re-linearise around the compression and force of the last solve; the default:
       !> piecewise linear, nothing changes.
       procedure :: relinearise => law_keep_linearisation
+      !> A smooth law's force f(d, d'; v0) before the clip r = max(0, f) and its partial
+      !> derivatives (`defined` false by default: the law has no force of its own and is
+      !> solved by its rows, or re-linearised by `relinearise`). The step solves such a law
+      !> exactly by Newton on its tangent (pound_contact_smooth).
+      procedure :: force => law_no_force
+      !> Set the masses of the two facing ends (t; 0: rigid) where the law needs them (a
+      !> dashpot calibrated to a restitution); default: nothing.
+      procedure :: set_masses => law_ignore_masses
+      !> The stiffness the law shows in the joints' table (kN/m or kN/m^(3/2)); default 0:
+      !> the rows' own.
+      procedure :: shown_stiffness => law_no_shown_stiffness
    end type joint_law
 
    abstract interface
@@ -144,5 +158,50 @@ contains
       end associate
       changed = .false.
    end subroutine law_keep_linearisation
+
+   !> Default `force`: not a smooth law with a force of its own.
+   pure subroutine law_no_force(law, d, ddot, v0, f, df_dd, df_dv, defined)
+      !> The law.
+      class(joint_law), intent(in) :: law
+      !> Penetration d = v - gap (m), its rate (m/s) and the closing speed latched at the
+      !> impact's start (m/s).
+      real(dp), intent(in) :: d, ddot, v0
+      !> Force before the clip (kN) and its derivatives by d (kN/m) and d' (kN s/m).
+      real(dp), intent(out) :: f, df_dd, df_dv
+      !> The law has a force of its own.
+      logical, intent(out) :: defined
+
+      associate (unused => [d, ddot, v0])
+      end associate
+      associate (unused => law)
+      end associate
+      f = 0.0_dp
+      df_dd = 0.0_dp
+      df_dv = 0.0_dp
+      defined = .false.
+   end subroutine law_no_force
+
+   !> Default `set_masses`: the law needs no mass.
+   pure subroutine law_ignore_masses(law, m1, m2)
+      !> The law.
+      class(joint_law), intent(inout) :: law
+      !> Masses of the two ends (t; 0: rigid, infinite).
+      real(dp), intent(in) :: m1, m2
+
+      associate (unused => [m1, m2])
+      end associate
+      associate (unused => law)
+      end associate
+   end subroutine law_ignore_masses
+
+   !> Default `shown_stiffness`: none (the rows' stiffness is shown).
+   pure real(dp) function law_no_shown_stiffness(law) result(k)
+      !> The law.
+      class(joint_law), intent(in) :: law
+
+      associate (unused => law)
+      end associate
+      k = 0.0_dp
+   end function law_no_shown_stiffness
 
 end module pound_joint_law

@@ -1,0 +1,276 @@
+!> The exact step of the joints whose law iterates (`joint_law%iterates`): the smooth laws
+!> (pound_law_smooth: a force f(d, d'; v0) of their own, `joint_law%force`) by Newton on the
+!> step's LCP, and laws that only re-linearise a secant (`joint_law%relinearise`).
+!>
+!> **Smooth laws.** With the penetration d = v - gap at the end of the step, v = v_pred -
+!> F r (F = B^T Khat^{-1} B, pound_contact), the end-of-step contact equations are
+!>
+!>   r_k = max(0, f_k(d_k, d'_k; v0_k)) for d_k > 0,  r_k = 0 for d_k <= 0,
+!>
+!> with the rate by the trapezoidal rule, d'_{n+1} = (2/h) (d_{n+1} - d_n) - d'_n, d'_n the
+!> closing speed of the integrators at the step's start (Newmark's own velocity), and v0 the
+!> closing speed latched when d crosses 0 upwards: the speed at the crossing of the step's
+!> free path (the average-acceleration parabola through d_n, d'_n and the released end d),
+!> kept while d > 0 and reset when d <= 0 (joint state `v0`, at least `v0_floor`).
+!> Each Newton iterate is one LCP of the step (pound_contact: the condensed system on the
+!> constant factored Khat) in which joint k is an elastic row of the tangent
+!> kt = df/dd + (2/h) df/dd' through the iterate (d_i, f_i), r = max(0, kt (d - s)),
+!> s = d_i - f_i/kt (the row's offset, joint state `shift`, added to its q): the LCP keeps
+!> the complementarity of the clip and of the open joint exact at every iterate. Newton
+!> starts from the released penetration (every force of the step released: from above for a
+!> convex law) and stops when every joint's residual |r - max(0, f(d))| is at most
+!> `smooth_residual_limit` (1e-12) of its force, or below the force the round-off of v makes
+!> (64 eps (|v| + gap) times the tangent). A Kelvin joint's force jumps to c d' at d = 0+:
+!> at an iterate with d <= 0 and f(0+) > 0 the row is rigid (kt * `rigid_factor`, no
+!> offset) and d = 0 with 0 <= r <= f(0+) is the solution of the set-valued equation.
+!> After the solve the row takes the secant r/d, so that the joint's update
+!> (`joint_advance`, pound_joint_state) gives d; after the commit it shows the law's stiffness
+!> (`joint_law%shown_stiffness`).
+module pound_contact_smooth
+   use pound_kinds, only: dp
+   use pound_newmark, only: newmark_state, newmark_v_at
+   use pound_contact_pair, only: end_sign
+   use pound_contact_system, only: contact_system, joint_constants
+   use pound_lcp_active_set, only: active_set_init
+   implicit none
+   private
+
+   public :: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_joint_commit, smooth_residual, &
+             latch_speed
+   public :: smooth_residual_limit, v0_floor, rigid_factor
+
+   !> Largest relative residual of a smooth joint's end-of-step equation.
+   real(dp), parameter :: smooth_residual_limit = 1.0e-12_dp
+   !> Smallest latched closing speed v0 (m/s): a grazing impact (v0 -> 0) keeps a finite
+   !> Hertz-damp constant a/v0.
+   real(dp), parameter :: v0_floor = 1.0e-6_dp
+   !> A rigid row's stiffness over the joint's tangent (the Kelvin joint at d = 0).
+   real(dp), parameter :: rigid_factor = 1.0e8_dp
+
+contains
+
+   !> The law of joint k has a force of its own (a smooth law).
+   pure logical function has_force(cs, k)
+      type(contact_system), intent(in) :: cs
+      integer, intent(in) :: k
+      real(dp) :: f, a, b
+
+      call cs%pair(k)%law%given%force(1.0e-3_dp, 0.0_dp, 1.0_dp, f, a, b, has_force)
+   end function has_force
+
+   !> Before the step's first LCP: the constants of every iterating joint, a smooth joint's
+   !> latch candidate v0 (when it starts open) and its first tangent row, at the released
+   !> penetration v_pred - gap.
+   pure subroutine smooth_start(cs, v_pred)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+      !> Closing displacements with every force of the step released (m).
+      real(dp), intent(in) :: v_pred(:)
+      integer :: i, k
+      real(dp) :: dn
+
+      do i = 1, size(cs%iterating)
+         k = cs%iterating(i)
+         if (.not. has_force(cs, k)) then
+            call joint_constants(cs, k)
+            cycle
+         end if
+         associate (j => cs%joint(k), gap => cs%pair(k)%gap)
+            dn = j%v - gap
+            if (dn <= 0.0_dp) j%v0 = latch_speed(dn, j%vdot, v_pred(k) - gap, 2.0_dp/cs%c2)
+         end associate
+         call linearise(cs, k, v_pred(k) - cs%pair(k)%gap)
+      end do
+   end subroutine smooth_start
+
+   !> The closing speed at which the step's free path d(s) = d_n + d'_n s + a s^2/2 (through
+   !> d(h) = d_h) crosses d = 0 (at least `v0_floor`); d_n <= 0.
+   pure real(dp) function latch_speed(dn, vn, dh, h) result(v0)
+      !> Penetration and its rate at the step's start, released penetration at its end (m,
+      !> m/s, m).
+      real(dp), intent(in) :: dn, vn, dh
+      !> Step (s).
+      real(dp), intent(in) :: h
+      real(dp) :: am, disc, s, den
+
+      am = 2.0_dp*(dh - dn - vn*h)/(h*h)
+      s = h
+      disc = max(0.0_dp, vn*vn - 2.0_dp*am*dn)
+      den = vn + sqrt(disc)
+      if (den > 0.0_dp) s = min(h, -2.0_dp*dn/den)
+      v0 = max(v0_floor, vn + am*s)
+   end function latch_speed
+
+   !> Tangent row of smooth joint k through its law at the penetration d (m).
+   pure subroutine linearise(cs, k, d)
+      type(contact_system), intent(inout) :: cs
+      integer, intent(in) :: k
+      real(dp), intent(in) :: d
+      real(dp) :: f, fd, fv, kt, dd, shift
+      logical :: ok
+
+      associate (j => cs%joint(k), law => cs%pair(k)%law)
+         if (d > 0.0_dp) then
+            dd = cs%c2*(d - (j%v - cs%pair(k)%gap)) - j%vdot
+            call law%given%force(d, dd, max(j%v0, v0_floor), f, fd, fv, ok)
+            kt = fd + cs%c2*fv
+            if (.not. (kt > 0.0_dp)) kt = cs%c2*fv
+            if (.not. (kt > 0.0_dp)) kt = law%stiffness
+            shift = d - f/kt
+         else
+            dd = cs%c2*(0.0_dp - (j%v - cs%pair(k)%gap)) - j%vdot
+            call law%given%force(0.0_dp, dd, max(j%v0, v0_floor), f, fd, fv, ok)
+            kt = fd + cs%c2*fv
+            if (.not. (kt > 0.0_dp)) kt = law%stiffness
+            if (f > 0.0_dp) kt = rigid_factor*kt
+            shift = 0.0_dp
+         end if
+         law%stiffness = kt
+         j%shift = shift
+      end associate
+      call joint_constants(cs, k)
+   end subroutine linearise
+
+   !> Relative residual of smooth joint k's end-of-step equation for the force r (kN) and
+   !> the closing displacement v (m) (`pound_contact_smooth`: below the force the round-off of
+   !> v makes, 0).
+   pure real(dp) function smooth_residual(cs, k, v, r) result(res)
+      !> The contact system (the joint's state at the step's start).
+      type(contact_system), intent(in) :: cs
+      !> Joint.
+      integer, intent(in) :: k
+      !> Closing displacement (m) and force (kN) at the end of the step.
+      real(dp), intent(in) :: v, r
+      real(dp) :: d, dd, f, fd, fv, rt, kt, tol
+      logical :: ok
+
+      associate (j => cs%joint(k), law => cs%pair(k)%law, gap => cs%pair(k)%gap)
+         d = v - gap
+         tol = 64.0_dp*epsilon(1.0_dp)*(abs(v) + abs(gap))
+         dd = cs%c2*(max(d, 0.0_dp) - (j%v - gap)) - j%vdot
+         call law%given%force(max(d, 0.0_dp), dd, max(j%v0, v0_floor), f, fd, fv, ok)
+         kt = max(0.0_dp, fd + cs%c2*fv, law%stiffness)
+         if (d > 0.0_dp) then
+            rt = max(0.0_dp, f)
+            res = max(0.0_dp, abs(r - rt) - kt*tol)/max(r, rt, tiny(1.0_dp))
+         else if (f > 0.0_dp .and. -d <= tol) then
+            ! d = 0: any force up to f(0+) (a Kelvin joint's jump).
+            res = max(0.0_dp, r - f, -r)/max(f, tiny(1.0_dp))
+         else
+            res = max(0.0_dp, abs(r) - kt*tol)/max(abs(r), tiny(1.0_dp))
+         end if
+      end associate
+   end function smooth_residual
+
+   !> After an LCP of the step: true when an iterating joint moved its row (then the LCP is
+   !> solved again): a smooth joint whose residual is above `smooth_residual_limit` takes
+   !> the tangent at the solution's penetration; another iterating law re-linearises its
+   !> secant (`joint_law%relinearise`).
+   function smooth_relinearise(cs, v_pred) result(changed)
+      !> The contact system, `r_new` and `x_new` of the last solve.
+      type(contact_system), intent(inout) :: cs
+      !> Closing displacements with every force of the step released (m).
+      real(dp), intent(in) :: v_pred(:)
+      logical :: changed
+      integer :: i, k
+      real(dp) :: d, v
+      logical :: moved
+
+      changed = .false.
+      do i = 1, size(cs%iterating)
+         k = cs%iterating(i)
+         if (has_force(cs, k)) then
+            v = v_pred(k) - dot_product(cs%f(:, k), cs%r_new)
+            if (smooth_residual(cs, k, v, cs%r_new(k)) <= smooth_residual_limit) cycle
+            call linearise(cs, k, v - cs%pair(k)%gap)
+            changed = .true.
+            cycle
+         end if
+         associate (j => cs%joint(k), law => cs%pair(k)%law)
+            d = (cs%r_new(k) + law%dashpot*(cs%rate_a(k)*j%d + cs%rate_b(k)*j%ddot) + &
+                 law%stiffness*(j%plastic + cs%x_new(k)))/cs%phat(k)
+            call law%given%relinearise(d, cs%r_new(k), law%stiffness, moved)
+         end associate
+         if (.not. moved) cycle
+         call joint_constants(cs, k)
+         changed = .true.
+      end do
+      if (changed) call active_set_init(cs%as, cs%m)
+   end function smooth_relinearise
+
+   !> After the step's last LCP: every smooth joint's row takes the secant r/d of the
+   !> solution (the joint's update then gives its penetration d; a rigid row stays).
+   pure subroutine smooth_finish(cs, v_pred)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+      !> Closing displacements with every force of the step released (m).
+      real(dp), intent(in) :: v_pred(:)
+      integer :: i, k
+      real(dp) :: d
+
+      do i = 1, size(cs%iterating)
+         k = cs%iterating(i)
+         if (.not. has_force(cs, k)) cycle
+         d = v_pred(k) - dot_product(cs%f(:, k), cs%r_new) - cs%pair(k)%gap
+         if (cs%r_new(k) > 0.0_dp .and. d > 0.0_dp) then
+            cs%pair(k)%law%stiffness = cs%r_new(k)/d
+            call joint_constants(cs, k)
+         end if
+         cs%joint(k)%shift = 0.0_dp
+      end do
+   end subroutine smooth_finish
+
+   !> After a step's commit (`contact_commit`): every smooth joint's closing speed from the
+   !> integrators, its latch reset where the joint is open (d <= 0), its row back at the
+   !> law's stiffness (what the listing and the results show).
+   subroutine smooth_commit(cs, states)
+      !> The contact system, `vp` the committed closing displacements.
+      type(contact_system), intent(inout) :: cs
+      !> The integrators at the end of the step.
+      type(newmark_state), intent(in) :: states(:)
+      integer :: i, k, e, b, l
+      real(dp) :: s, w
+
+      do i = 1, size(cs%iterating)
+         k = cs%iterating(i)
+         if (.not. has_force(cs, k)) cycle
+         s = 0.0_dp
+         do e = 1, 2
+            b = cs%pair(k)%building(e)
+            if (b == 0) cycle
+            if (cs%pair(k)%dof(e) > 0) then
+               w = newmark_v_at(states(b), cs%pair(k)%dof(e))
+            else
+               w = 0.0_dp
+               associate (row => cs%pair(k)%end_row(e))
+                  do l = row%start(1), row%start(2) - 1
+                     w = w + row%coef(l)*newmark_v_at(states(b), row%dof(l))
+                  end do
+                  w = row%scale(1)*w
+               end associate
+            end if
+            s = s + end_sign(e)*w
+         end do
+         call smooth_joint_commit(cs, k, cs%vp(k), s)
+      end do
+   end subroutine smooth_commit
+
+   !> `smooth_commit` of smooth joint k with its committed closing displacement v (m) and
+   !> closing speed vdot (m/s) (for a caller that integrates the ends itself).
+   pure subroutine smooth_joint_commit(cs, k, v, vdot)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+      !> Joint.
+      integer, intent(in) :: k
+      !> Closing displacement (m) and speed (m/s) at the end of the step.
+      real(dp), intent(in) :: v, vdot
+
+      cs%joint(k)%vdot = vdot
+      if (v - cs%pair(k)%gap <= 0.0_dp) cs%joint(k)%v0 = 0.0_dp
+      if (cs%pair(k)%law%given%shown_stiffness() > 0.0_dp) then
+         cs%pair(k)%law%stiffness = cs%pair(k)%law%given%shown_stiffness()
+         call joint_constants(cs, k)
+      end if
+   end subroutine smooth_joint_commit
+
+end module pound_contact_smooth
