@@ -124,7 +124,6 @@ contains
       type(contact_system), intent(in) :: cs
       !> The step (s) the joints are judged by.
       real(dp), intent(in) :: dt
-      real(dp), parameter :: pi = acos(-1.0_dp)
       real(dp) :: meff, half, worst
       integer :: k, found, kw
       character(len=:), allocatable :: head
@@ -138,7 +137,7 @@ contains
          associate (p => cs%pair(k))
             if (cs%joint(k)%impacts == 0) cycle
             meff = effective_mass(p, models)
-            half = pi*sqrt(meff/p%law%stiffness)
+            half = contact_half_period(p, models)
             if (half < worst) then
                worst = half
                kw = k

@@ -21,7 +21,8 @@ module pound_law_smooth
    implicit none
    private
 
-   public :: smooth_law, make_smooth, smooth_take, hertz_stiffness_range, effective_mass_of
+   public :: smooth_law, make_smooth, smooth_take, hertz_stiffness_range, effective_mass_of, realised_restitution, &
+             is_smooth
 
    !> Plausible range of a Hertz-type stiffness kh, beta (kN/m^(3/2)): outside it the deck
    !> is refused (the literature's values for concrete floors: about 1e6 to 1e9).
@@ -147,6 +148,40 @@ contains
       end if
       cfg%stiffness = raw%stiffness
    end subroutine smooth_take
+
+   !> The law is a smooth law (has a force of its own, solved by pound_contact_smooth).
+   pure logical function is_smooth(law)
+      !> The law.
+      class(joint_law), intent(in) :: law
+
+      select type (law)
+      class is (smooth_law)
+         is_smooth = .true.
+      class default
+         is_smooth = .false.
+      end select
+   end function is_smooth
+
+   !> The realised coefficient of restitution of a smooth law's calibration: the central
+   !> impact of its facing masses (unit masses where it was given none: the laws here
+   !> deliver the same e_r at any masses and speed) at `typical_impact_speed`, finely
+   !> integrated (`law_impact`); 0 for a law that is not smooth.
+   pure real(dp) function realised_restitution(law) result(e_r)
+      !> The law.
+      class(joint_law), intent(in) :: law
+      type(impact_result) :: imp
+
+      e_r = 0.0_dp
+      select type (law)
+      class is (smooth_law)
+         if (law%meff > 0.0_dp) then
+            imp = law_impact(law, law%m1, law%m2, typical_impact_speed)
+         else
+            imp = law_impact(law, 1.0_dp, 1.0_dp, typical_impact_speed)
+         end if
+         e_r = imp%restitution
+      end select
+   end function realised_restitution
 
    pure function smooth_name(law) result(name)
       class(smooth_law), intent(in) :: law
