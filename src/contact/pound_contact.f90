@@ -362,7 +362,7 @@ contains
          call solve_lcp(cs, v_pred, t, step, error)
          if (allocated(error)) return
          if (size(cs%iterating) == 0) return
-         if (.not. smooth_relinearise(cs, v_pred)) then
+         if (.not. smooth_relinearise(cs, v_pred, it)) then
             call smooth_finish(cs, v_pred)
             return
          end if

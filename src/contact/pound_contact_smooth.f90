@@ -18,9 +18,13 @@
 !> s = d_i - f_i/kt (the row's offset, joint state `shift`, added to its q): the LCP keeps
 !> the complementarity of the clip and of the open joint exact at every iterate. Newton
 !> starts from the released penetration (every force of the step released: from above for a
-!> convex law) and stops when every joint's residual |r - max(0, f(d))| is at most
+!> convex law); where a tangent would cross r = 0 at d < 0 and the law has no force at
+!> d = 0+, the row is the secant from the origin instead and stops when every joint's residual |r - max(0, f(d))| is at most
 !> `smooth_residual_limit` (1e-12) of its force, or below the force the round-off of v makes
-!> (64 eps (|v| + gap) times the tangent). A Kelvin joint's force jumps to c d' at d = 0+:
+!> (64 eps (|v| + gap) times the tangent). From the `secant_after`-th iterate on, a joint's
+!> row is the secant through its last two iterates (regula falsi where the law has a kink
+!> between them, Jankowski's damping switching off at d' = 0, where tangents from its two
+!> sides would cycle). A Kelvin joint's force jumps to c d' at d = 0+:
 !> at an iterate with d <= 0 and f(0+) > 0 the row is rigid (kt * `rigid_factor`, no
 !> offset) and d = 0 with 0 <= r <= f(0+) is the solution of the set-valued equation.
 !> After the solve the row takes the secant r/d, so that the joint's update
@@ -37,15 +41,19 @@ module pound_contact_smooth
 
    public :: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_joint_commit, smooth_residual, &
              latch_speed
-   public :: smooth_residual_limit, v0_floor, rigid_factor
+   public :: smooth_residual_limit, v0_floor, rigid_stiffness
 
    !> Largest relative residual of a smooth joint's end-of-step equation.
    real(dp), parameter :: smooth_residual_limit = 1.0e-12_dp
+   !> Newton iterates after which a smooth joint's row is the secant through its last two
+   !> iterates (a kink between them: tangents from its two sides can cycle).
+   integer, parameter :: secant_after = 4
    !> Smallest latched closing speed v0 (m/s): a grazing impact (v0 -> 0) keeps a finite
    !> Hertz-damp constant a/v0.
    real(dp), parameter :: v0_floor = 1.0e-6_dp
-   !> A rigid row's stiffness over the joint's tangent (the Kelvin joint at d = 0).
-   real(dp), parameter :: rigid_factor = 1.0e8_dp
+   !> A rigid row's stiffness (kN/m; 1/phat = 1e-200: d = 0 to round-off), the Kelvin joint
+   !> at d = 0.
+   real(dp), parameter :: rigid_stiffness = 1.0e200_dp
 
 contains
 
@@ -79,7 +87,8 @@ contains
             dn = j%v - gap
             if (dn <= 0.0_dp) j%v0 = latch_speed(dn, j%vdot, v_pred(k) - gap, 2.0_dp/cs%c2)
          end associate
-         call linearise(cs, k, v_pred(k) - cs%pair(k)%gap)
+         cs%joint(k)%d_iter = 0.0_dp
+         call linearise(cs, k, v_pred(k) - cs%pair(k)%gap, .false.)
       end do
    end subroutine smooth_start
 
@@ -101,28 +110,53 @@ contains
       v0 = max(v0_floor, vn + am*s)
    end function latch_speed
 
-   !> Tangent row of smooth joint k through its law at the penetration d (m).
-   pure subroutine linearise(cs, k, d)
+   !> Tangent row of smooth joint k through its law at the penetration d (m); with `secant`,
+   !> the secant through the previous iterate where it has a positive slope (a kink of the
+   !> law between the iterates: Jankowski's damping switching at d' = 0).
+   pure subroutine linearise(cs, k, d, secant)
       type(contact_system), intent(inout) :: cs
       integer, intent(in) :: k
       real(dp), intent(in) :: d
-      real(dp) :: f, fd, fv, kt, dd, shift
+      logical, intent(in) :: secant
+      real(dp) :: f, fd, fv, kt, dd, shift, ks, f0
       logical :: ok
 
       associate (j => cs%joint(k), law => cs%pair(k)%law)
          if (d > 0.0_dp) then
             dd = cs%c2*(d - (j%v - cs%pair(k)%gap)) - j%vdot
             call law%given%force(d, dd, max(j%v0, v0_floor), f, fd, fv, ok)
-            kt = fd + cs%c2*fv
-            if (.not. (kt > 0.0_dp)) kt = cs%c2*fv
-            if (.not. (kt > 0.0_dp)) kt = law%stiffness
-            shift = d - f/kt
+            ks = 0.0_dp
+            if (secant .and. j%d_iter > 0.0_dp .and. d /= j%d_iter) ks = (f - j%f_iter)/(d - j%d_iter)
+            if (ks > 0.0_dp) then
+               kt = ks
+               shift = d - f/kt
+            else
+               kt = fd + cs%c2*fv
+               if (.not. (kt > 0.0_dp)) kt = cs%c2*fv
+               if (.not. (kt > 0.0_dp)) kt = law%stiffness
+               shift = d - f/kt
+               if (shift < 0.0_dp .and. f > 0.0_dp) then
+                  ! The tangent would push at d < 0 where a law without force at d = 0+ has
+                  ! none (the Hertz family's start, Jankowski's c ~ d^(1/4)): the secant from
+                  ! d = 0.
+                  call law%given%force(0.0_dp, dd, max(j%v0, v0_floor), f0, fd, fv, ok)
+                  if (.not. (f0 > 0.0_dp)) then
+                     kt = f/d
+                     shift = 0.0_dp
+                  end if
+               end if
+            end if
+            j%d_iter = d
+            j%f_iter = f
          else
             dd = cs%c2*(0.0_dp - (j%v - cs%pair(k)%gap)) - j%vdot
             call law%given%force(0.0_dp, dd, max(j%v0, v0_floor), f, fd, fv, ok)
-            kt = fd + cs%c2*fv
-            if (.not. (kt > 0.0_dp)) kt = law%stiffness
-            if (f > 0.0_dp) kt = rigid_factor*kt
+            ! Open at the iterate: the secant from d = 0 to the last closed iterate (else the
+            ! row's slope), or a rigid row where the force jumps at d = 0+ (Kelvin).
+            kt = law%stiffness
+            if (j%d_iter > 0.0_dp) kt = j%f_iter/j%d_iter
+            if (.not. (kt > 0.0_dp)) kt = max(fd + cs%c2*fv, law%stiffness)
+            if (f > 0.0_dp) kt = rigid_stiffness
             shift = 0.0_dp
          end if
          law%stiffness = kt
@@ -146,18 +180,21 @@ contains
 
       associate (j => cs%joint(k), law => cs%pair(k)%law, gap => cs%pair(k)%gap)
          d = v - gap
+         ! The round-off of v (m) and the force it makes through the law's tangent and the
+         ! row's (not a rigid row's).
          tol = 64.0_dp*epsilon(1.0_dp)*(abs(v) + abs(gap))
          dd = cs%c2*(max(d, 0.0_dp) - (j%v - gap)) - j%vdot
          call law%given%force(max(d, 0.0_dp), dd, max(j%v0, v0_floor), f, fd, fv, ok)
-         kt = max(0.0_dp, fd + cs%c2*fv, law%stiffness)
-         if (d > 0.0_dp) then
+         kt = max(0.0_dp, fd + cs%c2*fv)
+         if (law%stiffness < rigid_stiffness) kt = max(kt, law%stiffness)
+         if (abs(d) <= tol) then
+            ! d = 0: any force from 0 to f(0+) (a Kelvin joint's jump; 0 for the Hertz family).
+            res = max(0.0_dp, r - max(f, 0.0_dp) - kt*tol, -r)/max(abs(r), tiny(1.0_dp))
+         else if (d > 0.0_dp) then
             rt = max(0.0_dp, f)
             res = max(0.0_dp, abs(r - rt) - kt*tol)/max(r, rt, tiny(1.0_dp))
-         else if (f > 0.0_dp .and. -d <= tol) then
-            ! d = 0: any force up to f(0+) (a Kelvin joint's jump).
-            res = max(0.0_dp, r - f, -r)/max(f, tiny(1.0_dp))
          else
-            res = max(0.0_dp, abs(r) - kt*tol)/max(abs(r), tiny(1.0_dp))
+            res = abs(r)/max(abs(r), tiny(1.0_dp))
          end if
       end associate
    end function smooth_residual
@@ -166,11 +203,13 @@ contains
    !> solved again): a smooth joint whose residual is above `smooth_residual_limit` takes
    !> the tangent at the solution's penetration; another iterating law re-linearises its
    !> secant (`joint_law%relinearise`).
-   function smooth_relinearise(cs, v_pred) result(changed)
+   function smooth_relinearise(cs, v_pred, it) result(changed)
       !> The contact system, `r_new` and `x_new` of the last solve.
       type(contact_system), intent(inout) :: cs
       !> Closing displacements with every force of the step released (m).
       real(dp), intent(in) :: v_pred(:)
+      !> Solves of the step so far (from `secant_after` on, secant rows).
+      integer, intent(in) :: it
       logical :: changed
       integer :: i, k
       real(dp) :: d, v
@@ -182,7 +221,7 @@ contains
          if (has_force(cs, k)) then
             v = v_pred(k) - dot_product(cs%f(:, k), cs%r_new)
             if (smooth_residual(cs, k, v, cs%r_new(k)) <= smooth_residual_limit) cycle
-            call linearise(cs, k, v - cs%pair(k)%gap)
+            call linearise(cs, k, v - cs%pair(k)%gap, it >= secant_after)
             changed = .true.
             cycle
          end if
