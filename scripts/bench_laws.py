@@ -98,13 +98,22 @@ def smooth_decks(root, tmp):
 
 def smooth_table(exe, root, repeats):
     with tempfile.TemporaryDirectory() as tmp:
+        decks = smooth_decks(root, tmp)
+        times = {deck: [] for _, _, deck in decks}
+        # Interleaved (every deck once per round): a load on the machine falls on all alike.
+        for _ in range(repeats):
+            for _, _, deck in decks:
+                times[deck].append(run(exe, deck, tmp)[1])
         rows = []
-        for motion, name, deck in smooth_decks(root, tmp):
-            cpl = [run(exe, deck, tmp)[1] for _ in range(repeats)]
+        for motion, name, deck in decks:
             stem = os.path.splitext(os.path.basename(deck))[0]
             text = open(os.path.join(tmp, stem + ".out")).read()
-            solves = int(re.search(r"solves (\d+)", text).group(1))
-            rows.append((motion, name, statistics.median(cpl), solves))
+            # LCP solves of the run: Lemke's and the active-set method's (Newton iterates).
+            solves = int(re.search(r"(?m)^\s+solves (\d+)", text).group(1))
+            active = re.search(r"active-set method .*: solves (\d+),", text)
+            if active:
+                solves += int(active.group(1))
+            rows.append((motion, name, statistics.median(times[deck]), solves))
     print(f"\nsmooth laws on the seed pair, dt = 1 ms, medians of {repeats} runs of the coupled integration")
     print("| motion | law | coupled integration [ms] | ratio to elastic | LCP solves (Newton iterates) |")
     print("|---|---|--:|--:|--:|")

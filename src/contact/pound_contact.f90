@@ -69,7 +69,7 @@ module pound_contact
    use pound_lcp_enumerate, only: lcp_enumerate
    use pound_lcp_active_set, only: active_set_report, active_set_solve, active_set_solved
    use pound_joint_law, only: max_law_iterations
-   use pound_contact_smooth, only: smooth_start, smooth_relinearise, smooth_finish, smooth_commit
+   use pound_contact_smooth, only: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_speeds
    use pound_contact_system, only: contact_system, contact_init, contact_init_flexibility, contact_swap_step, &
                                    lcp_workspace, residual_limit, fallback_max_rows, initial_hinges, &
                                    lcp_solver_auto, lcp_solver_lemke, joint_constants
@@ -258,6 +258,8 @@ contains
       do k = 1, cs%m
          if (cs%joint(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%joint(k)%r
       end do
+      ! The smooth joints' closing speeds at the step's start (pound_contact_smooth).
+      if (size(cs%iterating) > 0) call smooth_speeds(cs, states)
       call contact_solve(cs, cs%vp, t, step, error)
       if (allocated(error)) return
 
@@ -661,12 +663,11 @@ contains
          cs%idle = .false.
          call joints_advance_idle(cs%m, cs%joint, cs%pair, cs%plain, cs%vp, t, dt, cs%rate_a, cs%rate_b, cs%phat, &
                                   cs%work, cs%element_work, cs%plastic_work)
-         if (size(cs%iterating) > 0) call smooth_commit(cs, states)
          return
       end if
       call closing_displacements(cs, states, .false.)
       call contact_update(cs, cs%vp, t, dt)
-      if (size(cs%iterating) > 0) call smooth_commit(cs, states)
+      if (size(cs%iterating) > 0) call smooth_commit(cs)
    end subroutine contact_commit
 
    !> Closing displacements v = B^T u of every constraint into `cs%vp` (left end + u, right

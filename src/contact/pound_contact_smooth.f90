@@ -35,11 +35,12 @@ module pound_contact_smooth
    use pound_newmark, only: newmark_state, newmark_v_at
    use pound_contact_pair, only: end_sign
    use pound_contact_system, only: contact_system, joint_constants
-   use pound_lcp_active_set, only: active_set_init
+   use pound_lcp_active_set, only: active_set_forget
    implicit none
    private
 
    public :: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_joint_commit, smooth_residual, &
+             smooth_speeds, &
              latch_speed
    public :: smooth_residual_limit, v0_floor, rigid_stiffness
 
@@ -90,6 +91,8 @@ contains
          cs%joint(k)%d_iter = 0.0_dp
          call linearise(cs, k, v_pred(k) - cs%pair(k)%gap, .false.)
       end do
+      ! The rows moved: the active set's factor is stale (its set is kept as the guess).
+      if (size(cs%iterating) > 0) call active_set_forget(cs%as)
    end subroutine smooth_start
 
    !> The closing speed at which the step's free path d(s) = d_n + d'_n s + a s^2/2 (through
@@ -234,7 +237,7 @@ contains
          call joint_constants(cs, k)
          changed = .true.
       end do
-      if (changed) call active_set_init(cs%as, cs%m)
+      if (changed) call active_set_forget(cs%as)
    end function smooth_relinearise
 
    !> After the step's last LCP: every smooth joint's row takes the secant r/d of the
@@ -259,20 +262,18 @@ contains
       end do
    end subroutine smooth_finish
 
-   !> After a step's commit (`contact_commit`): every smooth joint's closing speed from the
-   !> integrators, its latch reset where the joint is open (d <= 0), its row back at the
-   !> law's stiffness (what the listing and the results show).
-   subroutine smooth_commit(cs, states)
-      !> The contact system, `vp` the committed closing displacements.
+   !> Before a step's solve (`contact_step`, the integrators at the step's start): every
+   !> smooth joint's closing speed d'_n (m/s), the rate the step's trapezoidal d' starts from.
+   subroutine smooth_speeds(cs, states)
+      !> The contact system.
       type(contact_system), intent(inout) :: cs
-      !> The integrators at the end of the step.
+      !> The integrators (their velocities: the step's start).
       type(newmark_state), intent(in) :: states(:)
       integer :: i, k, e, b, l
       real(dp) :: s, w
 
       do i = 1, size(cs%iterating)
          k = cs%iterating(i)
-         if (.not. has_force(cs, k)) cycle
          s = 0.0_dp
          do e = 1, 2
             b = cs%pair(k)%building(e)
@@ -290,21 +291,34 @@ contains
             end if
             s = s + end_sign(e)*w
          end do
-         call smooth_joint_commit(cs, k, cs%vp(k), s)
+         cs%joint(k)%vdot = s
+      end do
+   end subroutine smooth_speeds
+
+   !> After the commit of a step with a solve (`contact_commit`): every smooth joint's latch
+   !> reset where it is open (d <= 0), its row back at the law's stiffness (what the listing
+   !> and the results show). (A step in which no joint can act changes neither.)
+   pure subroutine smooth_commit(cs)
+      !> The contact system, `vp` the committed closing displacements.
+      type(contact_system), intent(inout) :: cs
+      integer :: i, k
+
+      do i = 1, size(cs%iterating)
+         k = cs%iterating(i)
+         if (.not. has_force(cs, k)) cycle
+         call smooth_joint_commit(cs, k, cs%vp(k))
       end do
    end subroutine smooth_commit
 
-   !> `smooth_commit` of smooth joint k with its committed closing displacement v (m) and
-   !> closing speed vdot (m/s) (for a caller that integrates the ends itself).
-   pure subroutine smooth_joint_commit(cs, k, v, vdot)
+   !> `smooth_commit` of smooth joint k with its committed closing displacement v (m).
+   pure subroutine smooth_joint_commit(cs, k, v)
       !> The contact system.
       type(contact_system), intent(inout) :: cs
       !> Joint.
       integer, intent(in) :: k
-      !> Closing displacement (m) and speed (m/s) at the end of the step.
-      real(dp), intent(in) :: v, vdot
+      !> Closing displacement (m) at the end of the step.
+      real(dp), intent(in) :: v
 
-      cs%joint(k)%vdot = vdot
       if (v - cs%pair(k)%gap <= 0.0_dp) cs%joint(k)%v0 = 0.0_dp
       if (cs%pair(k)%law%given%shown_stiffness() > 0.0_dp) then
          cs%pair(k)%law%stiffness = cs%pair(k)%law%given%shown_stiffness()
