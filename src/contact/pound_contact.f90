@@ -69,7 +69,8 @@ module pound_contact
    use pound_lcp_enumerate, only: lcp_enumerate
    use pound_lcp_active_set, only: active_set_report, active_set_solve, active_set_solved
    use pound_joint_law, only: max_law_iterations
-   use pound_contact_smooth, only: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_speeds
+   use pound_contact_smooth, only: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_speeds, &
+                                   smooth_unsettled
    use pound_contact_system, only: contact_system, contact_init, contact_init_flexibility, contact_swap_step, &
                                    lcp_workspace, residual_limit, fallback_max_rows, initial_hinges, &
                                    lcp_solver_auto, lcp_solver_lemke, joint_constants
@@ -370,7 +371,7 @@ contains
          end if
       end do
       call fatal_error(error, 'contact at t = '//str(t)//' s (step '//str(step)//'): the end-of-step '// &
-                       'equations of the laws of '//labels(cs, cs%iterating)//' did not converge in '// &
+                       'equations of the joints '//smooth_unsettled(cs, v_pred)//' did not converge in '// &
                        str(max_law_iterations)//' solves (reduce dt, or stepping = ''impact'')')
    end subroutine contact_solve
 

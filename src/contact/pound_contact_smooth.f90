@@ -32,6 +32,7 @@
 !> (`joint_law%shown_stiffness`).
 module pound_contact_smooth
    use pound_kinds, only: dp
+   use pound_strings, only: str
    use pound_newmark, only: newmark_state, newmark_v_at
    use pound_contact_pair, only: end_sign
    use pound_contact_system, only: contact_system, joint_constants
@@ -40,7 +41,7 @@ module pound_contact_smooth
    private
 
    public :: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_joint_commit, smooth_residual, &
-             smooth_speeds, &
+             smooth_speeds, smooth_unsettled, &
              latch_speed
    public :: smooth_residual_limit, v0_floor, rigid_stiffness
 
@@ -239,6 +240,32 @@ contains
       end do
       if (changed) call active_set_forget(cs%as)
    end function smooth_relinearise
+
+   !> The iterating joints whose end-of-step equation is not solved (smooth joints: residual
+   !> above `smooth_residual_limit`, named with it; others: all), for the step's failure.
+   function smooth_unsettled(cs, v_pred) result(text)
+      !> The contact system after the step's last solve.
+      type(contact_system), intent(in) :: cs
+      !> Closing displacements with every force of the step released (m).
+      real(dp), intent(in) :: v_pred(:)
+      character(len=:), allocatable :: text
+      integer :: i, k
+      real(dp) :: res
+
+      text = ''
+      do i = 1, size(cs%iterating)
+         k = cs%iterating(i)
+         if (has_force(cs, k)) then
+            res = smooth_residual(cs, k, v_pred(k) - dot_product(cs%f(:, k), cs%r_new), cs%r_new(k))
+            if (res <= smooth_residual_limit) cycle
+            if (len(text) > 0) text = text//', '
+            text = text//cs%pair(k)%label//' (residual '//str(res)//')'
+         else
+            if (len(text) > 0) text = text//', '
+            text = text//cs%pair(k)%label
+         end if
+      end do
+   end function smooth_unsettled
 
    !> After the step's last LCP: every smooth joint's row takes the secant r/d of the
    !> solution (the joint's update then gives its penetration d; a rigid row stays).

@@ -46,3 +46,17 @@ refused(hertz_restitution "law = 'hertz', stiffness = 1.0e7, restitution = 0.65"
         "6: &contact #1 (A, B): restitution is not a variable of law = 'hertz'")
 refused(jankowski_no_e "law = 'jankowski', stiffness = 1.0e7"
         "5: &contact #1 (A, B): law = 'jankowski' needs restitution")
+
+# Impact-aware substeps from the law's contact duration: Hertz between two 10 t floors
+# (m_eff = 5 t), kh = 1e7 kN/m^(3/2), at 1 m/s: dmax = (5 m_eff v^2/(4 kh))^(2/5) = 3.2988 mm,
+# t_c = 2.9432 dmax/v = 9.709 ms; 40 substeps per duration at dt = 2 ms: m = ceil(8.24) = 9.
+file(WRITE ${WORK_DIR}/hertz_impact.nml "&analysis dt = 0.002, t_end = 1.0, stepping = 'impact' /
+&ground kind = 'pulse', x0 = 0.02, a = 2.0, b = 12.0 /
+&building name = 'A', n_storeys = 1, height = 3.0, mass = 10.0, stiffness = 1.0e4 /
+&building name = 'B', n_storeys = 1, height = 3.0, mass = 10.0, stiffness = 3.0e4 /
+&contact left = 'A', right = 'B', floors_left = 1, floors_right = 1, gap = 0.001,
+  law = 'hertz', stiffness = 1.0e7 /
+")
+run_pound(h hertz_impact.nml)
+expect_equal("exit status of hertz_impact (${h_err})" 0 "${h_rc}")
+expect_contains("substeps" "${h_out}" "impact stepping:       m = 9 substeps")
