@@ -1,5 +1,6 @@
 !> The exact step of the joints whose law iterates (`joint_law%iterates`): the smooth laws
-!> (pound_law_smooth: a force f(d, d'; v0) of their own, `joint_law%force`) by Newton on the
+!> (extensions of `smooth_law`, pound_law_smooth: a force f(d, d'; v0) of their own,
+!> `joint_law%force`) by Newton on the
 !> step's LCP, and laws that only re-linearise a secant (`joint_law%relinearise`).
 !>
 !> **Smooth laws.** With the penetration d = v - gap at the end of the step, v = v_pred -
@@ -36,6 +37,7 @@ module pound_contact_smooth
    use pound_newmark, only: newmark_state, newmark_v_at
    use pound_contact_pair, only: end_sign
    use pound_contact_system, only: contact_system, joint_constants
+   use pound_law_smooth, only: is_smooth
    use pound_lcp_active_set, only: active_set_forget
    implicit none
    private
@@ -59,13 +61,12 @@ module pound_contact_smooth
 
 contains
 
-   !> The law of joint k has a force of its own (a smooth law).
+   !> The law of joint k has a force of its own (a smooth law: a type test, no evaluation).
    pure logical function has_force(cs, k)
       type(contact_system), intent(in) :: cs
       integer, intent(in) :: k
-      real(dp) :: f, a, b
 
-      call cs%pair(k)%law%given%force(1.0e-3_dp, 0.0_dp, 1.0_dp, f, a, b, has_force)
+      has_force = is_smooth(cs%pair(k)%law%given)
    end function has_force
 
    !> Before the step's first LCP: the constants of every iterating joint, a smooth joint's
