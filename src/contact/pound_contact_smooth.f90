@@ -91,6 +91,14 @@ contains
             if (dn <= 0.0_dp) j%v0 = latch_speed(dn, j%vdot, v_pred(k) - gap, 2.0_dp/cs%c2)
          end associate
          cs%joint(k)%d_iter = 0.0_dp
+         if (v_pred(k) - cs%pair(k)%gap <= 0.0_dp) then
+            ! Open with every force released (most joints in most steps): a row through
+            ! d = 0 of the row's slope, no force evaluated (one that closes after all is
+            ! re-linearised after the solve).
+            cs%joint(k)%shift = 0.0_dp
+            call joint_constants(cs, k)
+            cycle
+         end if
          call linearise(cs, k, v_pred(k) - cs%pair(k)%gap, .false.)
       end do
       ! The rows moved: the active set's factor is stale (its set is kept as the guess).
@@ -188,6 +196,11 @@ contains
          ! The round-off of v (m) and the force it makes through the law's tangent and the
          ! row's (not a rigid row's).
          tol = 64.0_dp*epsilon(1.0_dp)*(abs(v) + abs(gap))
+         if (d < -tol .and. r == 0.0_dp) then
+            ! Open without force: solved, no force to evaluate.
+            res = 0.0_dp
+            return
+         end if
          dd = cs%c2*(max(d, 0.0_dp) - (j%v - gap)) - j%vdot
          call law%given%force(max(d, 0.0_dp), dd, max(j%v0, v0_floor), f, fd, fv, ok)
          kt = max(0.0_dp, fd + cs%c2*fv)
