@@ -17,7 +17,7 @@ module pound_law_impact
    implicit none
    private
 
-   public :: law_impact, impact_result, impact_steps, typical_impact_speed
+   public :: law_impact, impact_result, impact_steps, typical_impact_speed, pair_mass
 
    !> Runge-Kutta steps over the estimated contact duration.
    integer, parameter :: impact_steps = 20000
@@ -55,7 +55,7 @@ contains
       call law%force(1.0e-3_dp, 0.0_dp, v, f, df, dv, defined)
       if (.not. defined .or. .not. (v > 0.0_dp)) return
       res%defined = .true.
-      meff = effective_mass(m1, m2)
+      meff = pair_mass(m1, m2)
       dmax = elastic_reach(law, meff, v)
       h = pi*dmax/v/real(impact_steps, dp)
       t = 0.0_dp
@@ -114,7 +114,7 @@ contains
    end function law_impact
 
    !> m1 m2/(m1 + m2), a zero mass standing for a rigid (infinite) one.
-   pure real(dp) function effective_mass(m1, m2) result(meff)
+   pure real(dp) function pair_mass(m1, m2) result(meff)
       !> Masses (t).
       real(dp), intent(in) :: m1, m2
 
@@ -123,7 +123,7 @@ contains
       else
          meff = max(m1, m2)
       end if
-   end function effective_mass
+   end function pair_mass
 
    !> The penetration at which the law's force at rest (d' = 0) has stored the kinetic
    !> energy m_eff v^2/2 (bisection on the trapezoidal integral): the scale of the impact.

@@ -17,11 +17,11 @@ module pound_law_smooth
    use pound_contact_law, only: contact_law
    use pound_contact_settings, only: contact_config
    use pound_deck_checks, only: site, require_real, check_real, fail, is_set
-   use pound_law_impact, only: law_impact, impact_result, typical_impact_speed
+   use pound_law_impact, only: law_impact, impact_result, typical_impact_speed, pair_mass
    implicit none
    private
 
-   public :: smooth_law, make_smooth, smooth_take, hertz_stiffness_range, effective_mass_of, realised_restitution, &
+   public :: smooth_law, make_smooth, smooth_take, hertz_stiffness_range, realised_restitution, &
              is_smooth
 
    !> Plausible range of a Hertz-type stiffness kh, beta (kN/m^(3/2)): outside it the deck
@@ -204,20 +204,8 @@ contains
 
       law%m1 = m1
       law%m2 = m2
-      law%meff = effective_mass_of(m1, m2)
+      law%meff = pair_mass(m1, m2)
    end subroutine smooth_set_masses
-
-   !> m1 m2/(m1 + m2), a zero mass standing for a rigid (infinite) one.
-   pure real(dp) function effective_mass_of(m1, m2) result(meff)
-      !> Masses (t).
-      real(dp), intent(in) :: m1, m2
-
-      if (m1 > 0.0_dp .and. m2 > 0.0_dp) then
-         meff = m1*m2/(m1 + m2)
-      else
-         meff = max(m1, m2)
-      end if
-   end function effective_mass_of
 
    pure real(dp) function smooth_shown_stiffness(law) result(k)
       class(smooth_law), intent(in) :: law
