@@ -208,7 +208,7 @@ contains
             if (cfg%floor_left(i) == 0 .or. cfg%floor_right(i) == 0) then
                call fail(at, 'restitution', 'restitution needs the masses of both facing points, but '// &
                          'elevations('//str(i)//') = '//str(cfg%elevation(i))//' m is a column point '// &
-                         'between floors (no mass); give the dashpot instead', error)
+                         'between floors (no mass); '//instead(cfg%law), error)
                return
             end if
          end do
@@ -226,6 +226,18 @@ contains
       end if
 
    contains
+
+      !> What a joint at a point without mass takes instead of `restitution`.
+      pure function instead(name) result(text)
+         character(len=*), intent(in) :: name
+         character(len=:), allocatable :: text
+
+         if (name == 'elastic') then
+            text = 'give the dashpot instead'
+         else
+            text = "use law = 'hertz' (no damping) or floors instead"
+         end if
+      end function instead
 
       !> Pairs by elevation: 1..`max_pairs` values, each > 0, at a floor or on a frame's
       !> facing column of each building (pound_deck_contact's `point_at`).

@@ -60,3 +60,14 @@ file(WRITE ${WORK_DIR}/hertz_impact.nml "&analysis dt = 0.002, t_end = 1.0, step
 run_pound(h hertz_impact.nml)
 expect_equal("exit status of hertz_impact (${h_err})" 0 "${h_rc}")
 expect_contains("substeps" "${h_out}" "impact stepping:       m = 9 substeps")
+
+# A damped smooth law at column points between floors (no mass to calibrate to): refused, and
+# the message points to 'hertz' or floors (not to a dashpot, which these laws refuse).
+file(READ ${SOURCE_DIR}/input/frame_to_column.nml deck)
+string(REPLACE "law = 'elastic'\n   stiffness = 5.0e5        ! kN/m"
+       "law = 'jankowski'\n   stiffness = 1.0e8\n   restitution = 0.6" deck "${deck}")
+file(WRITE ${WORK_DIR}/jankowski_columns.nml "${deck}")
+run_pound(c jankowski_columns.nml)
+expect_equal("exit status of jankowski_columns" 1 "${c_rc}")
+expect_contains("message of jankowski_columns" "${c_err}"
+                "m is a column point between floors (no mass); use law = 'hertz' (no damping) or floors instead")
