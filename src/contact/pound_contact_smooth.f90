@@ -19,15 +19,18 @@
 !> s = d_i - f_i/kt (the row's offset, joint state `shift`, added to its q): the LCP keeps
 !> the complementarity of the clip and of the open joint exact at every iterate. Newton
 !> starts from the released penetration (every force of the step released: from above for a
-!> convex law); where a tangent would cross r = 0 at d < 0 and the law has no force at
-!> d = 0+, the row is the secant from the origin instead and stops when every joint's residual |r - max(0, f(d))| is at most
-!> `smooth_residual_limit` (1e-12) of its force, or below the force the round-off of v makes
-!> (64 eps (|v| + gap) times the tangent). From the `secant_after`-th iterate on, a joint's
-!> row is the secant through its last two iterates (regula falsi where the law has a kink
-!> between them, Jankowski's damping switching off at d' = 0, where tangents from its two
-!> sides would cycle). A Kelvin joint's force jumps to c d' at d = 0+:
-!> at an iterate with d <= 0 and f(0+) > 0 the row is rigid (kt * `rigid_factor`, no
-!> offset) and d = 0 with 0 <= r <= f(0+) is the solution of the set-valued equation.
+!> convex law; a joint open there gets a row through d = 0 without a force evaluated). Where
+!> a tangent would cross r = 0 at d < 0 and the law has no force at d = 0+, the row is the
+!> secant from the origin instead; an iterate that lands open with force takes the secant from
+!> the origin to the last closed iterate. From the `secant_after`-th iterate on, a joint's row
+!> is the secant through its last two iterates (regula falsi where the law has a kink between
+!> them, Jankowski's damping switching off at d' = 0, where tangents from its two sides would
+!> cycle). A Kelvin joint's force jumps to c d' at d = 0+: at an iterate with d <= 0 and
+!> f(0+) > 0 the row is rigid (`rigid_stiffness`, no offset) and d = 0 with 0 <= r <= f(0+)
+!> is the solution of the set-valued equation. Newton stops when every joint's residual
+!> |r - max(0, f(d))| is at most `smooth_residual_limit` (1e-12) of its force, or below the
+!> force the round-off of v makes (64 eps (|v| + gap) times the tangent); after
+!> `max_law_iterations` solves the step fails (`smooth_unsettled` names the joints).
 !> After the solve the row takes the secant r/d, so that the joint's update
 !> (`joint_advance`, pound_joint_state) gives d; after the commit it shows the law's stiffness
 !> (`joint_law%shown_stiffness`).

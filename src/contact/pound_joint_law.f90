@@ -23,13 +23,14 @@
 !> one line in `pound_law_registry` (deck name, constructor, the `&contact` variables it
 !> reads). See docs/architecture.md, "How to add a joint law".
 !>
-!> **Smooth laws (Hertz, Jankowski, Kelvin with a nonlinear spring).** They enter as the
-!> same rows, linearised: an elastic row of secant stiffness k_s around the state. A law
-!> whose `iterates` is true is listed once by `contact_init` (`contact_system%iterating`);
-!> after each solve of a step, `contact_step` calls `relinearise` of every listed joint with
-!> the compression and force the LCP gave; a law that moves its secant by more than its own
-!> tolerance says so (`changed`), the step's per-joint constants (phat, beta) are rebuilt
-!> from the new stiffness and the LCP is solved again (at most `max_law_iterations` times).
+!> **Smooth laws (Kelvin, Hertz, Hertz-damp, Jankowski).** A law whose `iterates` is true is
+!> listed once by `contact_init` (`contact_system%iterating`). One that gives its force
+!> (`force`: f(d, d'; v0) before the clip and its derivatives; the laws of pound_law_smooth)
+!> is solved exactly per step by Newton, each iterate one LCP with the law's tangent row
+!> (pound_contact_smooth); it also takes the facing masses (`set_masses`) and shows its
+!> stiffness as given (`shown_stiffness`). One without a force re-linearises a secant after
+!> each solve (`relinearise`: a law that moves its secant by more than its own tolerance says
+!> so, `changed`, and the LCP is solved again), at most `max_law_iterations` solves.
 !> Piecewise-linear laws keep the defaults (no iteration, nothing listed): the loop is empty
 !> and costs nothing; `contact_solve` has no branch on a law.
 module pound_joint_law
