@@ -43,9 +43,11 @@ set(POUND_SOURCES
   # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
   contact/pound_joint_law.f90 contact/pound_contact_law.f90 contact/pound_law_elastic.f90
   contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90
+  contact/pound_law_impact.f90 contact/pound_law_smooth.f90 contact/pound_law_kelvin.f90 contact/pound_law_hertz.f90
+  contact/pound_law_hertz_damp.f90 contact/pound_law_jankowski.f90
   contact/pound_law_registry.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
   contact/pound_joint_state.f90 contact/pound_lcp_statistics.f90 contact/pound_contact_lcp.f90
-  contact/pound_contact_system.f90 contact/pound_contact.f90
+  contact/pound_contact_system.f90 contact/pound_contact_smooth.f90 contact/pound_contact.f90
   # contact: the contact half-period of a joint (substep count), ends without mass condensed
   contact/pound_contact_period.f90
   contact/pound_lcp_enumerate.f90

@@ -38,7 +38,9 @@ module pound_analysis
    use pound_deck_variables, only: max_substeps
    use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, yield_steps, &
                                  yield_sample, yield_results, yield_energy_step, yield_hold
-   use pound_contact_period, only: joint_half_period
+   use pound_contact_period, only: joint_half_period, substep_impact_speed
+   use pound_law_smooth, only: is_smooth
+   use pound_law_impact, only: law_impact, impact_result
    implicit none
    private
 
@@ -398,15 +400,22 @@ contains
    end function impact_substeps_of
 
    !> Contact half-period pi sqrt(m_eff/k0) of a joint (s), m_eff = m1 m2/(m1 + m2) of the
-   !> facing floor masses (the mass of the one building against a rigid neighbour).
+   !> facing floor masses (the mass of the one building against a rigid neighbour); of a
+   !> smooth law, its contact duration at `substep_impact_speed` (pound_law_impact).
    pure real(dp) function contact_half_period(p, models) result(half)
       !> The constraint, its DOFs located.
       type(contact_pair), intent(in) :: p
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       real(dp), parameter :: pi = acos(-1.0_dp)
+      type(impact_result) :: imp
 
       half = pi*sqrt(effective_mass(p, models)/p%law%stiffness)
+      ! A smooth law (issue 26): its contact duration at `substep_impact_speed`.
+      if (.not. allocated(p%law%given)) return
+      if (.not. is_smooth(p%law%given)) return
+      imp = law_impact(p%law%given, effective_mass(p, models), 0.0_dp, substep_impact_speed)
+      half = imp%duration
    end function contact_half_period
 
    !> The coupled time integration from a prepared model (left unchanged, so that it can be

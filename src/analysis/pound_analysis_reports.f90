@@ -124,7 +124,6 @@ contains
       type(contact_system), intent(in) :: cs
       !> The step (s) the joints are judged by.
       real(dp), intent(in) :: dt
-      real(dp), parameter :: pi = acos(-1.0_dp)
       real(dp) :: meff, half, worst
       integer :: k, found, kw
       character(len=:), allocatable :: head
@@ -138,13 +137,24 @@ contains
          associate (p => cs%pair(k))
             if (cs%joint(k)%impacts == 0) cycle
             meff = effective_mass(p, models)
-            half = pi*sqrt(meff/p%law%stiffness)
+            half = contact_half_period(p, models)
             if (half < worst) then
                worst = half
                kw = k
             end if
             if (half >= resolved_steps*dt) cycle
             found = found + 1
+            if (allocated(p%law%given)) then
+               if (is_smooth(p%law%given)) then
+                  ! A smooth law (issue 26): its contact duration (`contact_half_period`).
+                  call add_warning(res%warnings, head//': joint '//p%label//' (law '''//p%law%title()// &
+                                   ''', m_eff = '//str(meff)//' t of the facing floors) has a contact duration '// &
+                                   str(half)//' s at '//str(substep_impact_speed)//' m/s, '//str(half/dt)// &
+                                   ' steps of dt = '//str(dt)//' s: not resolved by dt; dt = '//str(0.1_dp*half)// &
+                                   ' s (a tenth of it) would resolve it')
+                  cycle
+               end if
+            end if
             call add_warning(res%warnings, head//': joint '//p%label//' (k0 = '//str(p%law%stiffness)// &
                              ' kN/m, m_eff = '//str(meff)//' t of the facing floors) has a contact '// &
                              'half-period pi sqrt(m_eff/k0) = '//str(half)//' s, '//str(half/dt)// &

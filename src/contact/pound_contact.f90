@@ -66,8 +66,10 @@ module pound_contact
    use pound_contact_lcp, only: lcp_layout, lcp_assemble, released_opening, lcp_residual
    use pound_lemke, only: lemke_solve, lemke_report, lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
    use pound_lcp_enumerate, only: lcp_enumerate
-   use pound_lcp_active_set, only: active_set_report, active_set_solve, active_set_solved, active_set_init
+   use pound_lcp_active_set, only: active_set_report, active_set_solve, active_set_solved
    use pound_joint_law, only: max_law_iterations
+   use pound_contact_smooth, only: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_speeds, &
+                                   smooth_unsettled
    use pound_contact_system, only: contact_system, contact_init, contact_init_flexibility, contact_swap_step, &
                                    lcp_workspace, residual_limit, fallback_max_rows, initial_hinges, &
                                    lcp_solver_auto, lcp_solver_lemke, joint_constants
@@ -255,6 +257,8 @@ contains
       do k = 1, cs%m
          if (cs%joint(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%joint(k)%r
       end do
+      ! The smooth joints' closing speeds at the step's start (pound_contact_smooth).
+      if (size(cs%iterating) > 0) call smooth_speeds(cs, states)
       call contact_solve(cs, cs%vp, t, step, error)
       if (allocated(error)) return
       call apply_force_change(cs, states, .false.)
@@ -361,7 +365,8 @@ contains
    !>
    !> Joints whose law iterates (`cs%iterating`, pound_joint_law: none of the piecewise-linear
    !> family, so the loop below runs once) are re-linearised around each solution and the
-   !> LCP solved again until no law moves its stiffness (at most `max_law_iterations`).
+   !> LCP solved again until none moves its row (at most `max_law_iterations`): a smooth
+   !> law's end-of-step equation solved exactly by Newton (pound_contact_smooth).
    subroutine contact_solve(cs, v_pred, t, step, error)
       !> The contact system.
       type(contact_system), intent(inout) :: cs
@@ -373,45 +378,24 @@ contains
       integer, intent(in) :: step
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: it, i
+      integer :: it
 
-      ! The constants of an iterating joint follow its current stiffness (after a step swap).
-      do i = 1, size(cs%iterating)
-         call joint_constants(cs, cs%iterating(i))
-      end do
+      ! The constants of an iterating joint follow its current stiffness (after a step swap);
+      ! a smooth law's first tangent row (pound_contact_smooth).
+      if (size(cs%iterating) > 0) call smooth_start(cs, v_pred)
       do it = 1, max_law_iterations
          call solve_lcp(cs, v_pred, t, step, error)
          if (allocated(error)) return
-         if (.not. laws_relinearised(cs)) return
+         if (size(cs%iterating) == 0) return
+         if (.not. smooth_relinearise(cs, v_pred, it)) then
+            call smooth_finish(cs, v_pred)
+            return
+         end if
       end do
-      call fatal_error(error, 'contact at t = '//str(t)//' s (step '//str(step)//'): the linearisation of '// &
-                       'the laws of '//labels(cs, cs%iterating)//' did not settle in '//str(max_law_iterations)// &
-                       ' solves (reduce dt)')
+      call fatal_error(error, 'contact at t = '//str(t)//' s (step '//str(step)//'): the end-of-step '// &
+                       'equations of the joints '//smooth_unsettled(cs, v_pred)//' did not converge in '// &
+                       str(max_law_iterations)//' solves (reduce dt, or stepping = ''impact'')')
    end subroutine contact_solve
-
-   !> Re-linearise every iterating joint around the step's last solution (`joint_law%relinearise`,
-   !> with the joint compression the update would give); true when one moved its stiffness
-   !> (then its step constants are rebuilt and the active set's factor is started again).
-   logical function laws_relinearised(cs) result(changed)
-      type(contact_system), intent(inout) :: cs
-      integer :: i, k
-      real(dp) :: d
-      logical :: moved
-
-      changed = .false.
-      do i = 1, size(cs%iterating)
-         k = cs%iterating(i)
-         associate (j => cs%joint(k), law => cs%pair(k)%law)
-            d = (cs%r_new(k) + law%dashpot*(cs%rate_a(k)*j%d + cs%rate_b(k)*j%ddot) + &
-                 law%stiffness*(j%plastic + cs%x_new(k)))/cs%phat(k)
-            call law%given%relinearise(d, cs%r_new(k), law%stiffness, moved)
-         end associate
-         if (.not. moved) cycle
-         call joint_constants(cs, k)
-         changed = .true.
-      end do
-      if (changed) call active_set_init(cs%as, cs%m)
-   end function laws_relinearised
 
    !> One LCP solve of the step (`contact_solve`).
    subroutine solve_lcp(cs, v_pred, t, step, error)
@@ -434,6 +418,11 @@ contains
       if (cs%m == 0) return
       qnorm = 0.0_dp
       call released_q(cs, v_pred)
+      ! The offsets of the smooth joints' tangent rows (pound_contact_smooth).
+      do j = 1, size(cs%iterating)
+         k = cs%iterating(j)
+         cs%q(k) = cs%q(k) + cs%joint(k)%shift
+      end do
       do k = 1, cs%m
          associate (p => cs%joint(k))
             cs%in_lcp(k) = .not. p%fractured .and. (p%r > 0.0_dp .or. cs%q(k) < 0.0_dp)
@@ -701,6 +690,7 @@ contains
       end if
       call closing_displacements(cs, states, .false.)
       call contact_update(cs, cs%vp, t, dt)
+      if (size(cs%iterating) > 0) call smooth_commit(cs)
    end subroutine contact_commit
 
    !> Closing displacements v = B^T u of every constraint into `cs%vp` (left end + u, right

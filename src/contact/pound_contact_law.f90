@@ -267,6 +267,15 @@ contains
       !> Masses of the two ends (t).
       real(dp), intent(in) :: m1, m2
 
+      ! A smooth law calibrates its own damping from the masses (no dashpot in its rows).
+      if (allocated(law%given)) then
+         if (law%given%iterates()) then
+            call law%given%set_masses(m1, m2)
+            ! Its restitution is the law's own (the rows have no dashpot to calibrate).
+            law%restitution = 0.0_dp
+            return
+         end if
+      end if
       if (law%restitution > 0.0_dp) law%dashpot = dashpot_of_restitution(law%restitution, law%stiffness, m1, m2)
    end subroutine law_calibrate
 

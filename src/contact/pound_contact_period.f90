@@ -16,12 +16,19 @@ module pound_contact_period
    use pound_kinds, only: dp
    use pound_structure, only: structure_model
    use pound_contact_pair, only: contact_pair
+   use pound_law_smooth, only: is_smooth
+   use pound_law_impact, only: law_impact, impact_result
    use pound_band, only: band_symv
    use pound_band_lapack, only: dpbtrf, dpbtrs
    implicit none
    private
 
-   public :: joint_half_period, massless_end
+   public :: joint_half_period, massless_end, substep_impact_speed
+
+   !> The approach speed (m/s) at which a smooth law's contact duration sets the impact-aware
+   !> substep count: a fast pounding impact (the duration of a Hertz-type contact falls as
+   !> v^(-1/5), so slower impacts are resolved better).
+   real(dp), parameter :: substep_impact_speed = 1.0_dp
 
 contains
 
@@ -42,6 +49,8 @@ contains
          if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%dof(e))
       end do
       if (all(m > 0.0_dp .or. p%building <= 0)) then
+         ! A smooth law: its contact duration at `substep_impact_speed` (pound_law_impact).
+         if (smooth_duration(m(1), m(2), half)) return
          ! Both ends with a mass (or a rigid neighbour): the facing masses.
          if (m(1) > 0.0_dp .and. m(2) > 0.0_dp) then
             half = pi*sqrt(m(1)*m(2)/(m(1) + m(2))/p%law%stiffness)
@@ -63,7 +72,29 @@ contains
          end if
       end do
       half = huge(1.0_dp)
-      if (minv > 0.0_dp) half = pi*sqrt(flex/minv)
+      if (minv > 0.0_dp) then
+         ! A smooth law: against the condensed masses (its ends' flexibility left out: a shorter
+         ! contact, more substeps).
+         if (smooth_duration(1.0_dp/minv, 0.0_dp, half)) return
+         half = pi*sqrt(flex/minv)
+      end if
+
+   contains
+
+      !> The contact duration of a smooth law between masses m1 and m2 (0: rigid) at
+      !> `substep_impact_speed`; false for a law that is not smooth.
+      logical function smooth_duration(m1, m2, t) result(smooth)
+         real(dp), intent(in) :: m1, m2
+         real(dp), intent(inout) :: t
+         type(impact_result) :: imp
+
+         smooth = .false.
+         if (.not. allocated(p%law%given)) return
+         if (.not. is_smooth(p%law%given)) return
+         imp = law_impact(p%law%given, m1, m2, substep_impact_speed)
+         t = imp%duration
+         smooth = .true.
+      end function smooth_duration
    end function joint_half_period
 
    !> The mass m_d and the point stiffness k_p of a DOF d without mass (see the module doc):

@@ -23,13 +23,14 @@
 !> one line in `pound_law_registry` (deck name, constructor, the `&contact` variables it
 !> reads). See docs/architecture.md, "How to add a joint law".
 !>
-!> **Smooth laws (Hertz, Jankowski, Kelvin with a nonlinear spring).** They enter as the
-!> same rows, linearised: an elastic row of secant stiffness k_s around the state. A law
-!> whose `iterates` is true is listed once by `contact_init` (`contact_system%iterating`);
-!> after each solve of a step, `contact_step` calls `relinearise` of every listed joint with
-!> the compression and force the LCP gave; a law that moves its secant by more than its own
-!> tolerance says so (`changed`), the step's per-joint constants (phat, beta) are rebuilt
-!> from the new stiffness and the LCP is solved again (at most `max_law_iterations` times).
+!> **Smooth laws (Kelvin, Hertz, Hertz-damp, Jankowski).** A law whose `iterates` is true is
+!> listed once by `contact_init` (`contact_system%iterating`). One that gives its force
+!> (`force`: f(d, d'; v0) before the clip and its derivatives; the laws of pound_law_smooth)
+!> is solved exactly per step by Newton, each iterate one LCP with the law's tangent row
+!> (pound_contact_smooth); it also takes the facing masses (`set_masses`) and shows its
+!> stiffness as given (`shown_stiffness`). One without a force re-linearises a secant after
+!> each solve (`relinearise`: a law that moves its secant by more than its own tolerance says
+!> so, `changed`, and the LCP is solved again), at most `max_law_iterations` solves.
 !> Piecewise-linear laws keep the defaults (no iteration, nothing listed): the loop is empty
 !> and costs nothing; `contact_solve` has no branch on a law.
 module pound_joint_law
@@ -60,6 +61,9 @@ module pound_joint_law
       integer :: n_segments = 0
       !> Envelope points as read (the namelist's whole arrays: unset beyond those given).
       real(dp), allocatable :: envelope_d(:), envelope_r(:)
+      !> The common `dashpot` (kN s/m) and `restitution` as read (a smooth law refuses a
+      !> dashpot and may require a restitution; the deck's own checks of them follow).
+      real(dp) :: dashpot = 0.0_dp, restitution = 0.0_dp
    end type law_input
 
    !> A joint law, as described to the listing, the HDF5 writer and the step.
@@ -75,6 +79,17 @@ module pound_joint_law
       !> Re-linearise around the compression and force of the last solve; the default:
       !> piecewise linear, nothing changes.
       procedure :: relinearise => law_keep_linearisation
+      !> A smooth law's force f(d, d'; v0) before the clip r = max(0, f) and its partial
+      !> derivatives (`defined` false by default: the law has no force of its own and is
+      !> solved by its rows, or re-linearised by `relinearise`). The step solves such a law
+      !> exactly by Newton on its tangent (pound_contact_smooth).
+      procedure :: force => law_no_force
+      !> Set the masses of the two facing ends (t; 0: rigid) where the law needs them (a
+      !> dashpot calibrated to a restitution); default: nothing.
+      procedure :: set_masses => law_ignore_masses
+      !> The stiffness the law shows in the joints' table (kN/m or kN/m^(3/2)); default 0:
+      !> the rows' own.
+      procedure :: shown_stiffness => law_no_shown_stiffness
    end type joint_law
 
    abstract interface
@@ -144,5 +159,50 @@ contains
       end associate
       changed = .false.
    end subroutine law_keep_linearisation
+
+   !> Default `force`: not a smooth law with a force of its own.
+   pure subroutine law_no_force(law, d, ddot, v0, f, df_dd, df_dv, defined)
+      !> The law.
+      class(joint_law), intent(in) :: law
+      !> Penetration d = v - gap (m), its rate (m/s) and the closing speed latched at the
+      !> impact's start (m/s).
+      real(dp), intent(in) :: d, ddot, v0
+      !> Force before the clip (kN) and its derivatives by d (kN/m) and d' (kN s/m).
+      real(dp), intent(out) :: f, df_dd, df_dv
+      !> The law has a force of its own.
+      logical, intent(out) :: defined
+
+      associate (unused => [d, ddot, v0])
+      end associate
+      associate (unused => law)
+      end associate
+      f = 0.0_dp
+      df_dd = 0.0_dp
+      df_dv = 0.0_dp
+      defined = .false.
+   end subroutine law_no_force
+
+   !> Default `set_masses`: the law needs no mass.
+   pure subroutine law_ignore_masses(law, m1, m2)
+      !> The law.
+      class(joint_law), intent(inout) :: law
+      !> Masses of the two ends (t; 0: rigid, infinite).
+      real(dp), intent(in) :: m1, m2
+
+      associate (unused => [m1, m2])
+      end associate
+      associate (unused => law)
+      end associate
+   end subroutine law_ignore_masses
+
+   !> Default `shown_stiffness`: none (the rows' stiffness is shown).
+   pure real(dp) function law_no_shown_stiffness(law) result(k)
+      !> The law.
+      class(joint_law), intent(in) :: law
+
+      associate (unused => law)
+      end associate
+      k = 0.0_dp
+   end function law_no_shown_stiffness
 
 end module pound_joint_law

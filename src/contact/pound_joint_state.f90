@@ -40,6 +40,10 @@ module pound_joint_state
       real(dp) :: contact_time = 0.0_dp, peak_force = 0.0_dp, peak_time = 0.0_dp
       !> Largest compression d reached (m).
       real(dp) :: peak_penetration = 0.0_dp
+      !> Smooth laws (pound_contact_smooth): the closing speed v' (m/s), the closing speed
+      !> latched at the impact's start v0 (m/s; 0: open) and the offset of the step's tangent
+      !> row (m); the step's previous Newton iterate (penetration m, law force kN).
+      real(dp) :: vdot = 0.0_dp, v0 = 0.0_dp, shift = 0.0_dp, d_iter = 0.0_dp, f_iter = 0.0_dp
    end type joint_state
 
    !> Histories of every joint at the output samples, (n_pairs, n_out) each: what a

@@ -14,11 +14,15 @@ module pound_law_registry
    use pound_law_bilinear, only: bilinear_from_config, elastic_plastic_from_config, bilinear_take, elastic_plastic_take
    use pound_law_piecewise, only: piecewise_from_config, piecewise_take
    use pound_law_parabola_cubic, only: parabola_cubic_from_config, parabola_cubic_take
+   use pound_law_kelvin, only: kelvin_from_config, kelvin_take
+   use pound_law_hertz, only: hertz_from_config, hertz_take
+   use pound_law_hertz_damp, only: hertz_damp_from_config, hertz_damp_take
+   use pound_law_jankowski, only: jankowski_from_config, jankowski_take
    implicit none
    private
 
    public :: law_entry, registered_laws, law_from_config, law_is_registered, law_reads, law_restitution, &
-             registered_law_names, law_take_deck
+             registered_law_names, law_take_deck, restitution_law_names
 
    abstract interface
       !> Build the law of a `&contact` group (its parameters already checked by the deck).
@@ -75,7 +79,11 @@ contains
               law_entry('bilinear', bilinear_from_config, bilinear_take, 'stiffness yield_force second_slope', .false.), &
               law_entry('piecewise', piecewise_from_config, piecewise_take, 'envelope_d envelope_r', .false.), &
               law_entry('parabola_cubic', parabola_cubic_from_config, parabola_cubic_take, &
-                        'stiffness peak_force peak_penetration fracture_penetration n_segments', .false.)]
+                        'stiffness peak_force peak_penetration fracture_penetration n_segments', .false.), &
+              law_entry('kelvin', kelvin_from_config, kelvin_take, 'stiffness', .true.), &
+              law_entry('hertz', hertz_from_config, hertz_take, 'stiffness', .false.), &
+              law_entry('hertz_damp', hertz_damp_from_config, hertz_damp_take, 'stiffness', .true.), &
+              law_entry('jankowski', jankowski_from_config, jankowski_take, 'stiffness', .true.)]
    end subroutine registered_laws
 
    !> The table's entry of law `name` (0: none).
@@ -147,6 +155,25 @@ contains
          s = s//"'"//trim(laws(i)%name)//"'"
       end do
    end function registered_law_names
+
+   !> The names of the laws that read `restitution`, for messages: "'a', 'b' or 'c'".
+   pure function restitution_law_names() result(s)
+      character(len=:), allocatable :: s
+      type(law_entry), allocatable :: laws(:)
+      integer :: i, n, j
+
+      call registered_laws(laws)
+      n = count(laws%restitution)
+      s = ''
+      j = 0
+      do i = 1, size(laws)
+         if (.not. laws(i)%restitution) cycle
+         j = j + 1
+         if (j > 1 .and. j < n) s = s//', '
+         if (j > 1 .and. j == n) s = s//' or '
+         s = s//"'"//trim(laws(i)%name)//"'"
+      end do
+   end function restitution_law_names
 
    !> Check the `&contact` variables of law `name` (registered) as read and put them into the
    !> group's configuration, by the law's own reader.

@@ -5,7 +5,8 @@ module pound_deck_contact
    use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, site, site_of, unset_int, &
                                 unset_real, values_text
    use pound_deck_lexer, only: group_ref, group_text, lower
-   use pound_law_registry, only: registered_law_names, law_is_registered, law_reads, law_restitution, law_take_deck
+   use pound_law_registry, only: registered_law_names, law_is_registered, law_reads, law_restitution, law_take_deck, &
+                                 restitution_law_names
    use pound_joint_law, only: law_input
    use pound_deck_variables, only: max_envelope_points, max_pairs, word_len
    use pound_deck_stiffness, only: stiffness_has_default, default_joint_stiffness
@@ -196,14 +197,14 @@ contains
       raw = law_input(stiffness=stiffness, yield_force=yield_force, second_slope=second_slope, &
                       peak_force=peak_force, peak_penetration=peak_penetration, &
                       fracture_penetration=fracture_penetration, n_segments=n_segments, &
-                      envelope_d=envelope_d, envelope_r=envelope_r)
+                      envelope_d=envelope_d, envelope_r=envelope_r, dashpot=dashpot, restitution=restitution)
       call law_take_deck(cfg%law, at, raw, cfg, error)
       if (allocated(error)) return
 
       if (is_set(restitution)) then
          if (.not. law_restitution(cfg%law)) then
-            call fail(at, 'restitution', "restitution is only for law = 'elastic' (law = '"//cfg%law// &
-                      "'; give the dashpot instead)", error)
+            call fail(at, 'restitution', "restitution is not a variable of law = '"//cfg%law// &
+                      "' (it is for law = "//restitution_law_names()//')', error)
             return
          end if
          if (is_set(dashpot)) then
@@ -220,7 +221,7 @@ contains
             if (cfg%floor_left(i) == 0 .or. cfg%floor_right(i) == 0) then
                call fail(at, 'restitution', 'restitution needs the masses of both facing points, but '// &
                          'elevations('//str(i)//') = '//str(cfg%elevation(i))//' m is a column point '// &
-                         'between floors (no mass); give the dashpot instead', error)
+                         'between floors (no mass); '//instead(cfg%law), error)
                return
             end if
          end do
@@ -238,6 +239,18 @@ contains
       end if
 
    contains
+
+      !> What a joint at a point without mass takes instead of `restitution`.
+      pure function instead(name) result(text)
+         character(len=*), intent(in) :: name
+         character(len=:), allocatable :: text
+
+         if (name == 'elastic') then
+            text = 'give the dashpot instead'
+         else
+            text = "use law = 'hertz' (no damping) or floors instead"
+         end if
+      end function instead
 
       !> Pairs by elevation: 1..`max_pairs` values, each > 0, at a floor or on a frame's
       !> facing column of each building (pound_deck_contact's `point_at`).

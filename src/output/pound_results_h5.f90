@@ -81,6 +81,7 @@ module pound_results_h5
    use pound_yield_output, only: write_yield_h5, write_yield_influence_h5, write_yield_model_h5
    use pound_config, only: sweep_config
    use pound_constants, only: g_accel
+   use pound_law_smooth, only: is_smooth, realised_restitution
    implicit none
    private
 
@@ -496,6 +497,7 @@ contains
          character(len=*), parameter :: c = '/coupled/contact'
          character(len=16), allocatable :: laws(:)
          integer :: k, ne
+         logical :: smooth
          ! Contiguous copies of component sections (no array temporaries at the calls).
          real(dp), allocatable :: rv(:), envelope(:, :)
          integer, allocatable :: iv(:)
@@ -547,6 +549,23 @@ contains
          rv = cs%joint(:)%fracture_time
          call h5_write(h5, c//'/fracture_time', rv, error, units='s')
          if (allocated(error)) return
+         ! The smooth laws' realised restitution (issue 26), only where there is one.
+         rv = [(0.0_dp, k=1, cs%m)]
+         smooth = .false.
+         do k = 1, cs%m
+            if (.not. allocated(cs%pair(k)%law%given)) cycle
+            if (.not. is_smooth(cs%pair(k)%law%given)) cycle
+            smooth = .true.
+            rv(k) = realised_restitution(cs%pair(k)%law%given)
+         end do
+         if (smooth) then
+            call h5_write(h5, c//'/realised_restitution', rv, error, units='1')
+            if (allocated(error)) return
+            call h5_write_attr(h5, c//'/realised_restitution', 'description', 'separation speed / approach '// &
+                               'speed of a central impact of the facing masses on the joint''s smooth law, '// &
+                               'finely integrated (pound_law_impact); 0: not a smooth law', error)
+            if (allocated(error)) return
+         end if
          do k = 1, cs%m
             envelope = cs%pair(k)%law%envelope_points()
             if (size(envelope, 2) == 0) cycle
