@@ -284,14 +284,15 @@ contains
       logical, intent(in) :: output, coupled
       !> Positions of the strain energy and of the plastic work in a sample.
       integer, intent(in) :: i_strain, i_plastic
-      !> The stored output sample, the step's sample (kJ).
+      !> The stored output sample, the step's sample (kJ; at least as long).
       real(dp), intent(inout) :: stored(:), sample(:)
       !> The integrators' sum kinetic + strain + damping of an uncoupled step (kJ).
       real(dp), intent(inout) :: e_out
 
       if (output) then
          call yield_energy_terms(ys, stored(i_strain), stored(i_plastic))
-         sample = stored
+         ! (The sample may hold more terms than the stored history: HHT's numerical dissipation.)
+         sample(1:size(stored)) = stored
       else if (coupled) then
          call yield_energy_terms(ys, sample(i_strain), sample(i_plastic))
       else
