@@ -21,6 +21,7 @@ module pound_joint_study
    use pound_analysis, only: analysis_result, run_coupled, add_warning, audit_warning_limit
    use pound_contact, only: contact_pair, contact_system, pairs_from_config
    use pound_contact_pair, only: end_mass
+   use pound_law_impact, only: law_impact, impact_result, typical_impact_speed
    use pound_influence, only: influence_of, max_abs_target
    use pound_cases, only: case_work, case_table, run_cases, first_failure, text_to_column, column_to_text, &
                           case_message_len
@@ -101,17 +102,28 @@ contains
 
    !> The realised coefficient of restitution of joint `p` (its law and ends as the run set
    !> them up) for an impact of its two facing masses m1, m2 (t): what the law's calibration
-   !> delivers. MERGE HOOK (issue 26): the procedure of the laws' branch (realised restitution
-   !> of a joint's calibration) goes here; until then `realised_not_computed` (listed 'n/a').
+   !> delivers. A smooth law (`joint_law%force`): its central impact at the typical speed,
+   !> finely integrated (`law_impact`, as the listing's "realised e"); a piecewise-linear
+   !> joint with a dashpot calibrated to `restitution`: that e, which its calibration meets
+   !> exactly (`dashpot_of_restitution`); otherwise `realised_not_computed` (listed 'n/a').
    pure real(dp) function realised_restitution(p, m1, m2) result(e)
       !> The joint.
       type(contact_pair), intent(in) :: p
       !> Masses of its two facing points (t).
       real(dp), intent(in) :: m1, m2
+      type(impact_result) :: imp
 
       e = realised_not_computed
-      ! Without both masses (a column point) or a calibration there is nothing to compute.
-      if (.not. (m1 > 0.0_dp .and. m2 > 0.0_dp) .or. .not. p%law%restitution > 0.0_dp) return
+      ! Without both masses (a column point) there is no impact of two masses to compute.
+      if (.not. (m1 > 0.0_dp .and. m2 > 0.0_dp)) return
+      if (allocated(p%law%given)) then
+         imp = law_impact(p%law%given, m1, m2, typical_impact_speed)
+         if (imp%defined) then
+            e = imp%restitution
+            return
+         end if
+      end if
+      if (p%law%restitution > 0.0_dp) e = p%law%restitution
    end function realised_restitution
 
    !> Configuration i: its coupled run into a column.

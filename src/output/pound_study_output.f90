@@ -142,7 +142,7 @@ contains
          end do
       end do
       write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  Peak force [kN] and realised coefficient of '// &
-         'restitution e_r of each pair (n/a: the law has no calibration, or not yet computed)'
+         'restitution e_r of each pair (n/a: the law has no calibration, or an end without mass)'
       call lst%note()
       line = head
       do k = 1, size(res%pair)
