@@ -19,7 +19,7 @@ set(POUND_SOURCES
   # core: the rules of a joint envelope (shared by the deck reader and the contact law)
   core/pound_envelope_rules.f90
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
-  deck/pound_config.f90 deck/pound_deck_variables.f90 deck/pound_deck_lexer.f90 deck/pound_deck_checks.f90
+  deck/pound_config.f90 deck/pound_deck_variables.f90 deck/pound_deck_values.f90 deck/pound_deck_lexer.f90 deck/pound_deck_checks.f90
   deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_building.f90
   deck/pound_deck_stiffness.f90 deck/pound_deck_contact.f90 deck/pound_deck_study.f90 deck/pound_deck_sweep.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
