@@ -4,7 +4,7 @@ OpenSees, and the speed of both whole processes. Never a project requirement: ru
 interpreter that has openseespy, numpy and h5py, e.g. a virtual environment outside the repo:
 
     python3 -m venv /tmp/venv-os && /tmp/venv-os/bin/pip install openseespy numpy h5py
-    scripts/opensees_inelastic [REPEATS]          (the wrapper; OPENSEES_PYTHON=/tmp/venv-os/bin/python)
+    scripts/opensees_inelastic [REPEATS]          (the wrapper; POUND_OPENSEES_PYTHON, default /tmp/venv-os/bin/python)
     /tmp/venv-os/bin/python scripts/opensees_inelastic.py POUND_EXE DECK [RECORDS_DIR] [REPEATS]
 
 The OpenSees model (issue 25, "Checks you can make"), built from pound's own results file so
@@ -78,11 +78,19 @@ def read_model(h5path):
                                   k=float(k)))
         ag = f["ground/acceleration"][()]
         n_steps = len(f["uncoupled/time"][()]) - 1
-    return dict(dt=dt, buildings=buildings, pairs=pairs, ag_steps=ag.tolist(), n_steps=n_steps)
+        # A collapse stops pound's analysis at the end of its step: OpenSees stops there too.
+        stop = {}
+        for an in ("uncoupled", "coupled"):
+            times = [float(f[f"{an}/{b['name']}"].attrs["collapse_time"]) for b in buildings
+                     if an in f and int(f[f"{an}/{b['name']}"].attrs.get("collapse_storey", 0)) > 0]
+            stop[an] = int(round(min(times) / dt)) if times else n_steps
+    return dict(dt=dt, buildings=buildings, pairs=pairs, ag_steps=ag.tolist(), n_steps=n_steps,
+                stop=stop)
 
 
-def read_pound(h5path):
-    """pound's results to compare: {analysis: {building: {quantity: array}}}, joints, influence."""
+def read_pound(h5path, stop):
+    """pound's results to compare: {analysis: {building: {quantity: array}}}, joints, influence
+    (histories up to the step `stop[analysis]`)."""
     out = {}
     with h5py.File(h5path, "r") as f:
         for an in ("uncoupled", "coupled"):
@@ -95,7 +103,7 @@ def read_pound(h5path):
                                   storey_shear=g["peak/storey_shear"][()],
                                   ductility=g["peak/ductility"][()],
                                   residual_drift=g["residual_drift"][()],
-                                  history=g["drift"][1:])
+                                  history=g["drift"][1:stop[an] + 1])
         if "coupled/contact" in f:
             out["joints"] = dict(impacts=f["coupled/contact/impacts"][()].astype(float),
                                  peak_force=f["coupled/contact/peak_force"][()])
@@ -111,7 +119,7 @@ def opensees_run(model, ground, coupled, outdir, tag):
     import openseespy.opensees as ops
     ops.wipe()
     ops.model("basic", "-ndm", 1, "-ndf", 1)
-    dt, n_steps = model["dt"], model["n_steps"]
+    dt = model["dt"]
     floor = {}
     steel = {}
     ele = 0
@@ -173,7 +181,7 @@ def opensees_run(model, ground, coupled, outdir, tag):
                      "basicForce")
     if jels:
         ops.recorder("Element", "-file", f"{outdir}/{tag}_joints.out", "-precision", 17, "-ele", *jels, "basicForce")
-    if ops.analyze(n_steps, dt) != 0:
+    if ops.analyze(model["stop"][tag], dt) != 0:
         raise RuntimeError(f"OpenSees analysis {tag} failed")
     ops.wipe()
 
@@ -312,7 +320,7 @@ def compare_case(exe, deck, label, tmp, repeats, record=None):
         variants = ["record", "steps"]
     mpath = os.path.join(tmp, label + "_model.json")
     json.dump(model, open(mpath, "w"))
-    p = read_pound(h5)
+    p = read_pound(h5, model["stop"])
     results = {}
     for v in variants:
         odir = os.path.join(tmp, f"{label}_opensees_{v}")
@@ -334,6 +342,10 @@ def compare_case(exe, deck, label, tmp, repeats, record=None):
 
 def report(label, model, results, speed):
     print(f"\n## {label}: {model['n_steps']} steps of {model['dt']} s")
+    for an, n in model["stop"].items():
+        if n < model["n_steps"]:
+            print(f"\n{an}: pound reports a collapse at step {n} (t = {n * model['dt']:.3f} s): "
+                  "both stop there; peaks and the residual drift are up to that step")
     for v, rows in results.items():
         what = {"steps": "OpenSees fed pound's a_g(t_n) at every step",
                 "record": "OpenSees fed the record (its own interpolation)"}[v]
