@@ -275,6 +275,7 @@ def differences(p, o):
 
 
 def run_pound(exe, deck, outdir):
+    """Run pound on the deck; the path of its results file."""
     subprocess.run([exe, deck, "-o", outdir, "--quiet"], check=True, capture_output=True)
     return os.path.join(outdir, os.path.splitext(os.path.basename(deck))[0] + ".h5")
 
@@ -292,6 +293,7 @@ def el_centro_deck(deck, records, tmp, t_end=40.0):
 
 
 def read_at2(path):
+    """A PEER AT2 record of the old form (line 4 `NPTS=  N, DT= .0x SEC`): values x g, dt."""
     lines = open(path).read().splitlines()
     m = re.search(r"NPTS=\s*(\d+),\s*DT=\s*([0-9.Ee+-]+)", lines[3])
     npts, dt = int(m.group(1)), float(m.group(2))
@@ -310,6 +312,7 @@ def timed(cmd):
 
 
 def compare_case(exe, deck, label, tmp, repeats, record=None):
+    """pound, then OpenSees (each variant of the ground motion) compared, then both timed."""
     pdir = os.path.join(tmp, label + "_pound")
     os.makedirs(pdir, exist_ok=True)
     h5 = run_pound(exe, deck, pdir)
@@ -341,6 +344,7 @@ def compare_case(exe, deck, label, tmp, repeats, record=None):
 
 
 def report(label, model, results, speed):
+    """The Markdown tables of one case."""
     print(f"\n## {label}: {model['n_steps']} steps of {model['dt']} s")
     for an, n in model["stop"].items():
         if n < model["n_steps"]:
