@@ -81,12 +81,15 @@ def run(ag, dt, gap):
             ops.mass(base + j, b["load"] / G)
             ops.uniaxialMaterial("Elastic", base + j, float(k[j - 1]))
             ele += 1
-            ops.element("zeroLength", ele, base + j - 1, base + j, "-mat", base + j, "-dir", 1)
+            # -doRayleigh 1: without it a zeroLength element has no Rayleigh stiffness part.
+            ops.element("zeroLength", ele, base + j - 1, base + j, "-mat", base + j, "-dir", 1,
+                        "-doRayleigh", 1)
             nodes.append(base + j)
             eles.append(ele)
         a0, a1 = rayleigh(b)
-        ops.region(10 * ib + 1, "-node", *nodes, "-rayleigh", a0, 0.0, 0.0, 0.0)
-        ops.region(10 * ib + 2, "-ele", *eles, "-rayleigh", 0.0, a1, 0.0, 0.0)
+        # One region of the springs: it sets alphaM on their nodes too (a second region of the
+        # elements would reset the nodes' alphaM of a region of the nodes to 0).
+        ops.region(10 * ib + 1, "-ele", *eles, "-rayleigh", a0, a1, 0.0, 0.0)
         floor_node.append(nodes)
     if gap is not None:
         for ip, (fl, fr) in enumerate(PAIRS):
