@@ -168,6 +168,7 @@ module pound_analysis
 
    !> Running peaks of one building for the lanes, (max_lanes, 4, n): u, v, a_abs, drift.
    type :: lane_peaks
+      !> Peaks and the times they first occurred (s).
       real(dp), allocatable :: peak(:, :, :), time(:, :, :)
    end type lane_peaks
 
