@@ -27,9 +27,10 @@ module pound_analysis
    use pound_structure, only: structure_model
    use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
-   use pound_integrator, only: integrator, en_input, en_damping, en_numerical, n_integrator_energies
+   use pound_integrator, only: integrator, max_lanes, en_input, en_damping, en_numerical, n_integrator_energies
    use pound_integrators, only: integrators_for
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
+                             response_store, &
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record, contact_swap_step, &
@@ -50,7 +51,7 @@ module pound_analysis
    public :: add_warning, write_warnings, audit_warning_limit, resolved_steps
    public :: substeps_per_half_period, impact_substeps_of, contact_half_period, substep_text, exact_text
    public :: start_result, audit_error, uncoupled_audit_warning, analysis_copy
-   public :: flush_full_blocks, store_energy
+   public :: flush_full_blocks, store_energy, run_lanes
 
    !> Relative energy residual above which the result carries a warning.
    real(dp), parameter :: audit_warning_limit = 1.0e-2_dp
@@ -157,6 +158,26 @@ module pound_analysis
       real(dp), pointer, contiguous :: u(:) => null(), v(:) => null(), a(:) => null()
    end type state_view
 
+   !> The lanes of a batched run (`integrate` with `lanes`, set up by `run_lanes`): up to
+   !> `max_lanes` motions of the same buildings, advanced together by the integrators. Lane 1
+   !> is `integrate`'s own `ag` and `res`, lane l > 1 `ag(:, l)` and `more(l - 1)` here.
+   type :: lane_runs
+      !> Lanes that carry a motion (1..n).
+      integer :: n = 0
+      !> Ground acceleration of every lane (0:n_steps, n) (m/s^2).
+      real(dp), pointer, contiguous :: ag(:, :) => null()
+      !> Results of lanes 2..n.
+      type(analysis_result), pointer :: more(:) => null()
+      !> Whether each lane runs (a lane is dropped when its state stops being finite).
+      logical :: live(max_lanes) = .false.
+   end type lane_runs
+
+   !> Running peaks of one building for the lanes, (max_lanes, 4, n): u, v, a_abs, drift.
+   type :: lane_peaks
+      !> Peaks and the times they first occurred (s).
+      real(dp), allocatable :: peak(:, :, :), time(:, :, :)
+   end type lane_peaks
+
    !> The cold part of the analyses, in submodule pound_analysis_reports: the result copy, the
    !> warnings and their text (and a joint's effective mass), and the failure diagnostics of a step that is not finite.
    interface
@@ -261,49 +282,66 @@ module pound_analysis
          type(structure_model), intent(in) :: models(:)
          real(dp) :: meff
       end function effective_mass
-      !> Hand the histories' blocks over to the sink when one of them is full (time in `write_ticks`).
-      module subroutine flush_full_blocks(res, sink, coupled, write_ticks, error)
-         type(analysis_result), intent(inout) :: res
-         class(history_sink), intent(inout) :: sink
-         logical, intent(in) :: coupled
-         integer(int64), intent(inout) :: write_ticks
+      !> Integrate every building without contact: the coupled run with no constraints.
+      module subroutine run_uncoupled(cfg, models, ag, res, error, sink)
+         !> The analysis plan (`&analysis`).
+         type(analysis_plan), intent(in) :: cfg
+         !> The buildings.
+         type(structure_model), intent(in) :: models(:)
+         !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
+         real(dp), intent(in) :: ag(0:)
+         !> The result.
+         type(analysis_result), intent(out) :: res
+         !> Error state.
          type(error_type), allocatable, intent(out) :: error
-      end subroutine flush_full_blocks
+         !> Where the histories are streamed (none: held whole in `res`).
+         class(history_sink), intent(inout), optional :: sink
+      end subroutine run_uncoupled
+      !> The coupled time integration from a prepared model (left unchanged, so that it can be
+      !> reused); `gaps`, when given, replace the gaps of the constraints.
+      module subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps, ground, sink, track)
+         !> The analysis plan (`&analysis`).
+         type(analysis_plan), intent(in) :: cfg
+         !> The buildings.
+         type(structure_model), intent(in) :: models(:)
+         !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
+         real(dp), intent(in) :: ag(0:)
+         !> The prepared model.
+         type(coupled_model), intent(in) :: prep
+         !> The result.
+         type(analysis_result), intent(out) :: res
+         !> The contact system at the end (statistics per pair and of the LCPs).
+         type(contact_system), intent(out) :: cs
+         !> Error state.
+         type(error_type), allocatable, intent(out) :: error
+         !> Gaps of the constraints (m), one per constraint.
+         real(dp), intent(in), optional :: gaps(:)
+         !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
+         type(ground_motion_t), intent(in), optional :: ground
+         !> Where the histories are streamed (none: held whole in `res`).
+         class(history_sink), intent(inout), optional :: sink
+         !> Record the joints' largest closing displacements in `cs%closing_max`
+         !> (`contact_track_closing`; default: no).
+         logical, intent(in), optional :: track
+      end subroutine coupled_integrate
+      !> The uncoupled runs of the motions `ag(:, m)` (m = 1..size(ag, 2) <= `max_lanes`) on the
+      !> buildings at once, by the one time loop with the integrators' lanes (`integrate`; each
+      !> motion's result as its own `run_uncoupled` gives it).
+      module subroutine run_lanes(cfg, models, ag, res, ok)
+         !> The analysis plan (`&analysis`; average acceleration, no exact free steps).
+         type(analysis_plan), intent(in) :: cfg
+         !> The buildings (every integrator's `lanes_for`).
+         type(structure_model), intent(in) :: models(:)
+         !> Ground acceleration of each motion (0:n_steps, n_motions) (m/s^2).
+         real(dp), intent(in), target, contiguous :: ag(0:, :)
+         !> Results, set up by `start_result` where `ok`; completed where `ok` stays true.
+         type(analysis_result), intent(inout), target :: res(:)
+         !> Whether each motion runs / ran (otherwise: run it with `run_uncoupled`).
+         logical, intent(inout) :: ok(:)
+      end subroutine run_lanes
    end interface
 
 contains
-
-   !> Integrate every building without contact: the coupled run with no constraints.
-   subroutine run_uncoupled(cfg, models, ag, res, error, sink)
-      !> The analysis plan (`&analysis`).
-      type(analysis_plan), intent(in) :: cfg
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
-      real(dp), intent(in) :: ag(0:)
-      !> The result.
-      type(analysis_result), intent(out) :: res
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      !> Where the histories are streamed (none: held whole in `res`).
-      class(history_sink), intent(inout), optional :: sink
-      class(integrator), allocatable :: st(:)
-      type(contact_system) :: cs
-      integer :: ib, nb
-
-      res%seconds = 0.0_dp
-      call check_ground_samples(ag, cfg%dt, error)
-      if (allocated(error)) return
-      nb = size(models)
-      call start_result(res, cfg, size(ag) - 1, nb, error)
-      if (allocated(error)) return
-      call integrators_for(cfg, nb, st)
-      do ib = 1, nb
-         call st(ib)%init(models(ib), cfg%dt, ag(0), error, exact=cfg%free_steps == free_exact)
-         if (allocated(error)) return
-      end do
-      call integrate(cfg, models, ag, st, cs, res, error, sink=sink)
-   end subroutine run_uncoupled
 
    !> Integrate all buildings together with the unilateral constraints `pairs`.
    subroutine run_coupled(cfg, models, ag, pairs, res, cs, error, ground, sink)
@@ -418,62 +456,6 @@ contains
       half = imp%duration
    end function contact_half_period
 
-   !> The coupled time integration from a prepared model (left unchanged, so that it can be
-   !> reused); `gaps`, when given, replace the gaps of the constraints.
-   subroutine coupled_integrate(cfg, models, ag, prep, res, cs, error, gaps, ground, sink, track)
-      !> The analysis plan (`&analysis`).
-      type(analysis_plan), intent(in) :: cfg
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
-      real(dp), intent(in) :: ag(0:)
-      !> The prepared model.
-      type(coupled_model), intent(in) :: prep
-      !> The result.
-      type(analysis_result), intent(out) :: res
-      !> The contact system at the end (statistics per pair and of the LCPs).
-      type(contact_system), intent(out) :: cs
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      !> Gaps of the constraints (m), one per constraint.
-      real(dp), intent(in), optional :: gaps(:)
-      !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
-      type(ground_motion_t), intent(in), optional :: ground
-      !> Where the histories are streamed (none: held whole in `res`).
-      class(history_sink), intent(inout), optional :: sink
-      !> Record the joints' largest closing displacements in `cs%closing_max`
-      !> (`contact_track_closing`; default: no).
-      logical, intent(in), optional :: track
-      class(integrator), allocatable :: st(:)
-      type(impact_stepping) :: sub
-      integer :: nb
-
-      nb = size(models)
-      call check_ground_samples(ag, cfg%dt, error)
-      if (allocated(error)) return
-      allocate (st, source=prep%st)
-      cs = prep%cs
-      if (present(gaps)) cs%pair(:)%gap = gaps
-      if (present(track)) then
-         if (track) call contact_track_closing(cs)
-      end if
-      call start_result(res, cfg, size(ag) - 1, nb, error, cs%m)
-      if (allocated(error)) return
-      if (prep%substeps == 0) then
-         call integrate(cfg, models, ag, st, cs, res, error, sink=sink)
-         return
-      end if
-      if (.not. present(ground)) then
-         call fatal_error(error, "&analysis: stepping = 'impact' needs the ground motion itself (internal)")
-         return
-      end if
-      sub%m = prep%substeps
-      allocate (sub%st, source=prep%st_sub)
-      sub%cs = prep%cs_sub
-      sub%ground = ground
-      call integrate(cfg, models, ag, st, cs, res, error, sub, sink)
-   end subroutine coupled_integrate
-
    !> Whether every gap is beyond its joint's largest closing displacement (`probe_gap`)
    !> (by `closing_margin`): a run with these gaps is the probe's run.
    pure logical function beyond_closing(gaps, closing_max)
@@ -485,252 +467,39 @@ contains
       beyond_closing = all(gaps >= closing_max + closing_margin*abs(closing_max))
    end function beyond_closing
 
-   !> The time-step loop of every analysis, from integrators at t = 0 and a contact system
-   !> (`cs%m` = 0: no constraints, the uncoupled run): predict every building, the step's
-   !> contact forces, commit, sample the response, audit the energy, store output samples.
-   !>
-   !> A plain run (no constraints, no substeps, no exact free steps) predicts each step at
-   !> the end of the one before (`integrator%advance`: commit, then predict the next) and
-   !> samples the committed response after that, which the prediction leaves untouched: the
-   !> same numbers, with the sampling free to overlap the tridiagonal solve, a chain of
-   !> dependent operations.
-   !>
-   !> Without constraints each building's kinetic, strain and damping energy are summed first
-   !> and then over the buildings (the order the uncoupled run has always used, so that its
-   !> audit residual stays bit-identical); with constraints each term is summed over the
-   !> buildings first.
-   subroutine integrate(cfg, models, ag, st, cs, res, error, sub, sink)
-      !> The analysis plan (`&analysis`).
-      type(analysis_plan), intent(in) :: cfg
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      !> Ground acceleration at t_n = n dt, n = 0..n_steps (m/s^2).
-      real(dp), intent(in) :: ag(0:)
-      !> Integrators at t = 0 (advanced to the end).
-      class(integrator), intent(inout), target :: st(:)
-      !> The contact system at t = 0 (at the end on return).
-      type(contact_system), intent(inout) :: cs
-      !> The result, set up by `start_result` (contact histories when cs%m > 0).
-      type(analysis_result), intent(inout) :: res
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      !> Impact-aware substeps (`stepping = 'impact'`): a step in which a joint carries force
-      !> at the start or is predicted to close (`contact_may_act`) is taken as `sub%m`
-      !> substeps of dt/m.
-      type(impact_stepping), intent(inout), optional :: sub
-      !> Where the histories are streamed: each building holds one block of output samples,
-      !> handed over when full and after the loop (none: the whole history is held).
-      class(history_sink), intent(inout), optional :: sink
-      integer :: ib, step, k, every, nb, j, n_sub, capacity, until_out
-      integer(int64) :: c0, c1, rate, write_ticks
-      real(dp) :: t, sample(e_numerical), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
-      type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, inelastic, collapsed
-      integer :: method_steps
-      type(storey_yield_set), allocatable :: ys(:)
-
-      nb = size(models)
-      allocate (view(nb))
-      call yield_sets_init(ys, models, cfg, inelastic, collapsed, error)
-      if (allocated(error)) return
-      coupled = cs%m > 0
-      impact = present(sub)
-      exact = cfg%free_steps == free_exact .and. .not. inelastic
-      plain = .not. (coupled .or. impact .or. exact .or. inelastic)
-      track = (impact .or. exact) .and. allocated(cs%closing_max)
-      method_steps = 0
-      every = cfg%output_every
-      h = cfg%dt
-      if (impact) then
-         h = cfg%dt/real(sub%m, dp)
-         res%substep_factor = sub%m
-         res%substep = h
-      end if
-      do ib = 1, nb
-         capacity = res%n_out
-         if (present(sink)) capacity = history_block(size(models(ib)%floor_dof), res%n_out, sink%block)
-         ! Node histories are held whole: the program streams only without them.
-         ! Deformed shapes at the storey-shear peaks for models with a DOF layout (frames),
-         ! within `deformed_limit`.
-         call response_init(res%building(ib), models(ib), cfg%store, capacity, error, &
-                            nodes=cfg%node_histories .and. allocated(models(ib)%dof_node) .and. &
-                                  .not. present(sink), &
-                            snapshots=allocated(models(ib)%dof_node) .and. &
-                                      real(models(ib)%n, dp)*real(models(ib)%shear%n, dp) <= deformed_limit)
-         if (allocated(error)) return
-         res%building(ib)%streamed = present(sink)
-         view(ib)%u => st(ib)%u_view()
-         view(ib)%v => st(ib)%v_view()
-         view(ib)%a => st(ib)%a_view()
-         call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, ag(0), &
-                              0.0_dp, .true.)
-         if (present(sink)) then
-            call response_flush(res%building(ib), sink, cs%m > 0, ib, .true., error)
-            if (allocated(error)) return
-         end if
-      end do
-      k = 1
-      resid = 0.0_dp
-      scale = 0.0_dp
-      lcp_start = cs%stats%lcp_seconds
-      write_ticks = 0
-      until_out = every
-      call system_clock(c0, rate)
-      if (plain .and. res%n_steps > 0) call predict_again(st, models, ag(1) - ag(0))
-      steps: do step = 1, res%n_steps
-         if (mod(step, progress_stride) == 0) call progress_steps(step, res%n_steps)
-         t = real(step, dp)*cfg%dt
-         ag_old = ag(step - 1)
-         ag_new = ag(step)
-         ! A joint carrying force at the start makes the step Newmark's (below): its exact
-         ! prediction, which would be dropped, is not made.
-         loaded = .false.
-         if (exact .and. coupled .and. .not. track) loaded = contact_carries_force(cs)
-         if (exact) then
-            if (.not. loaded) then
-               do ib = 1, nb
-                  call st(ib)%predict_exact(models(ib), ag_old, ag_new)
-               end do
-            end if
-         else if (.not. plain) then
-            do ib = 1, nb
-               call st(ib)%predict(models(ib), ag_new - ag_old)
-            end do
-         end if
-         ! out = mod(step, every) == 0, counted down (no division per step)
-         until_out = until_out - 1
-         out = until_out == 0
-         if (out) until_out = every
-         ! A step is one pass of the body below, or, with impact stepping when a joint can act,
-         ! m passes of h = dt/m with the ground motion at the substeps' ends.
-         ! With exact free steps (uniform stepping) a step in which a joint can act is Newmark's
-         ! at dt, predicted again.
-         n_sub = 1
-         if (impact .or. (exact .and. coupled)) then
-            if (track) call contact_track_paths(cs, st)
-            if (loaded .or. contact_may_act(cs, st)) then
-               method_steps = method_steps + 1
-               if (impact) then
-                  n_sub = sub%m
-                  res%substepped = res%substepped + 1
-                  call swap_steps(st, cs, sub)
-               else
-                  call predict_again(st, models, ag_new - ag_old)
-               end if
-            end if
-         end if
-         t_sub = t
-         dt_now = cfg%dt
-         do j = 1, n_sub
-            if (n_sub > 1) then
-               dt_now = h
-               if (j < n_sub) then
-                  t_sub = real(step - 1, dp)*cfg%dt + real(j, dp)*h
-                  ag_new = ground_accel(sub%ground, t_sub)
-               else
-                  t_sub = t
-                  ag_new = ag(step)
-               end if
-               do ib = 1, nb
-                  call st(ib)%predict(models(ib), ag_new - ag_old)
-               end do
-               res%substeps = res%substeps + 1
-            end if
-            output = out .and. j == n_sub
-            if (coupled) then
-               call contact_step(cs, st, t_sub, step, error)
-               if (allocated(error)) then
-                  ! A state that is not finite is named as such, not as a failed LCP.
-                  call locate_nonfinite(st, models, cs, t_sub, step, error, predicted=.true.)
-                  call error_at(error, t_sub, step)
-                  return
-               end if
-            end if
-            if (inelastic) call yield_steps(ys, st, cs, models, t_sub, step, error)
-            if (allocated(error)) return
-            ! win, eout: the integrators' energy balance, added up by the commits (uncoupled;
-            ! replaced by the sample below when coupled)
-            win = 0.0_dp
-            eout = 0.0_dp
-            do ib = 1, nb
-               if (plain .and. step < res%n_steps) then
-                  call st(ib)%advance(models(ib), ag_old, ag_new, ag(step + 1) - ag_new, win, eout)
-               else
-                  call st(ib)%commit(models(ib), ag_old, ag_new, win, eout)
-               end if
-               call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
-                                    ag_new, t_sub, output)
-               if (inelastic) call yield_sample(ys(ib), view(ib)%u, t_sub, output, res%building(ib), collapsed)
-            end do
-            ! The last block is handed over after the loop (writing it is not integration).
-            if (output .and. present(sink) .and. step < res%n_steps) then
-               call flush_full_blocks(res, sink, coupled, write_ticks, error)
-               if (allocated(error)) return
-            end if
-            if (coupled) then
-               ! An output step's sample is the stored one (below).
-               if (.not. output) call step_energy(st, sample)
-               call contact_commit(cs, st, t_sub, dt_now)
-               sample(e_contact) = cs%element_work - cs%plastic_work
-               sample(e_plastic) = cs%plastic_work
-            end if
-            if (output) then
-               k = k + 1
-               call store_energy(res, k, st, models, cs, sample)
-            end if
-            if (inelastic) call yield_energy_step(ys, output, coupled, e_strain, e_plastic, res%energy(:, k), sample, eout)
-            if (coupled .or. output) then
-               win = sample(e_input)
-               eout = sum(sample(e_kinetic:e_numerical))
-            end if
-            ! One test per step: every value of the state feeds these sums.
-            if (coupled) then
-               finite = abs(sum(sample) + cs%work) <= huge(1.0_dp)
-            else
-               finite = abs(win + eout) <= huge(1.0_dp)
-            end if
-            if (.not. finite) then
-               if (.not. coupled) call step_energy(st, sample)
-               call state_failure(st, models, cs, sample, ag, cfg%dt, step, error)
-               return
-            end if
-            resid = max(resid, abs(win - eout))
-            scale = max(scale, abs(win), eout)
-            ag_old = ag_new
-         end do
-         if (n_sub > 1) call swap_steps(st, cs, sub)
-         ! A collapsed building stops its analysis (the samples not reached hold the last).
-         if (collapsed) exit steps
-      end do steps
-      if (inelastic) call yield_hold(res%building, res%energy, k, coupled, error, sink)
-      if (allocated(error)) return
-      call system_clock(c1)
-      if (present(sink)) then
-         do ib = 1, nb
-            call response_flush(res%building(ib), sink, coupled, ib, .false., error)
-            if (allocated(error)) return
-         end do
-      end if
-      call progress_run_done()
-      res%seconds = real(c1 - c0 - write_ticks, dp)/real(rate, dp)
-      res%write_seconds = real(write_ticks, dp)/real(rate, dp)
-      res%contact_seconds = cs%stats%lcp_seconds - lcp_start
-      do ib = 1, nb
-         call response_finish(res%building(ib), models(ib))
-      end do
-      if (inelastic) call yield_results(ys, res%building, res%yielding)
-      if (exact) res%exact_steps = res%n_steps - method_steps
-      res%energy_error = audit_error(resid, scale)
-      if (res%energy_error <= audit_warning_limit) return
-      if (coupled) then
-         call warn_unresolved_joints(res, models, cs, h)
-      else
-         call add_warning(res%warnings, uncoupled_audit_warning(res%energy_error))
-      end if
-   end subroutine integrate
-
    ! The rarely taken parts of `integrate`'s step, kept out of its loop so that the loop's
    ! own state stays in registers (public only so that the compiler does not inline them).
+
+   !> Hand the histories' blocks over to the sink when one of them is full; the time spent
+   !> is added to `write_ticks`.
+   subroutine flush_full_blocks(res, sink, coupled, write_ticks, error)
+      !> The result being integrated.
+      type(analysis_result), intent(inout) :: res
+      !> Where the histories are streamed.
+      class(history_sink), intent(inout) :: sink
+      !> Whether the run has constraints.
+      logical, intent(in) :: coupled
+      !> Clock ticks spent writing (added to).
+      integer(int64), intent(inout) :: write_ticks
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer(int64) :: w0, w1
+      integer :: ib
+      logical :: full
+
+      full = .false.
+      do ib = 1, size(res%building)
+         full = full .or. response_block_full(res%building(ib))
+      end do
+      if (.not. full) return
+      call system_clock(w0)
+      do ib = 1, size(res%building)
+         call response_flush(res%building(ib), sink, coupled, ib, .true., error)
+         if (allocated(error)) return
+      end do
+      call system_clock(w1)
+      write_ticks = write_ticks + (w1 - w0)
+   end subroutine flush_full_blocks
 
    !> The energy sample `k` of an output step (and the joints' history when constrained);
    !> `sample` is set to it.
@@ -767,41 +536,6 @@ contains
       end do
       res%numerical(k) = sample(e_numerical)
    end subroutine store_energy
-
-   !> Predict the step of every building by Newmark, dropping any exact step predicted
-   !> (`free_steps = 'exact'`, a step in which a joint can act; a plain run's first step).
-   subroutine predict_again(st, models, dag)
-      !> Integrators.
-      class(integrator), intent(inout) :: st(:)
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      !> Ground acceleration increment of the step (m/s^2).
-      real(dp), intent(in) :: dag
-      integer :: ib
-
-      do ib = 1, size(st)
-         call st(ib)%drop_exact()
-         call st(ib)%predict(models(ib), dag)
-      end do
-   end subroutine predict_again
-
-   !> Exchange the step data of the integrators and the contact system with `sub`'s (a
-   !> procedure of the module, not of `integrate`: an internal one would keep the time loop's
-   !> variables that it reaches in memory).
-   subroutine swap_steps(st, cs, sub)
-      !> Integrators.
-      class(integrator), intent(inout) :: st(:)
-      !> The contact system.
-      type(contact_system), intent(inout) :: cs
-      !> The substep data of `stepping = 'impact'`.
-      type(impact_stepping), intent(inout) :: sub
-      integer :: i
-
-      do i = 1, size(st)
-         call st(i)%swap_step(sub%st(i))
-      end do
-      call contact_swap_step(cs, sub%cs)
-   end subroutine swap_steps
 
    !> Sizes, output times, a zero energy history and (with `n_pairs`) the contact histories
    !> of a result for `n_steps` steps; no warnings yet.
@@ -864,22 +598,6 @@ contains
       sample(e_strain) = sample(e_strain) + st%strain_energy(b)
       sample(e_damping) = sample(e_damping) + e(en_damping)
    end subroutine add_structure_energy
-
-   !> The buildings' energies at the end of the step, from the integrators' running sums
-   !> (contact and plastic terms zero).
-   pure subroutine step_energy(st, sample)
-      !> Integrator states.
-      class(integrator), intent(in) :: st(:)
-      !> Energy sample (n_energy).
-      real(dp), intent(out) :: sample(:)
-      integer :: ib
-
-      sample = 0.0_dp
-      do ib = 1, size(st)
-         call st(ib)%add_energies(sample(e_input), sample(e_kinetic), sample(e_strain), sample(e_damping), &
-                                  sample(e_numerical))
-      end do
-   end subroutine step_energy
 
    !> Relative energy balance error max_t |residual| / max_t scale (0 when nothing moved).
    pure real(dp) function audit_error(resid, scale) result(err)

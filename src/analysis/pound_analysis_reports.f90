@@ -302,35 +302,4 @@ contains
       end do
    end subroutine locate_nonfinite
 
-   !> Hand the histories' blocks over to the sink when one of them is full; the time spent
-   !> is added to `write_ticks`.
-   module subroutine flush_full_blocks(res, sink, coupled, write_ticks, error)
-      !> The result being integrated.
-      type(analysis_result), intent(inout) :: res
-      !> Where the histories are streamed.
-      class(history_sink), intent(inout) :: sink
-      !> Whether the run has constraints.
-      logical, intent(in) :: coupled
-      !> Clock ticks spent writing (added to).
-      integer(int64), intent(inout) :: write_ticks
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      integer(int64) :: w0, w1
-      integer :: ib
-      logical :: full
-
-      full = .false.
-      do ib = 1, size(res%building)
-         full = full .or. response_block_full(res%building(ib))
-      end do
-      if (.not. full) return
-      call system_clock(w0)
-      do ib = 1, size(res%building)
-         call response_flush(res%building(ib), sink, coupled, ib, .true., error)
-         if (allocated(error)) return
-      end do
-      call system_clock(w1)
-      write_ticks = write_ticks + (w1 - w0)
-   end subroutine flush_full_blocks
-
 end submodule pound_analysis_reports

@@ -12,17 +12,28 @@
 !> displacement increment (`velocity_rate`: v_{n+1} = velocity_rate du + terms of the state
 !> at t_n) and never a constant of a particular method.
 !>
+!> **Lanes.** An integrator may also advance up to `max_lanes` right-hand sides at once: the
+!> same model under several ground motions (the uncoupled runs of a suite's motions), sharing
+!> the factored Khat. `start_lanes` starts every lane at rest (after `init`), `advance_lanes`
+!> takes one step of every lane (commit and predict in one; the running peaks of the response
+!> points and the lanes' energy sums as `advance` adds them), `show_lane` makes lane l's state
+!> the integrator's own state (u, v, a, energies: what `u_view`, `energies`,
+!> `kinetic_energy`, ... then read) and `drop_lane` brings a lane to rest. The one time loop
+!> (`integrate`, `pound_analysis`) drives them; an integrator without lanes keeps the defaults
+!> below (`lanes_for` false, `start_lanes` an error).
+!>
 !> Extensions: Newmark average acceleration (`newmark_state`, `pound_newmark`, with its
 !> tridiagonal, banded, batched and exact paths in submodules), HHT-alpha (`hht_state`,
 !> `pound_hht`). `pound_integrators` allocates the one the analysis plan names.
 module pound_integrator
    use pound_kinds, only: dp
-   use pound_error, only: error_type
+   use pound_error, only: error_type, fatal_error
+   use pound_strings, only: str
    use pound_structure, only: structure_model
    implicit none
    private
 
-   public :: integrator, trapezoid_rate
+   public :: integrator, trapezoid_rate, max_lanes
    public :: en_input, en_kinetic, en_strain, en_damping, en_numerical, n_integrator_energies
 
    !> Indices of `energies`: input work, kinetic, strain and viscous damping energy, and the
@@ -30,6 +41,9 @@ module pound_integrator
    integer, parameter :: en_input = 1, en_kinetic = 2, en_strain = 3, en_damping = 4, en_numerical = 5
    !> Size of `energies`.
    integer, parameter :: n_integrator_energies = 5
+   !> Right-hand sides (lanes) advanced together by `advance_lanes` (two AVX2 vectors of
+   !> doubles); arrays per lane have this size, lanes without a motion are driven by zero.
+   integer, parameter :: max_lanes = 8
 
    !> The time integration of one structural model (state private to each extension).
    type, abstract :: integrator
@@ -77,6 +91,16 @@ module pound_integrator
       procedure(add_energies_i), deferred :: add_energies
       !> Kinetic and strain energy of the state (kJ).
       procedure(model_energy_i), deferred :: kinetic_energy, strain_energy
+      !> Lanes: whether the integrator can advance several motions of the model at once.
+      procedure :: lanes_for => no_lanes
+      !> Lanes: start every lane at rest with its ground acceleration at t = 0 (after `init`).
+      procedure :: start_lanes => no_start_lanes
+      !> Lanes: one step of every lane, the running peaks and the energy sums.
+      procedure :: advance_lanes => no_advance_lanes
+      !> Lanes: lane l's state as the integrator's own state.
+      procedure :: show_lane => no_lane
+      !> Lanes: bring lane l to rest (a motion dropped from the batch).
+      procedure :: drop_lane => no_lane
    end type integrator
 
    abstract interface
@@ -213,6 +237,63 @@ module pound_integrator
    end interface
 
 contains
+
+   ! The defaults of the lane bindings (an integrator without lanes) do not need every dummy;
+   ! `same_type_as(st, st)` and the like only keep the compiler from warning about them.
+
+   !> Default `lanes_for`: no lanes.
+   pure logical function no_lanes(st, b)
+      !> Integrator.
+      class(integrator), intent(in) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+
+      no_lanes = .not. same_type_as(st, st) .and. b%n < 0
+   end function no_lanes
+
+   !> Default `start_lanes`: an error (the integrator has no lanes).
+   subroutine no_start_lanes(st, b, ag0, error)
+      !> Integrator (initialised by `init`).
+      class(integrator), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Ground acceleration of each lane at t = 0 (m/s^2).
+      real(dp), intent(in) :: ag0(max_lanes)
+      !> Error state: always set.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (same_type_as(st, st)) call fatal_error(error, 'the integrator of building '//trim(b%name)// &
+                                                  ' cannot advance '//str(size(ag0))//' motions at once (internal)')
+   end subroutine no_start_lanes
+
+   !> Default `advance_lanes`: nothing (`start_lanes` refused).
+   subroutine no_advance_lanes(st, b, ag_old, ag_new, t, peak, peak_time, w_in, e_out)
+      !> Integrator.
+      class(integrator), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Ground acceleration of each lane at the start and the end of the step (m/s^2).
+      real(dp), intent(in) :: ag_old(max_lanes), ag_new(max_lanes)
+      !> Time at the end of the step (s).
+      real(dp), intent(in) :: t
+      !> Running peaks of the response points and their times (max_lanes, 4, n).
+      real(dp), intent(inout), contiguous :: peak(:, :, :), peak_time(:, :, :)
+      !> Each lane's input work and kinetic + strain + damping energy (added to).
+      real(dp), intent(inout) :: w_in(max_lanes), e_out(max_lanes)
+
+      if (same_type_as(st, st) .or. b%n < 0) return
+      w_in = w_in + 0.0_dp*(ag_old + ag_new + t + peak(1, 1, 1) + peak_time(1, 1, 1) + e_out)
+   end subroutine no_advance_lanes
+
+   !> Default `show_lane`, `drop_lane`: nothing.
+   subroutine no_lane(st, l)
+      !> Integrator.
+      class(integrator), intent(inout) :: st
+      !> Lane.
+      integer, intent(in) :: l
+
+      if (same_type_as(st, st) .or. l < 1) return
+   end subroutine no_lane
 
    !> The velocity per displacement increment of the trapezoidal rule, 2/dt (1/s): the
    !> default rate of a joint's compression when no integrator is given

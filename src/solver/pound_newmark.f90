@@ -28,6 +28,11 @@
 !> which a joint acts) and predicts by Newmark instead. DOFs without mass are condensed
 !> statically, their elastic forces relaxing as exp(-t/a1) (exact as well). Submodule
 !> pound_newmark_exact.
+!>
+!> **Lanes** (the integrator's `start_lanes`, `advance_lanes`, `show_lane`, `drop_lane`): on
+!> the fused tridiagonal path (two DOFs or more) the integrator also advances `max_lanes`
+!> ground motions of its model at once, with the same factors, each lane bit for bit the
+!> tridiagonal kernels' single motion (submodule pound_newmark_batch).
 module pound_newmark
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
@@ -37,7 +42,7 @@ module pound_newmark
    use pound_swap, only: swap
    use pound_band_lapack, only: dpbtrf, dpbtrs
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
-   use pound_integrator, only: integrator, en_input, en_kinetic, en_strain, en_damping, en_numerical, &
+   use pound_integrator, only: integrator, max_lanes, en_input, en_kinetic, en_strain, en_damping, en_numerical, &
                                n_integrator_energies
    implicit none
    private
@@ -45,7 +50,7 @@ module pound_newmark
    public :: newmark_state, newmark_init, newmark_predict, newmark_commit, newmark_advance, newmark_solve
    public :: newmark_add_response, newmark_add_response_rows, newmark_set_state, newmark_dt, newmark_n, newmark_swap_step
    public :: newmark_u, newmark_v, newmark_a, newmark_du, newmark_u_at, newmark_v_at, newmark_predicted, newmark_energies
-   public :: newmark_path, newmark_tridiagonal_factors
+   public :: newmark_path
    public :: kinetic_energy, strain_energy
    public :: en_input, en_kinetic, en_strain, en_damping
    public :: newmark_add_energies, newmark_predict_exact, newmark_drop_exact
@@ -55,6 +60,16 @@ module pound_newmark
 
    !> Default steps between exact band products of the general path (see pound_newmark_band).
    integer, parameter, public :: band_refresh_steps = 100
+
+   !> The lanes of a Newmark integrator (`start_lanes`): `max_lanes` motions of its model,
+   !> every vector held motion-fastest, x(lane, DOF) (submodule pound_newmark_batch).
+   type :: newmark_lanes
+      !> Relative displacement, velocity, acceleration, C v and the step's increment (max_lanes, n).
+      real(dp), allocatable :: u(:, :), v(:, :), a(:, :), cv(:, :), du(:, :)
+      !> Input work, damping energy, kinetic and strain energy per lane (kJ), as `newmark_state`.
+      real(dp) :: input_work(max_lanes) = 0.0_dp, damping_energy(max_lanes) = 0.0_dp
+      real(dp) :: kinetic(max_lanes) = 0.0_dp, strain(max_lanes) = 0.0_dp
+   end type newmark_lanes
 
    !> Integrator state of one structural model (components private: see the module doc): the
    !> Newmark average-acceleration extension of `integrator`.
@@ -123,6 +138,8 @@ module pound_newmark
       real(dp), allocatable :: q(:), qd(:), xq(:), xqd(:), xw(:), xv(:), xa(:)
       !> Exact free steps: input work and damping energy of the predicted step (kJ).
       real(dp) :: x_input = 0.0_dp, x_damping = 0.0_dp
+      !> Lanes (`start_lanes`; unallocated otherwise).
+      type(newmark_lanes), allocatable :: lanes
    contains
       procedure :: init => init_binding
       procedure :: predict => newmark_predict
@@ -151,6 +168,11 @@ module pound_newmark
       procedure :: add_energies => newmark_add_energies
       procedure :: kinetic_energy => kinetic_energy
       procedure :: strain_energy => strain_energy
+      procedure :: lanes_for => newmark_lanes_for
+      procedure :: start_lanes => newmark_start_lanes
+      procedure :: advance_lanes => newmark_advance_lanes
+      procedure :: show_lane => newmark_show_lane
+      procedure :: drop_lane => newmark_drop_lane
    end type newmark_state
 
    interface
@@ -217,6 +239,37 @@ module pound_newmark
          type(structure_model), intent(in) :: b
          real(dp), intent(inout), optional :: w_in, e_out
       end subroutine commit_exact
+      !> Whether the lanes can run the model: the fused tridiagonal path, two DOFs or more
+      !> (submodule pound_newmark_batch, as the other lane procedures).
+      pure module logical function newmark_lanes_for(st, b)
+         class(newmark_state), intent(in) :: st
+         type(structure_model), intent(in) :: b
+      end function newmark_lanes_for
+      !> Start every lane at rest in equilibrium with its ground acceleration at t = 0.
+      module subroutine newmark_start_lanes(st, b, ag0, error)
+         class(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in) :: ag0(max_lanes)
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine newmark_start_lanes
+      !> One step of every lane, the running peaks, the lanes' energy sums.
+      module subroutine newmark_advance_lanes(st, b, ag_old, ag_new, t, peak, peak_time, w_in, e_out)
+         class(newmark_state), intent(inout) :: st
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in) :: ag_old(max_lanes), ag_new(max_lanes), t
+         real(dp), intent(inout), contiguous :: peak(:, :, :), peak_time(:, :, :)
+         real(dp), intent(inout) :: w_in(max_lanes), e_out(max_lanes)
+      end subroutine newmark_advance_lanes
+      !> Lane l's u, v, a and energies as the integrator's own state.
+      module subroutine newmark_show_lane(st, l)
+         class(newmark_state), intent(inout) :: st
+         integer, intent(in) :: l
+      end subroutine newmark_show_lane
+      !> Bring lane l to rest (zero state and energies).
+      module subroutine newmark_drop_lane(st, l)
+         class(newmark_state), intent(inout) :: st
+         integer, intent(in) :: l
+      end subroutine newmark_drop_lane
    end interface
 
    interface
@@ -496,27 +549,6 @@ contains
          st%loaded = .true.
       end if
    end subroutine newmark_add_response_rows
-
-   !> The fused tridiagonal path's data, for kernels that advance several motions of the same
-   !> model at once (`pound_newmark_batch`): whether the path is taken, the sub-diagonal e of
-   !> L and 1/d of Khat = L D L^T, and c1 = 4/dt^2, c2 = 2/dt (e and dinv unset otherwise).
-   pure subroutine newmark_tridiagonal_factors(st, tridiagonal, e, dinv, c1, c2)
-      !> Integrator state (factored by `newmark_init`).
-      type(newmark_state), intent(in) :: st
-      !> Whether the fused tridiagonal path is taken.
-      logical, intent(out) :: tridiagonal
-      !> Sub-diagonal of L (max(n-1, 1)) and reciprocal pivots 1/d (n).
-      real(dp), allocatable, intent(out) :: e(:), dinv(:)
-      !> Newmark constants.
-      real(dp), intent(out) :: c1, c2
-
-      tridiagonal = st%tridiagonal
-      c1 = st%c1
-      c2 = st%c2
-      if (.not. tridiagonal) return
-      e = st%e
-      dinv = st%dinv
-   end subroutine newmark_tridiagonal_factors
 
    !> Number of DOFs.
    pure integer function newmark_n(st)
