@@ -1,12 +1,12 @@
 !> The analyses a deck asks for: the buildings uncoupled (no contact) and coupled.
 !>
-!> Each building is integrated with Newmark's average acceleration method; in the
-!> coupled analysis the contact forces of every step come from the step's LCP
-!> (pound_contact). The response record keeps peaks at every step and histories at
-!> output steps, and the energy balance
-!> W_input = E_kinetic + E_strain + E_damping + E_contact + E_plastic is audited at every
-!> step (E_contact: energy stored in the joints' springs and dissipated by their
-!> dashpots; E_plastic: dissipated by the joints' plastic flow).
+!> Each building is integrated with Newmark's average acceleration method; in the coupled
+!> analysis the contact forces of every step come from the step's LCP (pound_contact; a step
+!> whose solve fails is retried with substeps, pound_step_retry). The response record keeps
+!> peaks at every step and histories at output steps, and the energy balance W_input =
+!> E_kinetic + E_strain + E_damping + E_contact + E_plastic is audited at every step
+!> (E_contact: stored in the joints' springs and dissipated by their dashpots; E_plastic:
+!> dissipated by the joints' plastic flow).
 !>
 !> **Nothing non-finite passes.** The energy sums of every step take in every displacement,
 !> velocity, contact force and joint state, so one test per step on their total catches the
@@ -32,13 +32,14 @@ module pound_analysis
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
-                            joint_history, joint_history_init, joint_history_record, contact_swap_step, &
+                            joint_history, joint_history_init, joint_history_record, &
                             contact_may_act, contact_carries_force, lcp_solver_lemke, contact_track_closing, &
                             contact_track_paths
    use pound_deck_variables, only: max_substeps
    use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, yield_steps, &
                                  yield_sample, yield_results, yield_energy_step, yield_hold
    use pound_contact_period, only: joint_half_period, substep_impact_speed
+   use pound_step_retry, only: step_retry, retry_step, swap_step_data
    use pound_law_smooth, only: is_smooth
    use pound_law_impact, only: law_impact, impact_result
    implicit none
@@ -525,9 +526,10 @@ contains
       integer(int64) :: c0, c1, rate, write_ticks
       real(dp) :: t, sample(e_numerical), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, inelastic, collapsed
+      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, inelastic, collapsed, retried
       integer :: method_steps
       type(storey_yield_set), allocatable :: ys(:)
+      type(step_retry) :: rt
 
       nb = size(models)
       allocate (view(nb))
@@ -539,6 +541,7 @@ contains
       plain = .not. (coupled .or. impact .or. exact .or. inelastic)
       track = (impact .or. exact) .and. allocated(cs%closing_max)
       method_steps = 0
+      retried = .false.
       every = cfg%output_every
       h = cfg%dt
       if (impact) then
@@ -639,6 +642,8 @@ contains
             output = out .and. j == n_sub
             if (coupled) then
                call contact_step(cs, st, t_sub, step, error)
+               retried = allocated(error) .and. .not. inelastic
+               if (retried) call retry_step(rt, models, st, cs, ag_old, ag_new, t_sub, dt_now, step, error, res%warnings)
                if (allocated(error)) then
                   ! A state that is not finite is named as such, not as a failed LCP.
                   call locate_nonfinite(st, models, cs, t_sub, step, error, predicted=.true.)
@@ -648,14 +653,13 @@ contains
             end if
             if (inelastic) call yield_steps(ys, st, cs, models, t_sub, step, error)
             if (allocated(error)) return
-            ! win, eout: the integrators' energy balance, added up by the commits (uncoupled;
-            ! replaced by the sample below when coupled)
+            ! win, eout: the commits' energy balance (uncoupled; coupled: the sample below)
             win = 0.0_dp
             eout = 0.0_dp
             do ib = 1, nb
                if (plain .and. step < res%n_steps) then
                   call st(ib)%advance(models(ib), ag_old, ag_new, ag(step + 1) - ag_new, win, eout)
-               else
+               else if (.not. retried) then
                   call st(ib)%commit(models(ib), ag_old, ag_new, win, eout)
                end if
                call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
@@ -670,7 +674,7 @@ contains
             if (coupled) then
                ! An output step's sample is the stored one (below).
                if (.not. output) call step_energy(st, sample)
-               call contact_commit(cs, st, t_sub, dt_now)
+               if (.not. retried) call contact_commit(cs, st, t_sub, dt_now)
                sample(e_contact) = cs%element_work - cs%plastic_work
                sample(e_plastic) = cs%plastic_work
             end if
@@ -795,12 +799,8 @@ contains
       type(contact_system), intent(inout) :: cs
       !> The substep data of `stepping = 'impact'`.
       type(impact_stepping), intent(inout) :: sub
-      integer :: i
 
-      do i = 1, size(st)
-         call st(i)%swap_step(sub%st(i))
-      end do
-      call contact_swap_step(cs, sub%cs)
+      call swap_step_data(st, sub%st, cs, sub%cs)
    end subroutine swap_steps
 
    !> Sizes, output times, a zero energy history and (with `n_pairs`) the contact histories
