@@ -559,7 +559,8 @@ contains
                             nodes=cfg%node_histories .and. allocated(models(ib)%dof_node) .and. &
                                   .not. present(sink), &
                             snapshots=allocated(models(ib)%dof_node) .and. &
-                                      real(models(ib)%n, dp)*real(models(ib)%shear%n, dp) <= deformed_limit)
+                                      real(models(ib)%n, dp)*real(models(ib)%shear%n, dp) <= deformed_limit, &
+                            refine=exact)
          if (allocated(error)) return
          res%building(ib)%streamed = present(sink)
          view(ib)%u => st(ib)%u_view()
