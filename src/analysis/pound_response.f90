@@ -133,6 +133,9 @@ module pound_response
       logical :: refine = .false.
       real(dp) :: t_last = -1.0_dp
       real(dp), allocatable :: last(:, :, :, :)
+      !> A frame's previous DOF velocities (its rows' rates are recovered only on the steps
+      !> that may refine a peak).
+      real(dp), allocatable :: v_last(:)
    end type response_record
 
 contains
@@ -216,6 +219,7 @@ contains
       if (present(refine)) rec%refine = refine
       if (rec%refine) then
          allocate (rec%last(n, 2, 3, 2), source=0.0_dp, stat=stat(1))
+         if (stat(1) == 0 .and. .not. rec%stick) allocate (rec%v_last(b%n), source=0.0_dp, stat=stat(1))
          rec%t_last = -1.0_dp
          if (stat(1) /= 0) then
             call fatal_error(error, 'cannot allocate the response work arrays ('//str(12*n)//' reals)')
@@ -377,7 +381,9 @@ contains
    !> are linear in u), fourth order; where it exceeds the peak, the peak and its time (the
    !> interpolant's) are set. An interval whose bound max(|x0|, |x1|) + 4/27 h (|x0'| + |x1'|)
    !> is not above the peak is skipped. A stick's storey shears follow from its drift peaks
-   !> (`response_finish`).
+   !> (`response_finish`). A frame's rows' rates (two more recoveries) are taken only on the
+   !> steps where some value of the two samples is within `refine_band` of its peak (a peak
+   !> between samples more than 20 % above both would need omega dt > 1.29).
    pure subroutine refine_peaks(rec, b, u, v, t)
       !> The record (`rec%refine`).
       type(response_record), intent(inout) :: rec
@@ -388,8 +394,10 @@ contains
       !> Time (s).
       real(dp), intent(in) :: t
       integer, parameter :: quantity(3) = [q_u, q_drift, q_shear]
+      real(dp), parameter :: refine_band = 0.8_dp
       integer :: i, q, nq, k, qq
       real(dp) :: h, x0, x1, d0, d1, ca, cb, cc, disc, w, s(2), p
+      logical :: near
 
       associate (now => rec%last(:, :, :, 2), old => rec%last(:, :, :, 1), n => rec%n)
          if (rec%stick) then
@@ -400,12 +408,26 @@ contains
             nq = 2
          else
             now(:, 1, 1) = u(b%floor_dof)
-            now(:, 2, 1) = v(b%floor_dof)
             now(:, 1, 2) = rec%pd
-            call recover_all(b%drift, v, now(:, 2, 2))
             now(:, 1, 3) = rec%ps
-            call recover_all(b%shear, v, now(:, 2, 3))
             nq = 3
+            near = .false.
+            do q = 1, nq
+               do i = 1, n
+                  if (max(abs(old(i, 1, q)), abs(now(i, 1, q))) >= refine_band*rec%peak(i, quantity(q))) near = .true.
+               end do
+            end do
+            if (near .and. rec%t_last >= 0.0_dp) then
+               now(:, 2, 1) = v(b%floor_dof)
+               old(:, 2, 1) = rec%v_last(b%floor_dof)
+               call recover_all(b%drift, v, now(:, 2, 2))
+               call recover_all(b%drift, rec%v_last, old(:, 2, 2))
+               call recover_all(b%shear, v, now(:, 2, 3))
+               call recover_all(b%shear, rec%v_last, old(:, 2, 3))
+            else
+               nq = 0
+            end if
+            rec%v_last = v
          end if
          h = t - rec%t_last
          if (rec%t_last >= 0.0_dp .and. h > 0.0_dp) then
