@@ -16,7 +16,7 @@ of e, m_eff of the facing floors, gap), Newmark average acceleration, Krylov-New
 1e-9, 100 iterations: plain Newton fails to converge in some impact steps), the record as a
 Path series; its error is measured against its own run at the finest dt of the ladder. Error:
 the largest relative error of the coupled peak floor displacements |u| over both buildings.
-The OpenSees dt is the largest of the ladder whose error is at most pound's. Then both whole
+The OpenSees dt is the largest of the ladder whose error is at most pound's (else the finest but one). Then both whole
 processes are timed, interleaved, REPEATS times (default 5): pound on the deck, and this
 script's own OpenSees run in a fresh interpreter (`--one DT`), wall time, medians, ratio.
 """
