@@ -63,9 +63,12 @@ def rayleigh(b):
     return a0, a1
 
 
-def run(ag, dt, gap):
+def run(ag, dt, gap, joint=None, series_dt=None, steps=None, test=("NormDispIncr", 1.0e-10, 20), algorithm="Newton"):
     """One analysis (gap None: uncoupled); the peak floor displacements go to an envelope
-    recorder (OpenSees' own loop over the steps, no Python per step)."""
+    recorder (OpenSees' own loop over the steps, no Python per step). `joint(ip, tag)` makes
+    pair ip's material (default ElasticPPGap of JOINT_K and the gap); the ground motion is
+    sampled at `series_dt` (default dt); `steps` steps of dt (default all of ag); `test` and
+    `algorithm` those of OpenSees."""
     ops.wipe()
     ops.model("basic", "-ndm", 1, "-ndf", 1)
     floor_node = []
@@ -94,21 +97,24 @@ def run(ag, dt, gap):
     if gap is not None:
         for ip, (fl, fr) in enumerate(PAIRS):
             mat = 9000 + ip
-            ops.uniaxialMaterial("ElasticPPGap", mat, JOINT_K, -1.0e12, -gap)
+            if joint is None:
+                ops.uniaxialMaterial("ElasticPPGap", mat, JOINT_K, -1.0e12, -gap)
+            else:
+                joint(ip, mat)
             ele += 1
             ops.element("zeroLength", ele, floor_node[0][fl - 1], floor_node[1][fr - 1], "-mat", mat, "-dir", 1)
-    ops.timeSeries("Path", 1, "-dt", dt, "-values", *ag.tolist())
+    ops.timeSeries("Path", 1, "-dt", series_dt or dt, "-values", *ag.tolist())
     ops.pattern("UniformExcitation", 1, 1, "-accel", 1)
     ops.constraints("Plain")
     ops.numberer("Plain")
     ops.system("BandGeneral")
-    ops.test("NormDispIncr", 1.0e-10, 20)
-    ops.algorithm("Newton")
+    ops.test(*test)
+    ops.algorithm(algorithm)
     ops.integrator("Newmark", 0.5, 0.25)
     ops.analysis("Transient")
     every = [n for nodes in floor_node for n in nodes]
     ops.recorder("EnvelopeNode", "-file", ENVELOPE, "-node", *every, "-dof", 1, "disp")
-    if ops.analyze(len(ag) - 1, dt) != 0:
+    if ops.analyze(steps or len(ag) - 1, dt) != 0:
         raise RuntimeError("OpenSees analysis failed")
     ops.wipe()
 

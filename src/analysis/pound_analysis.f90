@@ -1,12 +1,12 @@
 !> The analyses a deck asks for: the buildings uncoupled (no contact) and coupled.
 !>
-!> Each building is integrated with Newmark's average acceleration method; in the
-!> coupled analysis the contact forces of every step come from the step's LCP
-!> (pound_contact). The response record keeps peaks at every step and histories at
-!> output steps, and the energy balance
-!> W_input = E_kinetic + E_strain + E_damping + E_contact + E_plastic is audited at every
-!> step (E_contact: energy stored in the joints' springs and dissipated by their
-!> dashpots; E_plastic: dissipated by the joints' plastic flow).
+!> Each building is integrated with Newmark's average acceleration method; in the coupled
+!> analysis the contact forces of every step come from the step's LCP (pound_contact; a step
+!> whose solve fails is retried with substeps, pound_step_retry). The response record keeps
+!> peaks at every step and histories at output steps, and the energy balance W_input =
+!> E_kinetic + E_strain + E_damping + E_contact + E_plastic is audited at every step
+!> (E_contact: stored in the joints' springs and dissipated by their dashpots; E_plastic:
+!> dissipated by the joints' plastic flow).
 !>
 !> **Nothing non-finite passes.** The energy sums of every step take in every displacement,
 !> velocity, contact force and joint state, so one test per step on their total catches the
@@ -33,13 +33,14 @@ module pound_analysis
                              response_store, &
                              response_flush, history_block, deformed_limit, response_block_full
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
-                            joint_history, joint_history_init, joint_history_record, contact_swap_step, &
+                            joint_history, joint_history_init, joint_history_record, &
                             contact_may_act, contact_carries_force, lcp_solver_lemke, contact_track_closing, &
                             contact_track_paths
    use pound_deck_variables, only: max_substeps
    use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, yield_steps, &
                                  yield_sample, yield_results, yield_energy_step, yield_hold
    use pound_contact_period, only: joint_half_period, substep_impact_speed
+   use pound_step_retry, only: step_retry, retry_step, swap_step_data
    use pound_law_smooth, only: is_smooth
    use pound_law_impact, only: law_impact, impact_result
    implicit none

@@ -116,9 +116,10 @@ contains
       type(state_view), allocatable :: view(:)
       type(lane_peaks), allocatable :: pk(:)
       type(analysis_result), pointer :: r
-      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, batched, inelastic, collapsed
+      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, batched, inelastic, collapsed, retried
       integer :: method_steps
       type(storey_yield_set), allocatable :: ys(:)
+      type(step_retry) :: rt
 
       nb = size(models)
       n_steps = size(ag) - 1
@@ -132,6 +133,7 @@ contains
       plain = .not. (coupled .or. impact .or. exact .or. batched .or. inelastic)
       track = (impact .or. exact) .and. allocated(cs%closing_max)
       method_steps = 0
+      retried = .false.
       every = cfg%output_every
       h = cfg%dt
       if (impact) then
@@ -170,7 +172,8 @@ contains
                                nodes=cfg%node_histories .and. allocated(models(ib)%dof_node) .and. &
                                      .not. present(sink), &
                                snapshots=allocated(models(ib)%dof_node) .and. &
-                                         real(models(ib)%n, dp)*real(models(ib)%shear%n, dp) <= deformed_limit)
+                                         real(models(ib)%n, dp)*real(models(ib)%shear%n, dp) <= deformed_limit, &
+                               refine=exact)
             if (allocated(error)) then
                if (.not. batched) return
                deallocate (error)
@@ -264,6 +267,8 @@ contains
             output = out .and. j == n_sub
             if (coupled) then
                call contact_step(cs, st, t_sub, step, error)
+               retried = allocated(error) .and. .not. inelastic
+               if (retried) call retry_step(rt, models, st, cs, ag_old, ag_new, t_sub, dt_now, step, error, res%warnings)
                if (allocated(error)) then
                   ! A state that is not finite is named as such, not as a failed LCP.
                   call locate_nonfinite(st, models, cs, t_sub, step, error, predicted=.true.)
@@ -284,7 +289,7 @@ contains
                end if
                if (plain .and. step < n_steps) then
                   call st(ib)%advance(models(ib), ag_old, ag_new, ag(step + 1) - ag_new, win(1), eout(1))
-               else
+               else if (.not. retried) then
                   call st(ib)%commit(models(ib), ag_old, ag_new, win(1), eout(1))
                end if
                call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &
@@ -299,7 +304,7 @@ contains
             if (coupled) then
                ! An output step's sample is the stored one (below).
                if (.not. output) call step_energy(st, sample)
-               call contact_commit(cs, st, t_sub, dt_now)
+               if (.not. retried) call contact_commit(cs, st, t_sub, dt_now)
                sample(e_contact) = cs%element_work - cs%plastic_work
                sample(e_plastic) = cs%plastic_work
             end if
@@ -457,12 +462,8 @@ contains
       type(contact_system), intent(inout) :: cs
       !> The substep data of `stepping = 'impact'`.
       type(impact_stepping), intent(inout) :: sub
-      integer :: i
 
-      do i = 1, size(st)
-         call st(i)%swap_step(sub%st(i))
-      end do
-      call contact_swap_step(cs, sub%cs)
+      call swap_step_data(st, sub%st, cs, sub%cs)
    end subroutine swap_steps
 
    !> The buildings' energies at the end of the step, from the integrators' running sums

@@ -126,6 +126,16 @@ module pound_response
       real(dp), allocatable :: pool(:, :)
       integer, allocatable :: slot_of(:), refs(:), free(:)
       integer :: n_free = 0
+      !> Peaks refined between the samples (`refine_peaks`, `free_steps = 'exact'`): the
+      !> previous sample's time (< 0: none yet) and the previous and this sample's u, drift
+      !> (and a frame's storey shear) with their rates at the response points and storey rows
+      !> (n, 2, 3, 2: value and rate; u, drift, shear; previous, this).
+      logical :: refine = .false.
+      real(dp) :: t_last = -1.0_dp
+      real(dp), allocatable :: last(:, :, :, :)
+      !> A frame's previous DOF velocities (its rows' rates are recovered only on the steps
+      !> that may refine a peak).
+      real(dp), allocatable :: v_last(:)
    end type response_record
 
 contains
@@ -134,7 +144,7 @@ contains
    !>
    !> Fails (nothing allocated is kept) when the memory cannot be had, with the size asked
    !> for and the deck variables that set it.
-   pure subroutine response_init(rec, b, store, capacity, error, nodes, snapshots)
+   pure subroutine response_init(rec, b, store, capacity, error, nodes, snapshots, refine)
       !> The record (reset).
       type(response_record), intent(out) :: rec
       !> The structural model: its response points (floors) and storey rows.
@@ -149,6 +159,9 @@ contains
       logical, intent(in), optional :: nodes
       !> Keep the DOF vector at each storey's peak storey shear (`deformed`); default no.
       logical, intent(in), optional :: snapshots
+      !> Refine the peaks of u, drift and storey shear between the samples (`refine_peaks`);
+      !> default no.
+      logical, intent(in), optional :: refine
       integer :: stat(8)
       real(dp) :: mib
       integer :: n, n_node, k
@@ -202,6 +215,17 @@ contains
       end if
       rec%peak = 0.0_dp
       rec%peak_time = 0.0_dp
+      rec%refine = .false.
+      if (present(refine)) rec%refine = refine
+      if (rec%refine) then
+         allocate (rec%last(n, 2, 3, 2), source=0.0_dp, stat=stat(1))
+         if (stat(1) == 0 .and. .not. rec%stick) allocate (rec%v_last(b%n), source=0.0_dp, stat=stat(1))
+         rec%t_last = -1.0_dp
+         if (stat(1) /= 0) then
+            call fatal_error(error, 'cannot allocate the response work arrays ('//str(12*n)//' reals)')
+            return
+         end if
+      end if
    end subroutine response_init
 
    !> Take the state at time t: update peaks and, if `output`, append a history sample.
@@ -226,6 +250,7 @@ contains
       else
          call response_sample_rows(rec, b, u, v, a, ag, t, output)
       end if
+      if (rec%refine) call refine_peaks(rec, b, u, v, t)
    end subroutine response_sample
 
    !> `response_sample` of a model that is not a stick: through the response points and
@@ -348,6 +373,97 @@ contains
          end if
       end do
    end subroutine track_peaks
+
+   !> Peaks of u, drift and (a frame's) storey shear between the previous sample and this
+   !> one (`free_steps = 'exact'`, whose samples are exact: what is left of a peak's error is
+   !> the peak between two samples, O((omega dt)^2)): the largest |p(s)| of the cubic Hermite
+   !> interpolant through the two samples' values and rates (the rates from v: the quantities
+   !> are linear in u), fourth order; where it exceeds the peak, the peak and its time (the
+   !> interpolant's) are set. An interval whose bound max(|x0|, |x1|) + 4/27 h (|x0'| + |x1'|)
+   !> is not above the peak is skipped. A stick's storey shears follow from its drift peaks
+   !> (`response_finish`). A frame's rows' rates (two more recoveries) are taken only on the
+   !> steps where some value of the two samples is within `refine_band` of its peak (a peak
+   !> between samples more than 20 % above both would need omega dt > 1.29).
+   pure subroutine refine_peaks(rec, b, u, v, t)
+      !> The record (`rec%refine`).
+      type(response_record), intent(inout) :: rec
+      !> The building.
+      type(structure_model), intent(in) :: b
+      !> Relative displacement and velocity (`b%n` each).
+      real(dp), intent(in) :: u(b%n), v(b%n)
+      !> Time (s).
+      real(dp), intent(in) :: t
+      integer, parameter :: quantity(3) = [q_u, q_drift, q_shear]
+      real(dp), parameter :: refine_band = 0.8_dp
+      integer :: i, q, nq, k, qq
+      real(dp) :: h, x0, x1, d0, d1, ca, cb, cc, disc, w, s(2), p
+      logical :: near
+
+      associate (now => rec%last(:, :, :, 2), old => rec%last(:, :, :, 1), n => rec%n)
+         if (rec%stick) then
+            now(:, 1, 1) = u(1:n)
+            now(:, 2, 1) = v(1:n)
+            call chain_drift(n, u, now(:, 1, 2))
+            call chain_drift(n, v, now(:, 2, 2))
+            nq = 2
+         else
+            now(:, 1, 1) = u(b%floor_dof)
+            now(:, 1, 2) = rec%pd
+            now(:, 1, 3) = rec%ps
+            nq = 3
+            near = .false.
+            do q = 1, nq
+               do i = 1, n
+                  if (max(abs(old(i, 1, q)), abs(now(i, 1, q))) >= refine_band*rec%peak(i, quantity(q))) near = .true.
+               end do
+            end do
+            if (near .and. rec%t_last >= 0.0_dp) then
+               now(:, 2, 1) = v(b%floor_dof)
+               old(:, 2, 1) = rec%v_last(b%floor_dof)
+               call recover_all(b%drift, v, now(:, 2, 2))
+               call recover_all(b%drift, rec%v_last, old(:, 2, 2))
+               call recover_all(b%shear, v, now(:, 2, 3))
+               call recover_all(b%shear, rec%v_last, old(:, 2, 3))
+            else
+               nq = 0
+            end if
+            rec%v_last = v
+         end if
+         h = t - rec%t_last
+         if (rec%t_last >= 0.0_dp .and. h > 0.0_dp) then
+            do q = 1, nq
+               qq = quantity(q)
+               do i = 1, n
+                  x0 = old(i, 1, q)
+                  x1 = now(i, 1, q)
+                  d0 = h*old(i, 2, q)
+                  d1 = h*now(i, 2, q)
+                  if (max(abs(x0), abs(x1)) + 4.0_dp/27.0_dp*(abs(d0) + abs(d1)) <= rec%peak(i, qq)) cycle
+                  ! p(s) = ((ca s + cb) s + cc) s + x0 on s in (0, 1); p'(s) = 0.
+                  ca = 2.0_dp*(x0 - x1) + d0 + d1
+                  cb = 3.0_dp*(x1 - x0) - 2.0_dp*d0 - d1
+                  cc = d0
+                  disc = cb*cb - 3.0_dp*ca*cc
+                  if (disc < 0.0_dp) cycle
+                  w = -(cb + sign(sqrt(disc), cb))
+                  s = -1.0_dp
+                  if (ca /= 0.0_dp) s(1) = w/(3.0_dp*ca)
+                  if (w /= 0.0_dp) s(2) = cc/w
+                  do k = 1, 2
+                     if (.not. (s(k) > 0.0_dp .and. s(k) < 1.0_dp)) cycle
+                     p = abs(((ca*s(k) + cb)*s(k) + cc)*s(k) + x0)
+                     if (p > rec%peak(i, qq)) then
+                        rec%peak(i, qq) = p
+                        rec%peak_time(i, qq) = rec%t_last + s(k)*h
+                     end if
+                  end do
+               end do
+            end do
+         end if
+         old = now
+      end associate
+      rec%t_last = t
+   end subroutine refine_peaks
 
    !> Storey drifts of a stick: u_1, u_j - u_{j-1}.
    pure subroutine chain_drift(n, u, d)

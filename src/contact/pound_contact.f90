@@ -53,7 +53,7 @@ module pound_contact
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: mm_text, str
    use pound_integrator, only: integrator
    use pound_structure, only: recovery_rows
@@ -67,7 +67,7 @@ module pound_contact
    use pound_lemke, only: lemke_solve, lemke_report, lemke_status_name, LEMKE_SOLVED, LEMKE_TRIVIAL
    use pound_lcp_enumerate, only: lcp_enumerate
    use pound_lcp_active_set, only: active_set_report, active_set_solve, active_set_solved
-   use pound_joint_law, only: max_law_iterations
+   use pound_joint_law, only: law_iteration_limit
    use pound_contact_smooth, only: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_speeds, &
                                    smooth_unsettled
    use pound_contact_system, only: contact_system, contact_init, contact_init_flexibility, contact_swap_step, &
@@ -378,12 +378,12 @@ contains
       integer, intent(in) :: step
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
-      integer :: it
+      integer :: it, k
 
       ! The constants of an iterating joint follow its current stiffness (after a step swap);
       ! a smooth law's first tangent row (pound_contact_smooth).
       if (size(cs%iterating) > 0) call smooth_start(cs, v_pred)
-      do it = 1, max_law_iterations
+      do it = 1, law_iteration_limit
          call solve_lcp(cs, v_pred, t, step, error)
          if (allocated(error)) return
          if (size(cs%iterating) == 0) return
@@ -393,8 +393,9 @@ contains
          end if
       end do
       call fatal_error(error, 'contact at t = '//str(t)//' s (step '//str(step)//'): the end-of-step '// &
-                       'equations of the joints '//smooth_unsettled(cs, v_pred)//' did not converge in '// &
-                       str(max_law_iterations)//' solves (reduce dt, or stepping = ''impact'')')
+                       'equations of the joints '//smooth_unsettled(cs, v_pred, k)//' did not converge in '// &
+                       str(law_iteration_limit)//' solves (reduce dt, or stepping = ''impact'')')
+      call error_at(error, joint=k)
    end subroutine contact_solve
 
    !> One LCP solve of the step (`contact_solve`).

@@ -260,24 +260,29 @@ contains
 
    !> The iterating joints whose end-of-step equation is not solved (smooth joints: residual
    !> above `smooth_residual_limit`, named with it; others: all), for the step's failure.
-   function smooth_unsettled(cs, v_pred) result(text)
+   function smooth_unsettled(cs, v_pred, first) result(text)
       !> The contact system after the step's last solve.
       type(contact_system), intent(in) :: cs
       !> Closing displacements with every force of the step released (m).
       real(dp), intent(in) :: v_pred(:)
+      !> The first joint named (0: none).
+      integer, intent(out) :: first
       character(len=:), allocatable :: text
       integer :: i, k
       real(dp) :: res
 
       text = ''
+      first = 0
       do i = 1, size(cs%iterating)
          k = cs%iterating(i)
          if (has_force(cs, k)) then
             res = smooth_residual(cs, k, v_pred(k) - dot_product(cs%f(:, k), cs%r_new), cs%r_new(k))
             if (res <= smooth_residual_limit) cycle
+            if (first == 0) first = k
             if (len(text) > 0) text = text//', '
             text = text//cs%pair(k)%label//' (residual '//str(res)//')'
          else
+            if (first == 0) first = k
             if (len(text) > 0) text = text//', '
             text = text//cs%pair(k)%label
          end if

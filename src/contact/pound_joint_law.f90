@@ -38,10 +38,13 @@ module pound_joint_law
    implicit none
    private
 
-   public :: joint_law, law_text, law_input, add_line, max_law_iterations
+   public :: joint_law, law_text, law_input, add_line, max_law_iterations, law_iteration_limit
 
    !> Largest number of LCP solves of one step while iterating laws ask for another.
    integer, parameter :: max_law_iterations = 50
+   !> The limit `contact_solve` applies: `max_law_iterations`, lowered only by tests (a test
+   !> hook that forces a step that does not converge, pound_step_retry); no deck sets it.
+   integer :: law_iteration_limit = max_law_iterations
 
    !> One line of text (a law's listing lines).
    type :: law_text

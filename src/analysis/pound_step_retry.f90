@@ -1,0 +1,173 @@
+!> The retry of a step whose contact solve fails (issue 26): a step (or an impact substep) of
+!> size h whose end-of-step contact equations do not converge (`contact_step`: the smooth
+!> laws' Newton after `max_law_iterations` solves, or any other failure of the step's LCPs)
+!> is taken again from its start as `retry_substeps` substeps of h/`retry_substeps`, with the
+!> machinery of the impact substeps (`integrator%swap_step`, `contact_swap_step`: integrators
+!> and a contact system at the retry's substep, made on the first retry and kept for the
+!> next ones of the same h). The ground acceleration is linear between the step's ends within
+!> it. The substeps commit the integrators and the joints (`contact_commit`); the time loop
+!> then samples the step's end as after any step and does not commit it again. The first
+!> retried step is listed as a warning (time, step, the failure), with the number of steps
+!> retried in the run not counted. A retry that fails too is reported with the step's time
+!> and step, the joint of the substep's failure, the substep's time and both messages: the
+!> run fails, never a silent result.
+module pound_step_retry
+   use pound_kinds, only: dp
+   use pound_strings, only: str, add_warning
+   use pound_error, only: error_type
+   use pound_structure, only: structure_model
+   use pound_integrator, only: integrator
+   use pound_contact, only: contact_system, contact_init, contact_step, contact_commit
+   use pound_contact_system, only: contact_swap_step
+   implicit none
+   private
+
+   public :: step_retry, retry_step, retry_substeps, swap_step_data
+
+   !> Substeps of a retried step.
+   integer, parameter :: retry_substeps = 10
+
+   !> The step data of the retries of one run.
+   type :: step_retry
+      !> The substep the data below are for (s; 0: none yet).
+      real(dp) :: h = 0.0_dp
+      !> Integrators and contact system at the substep h (only their step data are used).
+      class(integrator), allocatable :: st(:)
+      type(contact_system) :: cs
+      !> Steps retried in the run.
+      integer :: count = 0
+   end type step_retry
+
+contains
+
+   !> Take the step from t - h to t, whose `contact_step` failed with `error`, again as
+   !> `retry_substeps` substeps, committed (integrators and joints). On return `error` is
+   !> unallocated when the retry succeeded, else it says where both failed.
+   subroutine retry_step(rt, models, st, cs, ag_old, ag_new, t, h, step, error, warnings)
+      !> The retry's step data (set up on the first retry of this h).
+      type(step_retry), intent(inout) :: rt
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> Integrators at the step's start (its failed prediction is dropped); at its end.
+      class(integrator), intent(inout) :: st(:)
+      !> The contact system at the step's start (the failed solve's rows are set again by
+      !> the substeps' solves); at its end.
+      type(contact_system), intent(inout) :: cs
+      !> Ground acceleration at the step's start and end (m/s^2).
+      real(dp), intent(in) :: ag_old, ag_new
+      !> Time at the step's end (s) and the step (s).
+      real(dp), intent(in) :: t, h
+      !> Step number.
+      integer, intent(in) :: step
+      !> The step's failure on entry; the retry's failure on return (else deallocated).
+      type(error_type), allocatable, intent(inout) :: error
+      !> The run's warnings (the first retry is listed).
+      character(len=:), allocatable, intent(inout) :: warnings(:)
+      type(error_type), allocatable :: failed
+      real(dp) :: hs, a0, a1, ts, w, e
+      integer :: i, j
+
+      call move_alloc(error, failed)
+      hs = h/real(retry_substeps, dp)
+      if (rt%h /= hs) then
+         call retry_setup(rt, models, st, cs, ag_old, hs, error)
+         if (allocated(error)) then
+            error%message = failed%message//'; the retry with substeps could not be set up: '//error%message
+            call place(error, failed, t, step)
+            return
+         end if
+      end if
+      call swap_step_data(st, rt%st, cs, rt%cs)
+      a0 = ag_old
+      do j = 1, retry_substeps
+         ts = t - h + real(j, dp)*hs
+         a1 = ag_old + (ag_new - ag_old)*(real(j, dp)/real(retry_substeps, dp))
+         if (j == retry_substeps) then
+            ts = t
+            a1 = ag_new
+         end if
+         do i = 1, size(st)
+            call st(i)%drop_exact()
+            call st(i)%predict(models(i), a1 - a0)
+         end do
+         call contact_step(cs, st, ts, step, error)
+         if (allocated(error)) then
+            call swap_step_data(st, rt%st, cs, rt%cs)
+            error%message = failed%message//'; retried with '//str(retry_substeps)//' substeps of '// &
+                            str(hs)//' s, which failed at t = '//str(ts)//' s (substep '//str(j)//'): '// &
+                            error%message
+            call place(error, failed, t, step)
+            return
+         end if
+         w = 0.0_dp
+         e = 0.0_dp
+         do i = 1, size(st)
+            call st(i)%commit(models(i), a0, a1, w, e)
+         end do
+         call contact_commit(cs, st, ts, hs)
+         a0 = a1
+      end do
+      call swap_step_data(st, rt%st, cs, rt%cs)
+      rt%count = rt%count + 1
+      if (rt%count == 1) call add_warning(warnings, 'contact: the step ending at t = '//str(t)//' s (step '// &
+                                          str(step)//') was retried with '//str(retry_substeps)// &
+                                          ' substeps of '//str(hs)//' s, which converged: '//failed%message// &
+                                          ' (the first retried step of the run)')
+   end subroutine retry_step
+
+   !> Integrators and contact system at the substep hs.
+   subroutine retry_setup(rt, models, st, cs, ag0, hs, error)
+      type(step_retry), intent(inout) :: rt
+      type(structure_model), intent(in) :: models(:)
+      class(integrator), intent(in) :: st(:)
+      type(contact_system), intent(in) :: cs
+      real(dp), intent(in) :: ag0, hs
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i
+
+      rt%h = 0.0_dp
+      if (allocated(rt%st)) deallocate (rt%st)
+      allocate (rt%st(size(st)), mold=st)
+      do i = 1, size(st)
+         call rt%st(i)%init(models(i), hs, ag0, error)
+         if (allocated(error)) return
+      end do
+      call contact_init(rt%cs, cs%pair, rt%st, models, error)
+      if (allocated(error)) return
+      rt%h = hs
+   end subroutine retry_setup
+
+   !> Exchange the step data of the integrators and the contact system with those of `sst`
+   !> and `scs` (the same buildings and constraints at another step: the impact substeps,
+   !> pound_analysis, and the retry's).
+   subroutine swap_step_data(st, sst, cs, scs)
+      !> Integrators.
+      class(integrator), intent(inout) :: st(:)
+      !> Integrators at the other step.
+      class(integrator), intent(inout) :: sst(:)
+      !> The contact system.
+      type(contact_system), intent(inout) :: cs
+      !> The contact system at the other step.
+      type(contact_system), intent(inout) :: scs
+      integer :: i
+
+      do i = 1, size(st)
+         call st(i)%swap_step(sst(i))
+      end do
+      call contact_swap_step(cs, scs)
+   end subroutine swap_step_data
+
+   !> The failure placed at the step: its time and step, the joint of the substep's failure
+   !> (else the step's).
+   pure subroutine place(error, failed, t, step)
+      type(error_type), intent(inout) :: error
+      type(error_type), intent(in) :: failed
+      real(dp), intent(in) :: t
+      integer, intent(in) :: step
+
+      error%time = t
+      error%step = step
+      if (error%joint == 0) error%joint = failed%joint
+   end subroutine place
+
+end module pound_step_retry
