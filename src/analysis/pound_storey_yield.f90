@@ -42,6 +42,8 @@ module pound_storey_yield
    public :: stick_khat, stick_active_set
    public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step, &
              yield_hold
+   ! (Used by the submodules: gfortran drops private procedures a submodule calls.)
+   public :: drifts, column_of, check_step
 
    !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
    real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
@@ -105,6 +107,15 @@ module pound_storey_yield
       !> Most solves of the joints' LCP in one step beyond the first (alternations).
       integer :: alternations = 0
       real(dp) :: residual = 0.0_dp
+      !> A DOF vector of work (the coupled step's end-of-step increment).
+      real(dp), allocatable :: tmp(:)
+      !> The coupled LCP of joints and storeys (`yield_coupled`; held by the first building's
+      !> set): matrix, vector, solution, w, reference, warm start, building and storey of each
+      !> storey row, the joints' coupling G(k, s) = B_k^T Khat^{-1} b_s (m, rows).
+      type(lemke_workspace) :: cws
+      real(dp), allocatable :: cmat(:, :), cq(:), cz(:), cw(:), cref(:), cg(:, :)
+      logical, allocatable :: cguess(:)
+      integer, allocatable :: cb(:), cj(:)
    end type storey_yield_set
 
    !> What a run reports of a building's bilinear storeys (n = 0: elastic storeys).
@@ -151,6 +162,26 @@ module pound_storey_yield
          !> The step was solved (`dpl`, `xdp`, `dnew`, `act`, `side` set).
          logical, intent(out) :: solved
       end subroutine stick_active_set
+
+      !> A step in which storeys yield while joints can act, as ONE LCP over the acting joints'
+      !> rows (`lcp_assemble`) and the yielding storeys' rows, coupled through Khat^{-1}
+      !> (pound_storey_yield_coupled): called after a first `yield_step` of every building
+      !> with the joints' solution of `contact_step` in du, it replaces both.
+      module subroutine yield_coupled(ys, st, cs, t, step, models, error)
+         !> The buildings' storeys.
+         type(storey_yield_set), intent(inout) :: ys(:)
+         !> The integrators (du: predicted, with the first solutions' loads).
+         class(integrator), intent(inout), target :: st(:)
+         !> The contact system after `contact_step`.
+         type(contact_system), intent(inout) :: cs
+         !> Time and step, for messages.
+         real(dp), intent(in) :: t
+         integer, intent(in) :: step
+         !> The buildings (names, for messages).
+         type(structure_model), intent(in) :: models(:)
+         !> Error state.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine yield_coupled
    end interface
 
 contains
@@ -197,7 +228,7 @@ contains
       ys%r = b%hardening
       allocate (ys%d(n), ys%f(n), ys%p(n), ys%dmax(n), ys%fmax(n), ys%tmax(n), ys%dtr(n), ys%dpl(n), &
                 ys%dnew(n), ys%dold(n), source=0.0_dp)
-      allocate (ys%xdp(b%n), ys%work(b%n), source=0.0_dp)
+      allocate (ys%xdp(b%n), ys%work(b%n), ys%tmp(b%n), source=0.0_dp)
       allocate (ys%side(n), ys%act(n), source=0)
       allocate (ys%slot(n), source=0)
       i = n
@@ -562,6 +593,12 @@ contains
             any_change = any_change .or. changed
          end do
          if (cs%m == 0) return
+         ! Joints of piecewise-linear laws: one LCP of joints and storeys together.
+         if (it == 1 .and. any_change .and. size(cs%iterating) == 0) then
+            call yield_coupled(ys, st, cs, t, step, models, error)
+            if (allocated(error)) call error_at(error, t, step)
+            return
+         end if
          if (it > 1) ys%alternations = max(ys%alternations, it - 1)
          if (.not. any_change) then
             if (cs%idle) return

@@ -184,7 +184,7 @@ contains
          if (both) line = line//'; coupled '//str(cpl%yielding(ib)%solves)//' solves ('// &
                           str(cpl%yielding(ib)%lcp_rows)//' rows), largest residual '//str(cpl%yielding(ib)%residual)// &
                           ', steps yielding with joints acting '//str(cpl%yielding(ib)%joint_steps)// &
-                          ', joint LCPs solved again in a step at most '//str(cpl%yielding(ib)%alternations)
+                          ', coupled LCP solved again (rows added) in a step at most '//str(cpl%yielding(ib)%alternations)
          call put(line)
          if (both) then
             line = collapse_text(unc%yielding(ib), cpl%yielding(ib))
