@@ -37,7 +37,8 @@ module pound_analysis
                             contact_track_paths
    use pound_deck_variables, only: max_substeps
    use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, yield_steps, &
-                                 yield_sample, yield_results, yield_energy_step, yield_hold
+                                 yield_sample, yield_results, yield_energy_step
+   use pound_storey_collapse, only: yield_hold, yield_freeze, yield_frozen_step
    use pound_contact_period, only: joint_half_period, substep_impact_speed
    use pound_law_smooth, only: is_smooth
    use pound_law_impact, only: law_impact, impact_result
@@ -521,17 +522,16 @@ contains
       !> Where the histories are streamed: each building holds one block of output samples,
       !> handed over when full and after the loop (none: the whole history is held).
       class(history_sink), intent(inout), optional :: sink
-      integer :: ib, step, k, every, nb, j, n_sub, capacity, until_out
+      integer :: ib, step, k, every, nb, j, n_sub, capacity, until_out, method_steps
       integer(int64) :: c0, c1, rate, write_ticks
       real(dp) :: t, sample(e_numerical), resid, scale, win, eout, lcp_start, h, t_sub, ag_old, ag_new, dt_now
       type(state_view), allocatable :: view(:)
-      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, inelastic, collapsed
-      integer :: method_steps
+      logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, inelastic, collapsed, frozen(size(models))
       type(storey_yield_set), allocatable :: ys(:)
 
       nb = size(models)
       allocate (view(nb))
-      call yield_sets_init(ys, models, cfg, inelastic, collapsed, error)
+      call yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen, error)
       if (allocated(error)) return
       coupled = cs%m > 0
       impact = present(sub)
@@ -594,7 +594,7 @@ contains
             end if
          else if (.not. plain) then
             do ib = 1, nb
-               call st(ib)%predict(models(ib), ag_new - ag_old)
+               if (.not. frozen(ib)) call st(ib)%predict(models(ib), ag_new - ag_old)
             end do
          end if
          ! out = mod(step, every) == 0, counted down (no division per step)
@@ -632,7 +632,7 @@ contains
                   ag_new = ag(step)
                end if
                do ib = 1, nb
-                  call st(ib)%predict(models(ib), ag_new - ag_old)
+                  if (.not. frozen(ib)) call st(ib)%predict(models(ib), ag_new - ag_old)
                end do
                res%substeps = res%substeps + 1
             end if
@@ -653,6 +653,10 @@ contains
             win = 0.0_dp
             eout = 0.0_dp
             do ib = 1, nb
+               if (frozen(ib)) then
+                  call yield_frozen_step(st(ib), res%building(ib), output, win, eout)
+                  cycle
+               end if
                if (plain .and. step < res%n_steps) then
                   call st(ib)%advance(models(ib), ag_old, ag_new, ag(step + 1) - ag_new, win, eout)
                else
@@ -699,7 +703,7 @@ contains
             ag_old = ag_new
          end do
          if (n_sub > 1) call swap_steps(st, cs, sub)
-         ! A collapsed building stops its analysis (the samples not reached hold the last).
+         if (collapsed) call yield_freeze(ys, cs, t, frozen, collapsed)
          if (collapsed) exit steps
       end do steps
       if (inelastic) call yield_hold(res%building, res%energy, k, coupled, error, sink)

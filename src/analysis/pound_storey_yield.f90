@@ -40,8 +40,7 @@ module pound_storey_yield
    public :: bilinear_force, storey_yield_set, storey_yield_result
    public :: yield_set_init, yield_step, yield_steps, yield_commit, yield_energy_terms, yield_load_work, yield_finish
    public :: stick_khat, stick_active_set
-   public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step, &
-             yield_hold
+   public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step
    ! (Used by the submodules: gfortran drops private procedures a submodule calls.)
    public :: drifts, column_of, check_step
 
@@ -92,6 +91,8 @@ module pound_storey_yield
       real(dp), allocatable :: limit(:)
       integer :: collapse_storey = 0
       real(dp) :: collapse_time = 0.0_dp
+      !> The building collapsed: it is no longer integrated (`pound_storey_collapse`).
+      logical :: frozen = .false.
       !> A stick's tridiagonal Khat (diagonal, off-diagonal) of the dt `col_dt`, and the work
       !> arrays of its tangent system (`stick_active_set`).
       real(dp), allocatable :: khat_d(:), khat_e(:), td(:), te(:), ty(:)
@@ -249,7 +250,7 @@ contains
 
    !> Set up the storeys of every building; `inelastic`: some building has bilinear storeys
    !> (`ys` is then allocated, one set a building).
-   subroutine yield_sets_init(ys, models, cfg, inelastic, collapsed, error)
+   subroutine yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen, error)
       !> One set a building (unallocated when every building is elastic).
       type(storey_yield_set), allocatable, intent(out) :: ys(:)
       !> The buildings.
@@ -258,12 +259,15 @@ contains
       type(analysis_plan), intent(in) :: cfg
       !> Some building has bilinear storeys; none has collapsed (false).
       logical, intent(out) :: inelastic, collapsed
+      !> Per building: collapsed, no longer integrated (all false).
+      logical, intent(out) :: frozen(:)
       !> Error state: bilinear storeys with an integrator other than average acceleration.
       type(error_type), allocatable, intent(out) :: error
       integer :: ib
 
       inelastic = .false.
       collapsed = .false.
+      frozen = .false.
       do ib = 1, size(models)
          if (.not. allocated(models(ib)%yield_shear)) cycle
          inelastic = .true.
@@ -293,7 +297,7 @@ contains
       logical, intent(in) :: output
       !> The building's response record.
       type(response_record), intent(inout) :: rec
-      !> Set when the building has collapsed (its analysis stops at the end of the step).
+      !> Set when the building has collapsed (`yield_freeze` at the end of the step).
       logical, intent(inout) :: collapsed
 
       if (output .and. rec%store(q_shear)) then
@@ -330,60 +334,6 @@ contains
          e_out = e_out - yield_load_work(ys)
       end if
    end subroutine yield_energy_step
-
-   !> After a collapse: the output samples not reached hold the last one taken (energies;
-   !> the histories held in memory, or streamed to `sink` block by block); `k` samples were
-   !> taken of `size(energy, 2)`.
-   subroutine yield_hold(rec, energy, k, coupled, error, sink)
-      !> The buildings' response records.
-      type(response_record), intent(inout) :: rec(:)
-      !> The energy history (n_energy, n_out).
-      real(dp), intent(inout) :: energy(:, :)
-      !> Output samples taken.
-      integer, intent(in) :: k
-      !> The coupled analysis (for the sink).
-      logical, intent(in) :: coupled
-      !> Error state (a failed write to the sink).
-      type(error_type), allocatable, intent(out) :: error
-      !> Where streamed histories go.
-      class(history_sink), intent(inout), optional :: sink
-      integer :: ib, i, last
-
-      do i = k + 1, size(energy, 2)
-         energy(:, i) = energy(:, k)
-      end do
-      do ib = 1, size(rec)
-         associate (r => rec(ib))
-            ! The last sample taken: in the block, or the block's last column after a flush.
-            last = r%n_out
-            if (last == 0) last = r%capacity
-            do i = r%first + r%n_out, size(energy, 2)
-               call hold_column(r, last, r%n_out + 1)
-               r%n_out = r%n_out + 1
-               if (r%streamed .and. present(sink)) then
-                  call response_flush(r, sink, coupled, ib, .true., error)
-                  if (allocated(error)) return
-               end if
-            end do
-         end associate
-      end do
-
-   contains
-
-      !> Column `from` of every stored history into column `to` (no copy when the same).
-      pure subroutine hold_column(r, from, to)
-         type(response_record), intent(inout) :: r
-         integer, intent(in) :: from, to
-
-         if (from == to) return
-         if (allocated(r%u)) r%u(:, to) = r%u(:, from)
-         if (allocated(r%v)) r%v(:, to) = r%v(:, from)
-         if (allocated(r%a_abs)) r%a_abs(:, to) = r%a_abs(:, from)
-         if (allocated(r%drift)) r%drift(:, to) = r%drift(:, from)
-         if (allocated(r%shear)) r%shear(:, to) = r%shear(:, from)
-         if (allocated(r%u_nodes)) r%u_nodes(:, to) = r%u_nodes(:, from)
-      end subroutine hold_column
-   end subroutine yield_hold
 
    !> The run's storey results of every building (`yield_finish`).
    pure subroutine yield_results(ys, rec, res)
@@ -584,7 +534,7 @@ contains
       do it = 1, max_alternations
          any_change = .false.
          do ib = 1, size(ys)
-            if (ys(ib)%n == 0) cycle
+            if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
             call yield_step(ys(ib), st(ib), st(ib)%u_view(), t, step, models(ib)%name, changed, error)
             if (allocated(error)) then
                call error_at(error, t, step)

@@ -55,7 +55,7 @@ contains
       ! du back to the prediction: the joints' forces of the start of the step, no plastic load.
       call contact_release(cs, st)
       do ib = 1, size(ys)
-         if (ys(ib)%n == 0) cycle
+         if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
          du => st(ib)%du_view()
          if (ys(ib)%loaded) du = du - ys(ib)%xdp
          ys(ib)%loaded = .false.
@@ -156,6 +156,7 @@ contains
          ! Storeys outside their range enter (on their side; a storey in on one side whose end
          ! force passes the other line turns round).
          do ib = 1, size(ys)
+            if (ys(ib)%frozen) cycle
             do j = 1, ys(ib)%n
                if (ys(ib)%side(j) == 0) then
                   call enter_out(ys(ib), j, ys(ib)%dnew(j), enter_tolerance*ys(ib)%fy(j))
@@ -195,7 +196,7 @@ contains
       cs%idle = .false.
       call contact_apply(cs, st)
       do ib = 1, size(ys)
-         if (ys(ib)%n == 0) cycle
+         if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
          call check_step(ys(ib), t, step, models(ib)%name, error)
          if (allocated(error)) return
          du => st(ib)%du_view()
@@ -374,7 +375,7 @@ contains
       integer :: ib, j, k, e
 
       do ib = 1, size(ys)
-         if (ys(ib)%n == 0) cycle
+         if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
          ys(ib)%xdp = 0.0_dp
          do j = 1, ys(ib)%n
             if (ys(ib)%dpl(j) == 0.0_dp) cycle

@@ -192,7 +192,8 @@ contains
             line = collapse_text(unc%yielding(ib), storey_yield_result())
          end if
          if (len(line) > 0) call put('  COLLAPSE: '//line//': storey drift / height passed collapse_drift, '// &
-                                     'that analysis stopped at the end of the step (later samples hold the last); '// &
+                                     'the building was frozen at the end of that step (no longer integrated, later '// &
+                                     'samples hold the last, its joints opened; the other buildings went on); '// &
                                      'the influence coefficients of '//models(ib)%name//' are not meaningful')
       end do
 
