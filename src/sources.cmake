@@ -75,7 +75,7 @@ set(POUND_SOURCES
   # outputs: the separation rules' listing table and datasets (a run and a suite)
   output/pound_separation_output.f90 output/pound_sweep_joints_output.f90
   # outputs: the suite's listing sections and /suite
-  output/pound_suite_output.f90 output/pound_suite_columns_output.f90 output/pound_study_output.f90
+  output/pound_suite_output.f90 output/pound_suite_columns_output.f90 output/pound_suite_yield_output.f90 output/pound_study_output.f90
   # outputs: the engineering summary (terminal, top of the listing, <stem>_summary.csv, root attributes)
   output/pound_summary.f90 output/pound_summary_output.f90
 )
