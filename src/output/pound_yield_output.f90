@@ -184,7 +184,8 @@ contains
          if (both) line = line//'; coupled '//str(cpl%yielding(ib)%solves)//' solves ('// &
                           str(cpl%yielding(ib)%lcp_rows)//' rows), largest residual '//str(cpl%yielding(ib)%residual)// &
                           ', steps yielding with joints acting '//str(cpl%yielding(ib)%joint_steps)// &
-                          ', coupled LCP solved again (rows added) in a step at most '//str(cpl%yielding(ib)%alternations)
+                          ', LCP re-solves in a step at most (rows added; smooth joints: alternations) '// &
+                          str(cpl%yielding(ib)%alternations)
          call lst%put(line)
          if (both) then
             line = collapse_text(unc%yielding(ib), cpl%yielding(ib))
