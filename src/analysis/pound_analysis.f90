@@ -38,7 +38,8 @@ module pound_analysis
                             contact_track_paths
    use pound_deck_variables, only: max_substeps
    use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, yield_steps, &
-                                 yield_sample, yield_results, yield_energy_step, yield_hold
+                                 yield_sample, yield_results, yield_energy_step
+   use pound_storey_collapse, only: yield_hold, yield_freeze, yield_frozen_step
    use pound_contact_period, only: joint_half_period, substep_impact_speed
    use pound_step_retry, only: step_retry, retry_step, swap_step_data
    use pound_law_smooth, only: is_smooth

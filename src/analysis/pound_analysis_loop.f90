@@ -117,6 +117,7 @@ contains
       type(lane_peaks), allocatable :: pk(:)
       type(analysis_result), pointer :: r
       logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, batched, inelastic, collapsed, retried
+      logical :: frozen(size(models))
       integer :: method_steps
       type(storey_yield_set), allocatable :: ys(:)
       type(step_retry) :: rt
@@ -124,7 +125,7 @@ contains
       nb = size(models)
       n_steps = size(ag) - 1
       allocate (view(nb))
-      call yield_sets_init(ys, models, cfg, inelastic, collapsed, error)
+      call yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen, error)
       if (allocated(error)) return
       coupled = cs%m > 0
       impact = present(sub)
@@ -222,7 +223,7 @@ contains
             end if
          else if (.not. (plain .or. batched)) then
             do ib = 1, nb
-               call st(ib)%predict(models(ib), ag_new - ag_old)
+               if (.not. frozen(ib)) call st(ib)%predict(models(ib), ag_new - ag_old)
             end do
          end if
          ! out = mod(step, every) == 0, counted down (no division per step)
@@ -260,7 +261,7 @@ contains
                   ag_new = ag(step)
                end if
                do ib = 1, nb
-                  call st(ib)%predict(models(ib), ag_new - ag_old)
+                  if (.not. frozen(ib)) call st(ib)%predict(models(ib), ag_new - ag_old)
                end do
                res%substeps = res%substeps + 1
             end if
@@ -283,6 +284,10 @@ contains
             win(1:nl) = 0.0_dp
             eout(1:nl) = 0.0_dp
             do ib = 1, nb
+               if (frozen(ib)) then
+                  call yield_frozen_step(st(ib), res%building(ib), output, win(1), eout(1))
+                  cycle
+               end if
                if (batched) then
                   call st(ib)%advance_lanes(models(ib), lag_old, lag_new, t, pk(ib)%peak, pk(ib)%time, win, eout)
                   cycle
@@ -355,7 +360,7 @@ contains
             ag_old = ag_new
          end do
          if (n_sub > 1) call swap_steps(st, cs, sub)
-         ! A collapsed building stops its analysis (the samples not reached hold the last).
+         if (collapsed) call yield_freeze(ys, cs, t, frozen, collapsed)
          if (collapsed) exit steps
       end do steps
       if (inelastic) call yield_hold(res%building, res%energy, k, coupled, error, sink)

@@ -9,7 +9,7 @@
 !> `max_abs_influence`, or with `max_abs_target`, which adds a frame's column segments.
 module pound_influence
    use pound_kinds, only: dp
-   use pound_quantities, only: n_history_quantities, n_target_quantities, q_column_shear, q_column_moment
+   use pound_quantities, only: n_history_quantities, n_target_quantities, q_column_shear, q_column_moment, q_ductility
    use pound_analysis, only: analysis_result
    use pound_structure, only: structure_model
    implicit none
@@ -86,19 +86,28 @@ contains
    !> over a frame's column segments the shear's (`q_column_shear`) and the end moments'
    !> (bottom and top, `q_column_moment`, `column_maxima`); 0 for a building without column
    !> segments.
-   pure function max_abs_target(infl, models) result(m)
+   pure function max_abs_target(infl, models, unc, cpl) result(m)
       !> Influence coefficients of every building.
       type(building_influence), intent(in) :: infl(:)
       !> The buildings (their member rows' group and names), in the same order.
       type(structure_model), intent(in) :: models(:)
+      !> The uncoupled and coupled analyses (their bilinear storeys' peak ductility: the
+      !> largest |lambda| of the ductility over the storeys, `q_ductility`; 0 without them).
+      type(analysis_result), intent(in), optional :: unc, cpl
       real(dp) :: m(n_target_quantities, size(infl))
       integer :: ib
 
       m(1:n_history_quantities, :) = max_abs_influence(infl)
-      m(q_column_shear:q_column_moment, :) = 0.0_dp
+      m(q_column_shear:q_ductility, :) = 0.0_dp
       do ib = 1, size(infl)
          if (allocated(infl(ib)%member_lambda)) &
             m(q_column_shear:q_column_moment, ib) = column_maxima(infl(ib)%member_lambda, models(ib))
+      end do
+      if (.not. (present(unc) .and. present(cpl))) return
+      if (.not. (allocated(unc%yielding) .and. allocated(cpl%yielding))) return
+      do ib = 1, size(infl)
+         if (cpl%yielding(ib)%n == 0 .or. unc%yielding(ib)%n == 0) cycle
+         m(q_ductility, ib) = maxval(abs(influence_coefficient(cpl%yielding(ib)%ductility, unc%yielding(ib)%ductility)))
       end do
    end function max_abs_target
 

@@ -40,8 +40,9 @@ module pound_storey_yield
    public :: bilinear_force, storey_yield_set, storey_yield_result
    public :: yield_set_init, yield_step, yield_steps, yield_commit, yield_energy_terms, yield_load_work, yield_finish
    public :: stick_khat, stick_active_set
-   public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step, &
-             yield_hold
+   public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step
+   ! (Used by the submodules: gfortran drops private procedures a submodule calls.)
+   public :: drifts, column_of, check_step
 
    !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
    real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
@@ -90,6 +91,8 @@ module pound_storey_yield
       real(dp), allocatable :: limit(:)
       integer :: collapse_storey = 0
       real(dp) :: collapse_time = 0.0_dp
+      !> The building collapsed: it is no longer integrated (`pound_storey_collapse`).
+      logical :: frozen = .false.
       !> A stick's tridiagonal Khat (diagonal, off-diagonal) of the dt `col_dt`, and the work
       !> arrays of its tangent system (`stick_active_set`).
       real(dp), allocatable :: khat_d(:), khat_e(:), td(:), te(:), ty(:)
@@ -105,6 +108,15 @@ module pound_storey_yield
       !> Most solves of the joints' LCP in one step beyond the first (alternations).
       integer :: alternations = 0
       real(dp) :: residual = 0.0_dp
+      !> A DOF vector of work (the coupled step's end-of-step increment).
+      real(dp), allocatable :: tmp(:)
+      !> The coupled LCP of joints and storeys (`yield_coupled`; held by the first building's
+      !> set): matrix, vector, solution, w, reference, warm start, building and storey of each
+      !> storey row, the joints' coupling G(k, s) = B_k^T Khat^{-1} b_s (m, rows).
+      type(lemke_workspace) :: cws
+      real(dp), allocatable :: cmat(:, :), cq(:), cz(:), cw(:), cref(:), cg(:, :)
+      logical, allocatable :: cguess(:)
+      integer, allocatable :: cb(:), cj(:)
    end type storey_yield_set
 
    !> What a run reports of a building's bilinear storeys (n = 0: elastic storeys).
@@ -151,6 +163,26 @@ module pound_storey_yield
          !> The step was solved (`dpl`, `xdp`, `dnew`, `act`, `side` set).
          logical, intent(out) :: solved
       end subroutine stick_active_set
+
+      !> A step in which storeys yield while joints can act, as ONE LCP over the acting joints'
+      !> rows (`lcp_assemble`) and the yielding storeys' rows, coupled through Khat^{-1}
+      !> (pound_storey_yield_coupled): called after a first `yield_step` of every building
+      !> with the joints' solution of `contact_step` in du, it replaces both.
+      module subroutine yield_coupled(ys, st, cs, t, step, models, error)
+         !> The buildings' storeys.
+         type(storey_yield_set), intent(inout) :: ys(:)
+         !> The integrators (du: predicted, with the first solutions' loads).
+         class(integrator), intent(inout), target :: st(:)
+         !> The contact system after `contact_step`.
+         type(contact_system), intent(inout) :: cs
+         !> Time and step, for messages.
+         real(dp), intent(in) :: t
+         integer, intent(in) :: step
+         !> The buildings (names, for messages).
+         type(structure_model), intent(in) :: models(:)
+         !> Error state.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine yield_coupled
    end interface
 
 contains
@@ -197,7 +229,7 @@ contains
       ys%r = b%hardening
       allocate (ys%d(n), ys%f(n), ys%p(n), ys%dmax(n), ys%fmax(n), ys%tmax(n), ys%dtr(n), ys%dpl(n), &
                 ys%dnew(n), ys%dold(n), source=0.0_dp)
-      allocate (ys%xdp(b%n), ys%work(b%n), source=0.0_dp)
+      allocate (ys%xdp(b%n), ys%work(b%n), ys%tmp(b%n), source=0.0_dp)
       allocate (ys%side(n), ys%act(n), source=0)
       allocate (ys%slot(n), source=0)
       i = n
@@ -218,7 +250,7 @@ contains
 
    !> Set up the storeys of every building; `inelastic`: some building has bilinear storeys
    !> (`ys` is then allocated, one set a building).
-   subroutine yield_sets_init(ys, models, cfg, inelastic, collapsed, error)
+   subroutine yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen, error)
       !> One set a building (unallocated when every building is elastic).
       type(storey_yield_set), allocatable, intent(out) :: ys(:)
       !> The buildings.
@@ -227,12 +259,15 @@ contains
       type(analysis_plan), intent(in) :: cfg
       !> Some building has bilinear storeys; none has collapsed (false).
       logical, intent(out) :: inelastic, collapsed
+      !> Per building: collapsed, no longer integrated (all false).
+      logical, intent(out) :: frozen(:)
       !> Error state: bilinear storeys with an integrator other than average acceleration.
       type(error_type), allocatable, intent(out) :: error
       integer :: ib
 
       inelastic = .false.
       collapsed = .false.
+      frozen = .false.
       do ib = 1, size(models)
          if (.not. allocated(models(ib)%yield_shear)) cycle
          inelastic = .true.
@@ -262,7 +297,7 @@ contains
       logical, intent(in) :: output
       !> The building's response record.
       type(response_record), intent(inout) :: rec
-      !> Set when the building has collapsed (its analysis stops at the end of the step).
+      !> Set when the building has collapsed (`yield_freeze` at the end of the step).
       logical, intent(inout) :: collapsed
 
       if (output .and. rec%store(q_shear)) then
@@ -299,60 +334,6 @@ contains
          e_out = e_out - yield_load_work(ys)
       end if
    end subroutine yield_energy_step
-
-   !> After a collapse: the output samples not reached hold the last one taken (energies;
-   !> the histories held in memory, or streamed to `sink` block by block); `k` samples were
-   !> taken of `size(energy, 2)`.
-   subroutine yield_hold(rec, energy, k, coupled, error, sink)
-      !> The buildings' response records.
-      type(response_record), intent(inout) :: rec(:)
-      !> The energy history (n_energy, n_out).
-      real(dp), intent(inout) :: energy(:, :)
-      !> Output samples taken.
-      integer, intent(in) :: k
-      !> The coupled analysis (for the sink).
-      logical, intent(in) :: coupled
-      !> Error state (a failed write to the sink).
-      type(error_type), allocatable, intent(out) :: error
-      !> Where streamed histories go.
-      class(history_sink), intent(inout), optional :: sink
-      integer :: ib, i, last
-
-      do i = k + 1, size(energy, 2)
-         energy(:, i) = energy(:, k)
-      end do
-      do ib = 1, size(rec)
-         associate (r => rec(ib))
-            ! The last sample taken: in the block, or the block's last column after a flush.
-            last = r%n_out
-            if (last == 0) last = r%capacity
-            do i = r%first + r%n_out, size(energy, 2)
-               call hold_column(r, last, r%n_out + 1)
-               r%n_out = r%n_out + 1
-               if (r%streamed .and. present(sink)) then
-                  call response_flush(r, sink, coupled, ib, .true., error)
-                  if (allocated(error)) return
-               end if
-            end do
-         end associate
-      end do
-
-   contains
-
-      !> Column `from` of every stored history into column `to` (no copy when the same).
-      pure subroutine hold_column(r, from, to)
-         type(response_record), intent(inout) :: r
-         integer, intent(in) :: from, to
-
-         if (from == to) return
-         if (allocated(r%u)) r%u(:, to) = r%u(:, from)
-         if (allocated(r%v)) r%v(:, to) = r%v(:, from)
-         if (allocated(r%a_abs)) r%a_abs(:, to) = r%a_abs(:, from)
-         if (allocated(r%drift)) r%drift(:, to) = r%drift(:, from)
-         if (allocated(r%shear)) r%shear(:, to) = r%shear(:, from)
-         if (allocated(r%u_nodes)) r%u_nodes(:, to) = r%u_nodes(:, from)
-      end subroutine hold_column
-   end subroutine yield_hold
 
    !> The run's storey results of every building (`yield_finish`).
    pure subroutine yield_results(ys, rec, res)
@@ -553,7 +534,7 @@ contains
       do it = 1, max_alternations
          any_change = .false.
          do ib = 1, size(ys)
-            if (ys(ib)%n == 0) cycle
+            if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
             call yield_step(ys(ib), st(ib), st(ib)%u_view(), t, step, models(ib)%name, changed, error)
             if (allocated(error)) then
                call error_at(error, t, step)
@@ -562,6 +543,12 @@ contains
             any_change = any_change .or. changed
          end do
          if (cs%m == 0) return
+         ! Joints of piecewise-linear laws: one LCP of joints and storeys together.
+         if (it == 1 .and. any_change .and. size(cs%iterating) == 0) then
+            call yield_coupled(ys, st, cs, t, step, models, error)
+            if (allocated(error)) call error_at(error, t, step)
+            return
+         end if
          if (it > 1) ys%alternations = max(ys%alternations, it - 1)
          if (.not. any_change) then
             if (cs%idle) return

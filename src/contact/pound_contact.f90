@@ -78,6 +78,7 @@ module pound_contact
 
    public :: contact_system, contact_init, contact_init_flexibility
    public :: contact_step, contact_solve, contact_commit, contact_update, contact_release
+   public :: contact_apply, released_q, segment_ends_passed
    public :: contact_swap_step, contact_may_act, contact_track_closing, contact_track_paths
    public :: contact_carries_force
    public :: residual_limit, fallback_max_rows, initial_hinges
@@ -278,6 +279,46 @@ contains
       call apply_force_change(cs, states, .true.)
    end subroutine contact_release
 
+   !> Whether the plastic flow `x_new` of a joint in the LCP (contact rows `act(1:na)`) passes a
+   !> segment end that is not modelled: then those ends are modelled (`nh` grows) and true.
+   logical function segment_ends_passed(cs, na, qnorm) result(added)
+      !> The contact system after a solve.
+      type(contact_system), intent(inout) :: cs
+      !> Contact rows of the LCP.
+      integer, intent(in) :: na
+      !> ||q||_inf of the step (the tolerance's scale).
+      real(dp), intent(in) :: qnorm
+      real(dp) :: reach
+      integer :: j, k, nxt
+
+      added = .false.
+      do j = 1, na
+         k = cs%act(j)
+         if (cs%yrow(k) == 0 .or. cs%x_new(k) <= 0.0_dp) cycle
+         associate (law => cs%pair(k)%law, pl => cs%joint(k)%plastic)
+            reach = pl + cs%x_new(k) - residual_limit*qnorm
+            nxt = yield_segment(law, pl) + cs%nh(k) + 1
+            do while (nxt <= size(law%yp) - 1)
+               if (law%yp(nxt) >= reach) exit
+               cs%nh(k) = cs%nh(k) + 1
+               added = .true.
+               nxt = nxt + 1
+            end do
+         end associate
+      end do
+   end function segment_ends_passed
+
+   !> Apply forces `r_new` that another solve set (the coupled joints-and-storeys LCP of
+   !> pound_storey_yield) to du: du -= Khat^{-1} B (r_new - r_old).
+   subroutine contact_apply(cs, states)
+      !> The contact system with `r_new` set.
+      type(contact_system), intent(inout) :: cs
+      !> Integrators.
+      class(integrator), intent(inout) :: states(:)
+
+      call apply_force_change(cs, states, .false.)
+   end subroutine contact_apply
+
    !> du -= Khat^{-1} B (r_new - r_old), only where the force changed (`undo`: du += ...).
    subroutine apply_force_change(cs, states, undo)
       type(contact_system), intent(inout) :: cs
@@ -310,7 +351,9 @@ contains
    !> with every force released: g - v_pred + (c (a d_n + b d'_n) + k0 d_p,n)/phat (the one
    !> formula of `contact_solve` and of the short path of `contact_step`).
    pure subroutine released_q(cs, v_pred)
+      !> The contact system (`q` set).
       type(contact_system), intent(inout) :: cs
+      !> Closing displacements with every force released (m).
       real(dp), intent(in) :: v_pred(:)
       integer :: k
 
@@ -519,20 +562,7 @@ contains
             end if
          end do
          ! Plastic flow must not pass a segment end that is not modelled.
-         do j = 1, na
-            k = cs%act(j)
-            if (cs%yrow(k) == 0 .or. cs%x_new(k) <= 0.0_dp) cycle
-            associate (law => cs%pair(k)%law, pl => cs%joint(k)%plastic)
-               reach = pl + cs%x_new(k) - residual_limit*qnorm
-               nxt = yield_segment(law, pl) + cs%nh(k) + 1
-               do while (nxt <= size(law%yp) - 1)
-                  if (law%yp(nxt) >= reach) exit
-                  cs%nh(k) = cs%nh(k) + 1
-                  added = .true.
-                  nxt = nxt + 1
-               end do
-            end associate
-         end do
+         if (segment_ends_passed(cs, na, qnorm)) added = .true.
          if (.not. added) exit
          cs%stats%resolves = cs%stats%resolves + 1
       end do

@@ -20,9 +20,10 @@ module pound_sweep_settings
       !> Target for the largest |lambda| (%); negative when none is given.
       real(dp) :: target = -1.0_dp
       !> Quantities the target applies to (same order as `target_names`: the history quantities,
-      !> then the frames' column-segment shear and moment, off unless the deck names them).
+      !> then the frames' column-segment shear and moment and the bilinear storeys' ductility,
+      !> off unless the deck names them).
       logical :: target_quantities(n_target_quantities) = &
-         [spread(.true., 1, n_history_quantities), .false., .false.]
+         [spread(.true., 1, n_history_quantities), .false., .false., .false.]
       !> Tolerance (m) of the bisection refinement of a suite's threshold gaps (pound_suite).
       real(dp) :: refine_tolerance = 1.0e-5_dp
       !> What the sweep varies: 'gap' (the gap sweep above, `active`), 'stiffness' or

@@ -7,7 +7,7 @@
 module pound_config
    use pound_kinds, only: dp
    use pound_quantities, only: n_history_quantities, history_names, n_target_quantities, target_names, &
-                               q_column_shear, q_column_moment
+                               q_column_shear, q_column_moment, q_ductility
    use pound_sweep_settings, only: sweep_config
    use pound_code_factors, only: code_factors
    use pound_contact_settings, only: contact_config, contact_variant
@@ -19,6 +19,7 @@ module pound_config
    public :: is_frame, deck_warning_len
    ! The quantities (pound_quantities), named here too for the deck's readers.
    public :: n_history_quantities, history_names, n_target_quantities, target_names, q_column_shear, q_column_moment
+   public :: q_ductility
 
    !> Characters kept of a deck warning (`deck_type%warnings`).
    integer, parameter :: deck_warning_len = 1024

@@ -179,7 +179,8 @@ contains
       call find_single(path, groups(1:n_groups), 'sweep', 'gap_from, gap_to, n_gaps', i, error)
       if (allocated(error)) return
       call read_sweep(path, text, groups(i), size(d%contacts), &
-                      any([(is_frame(d%buildings(k)), k=1, size(d%buildings))]), d%sweep, error)
+                      any([(is_frame(d%buildings(k)), k=1, size(d%buildings))]), d%sweep, error, &
+                      any(d%buildings%storey_law == 'bilinear'))
       if (allocated(error)) return
       call check_parameter_sweep(path, groups(i), d, error)
    end subroutine parse_deck

@@ -1,6 +1,6 @@
 !> Reader of `&sweep`: the range of seismic-joint gaps and the optional target for |lambda|.
 module pound_deck_sweep
-   use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment
+   use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment, q_ductility
    use pound_deck_checks, only: check_real, fail, given_count, is_set, parse_history, read_failed, require_real, &
                                 site, site_of, unset_int, unset_real
    use pound_deck_lexer, only: group_ref, group_text, lower
@@ -17,7 +17,7 @@ module pound_deck_sweep
 contains
 
    !> `&sweep`: range of seismic-joint gaps and the optional target for |lambda|.
-   subroutine read_sweep(path, text, g, n_contacts, has_frame, cfg, error)
+   subroutine read_sweep(path, text, g, n_contacts, has_frame, cfg, error, has_bilinear)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
@@ -28,6 +28,8 @@ contains
       integer, intent(in) :: n_contacts
       !> Whether any building of the deck is a frame (has column segments).
       logical, intent(in) :: has_frame
+      !> Some building has bilinear storeys (`ductility` can be targeted).
+      logical, intent(in), optional :: has_bilinear
       !> Resolved sweep.
       type(sweep_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
@@ -134,11 +136,27 @@ contains
             end if
             cfg%target_quantities([q_column_shear, q_column_moment]) = .false.
          end if
+         if (cfg%target_quantities(q_ductility) .and. .not. bilinear()) then
+            ! 'all' names it only where it exists.
+            if (index(lower(target_quantities), 'ductility') > 0) then
+               call fail(at, 'target_quantities', "target_quantities = '"//trim(adjustl(target_quantities))// &
+                         "': ductility is the peak ductility of bilinear storeys, and no building of the "// &
+                         "deck has storey_law = 'bilinear'", error)
+               return
+            end if
+            cfg%target_quantities(q_ductility) = .false.
+         end if
          if (.not. any(cfg%target_quantities)) then
             call fail(at, 'target_quantities', "target_quantities = 'none' leaves nothing to check", error)
             return
          end if
       end subroutine take_target
+
+      !> Whether some building has bilinear storeys.
+      logical function bilinear()
+         bilinear = .false.
+         if (present(has_bilinear)) bilinear = has_bilinear
+      end function bilinear
 
    end subroutine read_sweep
 

@@ -225,6 +225,12 @@ contains
          o%building(ib)%lambda = res%influence(ib)%lambda
          o%building(ib)%unc = res%unc%building(ib)%peak
          o%building(ib)%cpl = res%cpl%building(ib)%peak
+         if (.not. allocated(res%unc%yielding)) cycle
+         if (res%unc%yielding(ib)%n == 0) cycle
+         o%building(ib)%yield = reshape([res%unc%yielding(ib)%ductility, res%cpl%yielding(ib)%ductility, &
+                                         res%unc%yielding(ib)%residual_drift, res%cpl%yielding(ib)%residual_drift], &
+                                        shape(o%building(ib)%yield))
+         o%building(ib)%collapse = real([res%unc%yielding(ib)%collapse_storey, res%cpl%yielding(ib)%collapse_storey], dp)
       end do
       call columns_to_block(ctx%models, res%influence, res%unc, o%member)
       do ip = 1, size(ctx%pair)
@@ -744,6 +750,8 @@ contains
          do ib = 1, nb
             n = deck%buildings(ib)%n_storeys
             suite%building(ib)%lambda(k, :, :) = o%building(ib)%lambda
+            suite%building(ib)%yield(k, :, :) = o%building(ib)%yield
+            suite%building(ib)%collapse(k, :) = nint(o%building(ib)%collapse)
             mean_unc(1:n, :, ib) = mean_unc(1:n, :, ib) + o%building(ib)%unc/suite%n_used
             mean_cpl(1:n, :, ib) = mean_cpl(1:n, :, ib) + o%building(ib)%cpl/suite%n_used
          end do

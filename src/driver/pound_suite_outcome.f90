@@ -56,6 +56,11 @@ module pound_suite_outcome
    type :: outcome_building
       !> Influence coefficients (%), uncoupled and coupled peaks.
       real(dp), allocatable :: lambda(:, :), unc(:, :), cpl(:, :)
+      !> Bilinear storeys (zeros for elastic ones), (n_storeys, 4): peak ductility uncoupled,
+      !> coupled, residual drift (m) uncoupled, coupled; the storey that collapsed in each
+      !> analysis (0: none).
+      real(dp), allocatable :: yield(:, :)
+      real(dp) :: collapse(2) = 0.0_dp
    end type outcome_building
 
    !> What one motion's case gives the suite.
@@ -103,6 +108,7 @@ contains
          o%building(ib)%lambda = 0.0_dp
          o%building(ib)%unc = 0.0_dp
          o%building(ib)%cpl = 0.0_dp
+         allocate (o%building(ib)%yield(n, 4), source=0.0_dp)
       end do
       allocate (o%pair_peak(2, layout%n_pairs), o%no_contact(layout%n_pairs), o%closing_max(layout%n_pairs), &
                 o%probe(layout%n_probe), o%member(layout%n_member))
@@ -131,6 +137,8 @@ contains
          o%building(ib)%lambda = 0.0_dp
          o%building(ib)%unc = 0.0_dp
          o%building(ib)%cpl = 0.0_dp
+         o%building(ib)%yield = 0.0_dp
+         o%building(ib)%collapse = 0.0_dp
       end do
       o%pair_peak = 0.0_dp
       o%no_contact = 0.0_dp
@@ -145,7 +153,7 @@ contains
       type(outcome_layout), intent(in) :: layout
 
       width = 3 + layout%n_periods + size(layout%n_storeys) + 3*n_history_quantities*sum(layout%n_storeys) + &
-              3*layout%n_pairs + 1 + failure_width + layout%n_member
+              3*layout%n_pairs + 1 + failure_width + layout%n_member + 4*sum(layout%n_storeys) + 2*size(layout%n_storeys)
       if (layout%sweep) width = width + 1 + layout%n_pairs + layout%n_probe
    end function outcome_width
 
@@ -229,7 +237,10 @@ contains
          call move_vector(col, at, put, o%probe)
       end if
       call move_vector(col, at, put, o%member)
-
+      do ib = 1, size(layout%n_storeys)
+         call move_matrix(col, at, put, o%building(ib)%yield)
+         call move_vector(col, at, put, o%building(ib)%collapse)
+      end do
    end subroutine walk
 
    !> A vector between the column and `x` (`put`: into the column, else out of it), `at`

@@ -186,7 +186,7 @@ contains
       end if
       call run_case(ctx%plain, r, error, opt)
       if (allocated(error)) return
-      lam = max_abs_target(r%influence, r%models)
+      lam = max_abs_target(r%influence, r%models, r%unc, r%cpl)
       do iq = 1, n_target_quantities
          if (.not. ctx%targeted(iq)) lam(iq, :) = 0.0_dp
       end do

@@ -54,6 +54,11 @@ module pound_suite_statistics
       real(dp), allocatable :: mean_lambda(:, :), max_lambda(:, :), lambda_of_means(:, :)
       !> Per motion lambda (%), (n_motions, n, n_history_quantities).
       real(dp), allocatable :: lambda(:, :, :)
+      !> Bilinear storeys, per motion (n_motions, n, 4): peak ductility uncoupled, coupled,
+      !> residual drift (m) uncoupled, coupled; the storey that collapsed (n_motions, 2: uncoupled,
+      !> coupled; 0: none). Zeros for elastic storeys and failed motions.
+      real(dp), allocatable :: yield(:, :, :)
+      integer, allocatable :: collapse(:, :)
    end type building_suite
 
    !> Everything a suite computes.
@@ -354,6 +359,8 @@ contains
             s%mean_lambda = 0.0_dp
             s%max_lambda = 0.0_dp
             s%lambda_of_means = 0.0_dp
+            allocate (s%yield(nm, n, 4), source=0.0_dp)
+            allocate (s%collapse(nm, 2), source=0)
          end associate
       end do
    end subroutine suite_result_init

@@ -64,7 +64,7 @@ module pound_results_h5
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_version, only: program_name, program_version
-   use pound_config, only: deck_type, history_names, n_history_quantities, target_names, q_column_shear, &
+   use pound_config, only: deck_type, history_names, n_history_quantities, target_names, q_column_shear, q_ductility, &
                            q_column_moment
    use pound_building, only: building_model
    use pound_structure, only: structure_model
@@ -376,6 +376,12 @@ contains
                              row, error, units='%')
                if (allocated(error)) return
             end do
+            ! The peak ductility of bilinear storeys, where the deck targets it.
+            if (deck%sweep%target_quantities(q_ductility) .and. allocated(models(ib)%yield_shear)) then
+               row = sw%max_abs_lambda(q_ductility, ib, :)
+               call h5_write(h5, g//'/max_abs_lambda/'//models(ib)%name//'/ductility', row, error, units='%')
+               if (allocated(error)) return
+            end if
             ! The column segments' quantities of a frame, where the deck targets them.
             if (models(ib)%member%n == 0) cycle
             do q = q_column_shear, q_column_moment

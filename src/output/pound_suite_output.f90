@@ -53,6 +53,7 @@ module pound_suite_output
    use pound_results_h5, only: write_analysis_h5, write_failed_cases, pair_list
    use pound_cases, only: case_message_len
    use pound_suite_columns_output, only: write_suite_columns_listing, write_suite_columns_h5
+   use pound_suite_yield_output, only: write_suite_yield_listing, write_suite_yield_h5
    use pound_separation_output, only: write_separation_h5, write_separation_head, write_separation_rows, &
                                       write_separation_legend
    implicit none
@@ -198,6 +199,7 @@ contains
       end do
       call write_influence_tables(lst, models, infl)
       call write_suite_columns_listing(lst, models, suite%names, suite%motion_failed, suite%columns)
+      call write_suite_yield_listing(lst, models, suite)
       if (lst%first_ios /= 0) return
 
       call write_section(lst, 'Separation rules per contact pair [mm]')
@@ -414,6 +416,7 @@ contains
             end do
          end do
          call write_suite_columns_h5(h5, models, suite%columns, error)
+         if (.not. allocated(error)) call write_suite_yield_h5(h5, models, suite, error)
          if (allocated(error)) return
          do r = 1, size(rule_names)
             select case (r)

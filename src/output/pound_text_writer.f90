@@ -34,6 +34,8 @@ module pound_text_writer
    contains
       !> Keep the last write's failure if it is the first.
       procedure :: note => writer_note
+      !> Write one line (`text`) and keep its failure (`note`).
+      procedure :: put => writer_put
       !> The first failure, as an error naming the file (unallocated if none).
       procedure :: io_error => writer_io_error
    end type text_writer
@@ -50,6 +52,17 @@ contains
          w%first_msg = w%msg
       end if
    end subroutine writer_note
+
+   !> Write one line and keep its failure if it is the first.
+   subroutine writer_put(w, text)
+      !> The writer.
+      class(text_writer), intent(inout) :: w
+      !> The line.
+      character(len=*), intent(in) :: text
+
+      write (w%unit, '(a)', iostat=w%ios, iomsg=w%msg) text
+      call w%note()
+   end subroutine writer_put
 
    !> The first write failure (unallocated if none), naming the file.
    subroutine writer_io_error(w, error)

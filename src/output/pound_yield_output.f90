@@ -158,14 +158,14 @@ contains
       if (present(cpl)) both = allocated(cpl%yielding)
       do ib = 1, size(models)
          if (unc%yielding(ib)%n == 0) cycle
-         call put('')
-         call put('  Bilinear storeys of '//models(ib)%name//' (storey shear Q = spring force; mu = max|drift| '// &
+         call lst%put('')
+         call lst%put('  Bilinear storeys of '//models(ib)%name//' (storey shear Q = spring force; mu = max|drift| '// &
                   '/ (Fy/k), residual drift at the end)')
          line = '  '//right_cell('storey', 6)//right_cell('Fy [kN]', 12)//right_cell('r', 8)// &
                 right_cell('mu unc', 10)//right_cell('resid unc [mm]', 16)
          if (both) line = line//right_cell('mu cpl', 10)//right_cell('resid cpl [mm]', 16)// &
                           right_cell('lambda mu [%]', 15)//right_cell('lambda res [%]', 16)
-         call put(line)
+         call lst%put(line)
          if (both) call yield_influence(unc%yielding(ib), cpl%yielding(ib), lam_mu, lam_res)
          do j = unc%yielding(ib)%n, 1, -1
             line = '  '//right_cell(str(j), 6)//fixed_cell(models(ib)%yield_shear(j), 12, 2)// &
@@ -174,36 +174,31 @@ contains
             if (both) line = line//fixed_cell(cpl%yielding(ib)%ductility(j), 10, 3)// &
                              fixed_cell(1.0e3_dp*cpl%yielding(ib)%residual_drift(j), 16, 4)// &
                              lambda_cell(lam_mu(j), 15)//lambda_cell(lam_res(j), 16)
-            call put(line)
+            call lst%put(line)
          end do
          line = '  hysteretic energy: uncoupled '//str(unc%yielding(ib)%hysteretic)//' kJ'
          if (both) line = line//', coupled '//str(cpl%yielding(ib)%hysteretic)//' kJ'
-         call put(line)
+         call lst%put(line)
          line = '  storey LCPs: uncoupled '//str(unc%yielding(ib)%solves)//' solves ('// &
                 str(unc%yielding(ib)%lcp_rows)//' rows), largest residual '//str(unc%yielding(ib)%residual)
          if (both) line = line//'; coupled '//str(cpl%yielding(ib)%solves)//' solves ('// &
                           str(cpl%yielding(ib)%lcp_rows)//' rows), largest residual '//str(cpl%yielding(ib)%residual)// &
                           ', steps yielding with joints acting '//str(cpl%yielding(ib)%joint_steps)// &
-                          ', joint LCPs solved again in a step at most '//str(cpl%yielding(ib)%alternations)
-         call put(line)
+                          ', LCP re-solves in a step at most (rows added; smooth joints: alternations) '// &
+                          str(cpl%yielding(ib)%alternations)
+         call lst%put(line)
          if (both) then
             line = collapse_text(unc%yielding(ib), cpl%yielding(ib))
          else
             line = collapse_text(unc%yielding(ib), storey_yield_result())
          end if
-         if (len(line) > 0) call put('  COLLAPSE: '//line//': storey drift / height passed collapse_drift, '// &
-                                     'that analysis stopped at the end of the step (later samples hold the last); '// &
+         if (len(line) > 0) call lst%put('  COLLAPSE: '//line//': storey drift / height passed collapse_drift, '// &
+                                     'the building was frozen at the end of that step (no longer integrated, later '// &
+                                     'samples hold the last, its joints opened; the other buildings went on); '// &
                                      'the influence coefficients of '//models(ib)%name//' are not meaningful')
       end do
 
    contains
-
-      subroutine put(text)
-         character(len=*), intent(in) :: text
-
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) text
-         call lst%note()
-      end subroutine put
 
       !> A lambda right-aligned in `w` columns ('inf' for an infinite one).
       function lambda_cell(lambda, w) result(cell)
