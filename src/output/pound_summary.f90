@@ -25,7 +25,7 @@ module pound_summary
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_strings, only: counted, str
+   use pound_strings, only: counted, plain_real, str
    use pound_config, only: deck_type
    use pound_response, only: q_u, q_shear
    use pound_run_case, only: case_result
@@ -259,6 +259,7 @@ contains
                end do
             end associate
          end if
+         call yield_items(ib, b)
          f = -1.0_dp
          t = -1.0_dp
          joint = ''
@@ -281,6 +282,27 @@ contains
                           location='no joint at this building', available=.false.))
          end if
       end subroutine building_items
+
+      !> A building with bilinear storeys: its largest peak ductility and residual drift,
+      !> coupled (the uncoupled run's beside it in the location text).
+      subroutine yield_items(ib, b)
+         integer, intent(in) :: ib
+         character(len=*), intent(in) :: b
+         integer :: j
+
+         if (.not. allocated(res%cpl%yielding) .or. .not. allocated(res%unc%yielding)) return
+         if (res%cpl%yielding(ib)%n == 0) return
+         associate (yc => res%cpl%yielding(ib), yu => res%unc%yielding(ib))
+            j = largest(yc%ductility)
+            call add(item('building', b, 'ductility', b//': largest storey ductility, coupled'//motion, &
+                          yc%ductility(j), '-', 'storey '//str(j)//'; uncoupled '// &
+                          plain_real(yu%ductility(largest(yu%ductility)))))
+            j = largest(yc%residual_drift)
+            call add(item('building', b, 'residual_drift', b//': largest residual drift, coupled'//motion, &
+                          1000.0_dp*abs(yc%residual_drift(j)), 'mm', 'storey '//str(j)//'; uncoupled '// &
+                          plain_real(1000.0_dp*abs(yu%residual_drift(largest(yu%residual_drift))))//' mm'))
+         end associate
+      end subroutine yield_items
 
       !> No-contact gap, time-history threshold gap and code rules of pair ip.
       subroutine pair_items(ip)

@@ -11,6 +11,12 @@ file(READ ${WORK_DIR}/seed_bilinear.out listing)
 expect_contains("listing" "${listing}" "Bilinear storeys of A")
 expect_contains("listing" "${listing}" "Bilinear storeys of B")
 expect_contains("listing" "${listing}" "hysteretic energy: uncoupled")
+# The engineering summary: each bilinear building's largest ductility and residual drift.
+expect_contains("summary" "${r_out}" "B: largest storey ductility, coupled:")
+expect_contains("summary" "${r_out}" "B: largest residual drift, coupled:")
+file(READ ${WORK_DIR}/seed_bilinear_summary.csv csv)
+expect_contains("summary CSV" "${csv}" "building,B,ductility,")
+expect_contains("summary CSV" "${csv}" "building,B,residual_drift,")
 file(REMOVE ${WORK_DIR}/seed_bilinear.out ${WORK_DIR}/seed_bilinear.h5 ${WORK_DIR}/seed_bilinear_summary.csv)
 
 # bad(<name> <from> <to> <message>): the example deck with <from> replaced by <to> fails with <message>.
