@@ -15,7 +15,7 @@ import tempfile
 
 STEPS = 20000
 DT = 1.0e-3
-SIZES = (10, 100, 1000, 10000)
+SIZES = tuple(int(s) for s in os.environ.get("POUND_BENCH_SIZES", "10,100,1000,10000").split(","))
 
 
 def deck(n):
