@@ -219,10 +219,10 @@ contains
    !> The engineering summary's items and text lines (a suite: its answer first).
    subroutine make_summary()
       if (size(deck%motions) > 1) then
-         call build_summary(deck, res, summary_items, suite)
+         call build_summary(res, summary_items, suite)
          summary_text = summary_lines(summary_items, motion_heading(suite))
       else
-         call build_summary(deck, res, summary_items)
+         call build_summary(res, summary_items)
          summary_text = summary_lines(summary_items)
       end if
    end subroutine make_summary

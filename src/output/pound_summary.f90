@@ -26,7 +26,6 @@ module pound_summary
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: counted, plain_real, str
-   use pound_config, only: deck_type
    use pound_response, only: q_u, q_shear
    use pound_run_case, only: case_result
    use pound_sweep_joints, only: failed_joint_gaps
@@ -66,12 +65,10 @@ module pound_summary
 
 contains
 
-   !> Every item of the summary of the case `res` of the configuration `deck`; with `suite`
+   !> Every item of the summary of the case `res`; with `suite`
    !> (a deck with several `&ground`) the suite's answer first and the case is the suite's
    !> single-motion case (`suite%first`).
-   subroutine build_summary(deck, res, items, suite)
-      !> The validated configuration.
-      type(deck_type), intent(in) :: deck
+   subroutine build_summary(res, items, suite)
       !> The single-motion case (the program's results).
       type(case_result), intent(in) :: res
       !> The summary.
