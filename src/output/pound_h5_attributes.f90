@@ -62,14 +62,7 @@ contains
       if (hdferr /= 0) then
          call fail(error, file, 'write', what, p, 'h5tcopy_f/h5tset_size_f failed')
       else
-         call new_space(dims, ids, file, 'write', what, p, error)
-      end if
-      if (.not. allocated(error)) then
-         call h5acreate_f(obj, name, ids%ftype, ids%space, ids%attr, hdferr)
-         if (hdferr /= 0) then
-            ids%attr = -1_hid_t
-            call fail(error, file, 'write', what, p, 'h5acreate_f failed')
-         end if
+         call create_attribute(obj, file, p, name, ids%ftype, dims, ids, error)
       end if
       if (.not. allocated(error)) call put_string(ids, file, what, p, value, error)
       call release(ids, file, 'write', what, p, error)
@@ -192,14 +185,31 @@ contains
             return
          end if
       end if
+      call create_attribute(ids%obj, file, p, name, ftype, dims, ids, error)
+   end subroutine new_attribute
+
+   !> Create attribute `name` of type `ftype` and shape `dims` on the open object `obj` (at
+   !> `p`, for messages), which has none of that name: its space and identifier into `ids`.
+   subroutine create_attribute(obj, file, p, name, ftype, dims, ids, error)
+      integer(hid_t), intent(in) :: obj
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: p, name
+      integer(hid_t), intent(in) :: ftype
+      integer(hsize_t), intent(in) :: dims(:)
+      type(h5_ids), intent(inout) :: ids
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: what
+      integer :: hdferr
+
+      what = "attribute '"//name//"' of"
       call new_space(dims, ids, file, 'write', what, p, error)
       if (allocated(error)) return
-      call h5acreate_f(ids%obj, name, ftype, ids%space, ids%attr, hdferr)
+      call h5acreate_f(obj, name, ftype, ids%space, ids%attr, hdferr)
       if (hdferr /= 0) then
          ids%attr = -1_hid_t
          call fail(error, file, 'write', what, p, 'h5acreate_f failed')
       end if
-   end subroutine new_attribute
+   end subroutine create_attribute
 
    !> Open the group or dataset at `path` that carries attributes.
    subroutine open_carrier(file, path, write, action, what, ids, p, error)

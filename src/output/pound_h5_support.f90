@@ -100,12 +100,15 @@ contains
       end if
    end subroutine check_path
 
-   !> State of the link `prefix` (an absolute path other than '/'), whose parent is a group.
-   subroutine link_state(file, prefix, state, error)
+   !> State of the link `prefix` (an absolute path other than '/'), whose parent is a group;
+   !> with `any_parent`, of any path: missing when a group above it is missing (h5lexists_f
+   !> fails there).
+   subroutine link_state(file, prefix, state, error, any_parent)
       type(h5_file), intent(in) :: file
       character(len=*), intent(in) :: prefix
       integer, intent(out) :: state
       type(error_type), allocatable, intent(out) :: error
+      logical, intent(in), optional :: any_parent
       logical :: there
       integer(hid_t) :: obj
       integer :: hdferr, obj_type, ignore
@@ -113,6 +116,9 @@ contains
       state = link_missing
       call h5lexists_f(file%id, prefix, there, hdferr)
       if (hdferr /= 0) then
+         if (present(any_parent)) then
+            if (any_parent) return
+         end if
          call fail(error, file, 'look up', 'object', prefix, 'h5lexists_f failed')
          return
       end if
@@ -162,21 +168,17 @@ contains
       logical, intent(in) :: whole
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: gid
-      logical :: there
       integer :: i, last, state, hdferr
 
       if (p == '/') return
       last = len(p)
       if (.not. whole) last = index(p, '/', back=.true.) - 1
       if (last <= 1) return
-      ! Most paths go into a group that exists already: one look-up, no walk. (h5lexists_f
-      ! fails when a group above the link is missing: then the walk below creates it.)
-      call h5lexists_f(file%id, p(:last), there, hdferr)
-      if (hdferr == 0 .and. there) then
-         call link_state(file, p(:last), state, error)
-         if (allocated(error)) return
-         if (state == link_group) return
-      end if
+      ! Most paths go into a group that exists already: one look-up, no walk (a group above
+      ! it missing: the walk below creates it).
+      call link_state(file, p(:last), state, error, any_parent=.true.)
+      if (allocated(error)) return
+      if (state == link_group) return
       do i = 2, last + 1
          if (i <= last) then
             if (p(i:i) /= '/') cycle
