@@ -18,7 +18,7 @@ module pound_listing
    use pound_joint_law, only: law_text
    use pound_lemke, only: lemke_status_name
    use pound_influence, only: building_influence
-   use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment
+   use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment, q_ductility
    use pound_sweep, only: sweep_result
    implicit none
    private
@@ -664,6 +664,7 @@ contains
       character(len=:), allocatable :: line
       character(len=11) :: cell
       integer :: i, ib, k
+      logical :: mu
 
       call write_section(lst, 'Gap study: largest |lambda| [%] over the storeys (floors) against the gap')
       write (lst%unit, '(a,i0,a,f10.4,a)', iostat=lst%ios, iomsg=lst%msg) &
@@ -684,6 +685,9 @@ contains
          do k = 1, size(shown)
             line = line//right_cell(trim(heads(k)), 10)
          end do
+         ! The peak ductility of bilinear storeys, where the sweep targets it.
+         mu = cfg%target_quantities(q_ductility) .and. allocated(models(ib)%yield_shear)
+         if (mu) line = line//right_cell('ductility', 11)
          if (cfg%target > 0.0_dp) line = line//'  target'
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
          call lst%note()
@@ -703,6 +707,13 @@ contains
                   line = line//fixed_cell(res%max_abs_lambda(shown(k), ib, i), 10, 2)
                end if
             end do
+            if (mu) then
+               if (res%max_abs_lambda(q_ductility, ib, i) >= huge(1.0_dp)) then
+                  line = line//right_cell('inf', 11)
+               else
+                  line = line//fixed_cell(res%max_abs_lambda(q_ductility, ib, i), 11, 2)
+               end if
+            end if
             if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
             write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
             call lst%note()

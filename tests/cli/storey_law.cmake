@@ -19,6 +19,15 @@ expect_contains("summary CSV" "${csv}" "building,B,ductility,")
 expect_contains("summary CSV" "${csv}" "building,B,residual_drift,")
 file(REMOVE ${WORK_DIR}/seed_bilinear.out ${WORK_DIR}/seed_bilinear.h5 ${WORK_DIR}/seed_bilinear_summary.csv)
 
+# A gap sweep targeting the ductility lists its largest |lambda| beside the other quantities.
+file(WRITE ${WORK_DIR}/sweep_mu.nml "${good}\n&sweep gap_from = 0.0, gap_to = 0.006, n_gaps = 3, target_lambda = 10.0, target_quantities = 'ductility' /\n")
+run_pound(r sweep_mu.nml)
+expect_equal("sweep_mu: exit status" 0 "${r_rc}")
+file(READ ${WORK_DIR}/sweep_mu.out listing)
+expect_contains("sweep_mu: listing" "${listing}" "      gap [mm]    impacts         Q     drift         u     a_abs  ductility  target")
+expect_contains("sweep_mu: listing" "${listing}" "        6.0000          0      0.00      0.00      0.00      0.00       0.00     met")
+file(REMOVE ${WORK_DIR}/sweep_mu.out ${WORK_DIR}/sweep_mu.h5 ${WORK_DIR}/sweep_mu_summary.csv)
+
 # bad(<name> <from> <to> <message>): the example deck with <from> replaced by <to> fails with <message>.
 function(bad name from to needle)
   string(REPLACE "${from}" "${to}" deck "${good}")
