@@ -427,7 +427,7 @@ contains
       !> Dataset path.
       character(len=*), intent(in) :: path
       !> Values.
-      real(dp), intent(in) :: values(:)
+      real(dp), intent(in), target :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
@@ -437,6 +437,12 @@ contains
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
+      ! Contiguous values are written where they are (no copy: the histories are most of the
+      ! file); a section or a component of a derived-type array through a contiguous copy.
+      if (is_contiguous(values)) then
+         call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(values), error, units)
+         return
+      end if
       packed = values
       call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(packed), error, units)
    end subroutine write_real_1d
@@ -448,7 +454,7 @@ contains
       !> Dataset path.
       character(len=*), intent(in) :: path
       !> Values, e.g. hist(n_floors, n_out).
-      real(dp), intent(in) :: values(:, :)
+      real(dp), intent(in), target :: values(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
@@ -458,7 +464,11 @@ contains
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
-      ! A contiguous copy: the caller may pass a section or a component of a derived-type array.
+      ! As write_real_1d: contiguous values in place, a section through a contiguous copy.
+      if (is_contiguous(values)) then
+         call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(values), error, units)
+         return
+      end if
       packed = values
       call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(packed), error, units)
    end subroutine write_real_2d
