@@ -78,6 +78,14 @@ module pound_h5
       logical :: writable = .false.
    end type h5_file
 
+   !> The group `make_groups` last found or made, in the open file `known_file` (-1: none). A
+   !> writer puts the datasets of one group one after another, so this spares their parent
+   !> look-ups (an h5lexists and an h5oopen each). Nothing in pound deletes or moves a group;
+   !> opening, creating or closing a file forgets it (`forget_group`).
+   integer(hid_t), save :: known_file = -1_hid_t
+   !> Its path (normalised), allocated whenever `known_file` >= 0.
+   character(len=:), allocatable, save :: known_group
+
    !> Write a new dataset at a path, creating missing groups:
    !> `call h5_write(file, path, values, error[, units])` with `values` real(dp) scalar, 1-D
    !> or 2-D, default integer 1-D or 2-D, or character 1-D (trailing blanks dropped);
@@ -202,14 +210,21 @@ module pound_h5
          character(len=*), intent(in) :: p, name, value
          type(error_type), allocatable, intent(inout) :: error
       end subroutine string_attribute_on
-      !> Check the handle and `path` for a new dataset, create the groups above it and
-      !> refuse an existing object; `p` is the normalised path.
+      !> Check the handle and `path` for a new dataset and create the groups above it; `p` is
+      !> the normalised path (an object already there makes h5dcreate_f fail: `create_failed`).
       module subroutine dataset_path(file, path, p, error)
          type(h5_file), intent(in) :: file
          character(len=*), intent(in) :: path
          character(len=:), allocatable, intent(out) :: p
          type(error_type), allocatable, intent(out) :: error
       end subroutine dataset_path
+      !> The error of a failed h5dcreate_f at `p`: an object already there (`dataset_path`
+      !> does not look), else the call's failure.
+      module subroutine create_failed(file, p, error)
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: p
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine create_failed
       !> Scalar (empty `dims`) or simple dataspace.
       module subroutine new_space(dims, ids, file, action, what, path, error)
          integer(hsize_t), intent(in) :: dims(:)
@@ -333,6 +348,7 @@ contains
       integer :: hdferr
 
       if (file%id < 0) return
+      known_file = -1_hid_t
       call h5fclose_f(file%id, hdferr)
       file%id = -1_hid_t
       file%writable = .false.
@@ -560,7 +576,7 @@ contains
          call h5dcreate_f(file%id, p, H5T_IEEE_F64LE, ids%space, ids%obj, hdferr, dcpl_id=dcpl)
          if (hdferr /= 0) then
             ids%obj = -1_hid_t
-            call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+            call create_failed(file, p, error)
          end if
       end if
       call h5pclose_f(dcpl, ignore)
@@ -645,7 +661,7 @@ contains
          call h5dcreate_f(file%id, p, mtype, ids%space, ids%obj, hdferr)
          if (hdferr /= 0) then
             ids%obj = -1_hid_t
-            call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+            call create_failed(file, p, error)
          end if
       end if
       if (.not. allocated(error)) then
@@ -687,7 +703,7 @@ contains
          call h5dcreate_f(file%id, p, ids%ftype, ids%space, ids%obj, hdferr)
          if (hdferr /= 0) then
             ids%obj = -1_hid_t
-            call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+            call create_failed(file, p, error)
          end if
       end if
       if (.not. allocated(error) .and. size(values) > 0) then
