@@ -16,7 +16,7 @@ module pound_posix
    public :: posix_lock_directory, posix_unlock_directory, posix_exit_now
    public :: posix_ignore_signal, posix_set_handler, posix_std_fd_open, posix_reserve_fd
    public :: posix_address_space_limit, posix_unlink_c, posix_write_stderr_c, posix_write, posix_sleep
-   public :: posix_isatty
+   public :: posix_isatty, posix_keep_freed_memory
    public :: sig_int, sig_term, sig_xfsz, sig_pipe, errno_enoent, errno_eexist, errno_eintr
 
    !> Signal numbers (Linux).
@@ -103,6 +103,12 @@ module pound_posix
          import :: c_int
          integer(c_int), value :: status
       end subroutine c_exit_now
+
+      function c_mallopt(param, value) bind(C, name='mallopt') result(ok)
+         import :: c_int
+         integer(c_int), value :: param, value
+         integer(c_int) :: ok
+      end function c_mallopt
 
       function c_signal(sig, handler) bind(C, name='signal') result(previous)
          import :: c_int, c_funptr
@@ -380,6 +386,19 @@ contains
       if (c_associated(handle)) ignore = c_closedir(handle)
       handle = c_null_ptr
    end subroutine posix_unlock_directory
+
+   !> Keep freed memory in the process (glibc's malloc): blocks below 32 MiB come from the heap
+   !> and up to 64 MiB freed at its top stay there (glibc's defaults start at 128 KiB and grow
+   !> only after such blocks were freed). So the second analysis' histories take the pages
+   !> of the first's, already mapped, instead of new ones the kernel must fault in and zero.
+   !> Nothing changes in any result; with another C library the call is only refused.
+   subroutine posix_keep_freed_memory()
+      integer(c_int), parameter :: m_trim_threshold = -1, m_mmap_threshold = -3
+      integer(c_int) :: ok
+
+      ok = c_mallopt(m_mmap_threshold, 32*2**20)
+      ok = c_mallopt(m_trim_threshold, 64*2**20)
+   end subroutine posix_keep_freed_memory
 
    !> _exit(2): end the process now, without exit handlers (async-signal-safe).
    subroutine posix_exit_now(status)
