@@ -16,7 +16,7 @@ module pound_posix
    public :: posix_lock_directory, posix_unlock_directory, posix_exit_now
    public :: posix_ignore_signal, posix_set_handler, posix_std_fd_open, posix_reserve_fd
    public :: posix_address_space_limit, posix_unlink_c, posix_write_stderr_c, posix_write, posix_sleep
-   public :: posix_isatty, posix_keep_freed_memory
+   public :: posix_isatty, posix_keep_freed_memory, posix_is_empty_file
    public :: sig_int, sig_term, sig_xfsz, sig_pipe, errno_enoent, errno_eexist, errno_eintr
 
    !> Signal numbers (Linux).
@@ -74,6 +74,13 @@ module pound_posix
          integer(c_int64_t), intent(out) :: buf(*)
          integer(c_int) :: stat
       end function c_stat
+
+      function c_lstat(path, buf) bind(C, name='lstat') result(stat)
+         import :: c_char, c_int, c_int64_t
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int64_t), intent(out) :: buf(*)
+         integer(c_int) :: stat
+      end function c_lstat
 
       function c_opendir(path) bind(C, name='opendir') result(dir)
          import :: c_char, c_ptr
@@ -337,6 +344,23 @@ contains
       device = buf(1)
       inode = buf(2)
    end subroutine posix_file_id
+
+   !> Whether `path` itself (not what a link points to) is an empty regular file with no
+   !> other name: one that may be removed and made again instead of being truncated.
+   function posix_is_empty_file(path) result(empty)
+      !> Path.
+      character(len=*), intent(in) :: path
+      logical :: empty
+      ! struct stat on 64-bit Linux: st_nlink at bytes 16-23, st_mode at 24-27, st_size at
+      ! 48-55 (as for posix_file_id, the buffer is larger than the whole structure).
+      integer(c_int64_t), parameter :: s_ifmt = int(o'170000', c_int64_t), s_ifreg = int(o'100000', c_int64_t)
+      integer(c_int64_t) :: buf(64)
+
+      buf = 0
+      empty = .false.
+      if (c_lstat(path//c_null_char, buf) /= 0) return
+      empty = iand(iand(buf(4), int(z'FFFFFFFF', c_int64_t)), s_ifmt) == s_ifreg .and. buf(3) == 1 .and. buf(7) == 0
+   end function posix_is_empty_file
 
    !> Whether `path` is a directory that can be opened.
    function posix_is_directory(path) result(is_dir)
