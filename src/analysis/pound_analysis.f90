@@ -31,7 +31,7 @@ module pound_analysis
    use pound_integrators, only: integrators_for
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_store, &
-                             response_flush, history_block, deformed_limit, response_block_full
+                             response_flush, history_block, deformed_limit, response_block_full, response_release
    use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
                             joint_history, joint_history_init, joint_history_record, &
                             contact_may_act, contact_carries_force, lcp_solver_lemke, contact_track_closing, &

@@ -379,6 +379,7 @@ contains
          do ib = 1, nb
             call response_flush(res%building(ib), sink, coupled, ib, .false., error)
             if (allocated(error)) return
+            call response_release(res%building(ib))
          end do
       end if
       if (batched) then

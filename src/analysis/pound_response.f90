@@ -32,7 +32,7 @@ module pound_response
 
    public :: response_record, response_init, response_sample, response_finish, response_store
    public :: history_sink, response_flush, default_block_bytes, history_block, discard_sink
-   public :: response_block_full, response_sample_rows
+   public :: response_block_full, response_sample_rows, response_release
    public :: q_u, q_v, q_a_abs, q_drift, q_shear, deformed_limit
 
    !> Quantity indices.
@@ -618,6 +618,21 @@ contains
       rec%first = rec%first + k
       rec%n_out = 0
    end subroutine response_flush
+
+   !> Free the histories of a streamed record whose samples have all gone to the sink (after
+   !> the last flush): the next analysis' histories take the same memory again (no new pages
+   !> for the kernel to fault in and zero).
+   subroutine response_release(rec)
+      !> The record.
+      type(response_record), intent(inout) :: rec
+
+      if (.not. rec%streamed .or. rec%n_out /= 0) return
+      if (allocated(rec%u)) deallocate (rec%u)
+      if (allocated(rec%v)) deallocate (rec%v)
+      if (allocated(rec%a_abs)) deallocate (rec%a_abs)
+      if (allocated(rec%drift)) deallocate (rec%drift)
+      if (allocated(rec%shear)) deallocate (rec%shear)
+   end subroutine response_release
 
    !> Derive the storey-shear peaks: each shear row is its drift row times the row's scale
    !> (a shear building: Q_j = k_j drift_j), so they occur with the drift peaks; put the

@@ -16,7 +16,7 @@ module pound_posix
    public :: posix_lock_directory, posix_unlock_directory, posix_exit_now
    public :: posix_ignore_signal, posix_set_handler, posix_std_fd_open, posix_reserve_fd
    public :: posix_address_space_limit, posix_unlink_c, posix_write_stderr_c, posix_write, posix_sleep
-   public :: posix_isatty
+   public :: posix_isatty, posix_keep_freed_memory, posix_is_empty_file
    public :: sig_int, sig_term, sig_xfsz, sig_pipe, errno_enoent, errno_eexist, errno_eintr
 
    !> Signal numbers (Linux).
@@ -75,6 +75,13 @@ module pound_posix
          integer(c_int) :: stat
       end function c_stat
 
+      function c_lstat(path, buf) bind(C, name='lstat') result(stat)
+         import :: c_char, c_int, c_int64_t
+         character(kind=c_char), intent(in) :: path(*)
+         integer(c_int64_t), intent(out) :: buf(*)
+         integer(c_int) :: stat
+      end function c_lstat
+
       function c_opendir(path) bind(C, name='opendir') result(dir)
          import :: c_char, c_ptr
          character(kind=c_char), intent(in) :: path(*)
@@ -103,6 +110,12 @@ module pound_posix
          import :: c_int
          integer(c_int), value :: status
       end subroutine c_exit_now
+
+      function c_mallopt(param, value) bind(C, name='mallopt') result(ok)
+         import :: c_int
+         integer(c_int), value :: param, value
+         integer(c_int) :: ok
+      end function c_mallopt
 
       function c_signal(sig, handler) bind(C, name='signal') result(previous)
          import :: c_int, c_funptr
@@ -332,6 +345,23 @@ contains
       inode = buf(2)
    end subroutine posix_file_id
 
+   !> Whether `path` itself (not what a link points to) is an empty regular file with no
+   !> other name: one that may be removed and made again instead of being truncated.
+   function posix_is_empty_file(path) result(empty)
+      !> Path.
+      character(len=*), intent(in) :: path
+      logical :: empty
+      ! struct stat on 64-bit Linux: st_nlink at bytes 16-23, st_mode at 24-27, st_size at
+      ! 48-55 (as for posix_file_id, the buffer is larger than the whole structure).
+      integer(c_int64_t), parameter :: s_ifmt = int(o'170000', c_int64_t), s_ifreg = int(o'100000', c_int64_t)
+      integer(c_int64_t) :: buf(64)
+
+      buf = 0
+      empty = .false.
+      if (c_lstat(path//c_null_char, buf) /= 0) return
+      empty = iand(iand(buf(4), int(z'FFFFFFFF', c_int64_t)), s_ifmt) == s_ifreg .and. buf(3) == 1 .and. buf(7) == 0
+   end function posix_is_empty_file
+
    !> Whether `path` is a directory that can be opened.
    function posix_is_directory(path) result(is_dir)
       !> Path.
@@ -380,6 +410,19 @@ contains
       if (c_associated(handle)) ignore = c_closedir(handle)
       handle = c_null_ptr
    end subroutine posix_unlock_directory
+
+   !> Keep freed memory in the process (glibc's malloc): blocks below 32 MiB come from the heap
+   !> and up to 64 MiB freed at its top stay there (glibc's defaults start at 128 KiB and grow
+   !> only after such blocks were freed). So the second analysis' histories take the pages
+   !> of the first's, already mapped, instead of new ones the kernel must fault in and zero.
+   !> Nothing changes in any result; with another C library the call is only refused.
+   subroutine posix_keep_freed_memory()
+      integer(c_int), parameter :: m_trim_threshold = -1, m_mmap_threshold = -3
+      integer(c_int) :: ok
+
+      ok = c_mallopt(m_mmap_threshold, 32*2**20)
+      ok = c_mallopt(m_trim_threshold, 64*2**20)
+   end subroutine posix_keep_freed_memory
 
    !> _exit(2): end the process now, without exit handlers (async-signal-safe).
    subroutine posix_exit_now(status)

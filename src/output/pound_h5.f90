@@ -52,14 +52,14 @@
 !> `pound_h5_support` (src/output/pound_h5_support.f90).
 module pound_h5
    use, intrinsic :: iso_c_binding, only: c_ptr, c_loc, c_char
-   use hdf5, only: hid_t, hsize_t, h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_RDONLY_F, &
+   use hdf5, only: hid_t, hsize_t, h5fcreate_f, h5fopen_f, h5fclose_f, H5F_ACC_TRUNC_F, H5F_ACC_EXCL_F, H5F_ACC_RDONLY_F, &
                    H5F_ACC_RDWR_F, h5pcreate_f, h5pclose_f, h5dcreate_f, h5dwrite_f, h5dopen_f, &
                    h5dget_space_f, h5sselect_hyperslab_f, H5S_SELECT_SET_F, H5T_NATIVE_DOUBLE, H5T_NATIVE_INTEGER, &
                    H5T_IEEE_F64LE, H5P_DATASET_CREATE_F, h5pset_chunk_f, h5pset_shuffle_f, h5pset_deflate_f, &
                    H5P_DATASET_XFER_F, h5pset_buffer_f
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
-   use pound_posix, only: posix_set_errno
+   use pound_posix, only: posix_set_errno, posix_unlink, posix_is_empty_file
    implicit none
    private
 
@@ -77,6 +77,14 @@ module pound_h5
       !> Opened by `h5_create` (read-write) rather than `h5_open` (read-only).
       logical :: writable = .false.
    end type h5_file
+
+   !> The group `make_groups` last found or made, in the open file `known_file` (-1: none). A
+   !> writer puts the datasets of one group one after another, so this spares their parent
+   !> look-ups (an h5lexists and an h5oopen each). Nothing in pound deletes or moves a group;
+   !> opening, creating or closing a file forgets it (`forget_group`).
+   integer(hid_t), save :: known_file = -1_hid_t
+   !> Its path (normalised), allocated whenever `known_file` >= 0.
+   character(len=:), allocatable, save :: known_group
 
    !> Write a new dataset at a path, creating missing groups:
    !> `call h5_write(file, path, values, error[, units])` with `values` real(dp) scalar, 1-D
@@ -202,14 +210,21 @@ module pound_h5
          character(len=*), intent(in) :: p, name, value
          type(error_type), allocatable, intent(inout) :: error
       end subroutine string_attribute_on
-      !> Check the handle and `path` for a new dataset, create the groups above it and
-      !> refuse an existing object; `p` is the normalised path.
+      !> Check the handle and `path` for a new dataset and create the groups above it; `p` is
+      !> the normalised path (an object already there makes h5dcreate_f fail: `create_failed`).
       module subroutine dataset_path(file, path, p, error)
          type(h5_file), intent(in) :: file
          character(len=*), intent(in) :: path
          character(len=:), allocatable, intent(out) :: p
          type(error_type), allocatable, intent(out) :: error
       end subroutine dataset_path
+      !> The error of a failed h5dcreate_f at `p`: an object already there (`dataset_path`
+      !> does not look), else the call's failure.
+      module subroutine create_failed(file, p, error)
+         type(h5_file), intent(in) :: file
+         character(len=*), intent(in) :: p
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine create_failed
       !> Scalar (empty `dims`) or simple dataspace.
       module subroutine new_space(dims, ids, file, action, what, path, error)
          integer(hsize_t), intent(in) :: dims(:)
@@ -258,7 +273,7 @@ contains
 
    ! ------------------------------------------------------------------ files
 
-   !> Create `path` (truncating an existing file) and open it for writing.
+   !> Create `path` (replacing an existing file) and open it for writing.
    subroutine h5_create(file, path, error)
       !> Handle; must not be open already.
       type(h5_file), intent(inout) :: file
@@ -267,14 +282,22 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: fapl
-      integer :: hdferr, ignore
+      integer :: hdferr, ignore, access
 
       call start(file, path, error)
       if (allocated(error)) return
       call file_access_list(path, fapl, error)
       if (allocated(error)) return
+      ! An empty regular file there (the run's temporary, reserved empty; not a link, a device
+      ! or a file with another name) is replaced, not truncated:
+      ! ext4 writes a file truncated to empty back when it is closed (auto_da_alloc), in the
+      ! process, before the program can end (about 0.25 ms for a 5 MB results file).
+      access = H5F_ACC_TRUNC_F
+      if (posix_is_empty_file(path)) then
+         if (posix_unlink(path) == 0) access = H5F_ACC_EXCL_F
+      end if
       call posix_set_errno(0)
-      call h5fcreate_f(path, H5F_ACC_TRUNC_F, file%id, hdferr, access_prp=fapl)
+      call h5fcreate_f(path, access, file%id, hdferr, access_prp=fapl)
       call h5pclose_f(fapl, ignore)
       if (hdferr /= 0) then
          file%id = -1_hid_t
@@ -333,6 +356,7 @@ contains
       integer :: hdferr
 
       if (file%id < 0) return
+      known_file = -1_hid_t
       call h5fclose_f(file%id, hdferr)
       file%id = -1_hid_t
       file%writable = .false.
@@ -427,7 +451,7 @@ contains
       !> Dataset path.
       character(len=*), intent(in) :: path
       !> Values.
-      real(dp), intent(in) :: values(:)
+      real(dp), intent(in), target :: values(:)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
@@ -437,6 +461,12 @@ contains
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
+      ! Contiguous values are written where they are (no copy: the histories are most of the
+      ! file); a section or a component of a derived-type array through a contiguous copy.
+      if (is_contiguous(values)) then
+         call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(values), error, units)
+         return
+      end if
       packed = values
       call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(packed), error, units)
    end subroutine write_real_1d
@@ -448,7 +478,7 @@ contains
       !> Dataset path.
       character(len=*), intent(in) :: path
       !> Values, e.g. hist(n_floors, n_out).
-      real(dp), intent(in) :: values(:, :)
+      real(dp), intent(in), target :: values(:, :)
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> Its `units` attribute ('m', 'kN m', '1': dimensionless, '-': text); none when absent.
@@ -458,7 +488,11 @@ contains
 
       call dataset_path(file, path, p, error)
       if (allocated(error)) return
-      ! A contiguous copy: the caller may pass a section or a component of a derived-type array.
+      ! As write_real_1d: contiguous values in place, a section through a contiguous copy.
+      if (is_contiguous(values)) then
+         call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(values), error, units)
+         return
+      end if
       packed = values
       call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_DOUBLE, c_loc(packed), error, units)
    end subroutine write_real_2d
@@ -550,7 +584,7 @@ contains
          call h5dcreate_f(file%id, p, H5T_IEEE_F64LE, ids%space, ids%obj, hdferr, dcpl_id=dcpl)
          if (hdferr /= 0) then
             ids%obj = -1_hid_t
-            call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+            call create_failed(file, p, error)
          end if
       end if
       call h5pclose_f(dcpl, ignore)
@@ -635,7 +669,7 @@ contains
          call h5dcreate_f(file%id, p, mtype, ids%space, ids%obj, hdferr)
          if (hdferr /= 0) then
             ids%obj = -1_hid_t
-            call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+            call create_failed(file, p, error)
          end if
       end if
       if (.not. allocated(error)) then
@@ -677,7 +711,7 @@ contains
          call h5dcreate_f(file%id, p, ids%ftype, ids%space, ids%obj, hdferr)
          if (hdferr /= 0) then
             ids%obj = -1_hid_t
-            call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+            call create_failed(file, p, error)
          end if
       end if
       if (.not. allocated(error) .and. size(values) > 0) then

@@ -225,20 +225,20 @@ contains
 
       call check_path(file, path, write, action, p, error)
       if (allocated(error)) return
-      ! One look-up of the whole path (h5lexists_f fails when a group above it is missing).
-      there = .true.
-      if (p /= '/') then
+      ! Opened at once (one look-up); why it failed is asked afterwards (h5lexists_f fails
+      ! when a group above it is missing).
+      call h5oopen_f(file%id, p, ids%obj, hdferr)
+      if (hdferr == 0) return
+      ids%obj = -1_hid_t
+      there = p == '/'
+      if (.not. there) then
          call h5lexists_f(file%id, p, there, hdferr)
          if (hdferr /= 0) there = .false.
       end if
-      if (.not. there) then
-         call fail(error, file, action, what, p, 'no such object')
-         return
-      end if
-      call h5oopen_f(file%id, p, ids%obj, hdferr)
-      if (hdferr /= 0) then
-         ids%obj = -1_hid_t
+      if (there) then
          call fail(error, file, action, what, p, 'h5oopen_f failed')
+      else
+         call fail(error, file, action, what, p, 'no such object')
       end if
    end subroutine open_carrier
 

@@ -37,6 +37,7 @@ contains
                           h5_file_name(file)//"'")
          return
       end if
+      known_file = -1_hid_t
       if (library_ready) return
       ! HDF5's start-up code must not meet the program's floating-point traps; the
       ! floating-point state, flags included, is restored afterwards.
@@ -174,10 +175,15 @@ contains
       last = len(p)
       if (.not. whole) last = index(p, '/', back=.true.) - 1
       if (last <= 1) return
+      ! The group of the previous dataset: nothing to look up.
+      if (file%id == known_file) then
+         if (known_group == p(:last)) return
+      end if
       ! Most paths go into a group that exists already: one look-up, no walk (a group above
       ! it missing: the walk below creates it).
       call link_state(file, p(:last), state, error, any_parent=.true.)
       if (allocated(error)) return
+      if (state == link_group) call remember(p(:last))
       if (state == link_group) return
       do i = 2, last + 1
          if (i <= last) then
@@ -202,16 +208,29 @@ contains
             end if
          end select
       end do
+      call remember(p(:last))
+
+   contains
+
+      !> The group `g` of this file exists.
+      subroutine remember(g)
+         character(len=*), intent(in) :: g
+
+         known_file = file%id
+         known_group = g
+      end subroutine remember
+
    end subroutine make_groups
 
-   !> Check the handle and `path` for a new dataset, create the groups above it and
-   !> refuse an existing object; `p` is the normalised path.
+   !> Check the handle and `path` for a new dataset and create the groups above it; `p` is
+   !> the normalised path. An object already at `p` is not looked for here (one look-up per
+   !> dataset saved): h5dcreate_f refuses it before creating anything, and `create_failed`
+   !> then names it.
    module subroutine dataset_path(file, path, p, error)
       type(h5_file), intent(in) :: file
       character(len=*), intent(in) :: path
       character(len=:), allocatable, intent(out) :: p
       type(error_type), allocatable, intent(out) :: error
-      integer :: state
 
       call check_path(file, path, .true., 'write', p, error)
       if (allocated(error)) return
@@ -220,12 +239,23 @@ contains
          return
       end if
       call make_groups(file, p, .false., error)
-      if (allocated(error)) return
-      ! The groups above `p` exist now: only its last link can be there already.
+   end subroutine dataset_path
+
+   !> The error of a failed h5dcreate_f at `p`: an object already there, else the call's failure.
+   module subroutine create_failed(file, p, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: p
+      type(error_type), allocatable, intent(out) :: error
+      integer :: state
+
       call link_state(file, p, state, error)
       if (allocated(error)) return
-      if (state /= link_missing) call fail(error, file, 'write', 'dataset', p, 'an object with this path already exists')
-   end subroutine dataset_path
+      if (state /= link_missing) then
+         call fail(error, file, 'write', 'dataset', p, 'an object with this path already exists')
+      else
+         call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
+      end if
+   end subroutine create_failed
 
    !> Scalar (empty `dims`) or simple dataspace.
    module subroutine new_space(dims, ids, file, action, what, path, error)

@@ -74,7 +74,7 @@ contains
       if (w%first_ios /= 0) call fatal_error(error, failure_text(w, trim(w%first_msg)))
    end subroutine writer_io_error
 
-   !> Open `path` (created or truncated), as a formatted stream so that `close_text` can check
+   !> Open `path` (created, or emptied), as a formatted stream so that `close_text` can check
    !> that every byte reached the file.
    subroutine open_text(path, what, w, error)
       !> File.
@@ -85,11 +85,18 @@ contains
       type(text_writer), intent(out) :: w
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      character(len=7) :: status
+      integer(int64) :: bytes
 
       w%path = path
       w%what = what
+      ! An empty file there (the run's temporary, reserved empty) is opened as it is: ext4
+      ! writes a file truncated to empty back when it is closed (auto_da_alloc), in the process.
+      status = 'replace'
+      inquire (file=path, size=bytes, iostat=w%ios)
+      if (w%ios == 0 .and. bytes == 0) status = 'old'
       call posix_set_errno(0)
-      open (newunit=w%unit, file=path, status='replace', action='write', access='stream', form='formatted', &
+      open (newunit=w%unit, file=path, status=status, action='write', access='stream', form='formatted', &
             iostat=w%ios, iomsg=w%msg)
       if (w%ios /= 0) call fatal_error(error, failure_text(w, trim(w%msg)))
    end subroutine open_text
