@@ -209,11 +209,8 @@ module pound_storey_yield
       !> The hinge rows, stiffness, yield moments and the frame's rows of building `b` (a frame
       !> with plastic hinges) into `ys` (n, nd set; the common arrays are the caller's).
       module subroutine hinge_set_init(ys, b, collapse_drift)
-         !> The set.
          type(storey_yield_set), intent(inout) :: ys
-         !> The frame.
          type(structure_model), intent(in) :: b
-         !> Storey drift / height at which the building collapses (none: no check).
          real(dp), intent(in), optional :: collapse_drift
       end subroutine hinge_set_init
 
@@ -236,6 +233,20 @@ module pound_storey_yield
          real(dp), intent(in) :: d(:)
       end function hinge_force
 
+      !> Khat^{-1} a_j of hinge j (a_j = k_j b_j + kc_j b_mate(j), its load per unit dp) into x.
+      module subroutine hinge_column(ys, st, j, x)
+         type(storey_yield_set), intent(inout) :: ys
+         class(integrator), intent(in) :: st
+         integer, intent(in) :: j
+         real(dp), intent(out) :: x(:)
+      end subroutine hinge_column
+
+      !> The plastic loads of the hinges' increments `dpl`: `fload` = sum_j dp_j a_j and its
+      !> response `xdp` = Khat^{-1} fload.
+      module subroutine hinge_loads(ys, st)
+         type(storey_yield_set), intent(inout) :: ys
+         class(integrator), intent(in) :: st
+      end subroutine hinge_loads
 
       !> `yield_commit` of a frame's hinges: rotations, plastic rotations, moments, energies,
       !> peaks; the storeys' drifts (collapse) and shears and the member rows without their
@@ -648,7 +659,7 @@ contains
          end do
          if (cs%m == 0) return
          ! Joints of piecewise-linear laws: one LCP of joints and storeys together.
-         if (it == 1 .and. any_change .and. size(cs%iterating) == 0 .and. .not. any(ys%hinges)) then
+         if (it == 1 .and. any_change .and. size(cs%iterating) == 0) then
             call yield_coupled(ys, st, cs, t, step, models, error)
             if (allocated(error)) call error_at(error, t, step)
             return

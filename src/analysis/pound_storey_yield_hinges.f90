@@ -86,7 +86,7 @@ contains
       ys%dpl = 0.0_dp
       do b = 1, m
          j = ys%act(b)
-         call moment_column(j, ys%work)
+         call hinge_column(ys, st, j, ys%work)
          do a = 1, m
             i = ys%act(a)
             s = real(ys%side(i)*ys%side(j), dp)
@@ -98,24 +98,35 @@ contains
       end do
       call solve_lcp(ys, m, t, step, label, error)
       if (allocated(error)) return
-      ys%xdp = 0.0_dp
-      ys%fload = 0.0_dp
       do b = 1, m
          j = ys%act(b)
          ys%dpl(j) = real(ys%side(j), dp)*ys%z(b)
-         if (ys%dpl(j) == 0.0_dp) cycle
-         call moment_column(j, ys%work)
-         ys%xdp = ys%xdp + ys%dpl(j)*ys%work
-         ! The load dp_j a_j = dp_j (k_j b_j + kc_j b_mate(j)).
-         call scatter(j, ys%dpl(j)*ys%k(j))
-         call scatter(ys%mate(j), ys%dpl(j)*ys%kc(j))
       end do
+      call hinge_loads(ys, st)
       do j = 1, ys%nd
          ys%xdp(j) = ys%xdp(j) + du(j)
       end do
       call drifts(ys, u, ys%dnew, ys%work, ys%xdp)
       do j = 1, ys%nd
          ys%xdp(j) = ys%xdp(j) - du(j)
+      end do
+
+   end subroutine hinge_solve_rows
+
+   module subroutine hinge_loads(ys, st)
+      type(storey_yield_set), intent(inout) :: ys
+      class(integrator), intent(in) :: st
+      integer :: j
+
+      ys%xdp = 0.0_dp
+      ys%fload = 0.0_dp
+      do j = 1, ys%n
+         if (ys%dpl(j) == 0.0_dp) cycle
+         call hinge_column(ys, st, j, ys%work)
+         ys%xdp = ys%xdp + ys%dpl(j)*ys%work
+         ! The load dp_j a_j = dp_j (k_j b_j + kc_j b_mate(j)).
+         call scatter(j, ys%dpl(j)*ys%k(j))
+         call scatter(ys%mate(j), ys%dpl(j)*ys%kc(j))
       end do
 
    contains
@@ -130,17 +141,18 @@ contains
             ys%fload(ys%rows%dof(e)) = ys%fload(ys%rows%dof(e)) + s*ys%rows%coef(e)
          end do
       end subroutine scatter
+   end subroutine hinge_loads
 
-      !> Khat^{-1} a_j = k_j Khat^{-1} b_j + kc_j Khat^{-1} b_mate(j) into x (`tmp` as work).
-      subroutine moment_column(j, x)
-         integer, intent(in) :: j
-         real(dp), intent(out) :: x(:)
+   module subroutine hinge_column(ys, st, j, x)
+      type(storey_yield_set), intent(inout) :: ys
+      class(integrator), intent(in) :: st
+      integer, intent(in) :: j
+      real(dp), intent(out) :: x(:)
 
-         call column_of(ys, st, j, x)
-         call column_of(ys, st, ys%mate(j), ys%tmp)
-         x = ys%k(j)*x + ys%kc(j)*ys%tmp
-      end subroutine moment_column
-   end subroutine hinge_solve_rows
+      call column_of(ys, st, j, x)
+      call column_of(ys, st, ys%mate(j), ys%tmp)
+      x = ys%k(j)*x + ys%kc(j)*ys%tmp
+   end subroutine hinge_column
 
    pure module subroutine hinge_commit(ys, u, t, shear)
       type(storey_yield_set), intent(inout) :: ys
