@@ -248,6 +248,13 @@ module pound_storey_yield
          class(integrator), intent(in) :: st
       end subroutine hinge_loads
 
+      !> A hinge in the LCP without plastic increment whose end moment passes the other yield
+      !> line turns to that side (`added` set).
+      module subroutine hinge_turns(ys, added)
+         type(storey_yield_set), intent(inout) :: ys
+         logical, intent(inout) :: added
+      end subroutine hinge_turns
+
       !> `yield_commit` of a frame's hinges: rotations, plastic rotations, moments, energies,
       !> peaks; the storeys' drifts (collapse) and shears and the member rows without their
       !> plastic parts (the storey-shear history column `shear` replaced).
@@ -295,6 +302,15 @@ module pound_storey_yield
          !> The integrators' sum kinetic + strain + damping of an uncoupled step (kJ).
          real(dp), intent(inout) :: e_out
       end subroutine yield_energy_step
+
+      !> The drift of every storey of `ys` for the DOF vector x (+ y, when given) into `d`
+      !> (`work`: the sum x + y on the general path; pound_storey_yield_stick).
+      pure module subroutine drifts(ys, x, d, work, y)
+         type(storey_yield_set), intent(in) :: ys
+         real(dp), intent(in) :: x(:)
+         real(dp), intent(out) :: d(:), work(:)
+         real(dp), intent(in), optional :: y(:)
+      end subroutine drifts
    end interface
 
 contains
@@ -448,48 +464,6 @@ contains
       end do
    end subroutine yield_results
 
-   !> The drift of every storey of `ys` for the DOF vector x (+ y, when given) into `d`
-   !> (`work`: the sum x + y on the general path). `d` and `work` may be components of `ys`:
-   !> only its rows and sizes are read through `ys`.
-   pure subroutine drifts(ys, x, d, work, y)
-      type(storey_yield_set), intent(in) :: ys
-      real(dp), intent(in) :: x(:)
-      real(dp), intent(out) :: d(:), work(:)
-      real(dp), intent(in), optional :: y(:)
-      real(dp) :: below, here
-      integer :: j
-
-      if (ys%stick) then
-         ! Storey j joins floors j-1 and j (DOFs; the ground below storey 1).
-         below = 0.0_dp
-         if (present(y)) then
-            do j = 1, ys%n
-               here = x(j) + y(j)
-               d(j) = here - below
-               below = here
-            end do
-         else
-            do j = 1, ys%n
-               d(j) = x(j) - below
-               below = x(j)
-            end do
-         end if
-         return
-      end if
-      if (present(y)) then
-         do j = 1, ys%nd
-            work(j) = x(j) + y(j)
-         end do
-         do j = 1, ys%n
-            d(j) = recover(ys%rows, j, work)
-         end do
-      else
-         do j = 1, ys%n
-            d(j) = recover(ys%rows, j, x)
-         end do
-      end if
-   end subroutine drifts
-
    !> Solve the step's storey conditions for the predicted increment du of integrator `st`
    !> (which may hold this step's plastic loads of an earlier call: they are replaced).
    !> `changed`: the plastic loads in du changed (a coupled step then solves its joints again).
@@ -571,6 +545,7 @@ contains
             call enter(j, ys%dnew(j))
             if (ys%side(j) /= 0) added = .true.
          end do
+         if (ys%hinges) call hinge_turns(ys, added)
          if (.not. added) exit
       end do
       call check_step(ys, t, step, label, error)
@@ -817,7 +792,15 @@ contains
          res = max(0.0_dp, -up, -lo)
          if (ys%dpl(j) > 0.0_dp) res = max(res, abs(min(ys%k(j)*ys%dpl(j), up)))
          if (ys%dpl(j) < 0.0_dp) res = max(res, abs(min(-ys%k(j)*ys%dpl(j), lo)))
-         res = res/ys%fy(j)
+         if (ys%hinges) then
+            ! (Relative to the largest of My, the trial moment and S |theta|: the round-off of
+            ! m = S (theta - p).)
+            res = res/max(ys%fy(j), abs(ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j)) + &
+                                       ys%kc(j)*(ys%dtr(ys%mate(j)) - ys%d(ys%mate(j)))), &
+                          ys%k(j)*abs(ys%dnew(j)) + ys%kc(j)*abs(ys%dnew(ys%mate(j))))
+         else
+            res = res/ys%fy(j)
+         end if
          if (res > worst) then
             worst = res
             at = j

@@ -143,6 +143,27 @@ contains
       end subroutine scatter
    end subroutine hinge_loads
 
+   module subroutine hinge_turns(ys, added)
+      type(storey_yield_set), intent(inout) :: ys
+      logical, intent(inout) :: added
+      real(dp) :: f, h
+      integer :: a, j
+
+      do a = 1, ys%na
+         j = ys%act(a)
+         if (ys%dpl(j) /= 0.0_dp) cycle
+         f = hinge_force(ys, j, ys%dnew)
+         h = ys%fy(j)*(1.0_dp + enter_tolerance)
+         if (ys%side(j) > 0 .and. f < -h) then
+            ys%side(j) = -1
+            added = .true.
+         else if (ys%side(j) < 0 .and. f > h) then
+            ys%side(j) = 1
+            added = .true.
+         end if
+      end do
+   end subroutine hinge_turns
+
    module subroutine hinge_column(ys, st, j, x)
       type(storey_yield_set), intent(inout) :: ys
       class(integrator), intent(in) :: st
