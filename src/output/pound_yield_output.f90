@@ -206,7 +206,8 @@ contains
          line = '  hysteretic energy: uncoupled '//str(unc%yielding(ib)%hysteretic)//' kJ'
          if (both) line = line//', coupled '//str(cpl%yielding(ib)%hysteretic)//' kJ'
          call lst%put(line)
-         line = '  storey LCPs: uncoupled '//str(unc%yielding(ib)%solves)//' solves ('// &
+         line = '  '//trim(merge('hinge LCPs: ', 'storey LCPs:', unc%yielding(ib)%n_hinges > 0))//' uncoupled '// &
+                str(unc%yielding(ib)%solves)//' solves ('// &
                 str(unc%yielding(ib)%lcp_rows)//' rows), largest residual '//str(unc%yielding(ib)%residual)
          if (both) line = line//'; coupled '//str(cpl%yielding(ib)%solves)//' solves ('// &
                           str(cpl%yielding(ib)%lcp_rows)//' rows), largest residual '//str(cpl%yielding(ib)%residual)// &
