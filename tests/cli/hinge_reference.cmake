@@ -1,8 +1,8 @@
 # Plastic hinges against an independent reference (issue 25): a portal with flexible beam and
-# column and beam hinges yielding under a pulse; scripts/reference_frame_hinges.py integrates
+# column and beam hinges yielding under a pulse, 5 % Rayleigh damping; scripts/reference_frame_hinges.py integrates
 # the same portal by Newmark with Newton iterations and an element return mapping (nothing
 # shared with pound's LCP) and compares the floor displacement history and the residual drift
-# (to 1e-9 m; they agree to about 1e-12 m).
+# (to 1e-9 m; they agree to about 4e-14 m).
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
 file(WRITE ${WORK_DIR}/portal.nml "&analysis
    title = 'portal with plastic hinges (reference)'
@@ -31,7 +31,7 @@ file(WRITE ${WORK_DIR}/portal.nml "&analysis
    beam_area = 0.15
    beam_inertia = 1.0e-3
    base = 'fixed'
-   damping_ratio = 0.0
+   damping_ratio = 0.05
    hinge_law = 'elastic_plastic'
    column_yield_moment = 45.0
    beam_yield_moment = 30.0
