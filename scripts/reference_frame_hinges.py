@@ -99,7 +99,10 @@ if gravity > 0.0:
     K0=K0+G
 C=a0*M+a1*K0
 u=np.zeros(n); v=np.zeros(n); acc=-r*ag(0.0)
-N=int(round(T/dt)); hist=[u[3]]; Wh=0.0
+N=int(round(T/dt)); hist=[u[3]]
+# Up to pound's collapse step (pound holds the building after it).
+if h5['uncoupled/P'].attrs['collapse_storey'] > 0:
+    N=int(round(h5['uncoupled/P'].attrs['collapse_time']/dt))
 for k in range(1,N+1):
     t=k*dt; un=u.copy()
     for it in range(50):
