@@ -8,7 +8,8 @@ C = a0 M + a1 K0 with the initial stiffness and pound's a0, a1 from the file) un
 x0 = 0.05 m, a = 2 1/s, b = 4 pi rad/s, dt = 1e-3 s, 2 s: Newmark average acceleration with
 Newton iterations on the global equations (6 DOFs), each element's two elastic-perfectly-plastic
 end hinges by an active-set return mapping (m = S (theta - p), |m| <= My) and its consistent
-tangent. Nothing is shared with pound's LCP formulation. Compares the floor displacement
+tangent; the hinges' kinematic hardening moduli H (|m - H p| <= My) are read from the file. Nothing
+is shared with pound's LCP formulation. Compares the floor displacement
 history, the residual drift and the plastic rotations with pound's results file of the same
 portal (the deck is written by tests/cli/hinge_reference.cmake).
 
@@ -38,7 +39,7 @@ class El:
         x1,z1=nodes[n1]; x2,z2=nodes[n2]; s.L=np.hypot(x2-x1,z2-z1)
         s.T=T6((x2-x1)/s.L,(z2-z1)/s.L); s.idx=dofs(n1)+dofs(n2)
         s.EA=E*A/s.L; k=E*I/s.L; s.S=np.array([[4*k,2*k],[2*k,4*k]]); s.My=My
-        s.p=np.zeros(2); s.ptrial=np.zeros(2)
+        s.p=np.zeros(2); s.ptrial=np.zeros(2); s.H=np.zeros(2)
         L_=s.L; s.B=np.array([[0,1/L_,1,0,-1/L_,0],[0,1/L_,0,0,-1/L_,1]])
     def state(s,ug):
         dg=np.array([ug[i] if i is not None else 0.0 for i in s.idx]); dl=s.T@dg
@@ -48,16 +49,16 @@ class El:
             p=s.p.copy(); ok=True
             act=[i for i in range(2) if st[i]!=0]
             if act:
-                # unknown p_i (i active): m_i = st_i My
-                # m = S(th - p); for active i: S[i,:](th-p) = st_i My
-                A=np.array([[ s.S[i,j] for j in act] for i in act]); rhs=np.array([s.S[i]@(th-s.p) - st[i]*s.My for i in act])
-                # S[i,:](th - p_n - dp) = st My -> sum_j S_ij dp_j (j act) = S_i(th-p_n) - st My
+                # active i: m_i - H_i p_i = st_i My with m = S (th - p), p = p_n + dp (dp on the
+                # active hinges): sum_j (S_ij + H_i d_ij) dp_j = S_i (th - p_n) - H_i p_n,i - st_i My
+                A=np.array([[s.S[i,j]+(s.H[i] if i==j else 0.0) for j in act] for i in act])
+                rhs=np.array([s.S[i]@(th-s.p) - s.H[i]*s.p[i] - st[i]*s.My for i in act])
                 dp=np.linalg.solve(A,rhs)
                 for k,i in enumerate(act):
                     if dp[k]*st[i] < -1e-14: ok=False
                     p[i]=s.p[i]+dp[k]
             mm=s.S@(th-p)
-            if any(abs(mm[i])>s.My*(1+1e-12) for i in range(2) if st[i]==0): ok=False
+            if any(abs(mm[i]-s.H[i]*p[i])>s.My*(1+1e-12) for i in range(2) if st[i]==0): ok=False
             if ok: best=(st,p,mm); break
         st,p,mm=best
         s.ptrial=p
@@ -66,9 +67,10 @@ class El:
         # tangent
         act=[i for i in range(2) if st[i]!=0]
         Kt=s.S.copy()
-        if len(act)==2: Kt=np.zeros((2,2))
-        elif len(act)==1:
-            i=act[0]; j=1-i; Kt=np.zeros((2,2)); Kt[j,j]=s.S[j,j]-s.S[j,i]*s.S[i,j]/s.S[i,i]
+        if act:
+            # dm = S dth - S[:,A] (S_AA + H_A)^-1 S[A,:] dth
+            SA=s.S[np.ix_(act,act)]+np.diag(s.H[act])
+            Kt=s.S-s.S[:,act]@np.linalg.solve(SA,s.S[act,:])
         kl=s.B.T@Kt@s.B; kl[0,0]+=s.EA; kl[0,3]-=s.EA; kl[3,0]-=s.EA; kl[3,3]+=s.EA
         return s.T.T@fl, s.T.T@kl@s.T
 E_=[El(*e) for e in els]
@@ -76,6 +78,9 @@ n=6; M=np.diag([m/2,m/2,0,m/2,m/2,0]); r=np.array([1,0,0,1,0,0.0])
 def ag(t): return x0*np.exp(-a*t)*((a*a-b*b)*np.sin(b*t)-2*a*b*np.cos(b*t))
 h5=h5py.File(sys.argv[1], 'r')
 a0,a1=h5['model/P/rayleigh'][()]
+# Kinematic hardening moduli of the hinges (pound's element order: the columns, then the beam).
+for k,e in enumerate(E_):
+    e.H=h5['model/P/hinges/hardening_modulus'][()][2*k:2*k+2].copy()
 K0=np.zeros((n,n))
 for e in E_:
     kl=e.B.T@e.S@e.B; kl[0,0]+=e.EA; kl[0,3]-=e.EA; kl[3,0]-=e.EA; kl[3,3]+=e.EA

@@ -121,7 +121,8 @@ module pound_storey_yield
       !> rotations (k = 4EI/L, fy the yield moment, r = 0), each coupled by kc = 2EI/L to the
       !> row `mate` (the element's other end): m = S (theta - p), S = [k kc; kc k] per element.
       logical :: hinges = .false.
-      real(dp), allocatable :: kc(:)
+      !> (`hk`: each hinge's kinematic hardening modulus H (kN m/rad): |m - H p| <= My.)
+      real(dp), allocatable :: kc(:), hk(:)
       !> (`level`: the storey of a column's hinge, 0 for a beam's.)
       integer, allocatable :: mate(:), level(:)
       !> Frames: storey drift rows, storey-shear and member rows and their plastic parts (over
@@ -226,7 +227,8 @@ module pound_storey_yield
          type(error_type), allocatable, intent(out) :: error
       end subroutine hinge_solve_rows
 
-      !> The end moment of hinge row j for the rotations `d` (plastic increments `dpl` included).
+      !> The end moment of hinge row j less its back moment, m - H p, for the rotations `d`
+      !> (plastic increments `dpl` included): the argument of its yield function.
       pure module real(dp) function hinge_force(ys, j, d) result(f)
          type(storey_yield_set), intent(in) :: ys
          integer, intent(in) :: j
@@ -503,7 +505,7 @@ contains
       ! step: one test a storey).
       do j = 1, ys%n
          f = ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j))
-         if (ys%hinges) f = f + ys%kc(j)*(ys%dtr(ys%mate(j)) - ys%d(ys%mate(j)))
+         if (ys%hinges) f = f + ys%kc(j)*(ys%dtr(ys%mate(j)) - ys%d(ys%mate(j))) - ys%hk(j)*ys%p(j)
          c = ys%r(j)*ys%k(j)*ys%dtr(j)
          h = (1.0_dp - ys%r(j))*ys%fy(j)
          if (abs(f - c) > h) call enter(j)
@@ -580,7 +582,7 @@ contains
          end if
          f = ys%f(j) + ys%k(j)*(d - ys%d(j))
          if (ys%hinges) then
-            f = f + ys%kc(j)*(ys%dtr(ys%mate(j)) - ys%d(ys%mate(j)))
+            f = f + ys%kc(j)*(ys%dtr(ys%mate(j)) - ys%d(ys%mate(j))) - ys%hk(j)*ys%p(j)
             if (present(dj)) f = hinge_force(ys, j, ys%dnew)
          end if
          c = ys%r(j)*ys%k(j)*d

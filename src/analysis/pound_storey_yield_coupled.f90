@@ -269,7 +269,7 @@ contains
       d = dv(j)
       f = ys%f(j) + ys%k(j)*(d - ys%d(j))
       if (ys%hinges) then
-         f = f + ys%kc(j)*(dv(ys%mate(j)) - ys%d(ys%mate(j)))
+         f = f + ys%kc(j)*(dv(ys%mate(j)) - ys%d(ys%mate(j))) - ys%hk(j)*ys%p(j)
          if (solved) f = hinge_force(ys, j, dv)
       end if
       c = ys%r(j)*ys%k(j)*d
@@ -415,13 +415,14 @@ contains
                if (ys(1)%cb(s2) /= ib) cycle
                i = ys(1)%cj(s2)
                sij = 0.0_dp
-               if (i == j) sij = y%k(j)
+               if (i == j) sij = y%k(j) + y%hk(j)
                if (i == y%mate(j)) sij = y%kc(j)
                mat(s2, s) = real(y%side(i)*sg, dp)*(sij - y%k(i)*recover(y%rows, i, y%work) - &
                                                     y%kc(i)*recover(y%rows, y%mate(i), y%work))/y%k(i)
             end do
             q(s) = (y%fy(j) - real(sg, dp)*(y%f(j) + y%k(j)*(y%dtr(j) - y%d(j)) + &
-                                            y%kc(j)*(y%dtr(y%mate(j)) - y%d(y%mate(j)))) - real(sg, dp)*shift)/y%k(j)
+                                            y%kc(j)*(y%dtr(y%mate(j)) - y%d(y%mate(j))) - y%hk(j)*y%p(j)) - &
+                  real(sg, dp)*shift)/y%k(j)
             ys(1)%cguess(s) = .true.
             ys(1)%cref(s) = 0.0_dp
          end associate

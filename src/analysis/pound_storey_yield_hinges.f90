@@ -4,14 +4,15 @@
 !> A hinge row j is the rotation of an element end relative to the element's chord, theta_j =
 !> b_j^T u (pound_frame_hinges). The element's end moments are m = S (theta - p) with S =
 !> [k kc; kc k] = (EI/L) [4 2; 2 4] (the bending part of the element's stiffness, which stays
-!> in K: Khat is factored once). Elastic-perfectly-plastic hinges (no hardening): |m_j| <= My_j,
-!> the plastic rotation p_j = p_j,n + lam_plus - lam_minus with lam >= 0 in complementarity with
-!> My - m >= 0, m + My >= 0 (Maier). A plastic increment dp_j acts on the structure as the load
+!> in K: Khat is factored once). Hinges with linear kinematic hardening of modulus H_j (`hk`,
+!> 0: elastic-perfectly plastic): |m_j - H_j p_j| <= My_j, the plastic rotation p_j = p_j,n +
+!> lam_plus - lam_minus with lam >= 0 in complementarity with My - (m - H p) >= 0,
+!> (m - H p) + My >= 0 (Maier). A plastic increment dp_j acts on the structure as the load
 !> a_j dp_j with a_j = S B (row j) = k_j b_j + kc_j b_mate(j), the moment row; the end-of-step
 !> moments are m = m_tr - (S - A) dp with A_ij = a_i^T Khat^{-1} a_j (symmetric). The LCP over the
-!> rows whose trial moment leaves the elastic range, on that side sigma:
+!> rows whose trial value m_tr - H p_n leaves the elastic range, on that side sigma:
 !>
-!>     M = Sigma (S - A) Sigma,   q_i = My_i - sigma_i m_tr,i,   z = |dp|,
+!>     M = Sigma (S + diag(H) - A) Sigma,   q_i = My_i - sigma_i (m_tr,i - H_i p_n,i),   z = |dp|,
 !>
 !> solved by Lemke, every hinge checked afterwards and the LCP solved again with any that left
 !> its range (`yield_step`), the natural residual checked (`check_step`). A shear
@@ -42,6 +43,7 @@ contains
       ys%k = b%hinge_k
       ys%kc = b%hinge_kc
       ys%mate = b%hinge_mate
+      ys%hk = b%hinge_hardening
       ys%level = merge(b%hinge_level, 0, b%hinge_kind == element_column)
       ys%fy = b%hinge_moment
       ys%r = spread(0.0_dp, 1, n)
@@ -66,7 +68,8 @@ contains
       integer :: m
 
       m = ys%mate(j)
-      f = ys%f(j) + ys%k(j)*(d(j) - ys%d(j) - ys%dpl(j)) + ys%kc(j)*(d(m) - ys%d(m) - ys%dpl(m))
+      f = ys%f(j) + ys%k(j)*(d(j) - ys%d(j) - ys%dpl(j)) + ys%kc(j)*(d(m) - ys%d(m) - ys%dpl(m)) - &
+          ys%hk(j)*(ys%p(j) + ys%dpl(j))
    end function hinge_force
 
    module subroutine hinge_solve_rows(ys, st, u, du, t, step, label, error)
@@ -91,7 +94,7 @@ contains
             i = ys%act(a)
             s = real(ys%side(i)*ys%side(j), dp)
             ys%mat(a, b) = -s*(ys%k(i)*recover(ys%rows, i, ys%work) + ys%kc(i)*recover(ys%rows, ys%mate(i), ys%work))
-            if (i == j) ys%mat(a, b) = ys%mat(a, b) + ys%k(j)
+            if (i == j) ys%mat(a, b) = ys%mat(a, b) + ys%k(j) + ys%hk(j)
             if (i == ys%mate(j)) ys%mat(a, b) = ys%mat(a, b) + s*ys%kc(j)
          end do
          ys%q(b) = ys%fy(j) - real(ys%side(j), dp)*hinge_force(ys, j, ys%dtr)

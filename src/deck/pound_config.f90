@@ -174,6 +174,9 @@ module pound_config
       !> 'elastic_plastic': yield moment (kN m) of the columns of each storey and of the beams of
       !> each floor (n_storeys each); unallocated without hinges.
       real(dp), allocatable :: column_yield_moment(:), beam_yield_moment(:)
+      !> 'elastic_plastic': kinematic hardening ratio r of the hinges of each storey's columns and
+      !> floor's beams (n_storeys; 0: elastic-perfectly plastic), pound_frame_hinges.
+      real(dp), allocatable :: hinge_hardening_ratio(:)
    end type building_config
 
    !> A whole, validated deck.

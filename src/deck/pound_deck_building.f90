@@ -50,7 +50,7 @@ contains
       logical :: p_delta
       real(dp), allocatable :: height(:), mass(:), load_coeff(:), stiffness(:), e_modulus(:), &
                                inertia(:), gravity_load(:), yield_shear(:), hardening_ratio(:), &
-                               column_yield_moment(:), beam_yield_moment(:)
+                               column_yield_moment(:), beam_yield_moment(:), hinge_hardening(:)
       integer, allocatable :: n_columns(:)
       character(len=:), allocatable :: buf
       character(len=512) :: msg
@@ -61,7 +61,7 @@ contains
          gravity_load, model, n_bays, bay_width, column_e, column_area, column_inertia, beam_e, &
          beam_area, beam_inertia, base, column_elements, rigid_beams, rigid_diaphragm, rigid_columns, &
          geometric, cd, importance, behaviour_factor, response_reduction, storey_law, yield_shear, &
-         hardening_ratio, hinge_law, column_yield_moment, beam_yield_moment
+         hardening_ratio, hinge_law, column_yield_moment, beam_yield_moment, hinge_hardening
 
       ! The per-storey arrays as long as the deck's highest element (the lexer checked it
       ! against max_storeys), widened to n_storeys once it is known: a few storeys do not
@@ -99,7 +99,7 @@ contains
       storey_law = ' '
       hinge_law = ' '
       allocate (yield_shear(cap), hardening_ratio(cap), column_yield_moment(cap), beam_yield_moment(cap), &
-                source=unset_real)
+                hinge_hardening(cap), source=unset_real)
       allocate (bay_width(max_bays), column_e(cap), column_area(cap), column_inertia(cap), &
                 beam_e(cap), beam_area(cap), beam_inertia(cap))
       bay_width = unset_real
@@ -222,7 +222,7 @@ contains
       cfg%p_delta = p_delta
       call take_storey_law(at, storey_law, yield_shear, hardening_ratio, cfg, error)
       if (allocated(error)) return
-      call take_hinge_law(at, hinge_law, column_yield_moment, beam_yield_moment, cfg, error)
+      call take_hinge_law(at, hinge_law, column_yield_moment, beam_yield_moment, hinge_hardening, cfg, error)
       if (allocated(error)) return
 
       if (given_count(gravity_load) > 0) then

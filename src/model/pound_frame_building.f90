@@ -121,6 +121,7 @@ contains
       type(frame_spec) :: spec
       real(dp), allocatable :: kb(:, :), gb(:, :), mb(:, :), mb_full(:, :), shapes(:, :)
       integer, allocatable :: hs(:), he(:)
+      real(dp), allocatable :: hr(:)
       integer :: kind, j, k, nl, ns, n_modes, kd, q
 
       spec = frame_spec_of(deck_entry)
@@ -214,7 +215,10 @@ contains
          fd%column_element = column_elements(f)
          if (deck_entry%hinge_law == 'elastic_plastic') then
             call shear_segments(f, hs, he)
-            call frame_hinges(f, deck_entry%column_yield_moment, deck_entry%beam_yield_moment, hs, he, &
+            ! (No hardening ratios given: elastic-perfectly plastic.)
+            hr = spread(0.0_dp, 1, ns)
+            if (allocated(deck_entry%hinge_hardening_ratio)) hr = deck_entry%hinge_hardening_ratio
+            call frame_hinges(f, deck_entry%column_yield_moment, deck_entry%beam_yield_moment, hr, hs, he, &
                               fd%column_element, m)
             m%yield_height = deck_entry%height
          end if

@@ -107,11 +107,15 @@ contains
    !> stiffness, yield moments, descriptions, and the plastic parts of the storey-shear rows
    !> (`shear_elems`: the storey's lowest column segments, `shear_start` their storeys) and of
    !> the member rows (`column_elems`: four rows each, shear, moment_bottom, moment_top, axial).
-   pure subroutine frame_hinges(f, column_yield_moment, beam_yield_moment, shear_start, shear_elems, column_elems, m)
+   pure subroutine frame_hinges(f, column_yield_moment, beam_yield_moment, hardening_ratio, shear_start, shear_elems, &
+                                column_elems, m)
       !> The frame.
       type(frame_model), intent(in) :: f
       !> Yield moment of the columns of each storey and of the beams of each floor (kN m).
       real(dp), intent(in) :: column_yield_moment(:), beam_yield_moment(:)
+      !> Kinematic hardening ratio r of the hinges of each storey's columns and floor's beams:
+      !> H = r/(1-r) (k + kc) = r/(1-r) 6EI/L.
+      real(dp), intent(in) :: hardening_ratio(:)
       !> The storey-shear rows' segments: first of each storey (n_storeys + 1) and elements.
       integer, intent(in) :: shear_start(:), shear_elems(:)
       !> The member rows' column segments.
@@ -126,7 +130,7 @@ contains
 
       ne = f%n_elements
       allocate (local(6, 2*ne), start(2*ne + 1), elem(2*ne), ek(ne), ekc(ne), el(ne))
-      allocate (m%hinge_moment(2*ne), m%hinge_k(2*ne), m%hinge_kc(2*ne), m%hinge_mate(2*ne), &
+      allocate (m%hinge_moment(2*ne), m%hinge_k(2*ne), m%hinge_kc(2*ne), m%hinge_mate(2*ne), m%hinge_hardening(2*ne), &
                 m%hinge_kind(2*ne), m%hinge_level(2*ne), m%hinge_line(2*ne), m%hinge_end(2*ne), m%hinge_element(2*ne))
       do e = 1, ne
          n1 = f%element_nodes(1, e)
@@ -149,6 +153,9 @@ contains
             m%hinge_line(h) = f%node_line(n1)
             m%hinge_end(h) = i
             m%hinge_element(h) = e
+            associate (r => hardening_ratio(f%element_group(e)))
+               m%hinge_hardening(h) = r/(1.0_dp - r)*(ek(e) + ekc(e))
+            end associate
             if (f%element_kind(e) == element_column) then
                m%hinge_moment(h) = column_yield_moment(f%element_group(e))
             else

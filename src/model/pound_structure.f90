@@ -143,6 +143,8 @@ module pound_structure
       !> row . u - plastic row . p); unallocated `hinge_moment`: no hinges (pound_frame_hinges).
       type(recovery_rows) :: hinge, shear_plastic, member_plastic
       real(dp), allocatable :: hinge_moment(:), hinge_k(:), hinge_kc(:)
+      !> Each hinge's kinematic hardening modulus H (kN m/rad): |m - H p| <= My (0: none).
+      real(dp), allocatable :: hinge_hardening(:)
       integer, allocatable :: hinge_mate(:)
       !> Each hinge's element kind (1 column, 2 beam), storey (column) or floor (beam), column
       !> line of the element's first node, end (1: bottom or left, 2: top or right), element.

@@ -8,6 +8,7 @@
 !>     /model/<b>/hinges/element, kind (1 column, 2 beam), level (storey or floor), line, end
 !>                                               (1 bottom/left, 2 top/right)  (n_hinges)
 !>     /model/<b>/hinges/yield_moment            (n_hinges) kN m; attribute hinge_law of /model/<b>
+!>     /model/<b>/hinges/hardening_modulus       (n_hinges) kN m/rad, H of |m - H p| <= My
 !>
 !> Hinge h is end 2 - mod(h, 2) of element (h + 1)/2 (the frame's element order). The listing's
 !> table lists the hinges that yielded in some analysis.
@@ -50,6 +51,11 @@ contains
       if (.not. allocated(error)) call h5_write_attr(h5, g//'hinges/end', 'description', &
                                                     '1 bottom (column) or left (beam) end, 2 top or right', error)
       if (.not. allocated(error)) call h5_write(h5, g//'hinges/yield_moment', b%hinge_moment, error, units='kN m')
+      if (.not. allocated(error)) call h5_write(h5, g//'hinges/hardening_modulus', b%hinge_hardening, error, &
+                                                units='kN m/rad')
+      if (.not. allocated(error)) call h5_write_attr(h5, g//'hinges/hardening_modulus', 'description', &
+                                                    'kinematic hardening H: |m - H p| <= My (0: elastic-perfectly plastic)', &
+                                                    error)
       if (.not. allocated(error)) call h5_write_attr(h5, g(1:len(g) - 1), 'hinge_law', 'elastic_plastic', error)
    end subroutine write_hinge_model_h5
 
@@ -96,7 +102,12 @@ contains
       integer :: h, k
 
       call lst%put('')
-      call lst%put('  Plastic hinges of '//b%name//' that yielded (elastic-perfectly plastic; theta_p = peak '// &
+      if (any(b%hinge_hardening > 0.0_dp)) then
+         line = 'kinematic hardening |m - H p| <= My'
+      else
+         line = 'elastic-perfectly plastic'
+      end if
+      call lst%put('  Plastic hinges of '//b%name//' that yielded ('//line//'; theta_p = peak '// &
                    '|plastic rotation|, m/My = peak |end moment| / yield moment)')
       line = '  '//right_cell('hinge', 6)//right_cell('member', 8)//right_cell('level', 6)//right_cell('line', 5)// &
              right_cell('end', 7)//right_cell('My [kNm]', 10)//right_cell('theta_p unc [mrad]', 20)// &

@@ -46,6 +46,10 @@ bad(count_moment "column_yield_moment = 250.0, 200.0, 150.0" "column_yield_momen
     "&building #1 (A): column_yield_moment has 2 values, must have one (for every storey) or n_storeys = 3")
 bad(moments_none "hinge_law = 'elastic_plastic'             ! rigid" "hinge_law = 'none'             ! rigid"
     "&building #1 (A): column_yield_moment applies only with hinge_law = 'elastic_plastic'")
+bad(hardening_one "beam_yield_moment = 100.0" "beam_yield_moment = 100.0, hinge_hardening = 1.0"
+    "&building #2 (B): hinge_hardening(1) = 1.000000, must be >= 0 and < 1 (kinematic hardening of the hinges)")
+bad(hardening_count "beam_yield_moment = 100.0" "beam_yield_moment = 100.0, hinge_hardening = 0.1, 0.1"
+    "&building #2 (B): hinge_hardening has 2 values, must have one (for every storey) or n_storeys = 4")
 bad(law_name "hinge_law = 'elastic_plastic'             ! rigid" "hinge_law = 'plastic'             ! rigid"
     "&building #1 (A): hinge_law = 'plastic', must be 'none' or 'elastic_plastic'")
 
@@ -61,3 +65,5 @@ file(READ ${SOURCE_DIR}/input/seed_bilinear.nml good)
 bad(shear_hinges "storey_law = 'bilinear'  ! yielding storeys\n   yield_shear = 200.0"
     "storey_law = 'bilinear'\n   hinge_law = 'elastic_plastic'\n   yield_shear = 200.0"
     "&building #1 (A): hinge_law = 'elastic_plastic' applies only to a frame (model = 'frame')")
+bad(shear_hardening "hardening_ratio = 0.05" "hardening_ratio = 0.05, hinge_hardening = 0.05"
+    "&building #1 (A): hinge_hardening applies only with hinge_law = 'elastic_plastic'")
