@@ -20,7 +20,7 @@ set(POUND_SOURCES
   core/pound_envelope_rules.f90
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
   deck/pound_config.f90 deck/pound_deck_variables.f90 deck/pound_deck_values.f90 deck/pound_deck_lexer.f90 deck/pound_deck_checks.f90
-  deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_building.f90
+  deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_hinge_law.f90 deck/pound_deck_building.f90
   deck/pound_deck_stiffness.f90 deck/pound_deck_contact.f90 deck/pound_deck_study.f90 deck/pound_deck_sweep.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
   model/pound_band.f90 model/pound_structure.f90 model/pound_storey_properties.f90
@@ -31,7 +31,7 @@ set(POUND_SOURCES
   model/pound_synthetic_motion.f90
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)
   model/pound_band_lapack.f90 model/pound_band_solve.f90 model/pound_band_eigen.f90 model/pound_frame_element.f90
-  model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_building.f90 model/pound_building.f90
+  model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_hinges.f90 model/pound_frame_building.f90 model/pound_building.f90
   # solver: Newmark average acceleration
   solver/pound_integrator.f90 solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
   # solver: exact free steps (modes of (K+G, M), each mode's exact step)
@@ -53,7 +53,7 @@ set(POUND_SOURCES
   contact/pound_lcp_enumerate.f90
   contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
-  analysis/pound_response.f90 analysis/pound_storey_yield.f90 analysis/pound_storey_yield_stick.f90 analysis/pound_storey_yield_coupled.f90 analysis/pound_storey_collapse.f90 analysis/pound_step_retry.f90 analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_analysis_loop.f90 analysis/pound_influence.f90
+  analysis/pound_response.f90 analysis/pound_storey_yield.f90 analysis/pound_storey_yield_stick.f90 analysis/pound_storey_yield_coupled.f90 analysis/pound_storey_yield_hinges.f90 analysis/pound_storey_yield_energy.f90 analysis/pound_storey_collapse.f90 analysis/pound_step_retry.f90 analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_analysis_loop.f90 analysis/pound_influence.f90
   analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90 analysis/pound_joint_study.f90
   # analyses: the uncoupled runs of several motions at once
   analysis/pound_analysis_batch.f90
@@ -71,7 +71,7 @@ set(POUND_SOURCES
   # results file, the text writer (unit + first failure), listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_h5_support.f90 output/pound_h5_attributes.f90
   output/pound_results_h5.f90 output/pound_text_writer.f90
-  output/pound_yield_output.f90 output/pound_listing.f90
+  output/pound_hinge_output.f90 output/pound_yield_output.f90 output/pound_listing.f90
   # outputs: the separation rules' listing table and datasets (a run and a suite)
   output/pound_separation_output.f90 output/pound_sweep_joints_output.f90
   # outputs: the suite's listing sections and /suite

@@ -31,7 +31,8 @@ contains
    !> points DOFs 1..n, chain storey rows) and has two storeys or more (the one-storey kernel of
    !> `pound_newmark_step` is straight-line code that the compiler fuses differently), and the
    !> steps are Newmark's (`free_steps = 'newmark'`: the batch has no exact steps; the integrator
-   !> is average acceleration, `analysis_plan%average_acceleration`); no building has bilinear storeys.
+   !> is average acceleration, `analysis_plan%average_acceleration`); no building has bilinear storeys
+   !> or plastic hinges.
    pure logical function batch_eligible(cfg, models)
       !> The analysis plan (`&analysis`).
       type(analysis_plan), intent(in) :: cfg
@@ -42,8 +43,8 @@ contains
       batch_eligible = size(models) > 0 .and. cfg%free_steps == free_newmark .and. cfg%average_acceleration()
       do ib = 1, size(models)
          if (models(ib)%kd /= 1 .or. .not. models(ib)%stick .or. models(ib)%n < 2) batch_eligible = .false.
-         ! Bilinear storeys (pound_storey_yield) are stepped by `integrate` only.
-         if (allocated(models(ib)%yield_shear)) batch_eligible = .false.
+         ! Bilinear storeys and plastic hinges (pound_storey_yield) are stepped by `integrate` only.
+         if (allocated(models(ib)%yield_shear) .or. allocated(models(ib)%hinge_moment)) batch_eligible = .false.
          if (batch_eligible) batch_eligible = all(models(ib)%ground == 1.0_dp)
       end do
    end function batch_eligible

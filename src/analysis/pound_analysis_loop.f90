@@ -168,11 +168,12 @@ contains
             if (present(sink)) capacity = history_block(size(models(ib)%floor_dof), r%n_out, sink%block)
             ! Node histories are held whole: the program streams only without them.
             ! Deformed shapes at the storey-shear peaks for models with a DOF layout (frames),
-            ! within `deformed_limit`.
+            ! within `deformed_limit`; not with plastic hinges (their storey shears are known
+            ! only after the step's hinges are committed, pound_storey_yield_hinges).
             call response_init(r%building(ib), models(ib), cfg%store, capacity, error, &
                                nodes=cfg%node_histories .and. allocated(models(ib)%dof_node) .and. &
                                      .not. present(sink), &
-                               snapshots=allocated(models(ib)%dof_node) .and. &
+                               snapshots=allocated(models(ib)%dof_node) .and. .not. allocated(models(ib)%hinge_moment) .and. &
                                          real(models(ib)%n, dp)*real(models(ib)%shear%n, dp) <= deformed_limit, &
                                refine=exact)
             if (allocated(error)) then

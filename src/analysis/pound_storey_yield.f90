@@ -42,7 +42,7 @@ module pound_storey_yield
    public :: stick_khat, stick_active_set
    public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step
    ! (Used by the submodules: gfortran drops private procedures a submodule calls.)
-   public :: drifts, column_of, check_step
+   public :: drifts, column_of, check_step, grow_lcp, solve_lcp
 
    !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
    real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
@@ -117,6 +117,24 @@ module pound_storey_yield
       real(dp), allocatable :: cmat(:, :), cq(:), cz(:), cw(:), cref(:), cg(:, :)
       logical, allocatable :: cguess(:)
       integer, allocatable :: cb(:), cj(:)
+      !> Plastic hinges of a frame (pound_storey_yield_hinges): the rows are the hinges' end
+      !> rotations (k = 4EI/L, fy the yield moment, r = 0), each coupled by kc = 2EI/L to the
+      !> row `mate` (the element's other end): m = S (theta - p), S = [k kc; kc k] per element.
+      logical :: hinges = .false.
+      !> (`hk`: each hinge's kinematic hardening modulus H (kN m/rad): |m - H p| <= My.)
+      real(dp), allocatable :: kc(:), hk(:)
+      !> (`level`: the storey of a column's hinge, 0 for a beam's.)
+      integer, allocatable :: mate(:), level(:)
+      !> Frames: storey drift rows, storey-shear and member rows and their plastic parts (over
+      !> the hinges), collapse drift limits, the storeys' drifts and shears of the last commit,
+      !> their peaks and times (plastic parts removed), the members' peaks and times, each
+      !> hinge's peak |p| and peak |m|/My, the plastic rotations and moments before the commit.
+      type(recovery_rows) :: crows, srows, sprows, mrows, mprows
+      real(dp), allocatable :: climit(:), cdrift(:), sval(:), speak(:), stime(:), mpeak(:), mtime(:)
+      real(dp), allocatable :: pmax(:), ratio(:), pold(:), fold(:)
+      !> Frames: the step's plastic loads sum_j dp_j a_j over every DOF (`alldof`: 1 .. nd).
+      real(dp), allocatable :: fload(:)
+      integer, allocatable :: alldof(:)
    end type storey_yield_set
 
    !> What a run reports of a building's bilinear storeys (n = 0: elastic storeys).
@@ -137,6 +155,11 @@ module pound_storey_yield
       !> Most solves of the joints' LCP in one step beyond the first (alternations).
       integer :: alternations = 0
       real(dp) :: residual = 0.0_dp
+      !> A frame's plastic hinges (0: none; then `ductility` holds each storey's largest peak
+      !> |plastic rotation| of its columns, rad): peak |plastic rotation| (rad) and peak
+      !> |moment| / yield moment of each hinge.
+      integer :: n_hinges = 0
+      real(dp), allocatable :: rotation(:), moment_ratio(:)
    end type storey_yield_result
 
    interface
@@ -183,6 +206,113 @@ module pound_storey_yield
          !> Error state.
          type(error_type), allocatable, intent(out) :: error
       end subroutine yield_coupled
+
+      !> The hinge rows, stiffness, yield moments and the frame's rows of building `b` (a frame
+      !> with plastic hinges) into `ys` (n, nd set; the common arrays are the caller's).
+      module subroutine hinge_set_init(ys, b, collapse_drift)
+         type(storey_yield_set), intent(inout) :: ys
+         type(structure_model), intent(in) :: b
+         real(dp), intent(in), optional :: collapse_drift
+      end subroutine hinge_set_init
+
+      !> `solve_rows` of a frame's hinges: M = S_a (S - A) S_a over the active rows, A_ij =
+      !> a_i^T Khat^{-1} a_j with a_j = k_j b_j + kc_j b_mate(j) (the moment row), q = My - s f_tr.
+      module subroutine hinge_solve_rows(ys, st, u, du, t, step, label, error)
+         type(storey_yield_set), intent(inout) :: ys
+         class(integrator), intent(in) :: st
+         real(dp), intent(in) :: u(:), du(:)
+         real(dp), intent(in) :: t
+         integer, intent(in) :: step
+         character(len=*), intent(in) :: label
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine hinge_solve_rows
+
+      !> The end moment of hinge row j less its back moment, m - H p, for the rotations `d`
+      !> (plastic increments `dpl` included): the argument of its yield function.
+      pure module real(dp) function hinge_force(ys, j, d) result(f)
+         type(storey_yield_set), intent(in) :: ys
+         integer, intent(in) :: j
+         real(dp), intent(in) :: d(:)
+      end function hinge_force
+
+      !> Khat^{-1} a_j of hinge j (a_j = k_j b_j + kc_j b_mate(j), its load per unit dp) into x.
+      module subroutine hinge_column(ys, st, j, x)
+         type(storey_yield_set), intent(inout) :: ys
+         class(integrator), intent(in) :: st
+         integer, intent(in) :: j
+         real(dp), intent(out) :: x(:)
+      end subroutine hinge_column
+
+      !> The plastic loads of the hinges' increments `dpl`: `fload` = sum_j dp_j a_j and its
+      !> response `xdp` = Khat^{-1} fload.
+      module subroutine hinge_loads(ys, st)
+         type(storey_yield_set), intent(inout) :: ys
+         class(integrator), intent(in) :: st
+      end subroutine hinge_loads
+
+      !> A hinge in the LCP without plastic increment whose end moment passes the other yield
+      !> line turns to that side (`added` set).
+      module subroutine hinge_turns(ys, added)
+         type(storey_yield_set), intent(inout) :: ys
+         logical, intent(inout) :: added
+      end subroutine hinge_turns
+
+      !> `yield_commit` of a frame's hinges: rotations, plastic rotations, moments, energies,
+      !> peaks; the storeys' drifts (collapse) and shears and the member rows without their
+      !> plastic parts (the storey-shear history column `shear` replaced).
+      pure module subroutine hinge_commit(ys, u, t, shear)
+         type(storey_yield_set), intent(inout) :: ys
+         real(dp), intent(in) :: u(:)
+         real(dp), intent(in) :: t
+         real(dp), intent(inout), optional :: shear(:)
+      end subroutine hinge_commit
+
+      !> `yield_finish` of a frame's hinges: the response's storey-shear and member peaks become
+      !> those without the plastic parts.
+      pure module subroutine hinge_finish(ys, rec, res)
+         type(storey_yield_set), intent(in) :: ys
+         type(response_record), intent(inout) :: rec
+         type(storey_yield_result), intent(out) :: res
+      end subroutine hinge_finish
+
+      !> Total work W_L of the plastic loads of every building (kJ): what the integrators'
+      !> balance counts beyond the elastic structure (pound_storey_yield_energy).
+      pure module real(dp) function yield_load_work(ys) result(w)
+         !> The buildings' storeys.
+         type(storey_yield_set), intent(in) :: ys(:)
+      end function yield_load_work
+
+      !> Turn an energy sample of the elastic integrators into that of the inelastic buildings
+      !> (pound_storey_yield_energy).
+      pure module subroutine yield_energy_terms(ys, strain, plastic)
+         !> The buildings' storeys.
+         type(storey_yield_set), intent(in) :: ys(:)
+         !> The sample's strain energy and plastic work (kJ).
+         real(dp), intent(inout) :: strain, plastic
+      end subroutine yield_energy_terms
+
+      !> The energy terms of the step (pound_storey_yield_energy).
+      pure module subroutine yield_energy_step(ys, output, coupled, i_strain, i_plastic, stored, sample, e_out)
+         !> The buildings' storeys after the step's commit.
+         type(storey_yield_set), intent(in) :: ys(:)
+         !> An output step; a coupled analysis.
+         logical, intent(in) :: output, coupled
+         !> Positions of the strain energy and of the plastic work in a sample.
+         integer, intent(in) :: i_strain, i_plastic
+         !> The stored output sample, the step's sample (kJ; at least as long).
+         real(dp), intent(inout) :: stored(:), sample(:)
+         !> The integrators' sum kinetic + strain + damping of an uncoupled step (kJ).
+         real(dp), intent(inout) :: e_out
+      end subroutine yield_energy_step
+
+      !> The drift of every storey of `ys` for the DOF vector x (+ y, when given) into `d`
+      !> (`work`: the sum x + y on the general path; pound_storey_yield_stick).
+      pure module subroutine drifts(ys, x, d, work, y)
+         type(storey_yield_set), intent(in) :: ys
+         real(dp), intent(in) :: x(:)
+         real(dp), intent(out) :: d(:), work(:)
+         real(dp), intent(in), optional :: y(:)
+      end subroutine drifts
    end interface
 
 contains
@@ -208,25 +338,30 @@ contains
       real(dp), intent(in), optional :: collapse_drift
       integer :: j, n, i, e
 
-      if (.not. allocated(b%yield_shear)) return
-      n = b%drift%n
-      ys%n = n
-      ys%nd = b%n
-      ys%rows = b%drift
-      allocate (ys%k(n))
-      do j = 1, n
-         do e = b%drift%start(j), b%drift%start(j + 1) - 1
-            ys%rows%coef(e) = b%drift%scale(j)*b%drift%coef(e)
+      if (allocated(b%hinge_moment)) then
+         call hinge_set_init(ys, b, collapse_drift)
+         n = ys%n
+      else
+         if (.not. allocated(b%yield_shear)) return
+         n = b%drift%n
+         ys%n = n
+         ys%nd = b%n
+         ys%rows = b%drift
+         allocate (ys%k(n))
+         do j = 1, n
+            do e = b%drift%start(j), b%drift%start(j + 1) - 1
+               ys%rows%coef(e) = b%drift%scale(j)*b%drift%coef(e)
+            end do
+            ys%rows%scale(j) = 1.0_dp
+            ys%k(j) = b%shear%scale(j)/b%drift%scale(j)
          end do
-         ys%rows%scale(j) = 1.0_dp
-         ys%k(j) = b%shear%scale(j)/b%drift%scale(j)
-      end do
-      ys%stick = b%stick .and. b%n == n .and. b%kd == 1
-      if (ys%stick) ys%stick = all(b%drift%scale == 1.0_dp)
-      ys%limit = spread(huge(1.0_dp), 1, n)
-      if (present(collapse_drift) .and. allocated(b%yield_height)) ys%limit = collapse_drift*b%yield_height
-      ys%fy = b%yield_shear
-      ys%r = b%hardening
+         ys%stick = b%stick .and. b%n == n .and. b%kd == 1
+         if (ys%stick) ys%stick = all(b%drift%scale == 1.0_dp)
+         ys%limit = spread(huge(1.0_dp), 1, n)
+         if (present(collapse_drift) .and. allocated(b%yield_height)) ys%limit = collapse_drift*b%yield_height
+         ys%fy = b%yield_shear
+         ys%r = b%hardening
+      end if
       allocate (ys%d(n), ys%f(n), ys%p(n), ys%dmax(n), ys%fmax(n), ys%tmax(n), ys%dtr(n), ys%dpl(n), &
                 ys%dnew(n), ys%dold(n), source=0.0_dp)
       allocate (ys%xdp(b%n), ys%work(b%n), ys%tmp(b%n), source=0.0_dp)
@@ -269,11 +404,14 @@ contains
       collapsed = .false.
       frozen = .false.
       do ib = 1, size(models)
-         if (.not. allocated(models(ib)%yield_shear)) cycle
+         if (.not. (allocated(models(ib)%yield_shear) .or. allocated(models(ib)%hinge_moment))) cycle
          inelastic = .true.
          if (cfg%average_acceleration()) cycle
-         call fatal_error(error, 'building '//models(ib)%name//': bilinear storeys (storey_law = ''bilinear'') '// &
-                          'need integrator = ''newmark'' (or hht_alpha = 0): HHT-alpha with alpha < 0 is not '// &
+         call fatal_error(error, 'building '//models(ib)%name//': '// &
+                          trim(merge('plastic hinges (hinge_law = ''elastic_plastic'')', &
+                                     'bilinear storeys (storey_law = ''bilinear'')    ', &
+                                     allocated(models(ib)%hinge_moment)))// &
+                          ' need integrator = ''newmark'' (or hht_alpha = 0): HHT-alpha with alpha < 0 is not '// &
                           'available with them')
          return
       end do
@@ -308,33 +446,6 @@ contains
       if (ys%collapse_storey > 0) collapsed = .true.
    end subroutine yield_sample
 
-   !> The energy terms of the step (after the integrators' commits and the sample of the
-   !> energies): an output sample `stored` (and `sample`, its copy) or the coupled step's
-   !> `sample` gets the storeys' strain and hysteretic energies (`yield_energy_terms`, at the
-   !> positions `i_strain`, `i_plastic`); an uncoupled step's integrator sum `e_out` loses W_L.
-   pure subroutine yield_energy_step(ys, output, coupled, i_strain, i_plastic, stored, sample, e_out)
-      !> The buildings' storeys after the step's commit.
-      type(storey_yield_set), intent(in) :: ys(:)
-      !> An output step; a coupled analysis.
-      logical, intent(in) :: output, coupled
-      !> Positions of the strain energy and of the plastic work in a sample.
-      integer, intent(in) :: i_strain, i_plastic
-      !> The stored output sample, the step's sample (kJ; at least as long).
-      real(dp), intent(inout) :: stored(:), sample(:)
-      !> The integrators' sum kinetic + strain + damping of an uncoupled step (kJ).
-      real(dp), intent(inout) :: e_out
-
-      if (output) then
-         call yield_energy_terms(ys, stored(i_strain), stored(i_plastic))
-         ! (The sample may hold more terms than the stored history: HHT's numerical dissipation.)
-         sample(1:size(stored)) = stored
-      else if (coupled) then
-         call yield_energy_terms(ys, sample(i_strain), sample(i_plastic))
-      else
-         e_out = e_out - yield_load_work(ys)
-      end if
-   end subroutine yield_energy_step
-
    !> The run's storey results of every building (`yield_finish`).
    pure subroutine yield_results(ys, rec, res)
       !> The buildings' storeys at the end of the run.
@@ -347,51 +458,13 @@ contains
 
       allocate (res(size(ys)))
       do ib = 1, size(ys)
-         call yield_finish(ys(ib), rec(ib)%peak(:, q_shear), rec(ib)%peak_time(:, q_shear), res(ib))
+         if (ys(ib)%hinges) then
+            call hinge_finish(ys(ib), rec(ib), res(ib))
+         else
+            call yield_finish(ys(ib), rec(ib)%peak(:, q_shear), rec(ib)%peak_time(:, q_shear), res(ib))
+         end if
       end do
    end subroutine yield_results
-
-   !> The drift of every storey of `ys` for the DOF vector x (+ y, when given) into `d`
-   !> (`work`: the sum x + y on the general path). `d` and `work` may be components of `ys`:
-   !> only its rows and sizes are read through `ys`.
-   pure subroutine drifts(ys, x, d, work, y)
-      type(storey_yield_set), intent(in) :: ys
-      real(dp), intent(in) :: x(:)
-      real(dp), intent(out) :: d(:), work(:)
-      real(dp), intent(in), optional :: y(:)
-      real(dp) :: below, here
-      integer :: j
-
-      if (ys%stick) then
-         ! Storey j joins floors j-1 and j (DOFs; the ground below storey 1).
-         below = 0.0_dp
-         if (present(y)) then
-            do j = 1, ys%n
-               here = x(j) + y(j)
-               d(j) = here - below
-               below = here
-            end do
-         else
-            do j = 1, ys%n
-               d(j) = x(j) - below
-               below = x(j)
-            end do
-         end if
-         return
-      end if
-      if (present(y)) then
-         do j = 1, ys%nd
-            work(j) = x(j) + y(j)
-         end do
-         do j = 1, ys%n
-            d(j) = recover(ys%rows, j, work)
-         end do
-      else
-         do j = 1, ys%n
-            d(j) = recover(ys%rows, j, x)
-         end do
-      end if
-   end subroutine drifts
 
    !> Solve the step's storey conditions for the predicted increment du of integrator `st`
    !> (which may hold this step's plastic loads of an earlier call: they are replaced).
@@ -419,14 +492,20 @@ contains
       changed = .false.
       if (ys%n == 0) return
       du => st%du_view()
-      ! The trial (elastic) state: du without this step's plastic loads.
-      if (ys%loaded) du = du - ys%xdp
+      ! The trial (elastic) state: du without this step's plastic loads (hinges: the
+      ! integrator keeps their loads, `fload`, beside du).
+      if (ys%loaded .and. ys%hinges) then
+         call st%add_load_rows(-1.0_dp, ys%alldof, ys%fload, ys%xdp)
+      else if (ys%loaded) then
+         du = du - ys%xdp
+      end if
       call drifts(ys, u, ys%dtr, ys%work, du)
       ys%na = 0
       ! Every storey whose trial force is outside its elastic range (the loop of an elastic
       ! step: one test a storey).
       do j = 1, ys%n
          f = ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j))
+         if (ys%hinges) f = f + ys%kc(j)*(ys%dtr(ys%mate(j)) - ys%d(ys%mate(j))) - ys%hk(j)*ys%p(j)
          c = ys%r(j)*ys%k(j)*ys%dtr(j)
          h = (1.0_dp - ys%r(j))*ys%fy(j)
          if (abs(f - c) > h) call enter(j)
@@ -455,7 +534,11 @@ contains
       end if
       do round = 1, ys%n + 1
          if (solved) exit
-         call solve_rows(ys, st, u, du, t, step, label, error)
+         if (ys%hinges) then
+            call hinge_solve_rows(ys, st, u, du, t, step, label, error)
+         else
+            call solve_rows(ys, st, u, du, t, step, label, error)
+         end if
          if (allocated(error)) return
          ! Every storey outside its range enters (on its side); the others are met.
          added = .false.
@@ -464,11 +547,16 @@ contains
             call enter(j, ys%dnew(j))
             if (ys%side(j) /= 0) added = .true.
          end do
+         if (ys%hinges) call hinge_turns(ys, added)
          if (.not. added) exit
       end do
       call check_step(ys, t, step, label, error)
       if (allocated(error)) return
-      du = du + ys%xdp
+      if (ys%hinges) then
+         call st%add_load_rows(1.0_dp, ys%alldof, ys%fload, ys%xdp)
+      else
+         du = du + ys%xdp
+      end if
       ys%loaded = .true.
       ! Changed beyond round-off (a coupled step solves its joints again).
       do j = 1, ys%n
@@ -493,6 +581,10 @@ contains
             d = ys%dtr(j)
          end if
          f = ys%f(j) + ys%k(j)*(d - ys%d(j))
+         if (ys%hinges) then
+            f = f + ys%kc(j)*(ys%dtr(ys%mate(j)) - ys%d(ys%mate(j))) - ys%hk(j)*ys%p(j)
+            if (present(dj)) f = hinge_force(ys, j, ys%dnew)
+         end if
          c = ys%r(j)*ys%k(j)*d
          h = (1.0_dp - ys%r(j))*ys%fy(j)
          ! (After a solve: outside by more than round-off.)
@@ -606,17 +698,11 @@ contains
       integer, intent(in) :: step
       character(len=*), intent(in) :: label
       type(error_type), allocatable, intent(out) :: error
-      type(lemke_report) :: rep
       real(dp) :: h, ftr
       integer :: a, b, i, j, m
 
       m = ys%na
-      if (m > ys%ws%m_max) then
-         call lemke_init(ys%ws, max(m, 2*ys%ws%m_max))
-         deallocate (ys%mat, ys%q, ys%z, ys%w, ys%guess)
-         allocate (ys%mat(ys%ws%m_max, ys%ws%m_max), ys%q(ys%ws%m_max), ys%z(ys%ws%m_max), &
-                   ys%w(ys%ws%m_max), ys%guess(ys%ws%m_max))
-      end if
+      call grow_lcp(ys, m)
       ys%xdp = 0.0_dp
       ys%dpl = 0.0_dp
       ! mat = S (K - D A) S with A_ij = k_j b_i^T Khat^{-1} b_j, D = diag((1-r) k), S the sides.
@@ -632,17 +718,8 @@ contains
          ftr = ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j))
          ys%q(b) = h - real(ys%side(j), dp)*(ftr - ys%r(j)*ys%k(j)*ys%dtr(j))
       end do
-      ys%guess(1:m) = .true.
-      call lemke_solve(ys%ws, m, ys%mat, ys%q, ys%z, ys%w, rep, active_guess=ys%guess(1:m))
-      ys%solves = ys%solves + 1
-      ys%lcp_rows = ys%lcp_rows + m
-      ys%max_rows = max(ys%max_rows, m)
-      if (.not. rep%ok) then
-         call fatal_error(error, 'building '//label//': the yielding storeys'' LCP ('//str(m)//' storeys) at t = '// &
-                          str(t)//' s (step '//str(step)//') was not solved: '//lemke_status_name(rep%status)// &
-                          ', natural residual '//str(rep%residual)//' (reduce dt)')
-         return
-      end if
+      call solve_lcp(ys, m, t, step, label, error)
+      if (allocated(error)) return
       do b = 1, m
          j = ys%act(b)
          ys%dpl(j) = real(ys%side(j), dp)*ys%z(b)
@@ -659,6 +736,41 @@ contains
       end do
    end subroutine solve_rows
 
+   !> Room for an LCP of m rows in the set's workspace.
+   subroutine grow_lcp(ys, m)
+      type(storey_yield_set), intent(inout) :: ys
+      integer, intent(in) :: m
+
+      if (m <= ys%ws%m_max) return
+      call lemke_init(ys%ws, max(m, 2*ys%ws%m_max))
+      deallocate (ys%mat, ys%q, ys%z, ys%w, ys%guess)
+      allocate (ys%mat(ys%ws%m_max, ys%ws%m_max), ys%q(ys%ws%m_max), ys%z(ys%ws%m_max), &
+                ys%w(ys%ws%m_max), ys%guess(ys%ws%m_max))
+   end subroutine grow_lcp
+
+   !> Lemke's method on the assembled LCP (`mat`, `q`) of m rows (storeys or hinges): `z`,
+   !> the tallies, an error naming the building, time and step when it is not solved.
+   subroutine solve_lcp(ys, m, t, step, label, error)
+      type(storey_yield_set), intent(inout) :: ys
+      integer, intent(in) :: m
+      real(dp), intent(in) :: t
+      integer, intent(in) :: step
+      character(len=*), intent(in) :: label
+      type(error_type), allocatable, intent(out) :: error
+      type(lemke_report) :: rep
+
+      ys%guess(1:m) = .true.
+      call lemke_solve(ys%ws, m, ys%mat, ys%q, ys%z, ys%w, rep, active_guess=ys%guess(1:m))
+      ys%solves = ys%solves + 1
+      ys%lcp_rows = ys%lcp_rows + m
+      ys%max_rows = max(ys%max_rows, m)
+      if (rep%ok) return
+      call fatal_error(error, 'building '//label//': '//trim(merge('the plastic hinges''  ', 'the yielding storeys''', &
+                       ys%hinges))//' LCP ('//str(m)//' '//trim(merge('hinges ', 'storeys', ys%hinges))//') at t = '// &
+                       str(t)//' s (step '//str(step)//') was not solved: '//lemke_status_name(rep%status)// &
+                       ', natural residual '//str(rep%residual)//' (reduce dt)')
+   end subroutine solve_lcp
+
    !> The natural residual of the step over every storey (relative to its yield shear): both
    !> yield functions >= 0, the plastic increment on the side whose function is 0.
    subroutine check_step(ys, t, step, label, error)
@@ -674,6 +786,7 @@ contains
       at = 0
       do j = 1, ys%n
          f = ys%f(j) + ys%k(j)*(ys%dnew(j) - ys%d(j)) - ys%k(j)*ys%dpl(j)
+         if (ys%hinges) f = hinge_force(ys, j, ys%dnew)
          c = ys%r(j)*ys%k(j)*ys%dnew(j)
          h = (1.0_dp - ys%r(j))*ys%fy(j)
          up = c + h - f
@@ -681,7 +794,15 @@ contains
          res = max(0.0_dp, -up, -lo)
          if (ys%dpl(j) > 0.0_dp) res = max(res, abs(min(ys%k(j)*ys%dpl(j), up)))
          if (ys%dpl(j) < 0.0_dp) res = max(res, abs(min(-ys%k(j)*ys%dpl(j), lo)))
-         res = res/ys%fy(j)
+         if (ys%hinges) then
+            ! (Relative to the largest of My, the trial moment and S |theta|: the round-off of
+            ! m = S (theta - p).)
+            res = res/max(ys%fy(j), abs(ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j)) + &
+                                       ys%kc(j)*(ys%dtr(ys%mate(j)) - ys%d(ys%mate(j)))), &
+                          ys%k(j)*abs(ys%dnew(j)) + ys%kc(j)*abs(ys%dnew(ys%mate(j))))
+         else
+            res = res/ys%fy(j)
+         end if
          if (res > worst) then
             worst = res
             at = j
@@ -689,7 +810,8 @@ contains
       end do
       ys%residual = max(ys%residual, worst)
       if (worst <= yield_residual_limit) return
-      call fatal_error(error, 'building '//label//', storey '//str(at)//': the yielding storeys'' step at t = '// &
+      call fatal_error(error, 'building '//label//', '//trim(merge('hinge ', 'storey', ys%hinges))//' '//str(at)//': '// &
+                       trim(merge('the plastic hinges''  ', 'the yielding storeys''', ys%hinges))//' step at t = '// &
                        str(t)//' s (step '//str(step)//') has the natural residual '//str(worst)// &
                        ' (limit '//str(yield_residual_limit)//'; reduce dt)')
    end subroutine check_step
@@ -710,6 +832,10 @@ contains
       integer :: j
 
       if (ys%n == 0) return
+      if (ys%hinges) then
+         call hinge_commit(ys, u, t, shear)
+         return
+      end if
       call drifts(ys, u, ys%dnew, ys%work)
       do j = 1, ys%n
          d = ys%dnew(j)
@@ -735,39 +861,6 @@ contains
       ys%xdp = 0.0_dp
       ys%loaded = .false.
    end subroutine yield_commit
-
-   !> Total work W_L of the plastic loads of every building (kJ): what the integrators'
-   !> balance counts beyond the elastic structure.
-   pure real(dp) function yield_load_work(ys) result(w)
-      !> The buildings' storeys.
-      type(storey_yield_set), intent(in) :: ys(:)
-      integer :: ib
-
-      w = 0.0_dp
-      do ib = 1, size(ys)
-         w = w + ys(ib)%load_work
-      end do
-   end function yield_load_work
-
-   !> Turn an energy sample of the elastic integrators into that of the bilinear storeys:
-   !> strain energy sum k (d - p)^2 / 2 in place of sum k d^2 / 2, hysteretic energy added to
-   !> the plastic work.
-   pure subroutine yield_energy_terms(ys, strain, plastic)
-      !> The buildings' storeys.
-      type(storey_yield_set), intent(in) :: ys(:)
-      !> The sample's strain energy and plastic work (kJ).
-      real(dp), intent(inout) :: strain, plastic
-      integer :: ib, j
-
-      do ib = 1, size(ys)
-         do j = 1, ys(ib)%n
-            associate (k => ys(ib)%k(j), d => ys(ib)%d(j), p => ys(ib)%p(j))
-               strain = strain + 0.5_dp*k*((d - p)**2 - d**2)
-            end associate
-         end do
-         plastic = plastic + ys(ib)%hysteretic
-      end do
-   end subroutine yield_energy_terms
 
    !> The run's results of the storeys; the response's storey-shear peaks and their times
    !> become the spring forces'.

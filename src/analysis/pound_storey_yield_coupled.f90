@@ -57,7 +57,11 @@ contains
       do ib = 1, size(ys)
          if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
          du => st(ib)%du_view()
-         if (ys(ib)%loaded) du = du - ys(ib)%xdp
+         if (ys(ib)%loaded .and. ys(ib)%hinges) then
+            call st(ib)%add_load_rows(-1.0_dp, ys(ib)%alldof, ys(ib)%fload, ys(ib)%xdp)
+         else if (ys(ib)%loaded) then
+            du = du - ys(ib)%xdp
+         end if
          ys(ib)%loaded = .false.
          ys(ib)%dold = ys(ib)%dpl
          call drifts(ys(ib), st(ib)%u_view(), ys(ib)%dtr, ys(ib)%work, du)
@@ -70,7 +74,7 @@ contains
             else if (ys(ib)%dold(j) < 0.0_dp) then
                call join(ys(ib), j, -1)
             else
-               call enter_out(ys(ib), j, ys(ib)%dtr(j), 0.0_dp)
+               call enter_out(ys(ib), j, ys(ib)%dtr, 0.0_dp, .false.)
             end if
          end do
       end do
@@ -159,7 +163,7 @@ contains
             if (ys(ib)%frozen) cycle
             do j = 1, ys(ib)%n
                if (ys(ib)%side(j) == 0) then
-                  call enter_out(ys(ib), j, ys(ib)%dnew(j), enter_tolerance*ys(ib)%fy(j))
+                  call enter_out(ys(ib), j, ys(ib)%dnew, enter_tolerance*ys(ib)%fy(j), .true.)
                   if (ys(ib)%side(j) /= 0) added = .true.
                else if (ys(ib)%dpl(j) == 0.0_dp) then
                   if (turns(ys(ib), j)) added = .true.
@@ -199,8 +203,12 @@ contains
          if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
          call check_step(ys(ib), t, step, models(ib)%name, error)
          if (allocated(error)) return
-         du => st(ib)%du_view()
-         du = du + ys(ib)%xdp
+         if (ys(ib)%hinges) then
+            call st(ib)%add_load_rows(1.0_dp, ys(ib)%alldof, ys(ib)%fload, ys(ib)%xdp)
+         else
+            du => st(ib)%du_view()
+            du = du + ys(ib)%xdp
+         end if
          ys(ib)%loaded = ys(ib)%na > 0
          ys(ib)%alternations = max(ys(ib)%alternations, round - 1)
          if (ys(ib)%na > 0) then
@@ -227,7 +235,12 @@ contains
          end do
          do s = nj + 1, n
             associate (y => ys(ys(1)%cb(s)))
-               w = w - ys(1)%cg(k, s)*y%k(ys(1)%cj(s))*y%dpl(ys(1)%cj(s))
+               if (y%hinges) then
+                  ! (A hinge's column is Khat^{-1} a_j: its load per unit dp.)
+                  w = w - ys(1)%cg(k, s)*y%dpl(ys(1)%cj(s))
+               else
+                  w = w - ys(1)%cg(k, s)*y%k(ys(1)%cj(s))*y%dpl(ys(1)%cj(s))
+               end if
             end associate
          end do
       end function opening
@@ -243,15 +256,22 @@ contains
       ys%act(ys%na) = j
    end subroutine join
 
-   !> Storey j joins the LCP when its force at the drift d (no plastic increment) is outside
-   !> its elastic range widened by `tol` (kN), on the side it leaves by.
-   subroutine enter_out(ys, j, d, tol)
+   !> Storey j joins the LCP when its force at the drifts dv (no plastic increment of its own;
+   !> a hinge: with the increments `dpl` when `solved`) is outside its elastic range widened by
+   !> `tol` (kN), on the side it leaves by.
+   subroutine enter_out(ys, j, dv, tol, solved)
       type(storey_yield_set), intent(inout) :: ys
       integer, intent(in) :: j
-      real(dp), intent(in) :: d, tol
-      real(dp) :: f, c, h
+      real(dp), intent(in) :: dv(:), tol
+      logical, intent(in) :: solved
+      real(dp) :: f, c, h, d
 
+      d = dv(j)
       f = ys%f(j) + ys%k(j)*(d - ys%d(j))
+      if (ys%hinges) then
+         f = f + ys%kc(j)*(dv(ys%mate(j)) - ys%d(ys%mate(j))) - ys%hk(j)*ys%p(j)
+         if (solved) f = hinge_force(ys, j, dv)
+      end if
       c = ys%r(j)*ys%k(j)*d
       h = (1.0_dp - ys%r(j))*ys%fy(j) + tol
       if (f > c + h) then
@@ -269,6 +289,7 @@ contains
       real(dp) :: f, c, h
 
       f = ys%f(j) + ys%k(j)*(ys%dnew(j) - ys%d(j))
+      if (ys%hinges) f = hinge_force(ys, j, ys%dnew)
       c = ys%r(j)*ys%k(j)*ys%dnew(j)
       h = (1.0_dp - ys%r(j))*ys%fy(j)*(1.0_dp + enter_tolerance)
       turns = .false.
@@ -328,7 +349,11 @@ contains
          do s = nj + 1, n
             ib = ys(1)%cb(s)
             j = ys(1)%cj(s)
-            call column_of(ys(ib), st(ib), j, ys(ib)%work)
+            if (ys(ib)%hinges) then
+               call hinge_column(ys(ib), st(ib), j, ys(ib)%work)
+            else
+               call column_of(ys(ib), st(ib), j, ys(ib)%work)
+            end if
             sg = ys(ib)%side(j)
             ! The joints' coupling G(k, s) = B_k^T Khat^{-1} b_j.
             shift = 0.0_dp
@@ -341,6 +366,10 @@ contains
                ys(1)%cg(k, s) = g
                shift = shift + g*cs%joint(k)%r
             end do
+            if (ys(ib)%hinges) then
+               call hinge_entries(ys(ib), j, sg, shift)
+               cycle
+            end if
             do a = 1, na
                k = cs%act(a)
                mat(a, s) = -real(sg, dp)*ys(ib)%k(j)*ys(1)%cg(k, s)
@@ -362,6 +391,42 @@ contains
             ys(1)%cref(s) = 0.0_dp
          end do
       end associate
+
+   contains
+
+      !> Column s of a hinge j (work = Khat^{-1} a_j: G(k, s) is the closing of joint k per unit
+      !> dp_j; rows of hinges divided by their k): joints' rows -sg G, the hinge's row sg G / k,
+      !> the hinges of the building sg_i sg (S_ij - a_i^T Khat^{-1} a_j) / k_i, q from the trial
+      !> moment and the joints' forces of the start of the step (`shift`).
+      subroutine hinge_entries(y, j, sg, shift)
+         type(storey_yield_set), intent(inout) :: y
+         integer, intent(in) :: j, sg
+         real(dp), intent(in) :: shift
+         real(dp) :: sij
+         integer :: a, k, s2, i
+
+         associate (mat => ys(1)%cmat, q => ys(1)%cq)
+            do a = 1, na
+               k = cs%act(a)
+               mat(a, s) = -real(sg, dp)*ys(1)%cg(k, s)
+               mat(s, a) = real(sg, dp)*ys(1)%cg(k, s)/y%k(j)
+            end do
+            do s2 = nj + 1, n
+               if (ys(1)%cb(s2) /= ib) cycle
+               i = ys(1)%cj(s2)
+               sij = 0.0_dp
+               if (i == j) sij = y%k(j) + y%hk(j)
+               if (i == y%mate(j)) sij = y%kc(j)
+               mat(s2, s) = real(y%side(i)*sg, dp)*(sij - y%k(i)*recover(y%rows, i, y%work) - &
+                                                    y%kc(i)*recover(y%rows, y%mate(i), y%work))/y%k(i)
+            end do
+            q(s) = (y%fy(j) - real(sg, dp)*(y%f(j) + y%k(j)*(y%dtr(j) - y%d(j)) + &
+                                            y%kc(j)*(y%dtr(y%mate(j)) - y%d(y%mate(j))) - y%hk(j)*y%p(j)) - &
+                  real(sg, dp)*shift)/y%k(j)
+            ys(1)%cguess(s) = .true.
+            ys(1)%cref(s) = 0.0_dp
+         end associate
+      end subroutine hinge_entries
    end subroutine assemble_coupled
 
    !> Each building's plastic response xdp = sum_s k_s dp_s Khat^{-1} b_s and the drifts `dnew`
@@ -376,8 +441,10 @@ contains
 
       do ib = 1, size(ys)
          if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
-         ys(ib)%xdp = 0.0_dp
+         if (ys(ib)%hinges) call hinge_loads(ys(ib), st(ib))
+         if (.not. ys(ib)%hinges) ys(ib)%xdp = 0.0_dp
          do j = 1, ys(ib)%n
+            if (ys(ib)%hinges) exit
             if (ys(ib)%dpl(j) == 0.0_dp) cycle
             call column_of(ys(ib), st(ib), j, ys(ib)%work)
             ys(ib)%xdp = ys(ib)%xdp + (ys(ib)%k(j)*ys(ib)%dpl(j))*ys(ib)%work

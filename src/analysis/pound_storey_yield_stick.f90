@@ -139,4 +139,46 @@ contains
       end subroutine restore
    end subroutine stick_active_set
 
+   !> The drift of every storey of `ys` for the DOF vector x (+ y, when given) into `d`
+   !> (`work`: the sum x + y on the general path). `d` and `work` may be components of `ys`:
+   !> only its rows and sizes are read through `ys`.
+   pure module subroutine drifts(ys, x, d, work, y)
+      type(storey_yield_set), intent(in) :: ys
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(out) :: d(:), work(:)
+      real(dp), intent(in), optional :: y(:)
+      real(dp) :: below, here
+      integer :: j
+
+      if (ys%stick) then
+         ! Storey j joins floors j-1 and j (DOFs; the ground below storey 1).
+         below = 0.0_dp
+         if (present(y)) then
+            do j = 1, ys%n
+               here = x(j) + y(j)
+               d(j) = here - below
+               below = here
+            end do
+         else
+            do j = 1, ys%n
+               d(j) = x(j) - below
+               below = x(j)
+            end do
+         end if
+         return
+      end if
+      if (present(y)) then
+         do j = 1, ys%nd
+            work(j) = x(j) + y(j)
+         end do
+         do j = 1, ys%n
+            d(j) = recover(ys%rows, j, work)
+         end do
+      else
+         do j = 1, ys%n
+            d(j) = recover(ys%rows, j, x)
+         end do
+      end if
+   end subroutine drifts
+
 end submodule pound_storey_yield_stick

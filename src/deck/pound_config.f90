@@ -168,6 +168,15 @@ module pound_config
       !> 'bilinear': yield shear of each storey (kN) and hardening ratio r of each storey
       !> (post-yield stiffness r k); unallocated for elastic storeys.
       real(dp), allocatable :: yield_shear(:), hardening_ratio(:)
+      !> Plastic hinges of a frame (issue 25, `hinge_law`): 'none' (default) or
+      !> 'elastic_plastic' (rigid-plastic hinges at both ends of every element, pound_storey_yield).
+      character(len=16) :: hinge_law = 'none'
+      !> 'elastic_plastic': yield moment (kN m) of the columns of each storey and of the beams of
+      !> each floor (n_storeys each); unallocated without hinges.
+      real(dp), allocatable :: column_yield_moment(:), beam_yield_moment(:)
+      !> 'elastic_plastic': kinematic hardening ratio r of the hinges of each storey's columns and
+      !> floor's beams (n_storeys; 0: elastic-perfectly plastic), pound_frame_hinges.
+      real(dp), allocatable :: hinge_hardening_ratio(:)
    end type building_config
 
    !> A whole, validated deck.

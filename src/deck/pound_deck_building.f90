@@ -7,6 +7,7 @@ module pound_deck_building
    use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, require_real, widen, &
                                 site, site_of, take_ints, take_reals, unset_int, unset_real, warn
    use pound_deck_storey_law, only: take_storey_law
+   use pound_deck_hinge_law, only: take_hinge_law
    use pound_deck_lexer, only: group_extent, group_ref, group_text, is_name_char, lower
    use pound_deck_variables, only: max_name_length, max_storeys, word_len, max_bays, max_column_elements, &
                                    frame_variables
@@ -40,7 +41,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> The deck's plausibility warnings, this group's appended.
       character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
-      character(len=word_len) :: name, column_ends, model, base, geometric, storey_law
+      character(len=word_len) :: name, column_ends, model, base, geometric, storey_law, hinge_law
       integer :: n_storeys, damping_modes(2), n_bays, column_elements
       logical :: rigid_beams, rigid_diaphragm, rigid_columns
       real(dp), allocatable :: bay_width(:), column_e(:), column_area(:), column_inertia(:), &
@@ -48,7 +49,8 @@ contains
       real(dp) :: ref_floor_load, damping_ratio, cd, importance, behaviour_factor, response_reduction
       logical :: p_delta
       real(dp), allocatable :: height(:), mass(:), load_coeff(:), stiffness(:), e_modulus(:), &
-                               inertia(:), gravity_load(:), yield_shear(:), hardening_ratio(:)
+                               inertia(:), gravity_load(:), yield_shear(:), hardening_ratio(:), &
+                               column_yield_moment(:), beam_yield_moment(:), hinge_hardening(:)
       integer, allocatable :: n_columns(:)
       character(len=:), allocatable :: buf
       character(len=512) :: msg
@@ -59,7 +61,7 @@ contains
          gravity_load, model, n_bays, bay_width, column_e, column_area, column_inertia, beam_e, &
          beam_area, beam_inertia, base, column_elements, rigid_beams, rigid_diaphragm, rigid_columns, &
          geometric, cd, importance, behaviour_factor, response_reduction, storey_law, yield_shear, &
-         hardening_ratio
+         hardening_ratio, hinge_law, column_yield_moment, beam_yield_moment, hinge_hardening
 
       ! The per-storey arrays as long as the deck's highest element (the lexer checked it
       ! against max_storeys), widened to n_storeys once it is known: a few storeys do not
@@ -95,7 +97,9 @@ contains
       rigid_diaphragm = .false.
       rigid_columns = .false.
       storey_law = ' '
-      allocate (yield_shear(cap), hardening_ratio(cap), source=unset_real)
+      hinge_law = ' '
+      allocate (yield_shear(cap), hardening_ratio(cap), column_yield_moment(cap), beam_yield_moment(cap), &
+                hinge_hardening(cap), source=unset_real)
       allocate (bay_width(max_bays), column_e(cap), column_area(cap), column_inertia(cap), &
                 beam_e(cap), beam_area(cap), beam_inertia(cap))
       bay_width = unset_real
@@ -217,6 +221,8 @@ contains
       if (allocated(error)) return
       cfg%p_delta = p_delta
       call take_storey_law(at, storey_law, yield_shear, hardening_ratio, cfg, error)
+      if (allocated(error)) return
+      call take_hinge_law(at, hinge_law, column_yield_moment, beam_yield_moment, hinge_hardening, cfg, error)
       if (allocated(error)) return
 
       if (given_count(gravity_load) > 0) then

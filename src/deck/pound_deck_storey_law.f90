@@ -1,7 +1,7 @@
 !> The storey law of a `&building` (issue 25): `storey_law = 'elastic'` (default) or
 !> `'bilinear'` with `yield_shear(:)` (kN, > 0, one per storey, required) and
 !> `hardening_ratio(:)` (-1 < r < 1, one value for all storeys or one per storey, default 0).
-!> Only shear buildings take a bilinear law (frame plastic hinges are not available).
+!> Only shear buildings take a bilinear law (frames: `hinge_law`, pound_deck_hinge_law).
 module pound_deck_storey_law
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_config, only: building_config
@@ -54,7 +54,7 @@ contains
       end select
       if (cfg%model /= 'shear') then
          call fail(at, 'storey_law', "storey_law = 'bilinear' applies only to a shear building "// &
-                   "(model = 'shear'); plastic hinges of frames are not available", error)
+                   "(model = 'shear'); a frame yields in plastic hinges: hinge_law = 'elastic_plastic'", error)
          return
       end if
       if (given_count(yield_shear) == 0) then

@@ -59,7 +59,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(110) = [ &
+   type(var_spec), parameter :: variables(114) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
@@ -120,7 +120,10 @@ module pound_deck_variables
       var_spec('contact', 'variant', 'c', 0), &
       var_spec('analysis', 'integrator', 'c', 0), var_spec('analysis', 'hht_alpha', 'r', 0), &
       var_spec('building', 'storey_law', 'c', 0), var_spec('building', 'yield_shear', 'r', max_storeys), &
-      var_spec('building', 'hardening_ratio', 'r', max_storeys), var_spec('analysis', 'collapse_drift', 'r', 0)]
+      var_spec('building', 'hardening_ratio', 'r', max_storeys), var_spec('analysis', 'collapse_drift', 'r', 0), &
+      var_spec('building', 'hinge_law', 'c', 0), var_spec('building', 'column_yield_moment', 'r', max_storeys), &
+      var_spec('building', 'beam_yield_moment', 'r', max_storeys), &
+      var_spec('building', 'hinge_hardening', 'r', max_storeys)]
 
 contains
 

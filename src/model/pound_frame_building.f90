@@ -41,10 +41,11 @@ module pound_frame_building
                               modes_listed
    use pound_frame, only: frame_spec, frame_model, build_frame, frame_stiffness, frame_mass, &
                           frame_geometric, element_column
-   use pound_frame_element, only: beam_local_stiffness, beam_transformation, geometric_chord, &
+   use pound_frame_element, only: beam_local_stiffness, geometric_chord, &
                                   geometric_consistent
    use pound_frame_gravity, only: frame_gravity_result, frame_gravity, check_frame_stability
    use pound_band_eigen, only: band_lowest_modes
+   use pound_frame_hinges, only: element_rows, frame_hinges
    use pound_shear_building, only: rayleigh_coefficients
    implicit none
    private
@@ -119,6 +120,8 @@ contains
       integer, intent(in), optional :: number
       type(frame_spec) :: spec
       real(dp), allocatable :: kb(:, :), gb(:, :), mb(:, :), mb_full(:, :), shapes(:, :)
+      integer, allocatable :: hs(:), he(:)
+      real(dp), allocatable :: hr(:)
       integer :: kind, j, k, nl, ns, n_modes, kd, q
 
       spec = frame_spec_of(deck_entry)
@@ -210,6 +213,15 @@ contains
          m%member_names = [character(len=16) :: 'shear', 'moment_bottom', 'moment_top', 'axial']
          call group_rows(m%member, size(m%member_names))
          fd%column_element = column_elements(f)
+         if (deck_entry%hinge_law == 'elastic_plastic') then
+            call shear_segments(f, hs, he)
+            ! (No hardening ratios given: elastic-perfectly plastic.)
+            hr = spread(0.0_dp, 1, ns)
+            if (allocated(deck_entry%hinge_hardening_ratio)) hr = deck_entry%hinge_hardening_ratio
+            call frame_hinges(f, deck_entry%column_yield_moment, deck_entry%beam_yield_moment, hr, hs, he, &
+                              fd%column_element, m)
+            m%yield_height = deck_entry%height
+         end if
 
          m%damping_ratio = deck_entry%damping_ratio
          m%damping_modes = deck_entry%damping_modes
@@ -243,6 +255,19 @@ contains
       !> The rows (replaced).
       type(recovery_rows), intent(inout) :: shear
       integer, allocatable :: start(:), elems(:)
+      integer :: j
+
+      call shear_segments(f, start, elems)
+      call end_force_rows(f, n, start, elems, [(2, j=1, size(elems))], shear)
+   end subroutine shear_rows
+
+   !> The segments of the storey-shear rows: storey j's lowest column segments
+   !> elems(start(j) : start(j+1)-1).
+   pure subroutine shear_segments(f, start, elems)
+      !> The frame.
+      type(frame_model), intent(in) :: f
+      !> First segment of each storey (n_storeys + 1) and the segments' elements.
+      integer, allocatable, intent(out) :: start(:), elems(:)
       integer :: j, e
 
       allocate (start(f%n_storeys + 1), elems(0))
@@ -255,8 +280,7 @@ contains
          end do
          start(j + 1) = size(elems) + 1
       end do
-      call end_force_rows(f, n, start, elems, [(2, j=1, size(elems))], shear)
-   end subroutine shear_rows
+   end subroutine shear_segments
 
    !> The column elements (segments between nodes) in element order: storey by storey from
    !> the base, a storey's segments level by level, left to right.
@@ -292,8 +316,7 @@ contains
 
    !> Rows of element end forces: row j = sum over its terms t = start(j) .. start(j+1)-1 of
    !> component comp(t) (1..6, pound_frame_element's [N1 V1 M1 N2 V2 M2]) of element elem(t)'s
-   !> first-order end forces k_local T d, mapped to the reduced DOFs (duplicates merged, the
-   !> terms' contributions summed in the order given), scale 1.
+   !> first-order end forces k_local T d, mapped to the reduced DOFs (`element_rows`).
    pure subroutine end_force_rows(f, n, start, elem, comp, rows)
       !> The frame.
       type(frame_model), intent(in) :: f
@@ -305,65 +328,20 @@ contains
       integer, intent(in) :: elem(:), comp(:)
       !> The rows.
       type(recovery_rows), intent(inout) :: rows
-      real(dp), allocatable :: work(:), coef(:)
-      integer, allocatable :: touched(:), dof(:), rstart(:)
-      logical, allocatable :: seen(:)
-      real(dp) :: row(6), kl(6, 6), t(6, 6)
-      integer :: j, e, k, c, tt, nt, n1, n2, node, q, ne, it, nr, nnz
+      real(dp), allocatable :: local(:, :)
+      real(dp) :: kl(6, 6)
+      integer :: e, n1, n2, it
 
-      nr = size(start) - 1
-      allocate (work(n), seen(n), touched(n), rstart(nr + 1))
-      ! At most 12 entries per term (two nodes, three directions, two map terms).
-      allocate (dof(12*size(elem)), coef(12*size(elem)))
-      work = 0.0_dp
-      seen = .false.
-      rstart(1) = 1
-      nnz = 0
-      do j = 1, nr
-         nt = 0
-         do it = start(j), start(j + 1) - 1
-            e = elem(it)
-            n1 = f%element_nodes(1, e)
-            n2 = f%element_nodes(2, e)
-            t = beam_transformation(f%node_x(n1), f%node_z(n1), f%node_x(n2), f%node_z(n2))
-            kl = beam_local_stiffness(f%element_e(e), f%element_a(e), f%element_i(e), &
-                                      hypot(f%node_x(n2) - f%node_x(n1), f%node_z(n2) - f%node_z(n1)))
-            row = matmul(kl(comp(it), :), t)
-            do k = 1, 2
-               node = f%element_nodes(k, e)
-               do c = 1, 3
-                  do tt = 1, 2
-                     q = f%map_dof(tt, c, node)
-                     if (q == 0) cycle
-                     if (.not. seen(q)) then
-                        seen(q) = .true.
-                        nt = nt + 1
-                        touched(nt) = q
-                     end if
-                     work(q) = work(q) + f%map_coef(tt, c, node)*row(3*(k - 1) + c)
-                  end do
-               end do
-            end do
-         end do
-         ne = 0
-         do k = 1, nt
-            q = touched(k)
-            if (work(q) /= 0.0_dp) then
-               nnz = nnz + 1
-               dof(nnz) = q
-               coef(nnz) = work(q)
-               ne = ne + 1
-            end if
-            work(q) = 0.0_dp
-            seen(q) = .false.
-         end do
-         rstart(j + 1) = rstart(j) + ne
+      allocate (local(6, size(elem)))
+      do it = 1, size(elem)
+         e = elem(it)
+         n1 = f%element_nodes(1, e)
+         n2 = f%element_nodes(2, e)
+         kl = beam_local_stiffness(f%element_e(e), f%element_a(e), f%element_i(e), &
+                                   hypot(f%node_x(n2) - f%node_x(n1), f%node_z(n2) - f%node_z(n1)))
+         local(:, it) = kl(comp(it), :)
       end do
-      rows%n = nr
-      rows%start = rstart
-      rows%dof = dof(1:nnz)
-      rows%coef = coef(1:nnz)
-      rows%scale = [(1.0_dp, j=1, nr)]
+      call element_rows(f, n, start, elem, local, rows)
    end subroutine end_force_rows
 
 end module pound_frame_building

@@ -135,6 +135,20 @@ module pound_structure
       real(dp), allocatable :: yield_shear(:), hardening(:)
       !> Their storey heights (m), for the collapse check (drift / height).
       real(dp), allocatable :: yield_height(:)
+      !> Plastic hinges of a frame (`&building hinge_law = 'elastic_plastic'`, issue 25): one
+      !> row per element end (`hinge%n`), its rotation relative to the element's chord (rad); the
+      !> element's flexural stiffness S = [k kc; kc k] joins the two ends (`hinge_mate`: the row of
+      !> the other end), end moments m = S (theta - p); yield moment (kN m) of each end; the
+      !> plastic parts of the storey-shear and member rows as rows over the hinges (a force is
+      !> row . u - plastic row . p); unallocated `hinge_moment`: no hinges (pound_frame_hinges).
+      type(recovery_rows) :: hinge, shear_plastic, member_plastic
+      real(dp), allocatable :: hinge_moment(:), hinge_k(:), hinge_kc(:)
+      !> Each hinge's kinematic hardening modulus H (kN m/rad): |m - H p| <= My (0: none).
+      real(dp), allocatable :: hinge_hardening(:)
+      integer, allocatable :: hinge_mate(:)
+      !> Each hinge's element kind (1 column, 2 beam), storey (column) or floor (beam), column
+      !> line of the element's first node, end (1: bottom or left, 2: top or right), element.
+      integer, allocatable :: hinge_kind(:), hinge_level(:), hinge_line(:), hinge_end(:), hinge_element(:)
    end type structure_model
 
 contains

@@ -419,6 +419,7 @@ contains
          if (allocated(s%frame)) then
             call write_frame(g, s)
             if (.not. allocated(error)) call write_dof_layout(g, b, s)
+            if (.not. allocated(error)) call write_yield_model_h5(h5, g, b, error)
          else
             call h5_write(h5, g//'storey_stiffness', s%storey_stiffness, error, units='kN/m')
             if (allocated(error)) return

@@ -8,6 +8,10 @@
 !>     /suite/yielding/<b>/mean_ductility, max_ductility              (n_storeys, 2: uncoupled, coupled)
 !>     /suite/yielding/<b>/collapse_storey                            (2: uncoupled, coupled; n_motions), 0: none
 !>     /suite/yielding/<b>/collapses                                  (2): motions in which it collapsed
+!>
+!> A frame with plastic hinges (`hinge_law = 'elastic_plastic'`) gets the same group with
+!> `plastic_rotation` in place of `ductility` (rad): per storey, the largest peak |plastic
+!> rotation| of the storey's column hinges (`storey_yield_result%ductility` of a frame).
 module pound_suite_yield_output
    use pound_kinds, only: dp
    use pound_error, only: error_type
@@ -64,13 +68,15 @@ contains
       character(len=:), allocatable :: line
       character(len=*), parameter :: analysis(2) = [character(len=9) :: 'uncoupled', 'coupled']
       integer :: ib, k, a, j, collapses(2)
+      real(dp) :: f
 
       if (.not. suite%has_coupled) return
       do ib = 1, size(models)
-         if (.not. allocated(models(ib)%yield_shear)) cycle
+         if (.not. (allocated(models(ib)%yield_shear) .or. allocated(models(ib)%hinge_moment))) cycle
          call suite_ductility_statistics(suite, ib, mean, maxi, collapses)
          call lst%put('')
-         call lst%put('  Suite, bilinear storeys of '//models(ib)%name//': collapses uncoupled '//str(collapses(1))// &
+         call lst%put('  Suite, '//trim(merge('plastic hinges  ', 'bilinear storeys', allocated(models(ib)%hinge_moment)))// &
+                      ' of '//models(ib)%name//': collapses uncoupled '//str(collapses(1))// &
                   ', coupled '//str(collapses(2))//' of '//str(count(.not. suite%motion_failed))//' motions')
          do k = 1, size(suite%names)
             do a = 1, 2
@@ -79,11 +85,18 @@ contains
                         str(suite%building(ib)%collapse(k, a)))
             end do
          end do
-         call lst%put('    storey   mean mu unc   max mu unc   mean mu cpl   max mu cpl')
+         f = 1.0_dp
+         if (allocated(models(ib)%hinge_moment)) then
+            ! The storey's largest peak plastic rotation of its column hinges, in mrad.
+            f = 1.0e3_dp
+            call lst%put('    storey  (largest column-hinge plastic rotation, mrad) mean unc, max unc, mean cpl, max cpl')
+         else
+            call lst%put('    storey   mean mu unc   max mu unc   mean mu cpl   max mu cpl')
+         end if
          do j = 1, size(mean, 1)
             line = '    '//repeat(' ', max(0, 5 - len(str(j))))//str(j)// &
-                   fixed_cell(mean(j, 1), 14, 3)//fixed_cell(maxi(j, 1), 13, 3)// &
-                   fixed_cell(mean(j, 2), 14, 3)//fixed_cell(maxi(j, 2), 13, 3)
+                   fixed_cell(f*mean(j, 1), 14, 3)//fixed_cell(f*maxi(j, 1), 13, 3)// &
+                   fixed_cell(f*mean(j, 2), 14, 3)//fixed_cell(f*maxi(j, 2), 13, 3)
             call lst%put(line)
          end do
       end do
@@ -101,24 +114,30 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       real(dp), allocatable :: mean(:, :), maxi(:, :)
-      character(len=:), allocatable :: g
+      character(len=:), allocatable :: g, q, u
       integer :: ib, collapses(2)
 
       if (.not. suite%has_coupled) return
       do ib = 1, size(models)
-         if (.not. allocated(models(ib)%yield_shear)) cycle
+         if (.not. (allocated(models(ib)%yield_shear) .or. allocated(models(ib)%hinge_moment))) cycle
          g = '/suite/yielding/'//models(ib)%name//'/'
+         q = 'ductility'
+         u = '-'
+         if (allocated(models(ib)%hinge_moment)) then
+            q = 'plastic_rotation'
+            u = 'rad'
+         end if
          call suite_ductility_statistics(suite, ib, mean, maxi, collapses)
          associate (s => suite%building(ib))
-            call h5_write(h5, g//'ductility_uncoupled', transpose(s%yield(:, :, 1)), error, units='-')
-            if (.not. allocated(error)) call h5_write(h5, g//'ductility_coupled', transpose(s%yield(:, :, 2)), error, &
-                                                      units='-')
+            call h5_write(h5, g//q//'_uncoupled', transpose(s%yield(:, :, 1)), error, units=u)
+            if (.not. allocated(error)) call h5_write(h5, g//q//'_coupled', transpose(s%yield(:, :, 2)), error, &
+                                                      units=u)
             if (.not. allocated(error)) call h5_write(h5, g//'residual_drift_uncoupled', transpose(s%yield(:, :, 3)), &
                                                       error, units='m')
             if (.not. allocated(error)) call h5_write(h5, g//'residual_drift_coupled', transpose(s%yield(:, :, 4)), &
                                                       error, units='m')
-            if (.not. allocated(error)) call h5_write(h5, g//'mean_ductility', mean, error, units='-')
-            if (.not. allocated(error)) call h5_write(h5, g//'max_ductility', maxi, error, units='-')
+            if (.not. allocated(error)) call h5_write(h5, g//'mean_'//q, mean, error, units=u)
+            if (.not. allocated(error)) call h5_write(h5, g//'max_'//q, maxi, error, units=u)
             if (.not. allocated(error)) call h5_write(h5, g//'collapse_storey', transpose(s%collapse), error, units='-')
             if (.not. allocated(error)) call h5_write(h5, g//'collapses', collapses, error, units='-')
          end associate

@@ -290,10 +290,17 @@ contains
          if (.not. allocated(res%cpl%yielding) .or. .not. allocated(res%unc%yielding)) return
          if (res%cpl%yielding(ib)%n == 0) return
          associate (yc => res%cpl%yielding(ib), yu => res%unc%yielding(ib))
+            if (yc%n_hinges > 0) then
+               j = largest(yc%rotation)
+               call add(item('building', b, 'plastic_rotation', b//': largest hinge plastic rotation, coupled'// &
+                             motion, 1000.0_dp*yc%rotation(j), 'mrad', 'hinge '//str(j)//'; uncoupled '// &
+                             plain_real(1000.0_dp*yu%rotation(largest(yu%rotation)))//' mrad'))
+            else
             j = largest(yc%ductility)
             call add(item('building', b, 'ductility', b//': largest storey ductility, coupled'//motion, &
                           yc%ductility(j), '-', 'storey '//str(j)//'; uncoupled '// &
                           plain_real(yu%ductility(largest(yu%ductility)))))
+            end if
             j = largest(yc%residual_drift)
             call add(item('building', b, 'residual_drift', b//': largest residual drift, coupled'//motion, &
                           1000.0_dp*abs(yc%residual_drift(j)), 'mm', 'storey '//str(j)//'; uncoupled '// &

@@ -24,6 +24,7 @@ module pound_yield_output
    use pound_influence, only: influence_coefficient
    use pound_h5, only: h5_file, h5_write, h5_write_attr
    use pound_text_writer, only: text_writer
+   use pound_hinge_output, only: write_hinge_model_h5, write_hinge_h5, hinge_influence, write_hinge_table
    implicit none
    private
 
@@ -42,6 +43,7 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
 
+      if (allocated(b%hinge_moment)) call write_hinge_model_h5(h5, g, b, error)
       if (.not. allocated(b%yield_shear)) return
       call h5_write(h5, g//'yield_shear', b%yield_shear, error, units='kN')
       if (.not. allocated(error)) call h5_write(h5, g//'hardening_ratio', b%hardening, error, units='-')
@@ -66,9 +68,13 @@ contains
       do ib = 1, size(models)
          associate (y => res%yielding(ib), gb => g//'/'//models(ib)%name//'/')
             if (y%n == 0) cycle
-            call h5_write(h5, gb//'peak/ductility', y%ductility, error, units='-')
-            if (.not. allocated(error)) call h5_write_attr(h5, gb//'peak/ductility', 'description', &
-                                                          'max |storey drift| / (yield_shear / k) per storey', error)
+            if (y%n_hinges > 0) then
+               call write_hinge_h5(h5, gb, y, error)
+            else
+               call h5_write(h5, gb//'peak/ductility', y%ductility, error, units='-')
+               if (.not. allocated(error)) call h5_write_attr(h5, gb//'peak/ductility', 'description', &
+                                                             'max |storey drift| / (yield_shear / k) per storey', error)
+            end if
             if (.not. allocated(error)) call h5_write(h5, gb//'residual_drift', y%residual_drift, error, units='m')
             if (.not. allocated(error)) call h5_write(h5, gb//'hysteretic_energy', y%hysteretic, error, units='kJ')
             if (.not. allocated(error)) call h5_write_attr(h5, gb//'hysteretic_energy', 'lcp_residual', &
@@ -111,7 +117,12 @@ contains
       do ib = 1, size(models)
          if (unc%yielding(ib)%n == 0) cycle
          call yield_influence(unc%yielding(ib), cpl%yielding(ib), lam_mu, lam_res)
-         call h5_write(h5, '/influence/'//models(ib)%name//'/ductility', lam_mu, error, units='%')
+         if (unc%yielding(ib)%n_hinges > 0) then
+            call h5_write(h5, '/influence/'//models(ib)%name//'/plastic_rotation', &
+                          hinge_influence(unc%yielding(ib), cpl%yielding(ib)), error, units='%')
+         else
+            call h5_write(h5, '/influence/'//models(ib)%name//'/ductility', lam_mu, error, units='%')
+         end if
          if (.not. allocated(error)) call h5_write(h5, '/influence/'//models(ib)%name//'/residual_drift', &
                                                    lam_res, error, units='%')
          if (.not. allocated(error) .and. max(unc%yielding(ib)%collapse_storey, cpl%yielding(ib)%collapse_storey) > 0) &
@@ -158,6 +169,15 @@ contains
       if (present(cpl)) both = allocated(cpl%yielding)
       do ib = 1, size(models)
          if (unc%yielding(ib)%n == 0) cycle
+         if (unc%yielding(ib)%n_hinges > 0) then
+            if (both) then
+               call write_hinge_table(lst, models(ib), unc%yielding(ib), cpl%yielding(ib))
+            else
+               call write_hinge_table(lst, models(ib), unc%yielding(ib))
+            end if
+            call lcp_lines()
+            cycle
+         end if
          call lst%put('')
          call lst%put('  Bilinear storeys of '//models(ib)%name//' (storey shear Q = spring force; mu = max|drift| '// &
                   '/ (Fy/k), residual drift at the end)')
@@ -176,10 +196,18 @@ contains
                              lambda_cell(lam_mu(j), 15)//lambda_cell(lam_res(j), 16)
             call lst%put(line)
          end do
+         call lcp_lines()
+      end do
+
+   contains
+
+      !> The building's hysteretic energy, LCP figures and collapse lines.
+      subroutine lcp_lines()
          line = '  hysteretic energy: uncoupled '//str(unc%yielding(ib)%hysteretic)//' kJ'
          if (both) line = line//', coupled '//str(cpl%yielding(ib)%hysteretic)//' kJ'
          call lst%put(line)
-         line = '  storey LCPs: uncoupled '//str(unc%yielding(ib)%solves)//' solves ('// &
+         line = '  '//trim(merge('hinge LCPs: ', 'storey LCPs:', unc%yielding(ib)%n_hinges > 0))//' uncoupled '// &
+                str(unc%yielding(ib)%solves)//' solves ('// &
                 str(unc%yielding(ib)%lcp_rows)//' rows), largest residual '//str(unc%yielding(ib)%residual)
          if (both) line = line//'; coupled '//str(cpl%yielding(ib)%solves)//' solves ('// &
                           str(cpl%yielding(ib)%lcp_rows)//' rows), largest residual '//str(cpl%yielding(ib)%residual)// &
@@ -196,9 +224,7 @@ contains
                                      'the building was frozen at the end of that step (no longer integrated, later '// &
                                      'samples hold the last, its joints opened; the other buildings went on); '// &
                                      'the influence coefficients of '//models(ib)%name//' are not meaningful')
-      end do
-
-   contains
+      end subroutine lcp_lines
 
       !> A lambda right-aligned in `w` columns ('inf' for an infinite one).
       function lambda_cell(lambda, w) result(cell)
