@@ -32,7 +32,7 @@ module pound_response
 
    public :: response_record, response_init, response_sample, response_finish, response_store
    public :: history_sink, response_flush, default_block_bytes, history_block, discard_sink
-   public :: response_block_full, response_sample_rows
+   public :: response_block_full, response_sample_rows, response_peaks_inside
    public :: q_u, q_v, q_a_abs, q_drift, q_shear, deformed_limit
 
    !> Quantity indices.
@@ -532,6 +532,23 @@ contains
          refs(new) = refs(new) + 1
       end do
    end subroutine take_snapshots
+
+   !> Peaks of v and a_abs at the response points from a state inside a step that is not
+   !> sampled (the substeps of a step with joints closed, pound_closed_steps).
+   pure subroutine response_peaks_inside(rec, pv, pa, ag, t)
+      !> The record.
+      type(response_record), intent(inout) :: rec
+      !> Relative velocity and acceleration at the response points (`rec%n` each).
+      real(dp), intent(in) :: pv(:), pa(:)
+      !> Ground acceleration (m/s^2) and time (s).
+      real(dp), intent(in) :: ag, t
+      integer :: i
+
+      do i = 1, rec%n
+         call keep_peak(pv(i), t, rec%peak(i, q_v), rec%peak_time(i, q_v))
+         call keep_peak(pa(i) + ag, t, rec%peak(i, q_a_abs), rec%peak_time(i, q_a_abs))
+      end do
+   end subroutine response_peaks_inside
 
    !> Running absolute maximum of one value: peak and its time when |x| exceeds the peak.
    pure subroutine keep_peak(x, t, peak, peak_time)
