@@ -125,6 +125,9 @@ module pound_newmark
       !> formed again, `band_state`, before a Newmark step needs them).
       integer :: nm = 0
       logical :: band_stale = .false.
+      !> Exact free steps of a model with DOFs without mass: the relaxation coordinates of q
+      !> are zero (set to zero by `relaxed` and not taken from a state since): they stay zero.
+      logical :: z_zero = .false.
       !> Exact free steps of a model with DOFs without mass: psi^T, whose rows give the
       !> coordinates (condensed modes and relaxation coordinates) of a state, q = psi^T u
       !> (n, n; unallocated when every DOF has a mass: q = phi^T M u).

@@ -262,6 +262,7 @@ contains
       end if
       n = st%n
       if (.not. st%modal_valid) then
+         st%z_zero = .false.
          if (allocated(st%psi)) then
             ! With DOFs without mass: q = psi^T u, q' = psi^T v (`condensed_modes`).
             call coordinate_kernel(n, st%psi, st%u, st%v, st%q, st%qd)
@@ -282,12 +283,19 @@ contains
       ! (or are 0, as in a run without joints acting) they are 0 and their columns are left out.
       ncol = n
       if (allocated(st%psi)) then
-         call flush_negligible(n, st%xq, st%xqd, st%xw)
-         if (relaxed(st)) then
-            st%xq(st%nm + 1:n) = 0.0_dp
-            st%xqd(st%nm + 1:n) = 0.0_dp
-            st%xw(st%nm + 1:n) = 0.0_dp
+         if (st%z_zero) then
+            ! Zero relaxation coordinates stay zero (z(h) = exp(-h/a1) z(0)).
+            call flush_negligible(st%nm, st%xq, st%xqd, st%xw)
             ncol = st%nm
+         else
+            call flush_negligible(n, st%xq, st%xqd, st%xw)
+            if (relaxed(st)) then
+               st%xq(st%nm + 1:n) = 0.0_dp
+               st%xqd(st%nm + 1:n) = 0.0_dp
+               st%xw(st%nm + 1:n) = 0.0_dp
+               ncol = st%nm
+               st%z_zero = .true.
+            end if
          end if
       end if
       call shape_kernel(n, ncol, st%phi, st%xq, st%xqd, st%xw, st%u, b%ground, ag_new, st%du, st%xv, st%xa)
@@ -388,14 +396,27 @@ contains
       integer, intent(in) :: n, ncol
       real(dp), intent(in) :: phi(n, n), xq(n), xqd(n), xw(n), u(n), ground(n), ag1
       real(dp), intent(out) :: du(n), xv(n), xa(n)
-      integer :: i, j
+      integer :: i, j, n4
 
       do j = 1, n
          du(j) = -u(j)
          xv(j) = 0.0_dp
          xa(j) = -ground(j)*ag1
       end do
-      do i = 1, ncol
+      ! Four columns at a time: du, v and a are read and written once for four columns.
+      n4 = ncol - mod(ncol, 4)
+      do i = 1, n4, 4
+         !GCC$ vector
+         do j = 1, n
+            du(j) = du(j) + ((phi(j, i)*xq(i) + phi(j, i + 1)*xq(i + 1)) + &
+                             (phi(j, i + 2)*xq(i + 2) + phi(j, i + 3)*xq(i + 3)))
+            xv(j) = xv(j) + ((phi(j, i)*xqd(i) + phi(j, i + 1)*xqd(i + 1)) + &
+                             (phi(j, i + 2)*xqd(i + 2) + phi(j, i + 3)*xqd(i + 3)))
+            xa(j) = xa(j) + ((phi(j, i)*xw(i) + phi(j, i + 1)*xw(i + 1)) + &
+                             (phi(j, i + 2)*xw(i + 2) + phi(j, i + 3)*xw(i + 3)))
+         end do
+      end do
+      do i = n4 + 1, ncol
          !GCC$ vector
          do j = 1, n
             du(j) = du(j) + phi(j, i)*xq(i)
