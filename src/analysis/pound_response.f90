@@ -136,6 +136,9 @@ module pound_response
       !> A frame's previous DOF velocities (its rows' rates are recovered only on the steps
       !> that may refine a peak).
       real(dp), allocatable :: v_last(:)
+      !> Whether the last sample's rates of the rows were recovered (`refine_peaks`: they are
+      !> then the next interval's start rates, not recovered again).
+      logical :: rates_last = .false.
    end type response_record
 
 contains
@@ -221,6 +224,7 @@ contains
          allocate (rec%last(n, 2, 3, 2), source=0.0_dp, stat=stat(1))
          if (stat(1) == 0 .and. .not. rec%stick) allocate (rec%v_last(b%n), source=0.0_dp, stat=stat(1))
          rec%t_last = -1.0_dp
+         rec%rates_last = .false.
          if (stat(1) /= 0) then
             call fatal_error(error, 'cannot allocate the response work arrays ('//str(12*n)//' reals)')
             return
@@ -419,13 +423,17 @@ contains
             end do
             if (near .and. rec%t_last >= 0.0_dp) then
                now(:, 2, 1) = v(b%floor_dof)
-               old(:, 2, 1) = rec%v_last(b%floor_dof)
+               if (.not. rec%rates_last) then
+                  old(:, 2, 1) = rec%v_last(b%floor_dof)
+                  call recover_all(b%drift, rec%v_last, old(:, 2, 2))
+                  call recover_all(b%shear, rec%v_last, old(:, 2, 3))
+               end if
                call recover_all(b%drift, v, now(:, 2, 2))
-               call recover_all(b%drift, rec%v_last, old(:, 2, 2))
                call recover_all(b%shear, v, now(:, 2, 3))
-               call recover_all(b%shear, rec%v_last, old(:, 2, 3))
+               rec%rates_last = .true.
             else
                nq = 0
+               rec%rates_last = .false.
             end if
             rec%v_last = v
          end if
