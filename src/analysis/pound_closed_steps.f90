@@ -13,34 +13,39 @@
 !>
 !>   q'' + c q' + Lambda q = p(t) = -gamma a_g(t) - sum_j w^_j r_j(t).
 !>
-!> The step of dt is cut into m substeps of h = dt/m (m: the automatic impact substep count,
-!> set by the joints' contact half-period, or `impact_substeps`). Over each substep the modal
-!> load p is taken linear between its ends (a_g linear over dt, as in an exact free step; the
-!> joint forces linear between the substep ends: the trapezoidal rule of Newmark's substeps),
-!> and each mode's response to it is exact (`modal_step_coefficients`: q1 = A q0 + B q0' +
-!> C p0 + D p1). The forces at the substep's end are implicit, r1 = K (W^T q1 - g) with
-!> q1 = q_pred - D W r1, so (I + K W^T D W) r1 = K (W^T q_pred - g): an r x r system per set
-!> of closed joints (inverted once when the set is first met). The error is second order in h
-!> through the joint forces alone (the structure's own response is exact), no larger than that
-!> of the Newmark substeps it replaces; the cost is a few multiply-adds per mode and substep
-!> and no factorisation, instead of m solves, contact steps and response samples of every
-!> DOF. The response is sampled at the step's ends only; its peaks between them are refined
-!> as those of an exact free step (`refine_peaks` of pound_response, the cubic Hermite path
-!> through the samples' values and rates).
+!> The step of dt is cut into substeps of h. Over each substep the modal load p is taken
+!> linear between its ends (a_g linear over dt, as in an exact free step; the joint forces
+!> linear between the substep ends: the trapezoidal rule of Newmark's substeps), and each
+!> mode's response to it is exact (`modal_step_response`: q1 = A q0 + B q0' + C p0 + D p1).
+!> The forces at the substep's end are implicit, r1 = K (W^T q1 - g) with q1 = q_pred - D W r1,
+!> so (I + K W^T D W) r1 = K (W^T q_pred - g): an r x r system per set of closed joints and
+!> substep length (inverted once, when the set is first met). The structure's own response is
+!> exact; the joint forces' interpolation errs by c h^2 + O(h^4) (a symmetric rule), so the step
+!> is taken twice from its start, with mc substeps and with 2 mc, and extrapolated,
+!> (4 x_fine - x_coarse)/3 (Richardson): fourth order. mc = ceil(m/10), m the impact substep
+!> count (automatic: 60 substeps a contact half-period with exact free steps), so the coarse
+!> substep is at most 1/6 of the contact half-period and the fine one 1/12. The cost is a few multiply-adds per
+!> mode and substep, 3 mc substeps in all, and no factorisation, instead of m solves, contact
+!> steps and response samples of every DOF. The response is sampled at the step's ends; u,
+!> drift and storey shear peaks between them are refined as those of an exact free step
+!> (`refine_peaks` of pound_response, the cubic Hermite path through the samples' values and
+!> rates), v and a_abs at the response points and the joints' forces are kept at the fine
+!> pass's substep ends.
 !>
-!> The step is kept only if it is valid: at every substep's end each closed joint still
-!> carries compression and every other joint is still open, and between the substep ends the
-!> cubic Hermite path of each closing displacement (values and rates at the ends) stays on the
-!> same side of the gap. Otherwise nothing is changed and the caller takes the step as impact
+!> The step is kept only if it is valid: at every substep's end of both passes, and at the
+!> extrapolated end, each closed joint still carries compression, and every other joint stays
+!> open along the step (the cubic Hermite path of its closing displacement through the values
+!> and rates at the step's ends stays short of the gap, as `contact_may_act` judges an exact
+!> free step). Otherwise nothing is changed and the caller takes the step as impact
 !> substeps (Newmark, the LCP deciding the contact), as before: the steps in which a joint
 !> closes or opens are always substepped.
 !>
 !> Energy: the kinetic and strain energy are those of the end state, from the coordinates;
 !> each building's input work -int a_g gamma^T q' dt is summed by the trapezoidal rule over the
-!> substeps; the joints' work is that of `contact_commit`, (r0 + r1)/2 (d1 - d0), exact for a
-!> linear spring, split over the buildings by the same rule; the damping energy of each
-!> building is the balance (so over such a step the audit measures round-off, not the
-!> damping).
+!> substeps of each pass and extrapolated; the joints' work is that of `contact_commit`,
+!> (r0 + r1)/2 (d1 - d0), exact for a linear spring, split over the buildings by the same rule;
+!> the damping energy of each building is the balance (so over such a step the audit measures
+!> round-off, not the damping).
 module pound_closed_steps
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use iso_fortran_env, only: int64
@@ -54,6 +59,7 @@ module pound_closed_steps
    use pound_contact_pair, only: end_sign
    use pound_law_smooth, only: is_smooth
    use pound_response, only: response_record, response_peaks_inside
+   use pound_closed_kernels, only: closing, substep, modal_acceleration, mv2, mv, mvk, hermite_extreme, dot8
    implicit none
    private
 
@@ -63,11 +69,11 @@ module pound_closed_steps
    integer, parameter :: closed_max_dofs = 400
    !> Most sets of closed joints set up in one run (more are substepped).
    integer, parameter :: max_sets = 64
-   !> The peaks of v and a_abs are kept at every `inside_stride`-th
-   !> substep end inside a step: with the automatic substep count (60 substeps a contact
-   !> half-period with exact free steps) 30 samples a half-period, a peak within
-   !> 1 - cos(pi/60) = 0.14 % of its value.
-   integer, parameter :: inside_stride = 2
+   !> The peaks of v and a_abs (and the joints' forces) are kept at every `inside_stride`-th
+   !> substep end of the fine pass inside a step: its substep is at most 1/12 of the contact
+   !> half-period, a peak of the contact oscillation within 1 - cos(pi/24) = 0.9 % of its
+   !> value (faster components, excited by the impacts, less well).
+   integer, parameter :: inside_stride = 1
    !> Modal coordinates, rates and step coefficients below this are set to zero (as in
    !> pound_newmark_exact: no subnormal numbers).
    real(dp), parameter :: negligible = 1.0e-100_dp
@@ -98,9 +104,9 @@ module pound_closed_steps
       !> The set: bit k-1 for joint k.
       integer(int64) :: key = 0
       !> Its joints (r) and the others (open), and (I + K W^T D W)^-1 K (r, r) (see the
-      !> module doc).
+      !> module doc) at the fine and at the coarse substep.
       integer, allocatable :: joint(:), open(:)
-      real(dp), allocatable :: hk(:, :)
+      real(dp), allocatable :: hk(:, :), hkc(:, :)
       !> Whether the set can be stepped (its ends have a mass).
       logical :: ok = .false.
    end type closed_config
@@ -117,12 +123,15 @@ module pound_closed_steps
       type(closed_building), allocatable :: b(:)
       !> The sets met (`max_sets`).
       type(closed_config), allocatable :: cfg(:)
-      !> Substeps per step, and the substep (s).
-      integer :: m = 1
-      real(dp) :: hs = 0.0_dp
+      !> Substeps per step of the fine and the coarse pass (m = 2 mc), and their lengths (s).
+      integer :: m = 2, mc = 1
+      real(dp) :: hs = 0.0_dp, hc = 0.0_dp
       !> Each mode's substep coefficients against (q0, q0', p0, p1) (nmt, 8): q1 from 1:4,
-      !> q1' from 5:8.
-      real(dp), allocatable :: cf(:, :)
+      !> q1' from 5:8; of the fine and of the coarse substep.
+      real(dp), allocatable :: cf(:, :), cfc(:, :)
+      !> The coarse pass's end: q, q' (nmt), and each building's input work (nb); the start's
+      !> q, q' and load (nmt).
+      real(dp), allocatable :: qa(:), qda(:), wina(:), q0(:), qd0(:), ps(:)
       !> w^_j of every joint (nmt, n_joints), and its stiffness and gap; whether both its
       !> ends have a mass (or are the rigid neighbour).
       real(dp), allocatable :: w(:, :), kj(:), gap(:)
@@ -138,8 +147,9 @@ module pound_closed_steps
       real(dp), allocatable :: ue(:, :), ve(:, :), ae(:, :), g0(:, :), jw(:), win(:)
       !> Twice the strain energy of each building's massless DOFs' forces at the step's end (nb).
       real(dp), allocatable :: ez(:)
-      !> Each joint's largest force at the substeps' ends inside the step and its time.
-      real(dp), allocatable :: rmax(:), tmax(:)
+      !> Each joint's largest force inside the step and its time; its closing displacement
+      !> and rate at the last substep's end.
+      real(dp), allocatable :: rmax(:), tmax(:), dl(:), ddl(:)
       !> v and a at the response points at the substeps' ends inside the step (points, m, nb),
       !> the ground acceleration there (m): the peaks inside, kept once the step is valid.
       real(dp), allocatable :: vin(:, :, :), ain(:, :, :), agin(:)
@@ -186,8 +196,12 @@ contains
       logical :: ok
 
       cl%h = dt
-      cl%m = max(1, m)
+      ! The coarse substep at most 1/6 of the contact half-period (the automatic m puts 60
+      ! substeps in it), the fine one half that.
+      cl%mc = max(1, ceiling(real(m, dp)/10.0_dp - 1.0e-9_dp))
+      cl%m = 2*cl%mc
       cl%hs = dt/real(cl%m, dp)
+      cl%hc = dt/real(cl%mc, dp)
       cl%nb = size(models)
       nj = cs%m
       if (nj == 0 .or. nj > max_joints .or. cs%general_ends) return
@@ -201,7 +215,7 @@ contains
          off = off + cl%b(ib)%nm
       end do
       cl%nmt = off
-      allocate (cl%lam(off), cl%cm(off), cl%gam(off), cl%cf(off, 8))
+      allocate (cl%lam(off), cl%cm(off), cl%gam(off), cl%cf(off, 8), cl%cfc(off, 8))
       do ib = 1, cl%nb
          associate (cb => cl%b(ib))
             cl%lam(cb%off + 1:cb%off + cb%nm) = cb%lam
@@ -212,9 +226,11 @@ contains
       ! A mode's step under the load p linear from p0 to p1 (the ground's with gamma = -1).
       do i = 1, off
          cl%cf(i, :) = modal_step_response(cl%lam(i), cl%cm(i), -1.0_dp, cl%hs)
+         cl%cfc(i, :) = modal_step_response(cl%lam(i), cl%cm(i), -1.0_dp, cl%hc)
       end do
       where (abs(cl%cf) < negligible) cl%cf = 0.0_dp
-      if (.not. all(ieee_is_finite(cl%cf))) return
+      where (abs(cl%cfc) < negligible) cl%cfc = 0.0_dp
+      if (.not. (all(ieee_is_finite(cl%cf)) .and. all(ieee_is_finite(cl%cfc)))) return
       ! w^_j = Phi^T w_j of every joint (0 where an end has no mass: such a joint cannot be
       ! closed in a closed step, `joint_ok`).
       allocate (cl%w(off, nj), cl%kj(nj), cl%gap(nj), cl%joint_ok(nj))
@@ -239,7 +255,9 @@ contains
       nmax = maxval(models%n)
       allocate (cl%cfg(max_sets))
       allocate (cl%q(off), cl%qd(off), cl%p0(off), cl%p1(off), cl%qp(off), cl%qdd(off))
-      allocate (cl%d0(nj), cl%dd0(nj), cl%d1(nj), cl%dd1(nj), cl%r(nj), cl%rhs(nj), cl%rmax(nj), cl%tmax(nj))
+      allocate (cl%qa(off), cl%qda(off), cl%q0(off), cl%qd0(off), cl%ps(off), cl%wina(cl%nb))
+      allocate (cl%d0(nj), cl%dd0(nj), cl%d1(nj), cl%dd1(nj), cl%r(nj), cl%rhs(nj), cl%rmax(nj), cl%tmax(nj), &
+                cl%dl(nj), cl%ddl(nj))
       allocate (cl%ue(nmax, cl%nb), cl%ve(nmax, cl%nb), cl%ae(nmax, cl%nb), cl%g0(nmax, cl%nb), cl%jw(cl%nb), &
                 cl%win(cl%nb), cl%ez(cl%nb))
       allocate (cl%xin(nmax, 3), cl%xout(nmax, 3))
@@ -370,7 +388,8 @@ contains
       real(dp), intent(in) :: t0
       integer(int64) :: key
       integer :: k, ic, ib, e, bb, nmt, i, j, l, nr, nj
-      real(dp) :: w0, w1, a1, s0
+      real(dp) :: w0, w1
+      logical :: valid
       real(dp), pointer, contiguous :: u(:), v(:)
 
       taken = .false.
@@ -421,41 +440,33 @@ contains
          cl%r(k) = cl%kj(k)*(cl%d0(k) - cl%gap(k))
          cl%p0 = cl%p0 - cl%w(:, k)*cl%r(k)
       end do
-      cl%win = 0.0_dp
+      ! The coarse pass (mc substeps), then the fine one (m = 2 mc, the peaks inside kept)
+      ! from the same start, extrapolated (Richardson: the passes' error is c h^2 + O(h^4)).
+      cl%q0 = cl%q
+      cl%qd0 = cl%qd
+      cl%ps = cl%p0
       cl%rmax = 0.0_dp
-      a1 = ag0
-      call input_rate(cl, cl%qd, a1, cl%win, 0.5_dp*cl%hs)
-      do j = 1, cl%m
-         a1 = ag0 + (ag1 - ag0)*real(j, dp)/real(cl%m, dp)
-         call substep(nmt, nj, nr, cl%cfg(ic)%joint, cl%cf, cl%gam, cl%w, cl%cfg(ic)%hk, cl%gap, a1, cl%q, cl%qd, &
-                      cl%p0, cl%p1, cl%qp, cl%rhs, cl%r)
-         cl%p0 = cl%p1
-         ! Validity: closed joints in compression at the substep's end.
-         do l = 1, nr
-            if (.not. (cl%r(cl%cfg(ic)%joint(l)) > 0.0_dp)) return
-         end do
-         do l = 1, nr
-            k = cl%cfg(ic)%joint(l)
-            if (cl%r(k) > cl%rmax(k) .and. j < cl%m) then
-               cl%rmax(k) = cl%r(k)
-               cl%tmax(k) = t0 + real(j, dp)*cl%hs
-            end if
-         end do
-         if (j < cl%m .and. mod(j, inside_stride) == 0) then
-            ! v and a at the response points (the relaxation of the massless DOFs' forces
-            ! left out inside the step).
-            call modal_acceleration(nmt, cl%p1, cl%lam, cl%cm, cl%q, cl%qd, cl%qdd)
-            cl%agin(j) = a1
-            do ib = 1, cl%nb
-               associate (cb => cl%b(ib), o => cl%b(ib)%off, np => size(cl%b(ib)%pf, 1))
-                  call mv2(np, cb%nm, cb%pf, cl%qd(o + 1:o + cb%nm), cl%qdd(o + 1:o + cb%nm), cl%vin(1:np, j, ib), &
-                           cl%ain(1:np, j, ib))
-               end associate
-            end do
-         end if
-         s0 = 0.5_dp*cl%hs
-         if (j == cl%m) s0 = 0.0_dp
-         call input_rate(cl, cl%qd, a1, cl%win, 0.5_dp*cl%hs + s0)
+      call march(cl, cl%cfg(ic), cs, cl%mc, cl%cfc, cl%cfg(ic)%hkc, cl%hc, ag0, ag1, t0, .false., valid)
+      if (.not. valid) return
+      cl%qa = cl%q
+      cl%qda = cl%qd
+      cl%wina = cl%win
+      cl%q = cl%q0
+      cl%qd = cl%qd0
+      cl%p0 = cl%ps
+      call march(cl, cl%cfg(ic), cs, cl%m, cl%cf, cl%cfg(ic)%hk, cl%hs, ag0, ag1, t0, .true., valid)
+      if (.not. valid) return
+      cl%q = (4.0_dp*cl%q - cl%qa)/3.0_dp
+      cl%qd = (4.0_dp*cl%qd - cl%qda)/3.0_dp
+      cl%win = (4.0_dp*cl%win - cl%wina)/3.0_dp
+      ! The closed joints' forces at the end, from the extrapolated coordinates, and the load.
+      call closing(nmt, nr, cl%cfg(ic)%joint, cl%w, cl%q, cl%qd, cl%d1, cl%dd1)
+      cl%p1 = -cl%gam*ag1
+      do l = 1, nr
+         k = cl%cfg(ic)%joint(l)
+         cl%r(k) = cl%kj(k)*(cl%d1(k) - cl%gap(k))
+         if (.not. (cl%r(k) > 0.0_dp)) return
+         cl%p1 = cl%p1 - cl%w(:, k)*cl%r(k)
       end do
       ! The other joints open along the step: the Hermite path of their closing displacement
       ! through its values and rates at the step's ends (as `contact_may_act` for an exact
@@ -535,111 +546,79 @@ contains
       taken = .true.
    end subroutine closed_newmark
 
-   !> Closing displacement w^_k . q and rate w^_k . q' of the joints k in `list`.
-   pure subroutine closing(n, nl, list, w, q, qd, d, dd)
-      integer, intent(in) :: n, nl, list(nl)
-      real(dp), intent(in) :: w(:, :), q(n), qd(n)
-      real(dp), intent(inout) :: d(:), dd(:)
-      integer :: l, k
+   !> One pass of ms substeps of length h (coefficients cf, the set's implicit forces hk)
+   !> from cl%q, cl%qd, cl%p0: the end in cl%q, cl%qd, cl%p1, cl%r, the input work in cl%win;
+   !> `valid` false as soon as a closed joint stops carrying compression at a substep's end.
+   !> With `record`, the closed joints' largest forces and the response points' v and a at
+   !> every `inside_stride`-th substep end inside the step are kept.
+   subroutine march(cl, c, cs, ms, cf, hk, h, ag0, ag1, t0, record, valid)
+      type(closed_stepper), intent(inout) :: cl
+      type(closed_config), intent(in) :: c
+      type(contact_system), intent(in) :: cs
+      integer, intent(in) :: ms
+      real(dp), intent(in) :: cf(:, :), hk(:, :), h, ag0, ag1, t0
+      logical, intent(in) :: record
+      logical, intent(out) :: valid
+      integer :: j, l, k, ib, nr, nmt
+      real(dp) :: a1, s0, rk
 
-      do l = 1, nl
-         k = list(l)
-         d(k) = dot8(n, w(:, k), q)
-         dd(k) = dot8(n, w(:, k), qd)
-      end do
-   end subroutine closing
-
-   !> x . y in eight partial sums (the sums vectorise; the order is fixed).
-   pure real(dp) function dot8(n, x, y) result(s)
-      integer, intent(in) :: n
-      real(dp), intent(in) :: x(n), y(n)
-      real(dp) :: p(8)
-      integer :: i, n8
-
-      p = 0.0_dp
-      n8 = n - mod(n, 8)
-      do i = 1, n8, 8
-         p = p + x(i:i + 7)*y(i:i + 7)
-      end do
-      s = ((p(1) + p(5)) + (p(2) + p(6))) + ((p(3) + p(7)) + (p(4) + p(8)))
-      do i = n8 + 1, n
-         s = s + x(i)*y(i)
-      end do
-   end function dot8
-
-   !> One substep of the modes under the load linear from p0 to p1 = -gamma a_g1 - W r1, r1 the
-   !> closed joints' forces at its end (implicit: r1 = H^-1 K (W^T q_pred - g)); q, q' advanced,
-   !> p1 and r (the closed joints' entries) set.
-   pure subroutine substep(n, nj, nr, joint, cf, gam, w, hk, gap, a1, q, qd, p0, p1, qp, rhs, r)
-      integer, intent(in) :: n, nj, nr, joint(nr)
-      real(dp), intent(in) :: cf(n, 8), gam(n), w(n, nj), hk(nr, nr), gap(nj), a1, p0(n)
-      real(dp), intent(inout) :: q(n), qd(n), r(nj)
-      real(dp), intent(out) :: p1(n), qp(n), rhs(nr)
-      integer :: i, l, k
-      real(dp) :: x
-
-      !GCC$ vector
-      do i = 1, n
-         qp(i) = cf(i, 1)*q(i) + cf(i, 2)*qd(i) + cf(i, 3)*p0(i) - cf(i, 4)*gam(i)*a1
-         p1(i) = -gam(i)*a1
-      end do
-      do l = 1, nr
-         k = joint(l)
-         rhs(l) = dot8(n, w(:, k), qp) - gap(k)
-      end do
-      do l = 1, nr
-         k = joint(l)
-         x = 0.0_dp
-         do i = 1, nr
-            x = x + hk(l, i)*rhs(i)
+      valid = .false.
+      nr = size(c%joint)
+      nmt = cl%nmt
+      cl%dl = cl%d0
+      cl%ddl = cl%dd0
+      cl%win = 0.0_dp
+      a1 = ag0
+      call input_rate(cl, cl%qd, a1, cl%win, 0.5_dp*h)
+      do j = 1, ms
+         a1 = ag0 + (ag1 - ag0)*real(j, dp)/real(ms, dp)
+         call substep(nmt, cs%m, nr, c%joint, cf, cl%gam, cl%w, hk, cl%gap, a1, cl%q, cl%qd, cl%p0, cl%p1, cl%qp, &
+                      cl%rhs, cl%r)
+         cl%p0 = cl%p1
+         ! Validity: closed joints in compression at the substep's end.
+         do l = 1, nr
+            if (.not. (cl%r(c%joint(l)) > 0.0_dp)) return
          end do
-         r(k) = x
-         !GCC$ vector
-         do i = 1, n
-            p1(i) = p1(i) - w(i, k)*x
-         end do
+         if (record) then
+            ! The closed joints' largest force along the substep: the Hermite path of the
+            ! closing displacement through its values and rates at the substep's ends.
+            call closing(nmt, nr, c%joint, cl%w, cl%q, cl%qd, cl%d1, cl%dd1)
+            do l = 1, nr
+               k = c%joint(l)
+               rk = cl%kj(k)*(hermite_extreme(cl%dl(k), cl%ddl(k), cl%d1(k), cl%dd1(k), h, .false.) - cl%gap(k))
+               if (rk > cl%rmax(k)) then
+                  cl%rmax(k) = rk
+                  cl%tmax(k) = t0 + real(j, dp)*h
+               end if
+               cl%dl(k) = cl%d1(k)
+               cl%ddl(k) = cl%dd1(k)
+            end do
+         end if
+         if (record .and. j < ms) then
+            if (mod(j, inside_stride) == 0) then
+               ! v and a at the response points (the relaxation of the massless DOFs' forces
+               ! left out inside the step).
+               call modal_acceleration(nmt, cl%p1, cl%lam, cl%cm, cl%q, cl%qd, cl%qdd)
+               cl%agin(j) = a1
+               do ib = 1, cl%nb
+                  associate (cb => cl%b(ib), o => cl%b(ib)%off, np => size(cl%b(ib)%pf, 1))
+                     call mv2(np, cb%nm, cb%pf, cl%qd(o + 1:o + cb%nm), cl%qdd(o + 1:o + cb%nm), &
+                              cl%vin(1:np, j, ib), cl%ain(1:np, j, ib))
+                  end associate
+               end do
+            end if
+         end if
+         s0 = 0.5_dp*h
+         if (j == ms) s0 = 0.0_dp
+         call input_rate(cl, cl%qd, a1, cl%win, 0.5_dp*h + s0)
       end do
-      ! The stiff, over-damped modes decay to subnormal numbers, which slow every product
-      ! with them many times: below `negligible` they are zero.
-      !GCC$ vector
-      do i = 1, n
-         x = cf(i, 5)*q(i) + cf(i, 6)*qd(i) + cf(i, 7)*p0(i) + cf(i, 8)*p1(i)
-         qd(i) = merge(0.0_dp, x, abs(x) < negligible)
-         x = qp(i) + cf(i, 4)*(p1(i) + gam(i)*a1)
-         q(i) = merge(0.0_dp, x, abs(x) < negligible)
-      end do
-   end subroutine substep
+      valid = .true.
+   end subroutine march
 
-   !> q'' = p - lambda q - c q'.
-   pure subroutine modal_acceleration(n, p, lam, cm, q, qd, qdd)
-      integer, intent(in) :: n
-      real(dp), intent(in) :: p(n), lam(n), cm(n), q(n), qd(n)
-      real(dp), intent(out) :: qdd(n)
-      integer :: i
 
-      !GCC$ vector
-      do i = 1, n
-         qdd(i) = p(i) - lam(i)*q(i) - cm(i)*qd(i)
-      end do
-   end subroutine modal_acceleration
 
-   !> y = A x, z = A w, A (n, m) (columns; n small: the response points).
-   pure subroutine mv2(n, m, a, x, w, y, z)
-      integer, intent(in) :: n, m
-      real(dp), intent(in) :: a(n, m), x(m), w(m)
-      real(dp), intent(out) :: y(n), z(n)
-      integer :: i, j
 
-      y = 0.0_dp
-      z = 0.0_dp
-      do j = 1, m
-         !GCC$ vector
-         do i = 1, n
-            y(i) = y(i) + a(i, j)*x(j)
-            z(i) = z(i) + a(i, j)*w(j)
-         end do
-      end do
-   end subroutine mv2
+
 
    !> Add weight times each building's input power -a_g gamma_b^T q'_b to `win` (the
    !> trapezoidal sum of the input work over the substeps).
@@ -685,93 +664,15 @@ contains
       end do
    end subroutine massless_end
 
-   !> y = A x, A (n, m) (columns).
-   pure subroutine mv(n, m, a, x, y)
-      integer, intent(in) :: n, m
-      real(dp), intent(in) :: a(n, m), x(m)
-      real(dp), intent(out) :: y(n)
-      integer :: i, j
 
-      y = 0.0_dp
-      do j = 1, m
-         !GCC$ vector
-         do i = 1, n
-            y(i) = y(i) + a(i, j)*x(j)
-         end do
-      end do
-   end subroutine mv
 
-   !> y = A x for k vectors at once, A (n, m), x (m, k), y (n, k) (A read once, by columns).
-   pure subroutine mvk(n, m, k, a, x, y)
-      integer, intent(in) :: n, m, k
-      real(dp), intent(in) :: a(n, m), x(m, k)
-      real(dp), intent(out) :: y(n, k)
-      integer :: i, j, l, m4
-
-      y = 0.0_dp
-      ! Four columns of A at a time: y is read and written once for four.
-      m4 = m - mod(m, 4)
-      do j = 1, m4, 4
-         do l = 1, k
-            !GCC$ vector
-            do i = 1, n
-               y(i, l) = y(i, l) + ((a(i, j)*x(j, l) + a(i, j + 1)*x(j + 1, l)) + &
-                                    (a(i, j + 2)*x(j + 2, l) + a(i, j + 3)*x(j + 3, l)))
-            end do
-         end do
-      end do
-      do j = m4 + 1, m
-         do l = 1, k
-            !GCC$ vector
-            do i = 1, n
-               y(i, l) = y(i, l) + a(i, j)*x(j, l)
-            end do
-         end do
-      end do
-   end subroutine mvk
-
-   !> The least (`lowest`) or largest value over [0, h] of the cubic Hermite path through
-   !> (c0, d0) at 0 and (c1, d1) at h (values, rates).
-   pure real(dp) function hermite_extreme(c0, d0, c1, d1, h, lowest) result(x)
-      !> Values and rates at both ends.
-      real(dp), intent(in) :: c0, d0, c1, d1
-      !> Length of the interval.
-      real(dp), intent(in) :: h
-      !> The least value (else the largest).
-      logical, intent(in) :: lowest
-      real(dp) :: a1, a2, a3, qa, qb, qc, disc, s(2), val
-      integer :: i
-
-      a1 = h*d0
-      a2 = -3.0_dp*c0 - 2.0_dp*h*d0 + 3.0_dp*c1 - h*d1
-      a3 = 2.0_dp*c0 + h*d0 - 2.0_dp*c1 + h*d1
-      x = merge(min(c0, c1), max(c0, c1), lowest)
-      qa = 3.0_dp*a3
-      qb = 2.0_dp*a2
-      qc = a1
-      s = -1.0_dp
-      if (qa /= 0.0_dp) then
-         disc = qb*qb - 4.0_dp*qa*qc
-         if (disc >= 0.0_dp) s = [(-qb + sqrt(disc))/(2.0_dp*qa), (-qb - sqrt(disc))/(2.0_dp*qa)]
-      else if (qb /= 0.0_dp) then
-         s(1) = -qc/qb
-      end if
-      do i = 1, 2
-         if (s(i) > 0.0_dp .and. s(i) < 1.0_dp) then
-            val = ((a3*s(i) + a2)*s(i) + a1)*s(i) + c0
-            x = merge(min(x, val), max(x, val), lowest)
-         end if
-      end do
-   end function hermite_extreme
 
    !> Index of the set `key` among those met, set up when first met (0: it cannot be stepped,
    !> or more than `max_sets` sets were met).
    integer function find_config(cl, key) result(ic)
       type(closed_stepper), intent(inout) :: cl
       integer(int64), intent(in) :: key
-      real(dp), allocatable :: h(:, :), ident(:, :)
-      integer :: i, l, k, nr, info
-      integer, allocatable :: piv(:)
+      integer :: i, k
 
       ic = 0
       do i = 1, cl%ncfg
@@ -786,25 +687,38 @@ contains
          c%key = key
          c%joint = pack([(k, k=1, size(cl%kj))], [(btest(key, k - 1), k=1, size(cl%kj))])
          c%open = pack([(k, k=1, size(cl%kj))], [(.not. btest(key, k - 1), k=1, size(cl%kj))])
-         nr = size(c%joint)
          ! H = I + K W^T D W (D = diag(cf(:, 4)), the end load's part of the substep), then
-         ! H^-1 K: r1 = H^-1 K (W^T q_pred - g).
-         allocate (h(nr, nr), ident(nr, nr), piv(nr))
-         ident = 0.0_dp
-         do l = 1, nr
-            ident(l, l) = cl%kj(c%joint(l))
-            do i = 1, nr
-               h(l, i) = cl%kj(c%joint(l))*sum(cl%w(:, c%joint(l))*cl%cf(:, 4)*cl%w(:, c%joint(i)))
-            end do
-            h(l, l) = h(l, l) + 1.0_dp
-         end do
-         call dgesv(nr, nr, h, nr, piv, ident, nr, info)
-         c%ok = info == 0 .and. all(ieee_is_finite(ident))
-         if (c%ok) then
-            c%hk = ident
-            ic = cl%ncfg
-         end if
+         ! H^-1 K: r1 = H^-1 K (W^T q_pred - g); for the fine and the coarse substep.
+         c%hk = implicit_forces(cl, c%joint, cl%cf(:, 4), c%ok)
+         if (c%ok) c%hkc = implicit_forces(cl, c%joint, cl%cfc(:, 4), c%ok)
+         if (c%ok) ic = cl%ncfg
       end associate
    end function find_config
+
+   !> (I + K W^T D W)^-1 K of the closed joints `joint`, D = diag(d) (`ok` false when H is
+   !> singular or the result not finite).
+   function implicit_forces(cl, joint, d, ok) result(hk)
+      type(closed_stepper), intent(in) :: cl
+      integer, intent(in) :: joint(:)
+      real(dp), intent(in) :: d(:)
+      logical, intent(out) :: ok
+      real(dp), allocatable :: hk(:, :)
+      real(dp), allocatable :: h(:, :)
+      integer, allocatable :: piv(:)
+      integer :: nr, l, i, info
+
+      nr = size(joint)
+      allocate (h(nr, nr), hk(nr, nr), piv(nr))
+      hk = 0.0_dp
+      do l = 1, nr
+         hk(l, l) = cl%kj(joint(l))
+         do i = 1, nr
+            h(l, i) = cl%kj(joint(l))*sum(cl%w(:, joint(l))*d*cl%w(:, joint(i)))
+         end do
+         h(l, l) = h(l, l) + 1.0_dp
+      end do
+      call dgesv(nr, nr, h, nr, piv, hk, nr, info)
+      ok = info == 0 .and. all(ieee_is_finite(hk))
+   end function implicit_forces
 
 end module pound_closed_steps
