@@ -16,10 +16,10 @@ module pound_closed_kernels
 contains
 
    !> Closing displacement w^_k . q and rate w^_k . q' of the joints k in `list`.
-   pure subroutine closing(n, nl, list, w, q, qd, d, dd)
-      integer, intent(in) :: n, nl, list(nl)
-      real(dp), intent(in) :: w(:, :), q(n), qd(n)
-      real(dp), intent(inout) :: d(:), dd(:)
+   pure subroutine closing(n, nj, nl, list, w, q, qd, d, dd)
+      integer, intent(in) :: n, nj, nl, list(nl)
+      real(dp), intent(in) :: w(n, nj), q(n), qd(n)
+      real(dp), intent(inout) :: d(nj), dd(nj)
       integer :: l, k
 
       do l = 1, nl

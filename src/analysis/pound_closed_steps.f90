@@ -95,6 +95,9 @@ module pound_closed_steps
       real(dp), allocatable :: phin(:, :), phimt(:, :), kgt(:, :)
       !> The shapes at the response points (n_points, nm): v and a there inside a step.
       real(dp), allocatable :: pf(:, :)
+      !> Work arrays of the products by columns: over its DOFs (n, 3) and its modes (nm, 3)
+      !> (whole columns are passed: no array temporaries).
+      real(dp), allocatable :: xn(:, :), xm(:, :)
       !> exp(-h/a1) (0 without stiffness-proportional damping) and 1/a1.
       real(dp) :: decay = 0.0_dp, ra1 = 0.0_dp
    end type closed_building
@@ -153,8 +156,7 @@ module pound_closed_steps
       !> v and a at the response points at the substeps' ends inside the step (points, m, nb),
       !> the ground acceleration there (m): the peaks inside, kept once the step is valid.
       real(dp), allocatable :: vin(:, :, :), ain(:, :, :), agin(:)
-      !> Work arrays of the products by columns (n_max, 3).
-      real(dp), allocatable :: xin(:, :), xout(:, :)
+      !> Unused.
       !> Steps taken closed, and the step (of the time loop) of the last one.
       integer :: steps = 0, last = -1
    end type closed_stepper
@@ -260,7 +262,6 @@ contains
                 cl%dl(nj), cl%ddl(nj))
       allocate (cl%ue(nmax, cl%nb), cl%ve(nmax, cl%nb), cl%ae(nmax, cl%nb), cl%g0(nmax, cl%nb), cl%jw(cl%nb), &
                 cl%win(cl%nb), cl%ez(cl%nb))
-      allocate (cl%xin(nmax, 3), cl%xout(nmax, 3))
       allocate (cl%vin(maxval([(size(models(ib)%floor_dof), ib=1, cl%nb)]), cl%m, cl%nb), cl%agin(cl%m))
       allocate (cl%ain, mold=cl%vin)
       cl%on = .true.
@@ -339,6 +340,7 @@ contains
       end do
       if (ns > 0) cb%phin(cb%is, :) = -matmul(tsm, cb%phi)
       cb%pf = cb%phin(b%floor_dof, :)
+      allocate (cb%xn(n, 3), cb%xm(nm, 3))
       ok = all(ieee_is_finite(cb%phi)) .and. all(ieee_is_finite(cb%lam))
    end subroutine building_modes
 
@@ -416,11 +418,11 @@ contains
             associate (cb => cl%b(ib))
                u => newmark_u(st(ib))
                v => newmark_v(st(ib))
-               cl%xin(1:cb%n, 1) = u
-               cl%xin(1:cb%n, 2) = v
-               call mvk(cb%nm, cb%n, 2, cb%phimt, cl%xin(1:cb%n, 1:2), cl%xout(1:cb%nm, 1:2))
-               cl%qp(cb%off + 1:cb%off + cb%nm) = cl%xout(1:cb%nm, 1)
-               cl%p1(cb%off + 1:cb%off + cb%nm) = cl%xout(1:cb%nm, 2)
+               cb%xn(:, 1) = u
+               cb%xn(:, 2) = v
+               call mvk(cb%nm, cb%n, 2, cb%phimt, cb%xn, cb%xm)
+               cl%qp(cb%off + 1:cb%off + cb%nm) = cb%xm(:, 1)
+               cl%p1(cb%off + 1:cb%off + cb%nm) = cb%xm(:, 2)
                if (cb%ns > 0) call mv(cb%ns, cb%n, cb%kgt, u, cl%g0(1:cb%ns, ib))
             end associate
          end do
@@ -431,8 +433,8 @@ contains
       nj = cs%m
       ! Closing displacements and rates of every joint now, the closed joints' forces and the
       ! modal load.
-      call closing(nmt, nr, cl%cfg(ic)%joint, cl%w, cl%q, cl%qd, cl%d0, cl%dd0)
-      call closing(nmt, nj - nr, cl%cfg(ic)%open, cl%w, cl%q, cl%qd, cl%d0, cl%dd0)
+      call closing(nmt, cs%m, nr, cl%cfg(ic)%joint, cl%w, cl%q, cl%qd, cl%d0, cl%dd0)
+      call closing(nmt, cs%m, nj - nr, cl%cfg(ic)%open, cl%w, cl%q, cl%qd, cl%d0, cl%dd0)
       cl%r = 0.0_dp
       cl%p0 = -cl%gam*ag0
       do l = 1, nr
@@ -460,7 +462,7 @@ contains
       cl%qd = (4.0_dp*cl%qd - cl%qda)/3.0_dp
       cl%win = (4.0_dp*cl%win - cl%wina)/3.0_dp
       ! The closed joints' forces at the end, from the extrapolated coordinates, and the load.
-      call closing(nmt, nr, cl%cfg(ic)%joint, cl%w, cl%q, cl%qd, cl%d1, cl%dd1)
+      call closing(nmt, cs%m, nr, cl%cfg(ic)%joint, cl%w, cl%q, cl%qd, cl%d1, cl%dd1)
       cl%p1 = -cl%gam*ag1
       do l = 1, nr
          k = cl%cfg(ic)%joint(l)
@@ -471,7 +473,7 @@ contains
       ! The other joints open along the step: the Hermite path of their closing displacement
       ! through its values and rates at the step's ends (as `contact_may_act` for an exact
       ! free step) stays short of the gap.
-      call closing(nmt, nj - nr, cl%cfg(ic)%open, cl%w, cl%q, cl%qd, cl%d1, cl%dd1)
+      call closing(nmt, cs%m, nj - nr, cl%cfg(ic)%open, cl%w, cl%q, cl%qd, cl%d1, cl%dd1)
       do l = 1, nj - nr
          k = cl%cfg(ic)%open(l)
          if (cs%joint(k)%fractured) cycle
@@ -484,13 +486,13 @@ contains
       ! the relaxation of the massless DOFs' forces.
       do ib = 1, cl%nb
          associate (cb => cl%b(ib), o => cl%b(ib)%off)
-            cl%xin(1:cb%nm, 1) = cl%q(o + 1:o + cb%nm)
-            cl%xin(1:cb%nm, 2) = cl%qd(o + 1:o + cb%nm)
-            cl%xin(1:cb%nm, 3) = cl%qdd(o + 1:o + cb%nm)
-            call mvk(cb%n, cb%nm, 3, cb%phin, cl%xin(1:cb%nm, 1:3), cl%xout(1:cb%n, 1:3))
-            cl%ue(1:cb%n, ib) = cl%xout(1:cb%n, 1)
-            cl%ve(1:cb%n, ib) = cl%xout(1:cb%n, 2)
-            cl%ae(1:cb%n, ib) = cl%xout(1:cb%n, 3)
+            cb%xm(:, 1) = cl%q(o + 1:o + cb%nm)
+            cb%xm(:, 2) = cl%qd(o + 1:o + cb%nm)
+            cb%xm(:, 3) = cl%qdd(o + 1:o + cb%nm)
+            call mvk(cb%n, cb%nm, 3, cb%phin, cb%xm, cb%xn)
+            cl%ue(1:cb%n, ib) = cb%xn(:, 1)
+            cl%ve(1:cb%n, ib) = cb%xn(:, 2)
+            cl%ae(1:cb%n, ib) = cb%xn(:, 3)
             cl%ez(ib) = 0.0_dp
             if (cb%ns > 0) call massless_end(cb, cl%g0(1:cb%ns, ib), cl%ue(1:cb%n, ib), cl%ve(1:cb%n, ib), &
                                              cl%ae(1:cb%n, ib), cl%ez(ib))
@@ -582,7 +584,7 @@ contains
          if (record) then
             ! The closed joints' largest force along the substep: the Hermite path of the
             ! closing displacement through its values and rates at the substep's ends.
-            call closing(nmt, nr, c%joint, cl%w, cl%q, cl%qd, cl%d1, cl%dd1)
+            call closing(nmt, cs%m, nr, c%joint, cl%w, cl%q, cl%qd, cl%d1, cl%dd1)
             do l = 1, nr
                k = c%joint(l)
                rk = cl%kj(k)*(hermite_extreme(cl%dl(k), cl%ddl(k), cl%d1(k), cl%dd1(k), h, .false.) - cl%gap(k))
@@ -624,7 +626,7 @@ contains
    !> trapezoidal sum of the input work over the substeps).
    pure subroutine input_rate(cl, qd, ag, win, weight)
       type(closed_stepper), intent(in) :: cl
-      real(dp), intent(in) :: qd(:), ag, weight
+      real(dp), intent(in) :: qd(cl%nmt), ag, weight
       real(dp), intent(inout) :: win(:)
       integer :: ib
 
@@ -645,16 +647,11 @@ contains
       !> g^T K_ss^-1 g at the end (twice the strain energy of the massless DOFs' forces).
       real(dp), intent(out) :: ez
       real(dp) :: g(size(g0))
-      integer :: i, j, r
+      integer :: i, r
 
       ez = 0.0_dp
       if (cb%decay == 0.0_dp) return
-      g = 0.0_dp
-      do j = 1, cb%ns
-         do i = 1, cb%ns
-            g(i) = g(i) + cb%kssi(i, j)*g0(j)
-         end do
-      end do
+      call mv(cb%ns, cb%ns, cb%kssi, g0, g)
       ez = cb%decay*cb%decay*dot_product(g0, g)
       do i = 1, cb%ns
          r = cb%is(i)
