@@ -44,6 +44,7 @@ module pound_analysis
    use pound_step_retry, only: step_retry, retry_step, swap_step_data
    use pound_law_smooth, only: is_smooth
    use pound_law_impact, only: law_impact, impact_result
+   use pound_closed_steps, only: closed_stepper, closed_init, closed_step
    implicit none
    private
 
@@ -124,6 +125,8 @@ module pound_analysis
       !> `free_steps = 'exact'`: the steps taken exactly (no joint acting; -1: free steps by
       !> Newmark).
       integer :: exact_steps = -1
+      !> Of those, the steps taken exactly with elastic joints closed (pound_closed_steps).
+      integer :: closed_steps = 0
       !> Bilinear storeys (pound_storey_yield): one result a building; unallocated: all elastic.
       type(storey_yield_result), allocatable :: yielding(:)
    end type analysis_result
@@ -153,6 +156,8 @@ module pound_analysis
       type(contact_system) :: cs
       !> The ground motion, evaluated at the substep times.
       type(ground_motion_t) :: ground
+      !> With exact free steps: exact steps while elastic joints stay closed (pound_closed_steps).
+      type(closed_stepper) :: closed
    end type impact_stepping
 
    !> The integrator's u, v, a of one building, taken once before the time loop.

@@ -59,6 +59,7 @@ contains
       allocate (sub%st, source=prep%st_sub)
       sub%cs = prep%cs_sub
       sub%ground = ground
+      if (cfg%free_steps == free_exact) call closed_init(sub%closed, models, cs, cfg%dt, sub%m)
       call integrate(cfg, models, ag, st, cs, res, error, sub, sink)
    end procedure coupled_integrate
 
@@ -117,6 +118,7 @@ contains
       type(lane_peaks), allocatable :: pk(:)
       type(analysis_result), pointer :: r
       logical :: out, coupled, finite, impact, output, track, exact, plain, loaded, batched, inelastic, collapsed, retried
+      logical :: closed
       logical :: frozen(size(models))
       integer :: method_steps
       type(storey_yield_set), allocatable :: ys(:)
@@ -238,9 +240,15 @@ contains
          ! With exact free steps (uniform stepping) a step in which a joint can act is Newmark's
          ! at dt, predicted again.
          n_sub = 1
+         closed = .false.
          if (impact .or. (exact .and. coupled)) then
             if (track) call contact_track_paths(cs, st)
-            if (loaded .or. contact_may_act(cs, st)) then
+            ! Joints carrying force, all elastic and staying closed: the step exact (closed).
+            if (loaded .and. impact) call closed_step(sub%closed, st, models, cs, ag_old, ag_new, step, closed, res%building, &
+                                                     t - cfg%dt)
+            if (closed) then
+               res%closed_steps = res%closed_steps + 1
+            else if (loaded .or. contact_may_act(cs, st)) then
                method_steps = method_steps + 1
                if (impact) then
                   n_sub = sub%m
@@ -269,7 +277,8 @@ contains
                res%substeps = res%substeps + 1
             end if
             output = out .and. j == n_sub
-            if (coupled) then
+            if (closed) retried = .false.
+            if (coupled .and. .not. closed) then
                call contact_step(cs, st, t_sub, step, error)
                retried = allocated(error) .and. .not. inelastic
                if (retried) call retry_step(rt, models, st, cs, ag_old, ag_new, t_sub, dt_now, step, error, res%warnings)
@@ -297,7 +306,7 @@ contains
                else if (batched) then
                   call st(ib)%advance_lanes(models(ib), lag_old, lag_new, t, pk(ib)%peak, pk(ib)%time, win, eout)
                   cycle
-               else if (.not. retried) then
+               else if (.not. (retried .or. closed)) then
                   call st(ib)%commit(models(ib), ag_old, ag_new, win(1), eout(1))
                end if
                call response_sample(res%building(ib), models(ib), view(ib)%u, view(ib)%v, view(ib)%a, &

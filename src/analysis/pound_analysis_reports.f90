@@ -71,6 +71,10 @@ contains
       text = str(res%exact_steps)//' of '//str(res%n_steps)//' steps exact (no joint acting), '// &
              str(res%n_steps - res%exact_steps)//" by Newmark's method"
       if (res%substep_factor > 0) text = text//' in substeps'
+      if (res%closed_steps > 0) text = str(res%exact_steps - res%closed_steps)//' of '//str(res%n_steps)// &
+                                       ' steps exact with no joint acting, '//str(res%closed_steps)// &
+                                       ' exact with elastic joints closed, '//str(res%n_steps - res%exact_steps)// &
+                                       " by Newmark's method in substeps"
    end function exact_text
 
    !> Write each warning of a list (e.g. `res%warnings`, `sweep%warnings`) as one line, `prefix`

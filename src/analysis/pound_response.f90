@@ -32,7 +32,7 @@ module pound_response
 
    public :: response_record, response_init, response_sample, response_finish, response_store
    public :: history_sink, response_flush, default_block_bytes, history_block, discard_sink
-   public :: response_block_full, response_sample_rows, response_release
+   public :: response_block_full, response_sample_rows, response_release, response_peaks_inside
    public :: q_u, q_v, q_a_abs, q_drift, q_shear, deformed_limit
 
    !> Quantity indices.
@@ -136,6 +136,9 @@ module pound_response
       !> A frame's previous DOF velocities (its rows' rates are recovered only on the steps
       !> that may refine a peak).
       real(dp), allocatable :: v_last(:)
+      !> Whether the last sample's rates of the rows were recovered (`refine_peaks`: they are
+      !> then the next interval's start rates, not recovered again).
+      logical :: rates_last = .false.
    end type response_record
 
 contains
@@ -221,6 +224,7 @@ contains
          allocate (rec%last(n, 2, 3, 2), source=0.0_dp, stat=stat(1))
          if (stat(1) == 0 .and. .not. rec%stick) allocate (rec%v_last(b%n), source=0.0_dp, stat=stat(1))
          rec%t_last = -1.0_dp
+         rec%rates_last = .false.
          if (stat(1) /= 0) then
             call fatal_error(error, 'cannot allocate the response work arrays ('//str(12*n)//' reals)')
             return
@@ -419,13 +423,17 @@ contains
             end do
             if (near .and. rec%t_last >= 0.0_dp) then
                now(:, 2, 1) = v(b%floor_dof)
-               old(:, 2, 1) = rec%v_last(b%floor_dof)
+               if (.not. rec%rates_last) then
+                  old(:, 2, 1) = rec%v_last(b%floor_dof)
+                  call recover_all(b%drift, rec%v_last, old(:, 2, 2))
+                  call recover_all(b%shear, rec%v_last, old(:, 2, 3))
+               end if
                call recover_all(b%drift, v, now(:, 2, 2))
-               call recover_all(b%drift, rec%v_last, old(:, 2, 2))
                call recover_all(b%shear, v, now(:, 2, 3))
-               call recover_all(b%shear, rec%v_last, old(:, 2, 3))
+               rec%rates_last = .true.
             else
                nq = 0
+               rec%rates_last = .false.
             end if
             rec%v_last = v
          end if
@@ -532,6 +540,23 @@ contains
          refs(new) = refs(new) + 1
       end do
    end subroutine take_snapshots
+
+   !> Peaks of v and a_abs at the response points from a state inside a step that is not
+   !> sampled (the substeps of a step with joints closed, pound_closed_steps).
+   pure subroutine response_peaks_inside(rec, pv, pa, ag, t)
+      !> The record.
+      type(response_record), intent(inout) :: rec
+      !> Relative velocity and acceleration at the response points (`rec%n` each).
+      real(dp), intent(in) :: pv(:), pa(:)
+      !> Ground acceleration (m/s^2) and time (s).
+      real(dp), intent(in) :: ag, t
+      integer :: i
+
+      do i = 1, rec%n
+         call keep_peak(pv(i), t, rec%peak(i, q_v), rec%peak_time(i, q_v))
+         call keep_peak(pa(i) + ag, t, rec%peak(i, q_a_abs), rec%peak_time(i, q_a_abs))
+      end do
+   end subroutine response_peaks_inside
 
    !> Running absolute maximum of one value: peak and its time when |x| exceeds the peak.
    pure subroutine keep_peak(x, t, peak, peak_time)

@@ -20,7 +20,7 @@ module pound_modal_step
    implicit none
    private
 
-   public :: modal_step_coefficients
+   public :: modal_step_coefficients, modal_step_response
 
 contains
 
@@ -33,7 +33,38 @@ contains
       real(dp), intent(out) :: coef(8)
       !> Input work and damping energy of the step: x^T wi x, x^T wd x.
       real(dp), intent(out) :: wi(4, 4), wd(4, 4)
-      real(dp) :: a(4, 4), p(4, 4), t(4, 4), pt(4, 4), q(4, 4)
+      real(dp) :: a(4, 4), t(4, 4), q(4, 4)
+
+      call step_system(lambda, c, gamma, h, a, t)
+      coef = modal_step_response(lambda, c, gamma, h)
+      q = 0.0_dp
+      q(2, 3) = -0.5_dp*gamma
+      q(3, 2) = -0.5_dp*gamma
+      wi = integral_form(a, q, h, t)
+      q = 0.0_dp
+      q(2, 2) = c
+      wd = integral_form(a, q, h, t)
+   end subroutine modal_step_coefficients
+
+   !> The step coefficients alone (`coef` of `modal_step_coefficients`): q1 = coef(1:4) . x
+   !> and q1' = coef(5:8) . x, x = (q0, q0', a_g0, a_g1); with gamma = -1, x = (q0, q0', p0,
+   !> p1) for a modal load p linear over the step.
+   pure function modal_step_response(lambda, c, gamma, h) result(coef)
+      !> As `modal_step_coefficients`.
+      real(dp), intent(in) :: lambda, c, gamma, h
+      real(dp) :: coef(8)
+      real(dp) :: a(4, 4), t(4, 4), pt(4, 4)
+
+      call step_system(lambda, c, gamma, h, a, t)
+      pt = matmul(expm(a*h), t)
+      coef(1:4) = pt(1, :)
+      coef(5:8) = pt(2, :)
+   end function modal_step_response
+
+   !> The mode's first-order system y' = A y, y = (q, q', a_g, s), and y0 = t x.
+   pure subroutine step_system(lambda, c, gamma, h, a, t)
+      real(dp), intent(in) :: lambda, c, gamma, h
+      real(dp), intent(out) :: a(4, 4), t(4, 4)
 
       a = 0.0_dp
       a(1, 2) = 1.0_dp
@@ -48,18 +79,7 @@ contains
       t(3, 3) = 1.0_dp
       t(4, 3) = -1.0_dp/h
       t(4, 4) = 1.0_dp/h
-      p = expm(a*h)
-      pt = matmul(p, t)
-      coef(1:4) = pt(1, :)
-      coef(5:8) = pt(2, :)
-      q = 0.0_dp
-      q(2, 3) = -0.5_dp*gamma
-      q(3, 2) = -0.5_dp*gamma
-      wi = integral_form(a, q, h, t)
-      q = 0.0_dp
-      q(2, 2) = c
-      wd = integral_form(a, q, h, t)
-   end subroutine modal_step_coefficients
+   end subroutine step_system
 
    !> t^T (int_0^h exp(A^T s) Q exp(A s) ds) t, symmetrised. The integral over h/2^k, with
    !> |A| h/2^k <= 1/2, is the exponential of the block matrix [[-A^T, Q], [0, A]] h/2^k (Van

@@ -53,7 +53,7 @@ module pound_newmark
    public :: newmark_path
    public :: kinetic_energy, strain_energy
    public :: en_input, en_kinetic, en_strain, en_damping
-   public :: newmark_add_energies, newmark_predict_exact, newmark_drop_exact
+   public :: newmark_add_energies, newmark_predict_exact, newmark_drop_exact, newmark_put_state
    !> Largest model (DOFs) that exact free steps take: they hold the n x n modes and cost
    !> O(n^2) a step.
    integer, parameter, public :: exact_max_dofs = 2000
@@ -125,6 +125,9 @@ module pound_newmark
       !> formed again, `band_state`, before a Newmark step needs them).
       integer :: nm = 0
       logical :: band_stale = .false.
+      !> Exact free steps of a model with DOFs without mass: the relaxation coordinates of q
+      !> are zero (set to zero by `relaxed` and not taken from a state since): they stay zero.
+      logical :: z_zero = .false.
       !> Exact free steps of a model with DOFs without mass: psi^T, whose rows give the
       !> coordinates (condensed modes and relaxation coordinates) of a state, q = psi^T u
       !> (n, n; unallocated when every DOF has a mass: q = phi^T M u).
@@ -491,6 +494,37 @@ contains
       st%pending = .false.
       st%modal_valid = .false.
    end subroutine newmark_set_state
+
+   !> Put in the end of a step computed elsewhere (an exact step with joints closed,
+   !> pound_closed_steps): u, v, a, with the kinetic and strain energy of that state (the
+   !> caller has them from its modal coordinates: no band product here; C v, (K+G) u and
+   !> (K+G) v are formed again, `band_state`, before a Newmark step needs them), the step's
+   !> input work `work` and the work `joint_work` the joints' forces did on the building; the
+   !> damping energy of the step is the balance, work + joint_work minus the change of
+   !> kinetic + strain energy.
+   pure subroutine newmark_put_state(st, u, v, a, kinetic, strain, work, joint_work)
+      !> Integrator state.
+      class(newmark_state), intent(inout) :: st
+      !> Displacement, velocity and acceleration at the end of the step (n each).
+      real(dp), intent(in) :: u(:), v(:), a(:)
+      !> Kinetic and strain energy of that state (kJ).
+      real(dp), intent(in) :: kinetic, strain
+      !> Input work of the step and work of the joints' forces on the building (kJ).
+      real(dp), intent(in) :: work, joint_work
+      real(dp) :: e0
+
+      e0 = st%kinetic + st%strain
+      st%u = u
+      st%v = v
+      st%a = a
+      st%kinetic = kinetic
+      st%strain = strain
+      st%band_stale = .true.
+      st%pending = .false.
+      st%modal_valid = .false.
+      st%input_work = st%input_work + work
+      st%damping_energy = st%damping_energy + (work + joint_work) - ((st%kinetic + st%strain) - e0)
+   end subroutine newmark_put_state
 
    !> Overwrite x with Khat^{-1} x (one tridiagonal or banded solve).
    subroutine newmark_solve(st, x)

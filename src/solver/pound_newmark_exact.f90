@@ -11,7 +11,8 @@
 !> the nm modes of the condensed system and the ns relaxation coordinates, the coordinates of
 !> a state are psi^T u, and a run of exact steps forms no band product (`band_stale`).
 !>
-!> Per mode, `coef(:, i)` holds: 1:4 and 5:8 the end q and q' against x = (q0, q0', a_g0, a_g1);
+!> Per mode, `coef(i, :)` holds (set up as coef(:, i), then held transposed, mode-fastest):
+!> 1:4 and 5:8 the end q and q' against x = (q0, q0', a_g0, a_g1);
 !> 9:15 the input work and 16:22 the damping energy against the products (q0^2, q0 q0',
 !> q0'^2, q0 a_g0, q0 a_g1, q0' a_g0, q0' a_g1) (the forms' off-diagonal terms doubled); the
 !> forms' terms in a_g alone (a_g0^2, a_g0 a_g1, a_g1^2) are the same for every step and summed
@@ -146,6 +147,8 @@ contains
                           'not finite at dt = '//str(st%dt)//' s')
          return
       end if
+      ! Held mode-fastest, (n, 22): the step's kernel runs over the modes in vectors.
+      st%coef = transpose(st%coef)
       st%exact = .true.
       st%pending = .false.
       st%modal_valid = .false.
@@ -262,6 +265,7 @@ contains
       end if
       n = st%n
       if (.not. st%modal_valid) then
+         st%z_zero = .false.
          if (allocated(st%psi)) then
             ! With DOFs without mass: q = psi^T u, q' = psi^T v (`condensed_modes`).
             call coordinate_kernel(n, st%psi, st%u, st%v, st%q, st%qd)
@@ -282,12 +286,19 @@ contains
       ! (or are 0, as in a run without joints acting) they are 0 and their columns are left out.
       ncol = n
       if (allocated(st%psi)) then
-         call flush_negligible(n, st%xq, st%xqd, st%xw)
-         if (relaxed(st)) then
-            st%xq(st%nm + 1:n) = 0.0_dp
-            st%xqd(st%nm + 1:n) = 0.0_dp
-            st%xw(st%nm + 1:n) = 0.0_dp
+         if (st%z_zero) then
+            ! Zero relaxation coordinates stay zero (z(h) = exp(-h/a1) z(0)).
+            call flush_negligible(st%nm, st%xq, st%xqd, st%xw)
             ncol = st%nm
+         else
+            call flush_negligible(n, st%xq, st%xqd, st%xw)
+            if (relaxed(st)) then
+               st%xq(st%nm + 1:n) = 0.0_dp
+               st%xqd(st%nm + 1:n) = 0.0_dp
+               st%xw(st%nm + 1:n) = 0.0_dp
+               ncol = st%nm
+               st%z_zero = .true.
+            end if
          end if
       end if
       call shape_kernel(n, ncol, st%phi, st%xq, st%xqd, st%xw, st%u, b%ground, ag_new, st%du, st%xv, st%xa)
@@ -364,22 +375,43 @@ contains
    !> and damping energy added to `din`, `ddamp`.
    pure subroutine modal_kernel(n, coef, lam, cm, q, qd, ag0, ag1, xq, xqd, xw, din, ddamp)
       integer, intent(in) :: n
-      real(dp), intent(in) :: coef(22, n), lam(n), cm(n), q(n), qd(n), ag0, ag1
+      real(dp), intent(in) :: coef(n, 22), lam(n), cm(n), q(n), qd(n), ag0, ag1
       real(dp), intent(out) :: xq(n), xqd(n), xw(n)
       real(dp), intent(inout) :: din, ddamp
-      real(dp) :: p(7), e1, e2
-      integer :: i
+      real(dp) :: e1(n), e2(n), p1, p2, p3, p4, p5, p6, p7, s1(4), s2(4)
+      integer :: i, n4
 
+      !GCC$ vector
       do i = 1, n
-         xq(i) = coef(1, i)*q(i) + coef(2, i)*qd(i) + coef(3, i)*ag0 + coef(4, i)*ag1
-         xqd(i) = coef(5, i)*q(i) + coef(6, i)*qd(i) + coef(7, i)*ag0 + coef(8, i)*ag1
+         xq(i) = coef(i, 1)*q(i) + coef(i, 2)*qd(i) + coef(i, 3)*ag0 + coef(i, 4)*ag1
+         xqd(i) = coef(i, 5)*q(i) + coef(i, 6)*qd(i) + coef(i, 7)*ag0 + coef(i, 8)*ag1
          xw(i) = -(lam(i)*xq(i) + cm(i)*xqd(i))
-         p = [q(i)*q(i), q(i)*qd(i), qd(i)*qd(i), q(i)*ag0, q(i)*ag1, qd(i)*ag0, qd(i)*ag1]
-         e1 = sum(coef(9:15, i)*p)
-         e2 = sum(coef(16:22, i)*p)
-         din = din + e1
-         ddamp = ddamp + e2
+         p1 = q(i)*q(i)
+         p2 = q(i)*qd(i)
+         p3 = qd(i)*qd(i)
+         p4 = q(i)*ag0
+         p5 = q(i)*ag1
+         p6 = qd(i)*ag0
+         p7 = qd(i)*ag1
+         e1(i) = ((coef(i, 9)*p1 + coef(i, 10)*p2) + (coef(i, 11)*p3 + coef(i, 12)*p4)) + &
+                 ((coef(i, 13)*p5 + coef(i, 14)*p6) + coef(i, 15)*p7)
+         e2(i) = ((coef(i, 16)*p1 + coef(i, 17)*p2) + (coef(i, 18)*p3 + coef(i, 19)*p4)) + &
+                 ((coef(i, 20)*p5 + coef(i, 21)*p6) + coef(i, 22)*p7)
       end do
+      ! The step's energies summed in four partial sums (the sums vectorise).
+      s1 = 0.0_dp
+      s2 = 0.0_dp
+      n4 = n - mod(n, 4)
+      do i = 1, n4, 4
+         s1 = s1 + e1(i:i + 3)
+         s2 = s2 + e2(i:i + 3)
+      end do
+      do i = n4 + 1, n
+         s1(1) = s1(1) + e1(i)
+         s2(1) = s2(1) + e2(i)
+      end do
+      din = din + ((s1(1) + s1(3)) + (s1(2) + s1(4)))
+      ddamp = ddamp + ((s2(1) + s2(3)) + (s2(2) + s2(4)))
    end subroutine modal_kernel
 
    !> u, v, a at the end from the modes: du = Phi q - u, v = Phi q', a = Phi w - r a_g (the first
@@ -388,14 +420,27 @@ contains
       integer, intent(in) :: n, ncol
       real(dp), intent(in) :: phi(n, n), xq(n), xqd(n), xw(n), u(n), ground(n), ag1
       real(dp), intent(out) :: du(n), xv(n), xa(n)
-      integer :: i, j
+      integer :: i, j, n4
 
       do j = 1, n
          du(j) = -u(j)
          xv(j) = 0.0_dp
          xa(j) = -ground(j)*ag1
       end do
-      do i = 1, ncol
+      ! Four columns at a time: du, v and a are read and written once for four columns.
+      n4 = ncol - mod(ncol, 4)
+      do i = 1, n4, 4
+         !GCC$ vector
+         do j = 1, n
+            du(j) = du(j) + ((phi(j, i)*xq(i) + phi(j, i + 1)*xq(i + 1)) + &
+                             (phi(j, i + 2)*xq(i + 2) + phi(j, i + 3)*xq(i + 3)))
+            xv(j) = xv(j) + ((phi(j, i)*xqd(i) + phi(j, i + 1)*xqd(i + 1)) + &
+                             (phi(j, i + 2)*xqd(i + 2) + phi(j, i + 3)*xqd(i + 3)))
+            xa(j) = xa(j) + ((phi(j, i)*xw(i) + phi(j, i + 1)*xw(i + 1)) + &
+                             (phi(j, i + 2)*xw(i + 2) + phi(j, i + 3)*xw(i + 3)))
+         end do
+      end do
+      do i = n4 + 1, ncol
          !GCC$ vector
          do j = 1, n
             du(j) = du(j) + phi(j, i)*xq(i)
@@ -419,21 +464,16 @@ contains
       st%u = st%u + st%du
       st%v = st%xv
       st%a = st%xa
-      if (allocated(st%psi)) then
-         ! DOFs without mass: the energies from the coordinates (kinetic q'^T q'/2 of the
-         ! modes, strain (sum omega^2 q^2 + z^T z)/2), and C v, (K+G) u, (K+G) v only when
-         ! a Newmark step needs them (`band_stale`): no band product in a run of exact steps.
-         associate (nm => st%nm, n => st%n)
-            st%kinetic = 0.5_dp*sum(st%xqd(1:nm)**2)
-            st%strain = 0.5_dp*(sum(st%lam(1:nm)*st%xq(1:nm)**2) + sum(st%xq(nm + 1:n)**2))
-         end associate
-         st%band_stale = .true.
-         st%pending = .false.
-      else
-         ! C v, (K+G) u and v, the kinetic and strain energy of the new state, as for any state
-         ! put in (then the modal coordinates are the step's).
-         call newmark_set_state(st, b)
-      end if
+      ! The energies from the coordinates (kinetic q'^T q'/2 of the mass-normalised modes,
+      ! strain (sum omega^2 q^2 + z^T z)/2 with DOFs without mass), and C v, (K+G) u,
+      ! (K+G) v only when a Newmark step needs them (`band_stale`): no band product in a run
+      ! of exact steps.
+      associate (nm => st%nm, n => st%n)
+         st%kinetic = 0.5_dp*sum(st%xqd(1:nm)**2)
+         st%strain = 0.5_dp*(sum(st%lam(1:nm)*st%xq(1:nm)**2) + sum(st%xq(nm + 1:n)**2))
+      end associate
+      st%band_stale = .true.
+      st%pending = .false.
       st%q = st%xq
       st%qd = st%xqd
       st%modal_valid = .true.
