@@ -180,7 +180,7 @@ contains
       if (allocated(error)) return
       call read_sweep(path, text, groups(i), size(d%contacts), &
                       any([(is_frame(d%buildings(k)), k=1, size(d%buildings))]), d%sweep, error, &
-                      any(d%buildings%storey_law == 'bilinear'))
+                      any(d%buildings%storey_law == 'bilinear' .or. d%buildings%hinge_law == 'elastic_plastic'))
       if (allocated(error)) return
       call check_parameter_sweep(path, groups(i), d, error)
    end subroutine parse_deck

@@ -28,7 +28,7 @@ contains
       integer, intent(in) :: n_contacts
       !> Whether any building of the deck is a frame (has column segments).
       logical, intent(in) :: has_frame
-      !> Some building has bilinear storeys (`ductility` can be targeted).
+      !> Some building yields: bilinear storeys or plastic hinges (`ductility` can be targeted).
       logical, intent(in), optional :: has_bilinear
       !> Resolved sweep.
       type(sweep_config), intent(out) :: cfg
@@ -140,8 +140,9 @@ contains
             ! 'all' names it only where it exists.
             if (index(lower(target_quantities), 'ductility') > 0) then
                call fail(at, 'target_quantities', "target_quantities = '"//trim(adjustl(target_quantities))// &
-                         "': ductility is the peak ductility of bilinear storeys, and no building of the "// &
-                         "deck has storey_law = 'bilinear'", error)
+                         "': ductility is the peak ductility of bilinear storeys (the peak plastic rotation of "// &
+                         "a frame's hinges), and no building of the deck has storey_law = 'bilinear' or "// &
+                         "hinge_law = 'elastic_plastic'", error)
                return
             end if
             cfg%target_quantities(q_ductility) = .false.
@@ -152,7 +153,7 @@ contains
          end if
       end subroutine take_target
 
-      !> Whether some building has bilinear storeys.
+      !> Whether some building has bilinear storeys or plastic hinges.
       logical function bilinear()
          bilinear = .false.
          if (present(has_bilinear)) bilinear = has_bilinear

@@ -685,8 +685,9 @@ contains
          do k = 1, size(shown)
             line = line//right_cell(trim(heads(k)), 10)
          end do
-         ! The peak ductility of bilinear storeys, where the sweep targets it.
-         mu = cfg%target_quantities(q_ductility) .and. allocated(models(ib)%yield_shear)
+         ! The peak ductility of bilinear storeys (plastic rotation of hinges), where targeted.
+         mu = cfg%target_quantities(q_ductility) .and. (allocated(models(ib)%yield_shear) .or. &
+                                                         allocated(models(ib)%hinge_moment))
          if (mu) line = line//right_cell('ductility', 11)
          if (cfg%target > 0.0_dp) line = line//'  target'
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line

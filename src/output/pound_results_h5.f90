@@ -377,7 +377,8 @@ contains
                if (allocated(error)) return
             end do
             ! The peak ductility of bilinear storeys, where the deck targets it.
-            if (deck%sweep%target_quantities(q_ductility) .and. allocated(models(ib)%yield_shear)) then
+            if (deck%sweep%target_quantities(q_ductility) .and. (allocated(models(ib)%yield_shear) .or. &
+                                                                 allocated(models(ib)%hinge_moment))) then
                row = sw%max_abs_lambda(q_ductility, ib, :)
                call h5_write(h5, g//'/max_abs_lambda/'//models(ib)%name//'/ductility', row, error, units='%')
                if (allocated(error)) return

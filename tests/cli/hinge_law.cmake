@@ -20,6 +20,23 @@ file(READ ${WORK_DIR}/seed_frame_hinges_summary.csv csv)
 expect_contains("summary CSV" "${csv}" "building,B,plastic_rotation,")
 file(REMOVE ${WORK_DIR}/seed_frame_hinges.out ${WORK_DIR}/seed_frame_hinges.h5 ${WORK_DIR}/seed_frame_hinges_summary.csv)
 
+# A gap sweep may target the hinges' plastic rotation (target 'ductility': per storey the
+# largest column-hinge plastic rotation) and lists its largest |lambda|.
+file(WRITE ${WORK_DIR}/sweep_rot.nml "${good}\n&sweep gap_from = 0.0, gap_to = 0.006, n_gaps = 3, target_lambda = 10.0, target_quantities = 'ductility' /\n")
+run_pound(r sweep_rot.nml)
+expect_equal("sweep_rot: exit status" 0 "${r_rc}")
+file(READ ${WORK_DIR}/sweep_rot.out listing)
+expect_contains("sweep_rot: listing" "${listing}" "      gap [mm]    impacts         Q     drift         u     a_abs  ductility  target")
+file(REMOVE ${WORK_DIR}/sweep_rot.out ${WORK_DIR}/sweep_rot.h5 ${WORK_DIR}/sweep_rot_summary.csv)
+# Without a yielding building the target is refused.
+file(READ ${SOURCE_DIR}/input/two_frames_fe.nml elastic)
+string(REPLACE "../../shared" "${SOURCE_DIR}/../shared" elastic "${elastic}")
+file(WRITE ${WORK_DIR}/sweep_elastic.nml "${elastic}\n&sweep gap_from = 0.0, gap_to = 0.006, n_gaps = 3, target_lambda = 10.0, target_quantities = 'ductility' /\n")
+run_pound(r sweep_elastic.nml)
+expect_equal("sweep_elastic: exit status" 1 "${r_rc}")
+expect_contains("sweep_elastic: message" "${r_err}" "no building of the deck has storey_law = 'bilinear' or hinge_law = 'elastic_plastic'")
+expect_no_outputs(sweep_elastic.nml)
+
 # bad(<name> <from> <to> <message>): the example deck with <from> replaced by <to> fails with <message>.
 function(bad name from to needle)
   string(REPLACE "${from}" "${to}" deck "${good}")
