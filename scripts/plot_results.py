@@ -606,13 +606,29 @@ def plot_shear(plt, r, args, written, notes):
 
 
 def bilinear_buildings(r):
-    """The buildings with bilinear storeys (a ductility in the uncoupled analysis)."""
-    return [b for b in r.buildings if "peak/ductility" in r.analyses["uncoupled"][b]]
+    """The yielding buildings: bilinear storeys (a ductility) or a frame's plastic hinges (a
+    residual drift without a ductility), in the uncoupled analysis."""
+    return [b for b in r.buildings if "residual_drift" in r.analyses["uncoupled"][b]]
+
+
+def hysteresis_storey(d):
+    """The storey whose loop is drawn and its label: the most ductile bilinear storey; for a frame
+    with plastic hinges the storey of the largest peak |drift|."""
+    import numpy as np
+
+    if "peak/ductility" in d:
+        j = int(np.argmax(d["peak/ductility"]))
+        return j, "mu"
+    peak = d["peak"].get("drift")
+    if peak is None and "drift" in d:
+        peak = np.max(np.abs(d["drift"]), axis=0)
+    return (int(np.argmax(np.abs(peak))) if peak is not None else 0), "drift"
 
 
 def plot_hysteresis(plt, r, args, written, notes):
-    """Bilinear storeys: the force-drift loop of each building's most ductile storey (uncoupled
-    against coupled) and the residual drift profile."""
+    """Yielding buildings: the force-drift loop of each building's most ductile storey (bilinear
+    storeys) or the storey of its largest drift (frames with plastic hinges), uncoupled against
+    coupled, and the residual drift profile."""
     import numpy as np
 
     names = bilinear_buildings(r)
@@ -621,13 +637,16 @@ def plot_hysteresis(plt, r, args, written, notes):
     for ib, b in enumerate(names):
         ax, ax2 = axes[ib, 0], axes[ib, 1]
         runs = [("uncoupled", "0.45", "--")] + ([("coupled", "black", "-")] if coupled else [])
-        mu = r.analyses["coupled" if coupled else "uncoupled"][b]["peak/ductility"]
-        j = int(np.argmax(mu))
+        j, kind = hysteresis_storey(r.analyses["coupled" if coupled else "uncoupled"][b])
         for an, color, ls in runs:
             d = r.analyses[an][b]
             if "drift" in d and "storey_shear" in d:
+                if kind == "mu":
+                    label = f"{an} (mu = {d['peak/ductility'][j]:.2f})"
+                else:
+                    label = f"{an} (peak drift {1.0e3 * np.max(np.abs(d['drift'][:, j])):.1f} mm)"
                 ax.plot(1.0e3 * d["drift"][:, j], d["storey_shear"][:, j], color=color, linestyle=ls,
-                        linewidth=1.0, label=f"{an} (mu = {d['peak/ductility'][j]:.2f})")
+                        linewidth=1.0, label=label)
             res = d["residual_drift"]
             n = len(res)
             x, y = _storey_profile(1.0e3 * res)
@@ -644,7 +663,7 @@ def plot_hysteresis(plt, r, args, written, notes):
         ax2.set_ylabel("storey")
         ax2.set_title(f"building {b}: residual drift")
         ax2.legend(loc="upper right")
-    suptitle(fig, r, "Bilinear storeys: hysteresis loops and residual drifts")
+    suptitle(fig, r, "Yielding buildings: hysteresis loops and residual drifts")
     save(fig, r, "hysteresis", args, written)
     plt.close(fig)
 
@@ -1155,7 +1174,7 @@ def run(argv):
             continue
         if name == "hysteresis" and not bilinear_buildings(r):
             if "hysteresis" in args.explicit:
-                notes.append("hysteresis: skipped (no building with bilinear storeys in this file)")
+                notes.append("hysteresis: skipped (no building with bilinear storeys or plastic hinges in this file)")
             continue
         if name == "study" and not has_study(r.path):
             if "study" in args.explicit:
