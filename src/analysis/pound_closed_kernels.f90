@@ -7,7 +7,7 @@ module pound_closed_kernels
    implicit none
    private
 
-   public :: closing, dot8, substep, modal_acceleration, mv2, mv, mvk, hermite_extreme
+   public :: closing, dot8, substep, modal_acceleration, mv2, mv, mvk, mv3, hermite_extreme
 
    !> Modal coordinates and rates below this are set to zero (as in pound_newmark_exact: no
    !> subnormal numbers).
@@ -165,6 +165,44 @@ contains
          end do
       end do
    end subroutine mvk
+
+   !> y1 = A x1, y2 = A x2, y3 = A x3 (A n x m) in one pass over A: the same sums, in the same
+   !> order, as `mvk` with k = 3 (bit for bit), with A read once for the three products and
+   !> the results written straight into the caller's vectors.
+   pure subroutine mv3(n, m, a, x1, x2, x3, y1, y2, y3)
+      !> Rows and columns of A.
+      integer, intent(in) :: n, m
+      !> The matrix.
+      real(dp), intent(in) :: a(n, m)
+      !> The vectors multiplied (m each).
+      real(dp), intent(in) :: x1(m), x2(m), x3(m)
+      !> The products (n each).
+      real(dp), intent(out) :: y1(n), y2(n), y3(n)
+      integer :: i, j, m4
+
+      do i = 1, n
+         y1(i) = 0.0_dp
+         y2(i) = 0.0_dp
+         y3(i) = 0.0_dp
+      end do
+      m4 = m - mod(m, 4)
+      do j = 1, m4, 4
+         !GCC$ vector
+         do i = 1, n
+            y1(i) = y1(i) + ((a(i, j)*x1(j) + a(i, j + 1)*x1(j + 1)) + (a(i, j + 2)*x1(j + 2) + a(i, j + 3)*x1(j + 3)))
+            y2(i) = y2(i) + ((a(i, j)*x2(j) + a(i, j + 1)*x2(j + 1)) + (a(i, j + 2)*x2(j + 2) + a(i, j + 3)*x2(j + 3)))
+            y3(i) = y3(i) + ((a(i, j)*x3(j) + a(i, j + 1)*x3(j + 1)) + (a(i, j + 2)*x3(j + 2) + a(i, j + 3)*x3(j + 3)))
+         end do
+      end do
+      do j = m4 + 1, m
+         !GCC$ vector
+         do i = 1, n
+            y1(i) = y1(i) + a(i, j)*x1(j)
+            y2(i) = y2(i) + a(i, j)*x2(j)
+            y3(i) = y3(i) + a(i, j)*x3(j)
+         end do
+      end do
+   end subroutine mv3
 
    !> The least (`lowest`) or largest value over [0, h] of the cubic Hermite path through
    !> (c0, d0) at 0 and (c1, d1) at h (values, rates).

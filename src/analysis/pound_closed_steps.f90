@@ -59,7 +59,7 @@ module pound_closed_steps
    use pound_contact_pair, only: end_sign
    use pound_law_smooth, only: is_smooth
    use pound_response, only: response_record, response_peaks_inside
-   use pound_closed_kernels, only: closing, substep, modal_acceleration, mv2, mv, mvk, hermite_extreme, dot8
+   use pound_closed_kernels, only: closing, substep, modal_acceleration, mv2, mv, mvk, mv3, hermite_extreme, dot8
    implicit none
    private
 
@@ -486,13 +486,8 @@ contains
       ! the relaxation of the massless DOFs' forces.
       do ib = 1, cl%nb
          associate (cb => cl%b(ib), o => cl%b(ib)%off)
-            cb%xm(:, 1) = cl%q(o + 1:o + cb%nm)
-            cb%xm(:, 2) = cl%qd(o + 1:o + cb%nm)
-            cb%xm(:, 3) = cl%qdd(o + 1:o + cb%nm)
-            call mvk(cb%n, cb%nm, 3, cb%phin, cb%xm, cb%xn)
-            cl%ue(1:cb%n, ib) = cb%xn(:, 1)
-            cl%ve(1:cb%n, ib) = cb%xn(:, 2)
-            cl%ae(1:cb%n, ib) = cb%xn(:, 3)
+            call mv3(cb%n, cb%nm, cb%phin, cl%q(o + 1:o + cb%nm), cl%qd(o + 1:o + cb%nm), cl%qdd(o + 1:o + cb%nm), &
+                     cl%ue(1:cb%n, ib), cl%ve(1:cb%n, ib), cl%ae(1:cb%n, ib))
             cl%ez(ib) = 0.0_dp
             if (cb%ns > 0) call massless_end(cb, cl%g0(1:cb%ns, ib), cl%ue(1:cb%n, ib), cl%ve(1:cb%n, ib), &
                                              cl%ae(1:cb%n, ib), cl%ez(ib))
