@@ -411,7 +411,10 @@ contains
             call chain_drift(n, v, now(:, 2, 2))
             nq = 2
          else
-            now(:, 1, 1) = u(b%floor_dof)
+            ! Gathers by explicit loops: an index-vector assignment copies the index first.
+            do i = 1, n
+               now(i, 1, 1) = u(b%floor_dof(i))
+            end do
             now(:, 1, 2) = rec%pd
             now(:, 1, 3) = rec%ps
             nq = 3
@@ -422,9 +425,13 @@ contains
                end do
             end do
             if (near .and. rec%t_last >= 0.0_dp) then
-               now(:, 2, 1) = v(b%floor_dof)
+               do i = 1, n
+                  now(i, 2, 1) = v(b%floor_dof(i))
+               end do
                if (.not. rec%rates_last) then
-                  old(:, 2, 1) = rec%v_last(b%floor_dof)
+                  do i = 1, n
+                     old(i, 2, 1) = rec%v_last(b%floor_dof(i))
+                  end do
                   call recover_all(b%drift, rec%v_last, old(:, 2, 2))
                   call recover_all(b%shear, rec%v_last, old(:, 2, 3))
                end if
@@ -468,8 +475,9 @@ contains
                end do
             end do
          end if
-         old = now
       end associate
+      ! The last sample becomes the previous one (whole planes of one array: no temporary).
+      rec%last(:, :, :, 1) = rec%last(:, :, :, 2)
       rec%t_last = t
    end subroutine refine_peaks
 

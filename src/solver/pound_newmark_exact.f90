@@ -380,37 +380,43 @@ contains
       real(dp), intent(in) :: coef(n, 22), lam(n), cm(n), q(n), qd(n), ag0, ag1
       real(dp), intent(out) :: xq(n), xqd(n), xw(n)
       real(dp), intent(inout) :: din, ddamp
-      real(dp) :: e1(n), e2(n), p1, p2, p3, p4, p5, p6, p7, s1(4), s2(4)
-      integer :: i, n4
+      ! The step's energies in four partial sums (modes i, i+1, i+2, i+3 of each block of four;
+      ! the last, shorter block into the first sum), the modes' terms held for one block only
+      ! (no work array of length n: nothing allocated in the step).
+      real(dp) :: e1(4), e2(4), p1, p2, p3, p4, p5, p6, p7, s1(4), s2(4)
+      integer :: i, i0, k, m
 
-      !GCC$ vector
-      do i = 1, n
-         xq(i) = coef(i, 1)*q(i) + coef(i, 2)*qd(i) + coef(i, 3)*ag0 + coef(i, 4)*ag1
-         xqd(i) = coef(i, 5)*q(i) + coef(i, 6)*qd(i) + coef(i, 7)*ag0 + coef(i, 8)*ag1
-         xw(i) = -(lam(i)*xq(i) + cm(i)*xqd(i))
-         p1 = q(i)*q(i)
-         p2 = q(i)*qd(i)
-         p3 = qd(i)*qd(i)
-         p4 = q(i)*ag0
-         p5 = q(i)*ag1
-         p6 = qd(i)*ag0
-         p7 = qd(i)*ag1
-         e1(i) = ((coef(i, 9)*p1 + coef(i, 10)*p2) + (coef(i, 11)*p3 + coef(i, 12)*p4)) + &
-                 ((coef(i, 13)*p5 + coef(i, 14)*p6) + coef(i, 15)*p7)
-         e2(i) = ((coef(i, 16)*p1 + coef(i, 17)*p2) + (coef(i, 18)*p3 + coef(i, 19)*p4)) + &
-                 ((coef(i, 20)*p5 + coef(i, 21)*p6) + coef(i, 22)*p7)
-      end do
-      ! The step's energies summed in four partial sums (the sums vectorise).
       s1 = 0.0_dp
       s2 = 0.0_dp
-      n4 = n - mod(n, 4)
-      do i = 1, n4, 4
-         s1 = s1 + e1(i:i + 3)
-         s2 = s2 + e2(i:i + 3)
-      end do
-      do i = n4 + 1, n
-         s1(1) = s1(1) + e1(i)
-         s2(1) = s2(1) + e2(i)
+      do i0 = 1, n, 4
+         m = min(4, n - i0 + 1)
+         !GCC$ vector
+         do k = 1, m
+            i = i0 + k - 1
+            xq(i) = coef(i, 1)*q(i) + coef(i, 2)*qd(i) + coef(i, 3)*ag0 + coef(i, 4)*ag1
+            xqd(i) = coef(i, 5)*q(i) + coef(i, 6)*qd(i) + coef(i, 7)*ag0 + coef(i, 8)*ag1
+            xw(i) = -(lam(i)*xq(i) + cm(i)*xqd(i))
+            p1 = q(i)*q(i)
+            p2 = q(i)*qd(i)
+            p3 = qd(i)*qd(i)
+            p4 = q(i)*ag0
+            p5 = q(i)*ag1
+            p6 = qd(i)*ag0
+            p7 = qd(i)*ag1
+            e1(k) = ((coef(i, 9)*p1 + coef(i, 10)*p2) + (coef(i, 11)*p3 + coef(i, 12)*p4)) + &
+                    ((coef(i, 13)*p5 + coef(i, 14)*p6) + coef(i, 15)*p7)
+            e2(k) = ((coef(i, 16)*p1 + coef(i, 17)*p2) + (coef(i, 18)*p3 + coef(i, 19)*p4)) + &
+                    ((coef(i, 20)*p5 + coef(i, 21)*p6) + coef(i, 22)*p7)
+         end do
+         if (m == 4) then
+            s1 = s1 + e1
+            s2 = s2 + e2
+         else
+            do k = 1, m
+               s1(1) = s1(1) + e1(k)
+               s2(1) = s2(1) + e2(k)
+            end do
+         end if
       end do
       din = din + ((s1(1) + s1(3)) + (s1(2) + s1(4)))
       ddamp = ddamp + ((s2(1) + s2(3)) + (s2(2) + s2(4)))
