@@ -25,7 +25,7 @@ Ground motion: the pulse is given to OpenSees as pound's own samples a_g(t_n)
 (/ground/acceleration, every step). A record is given as the record itself (values x g,
 `-dt` of the record) and OpenSees interpolates it, as a user would; the script also runs the
 variant fed with pound's samples at every step (see "Known differences" in
-docs/notes-os25.md). The deck under El Centro is the same deck with
+docs/verification.md, "OpenSeesPy comparison of inelastic shear buildings"). The deck under El Centro is the same deck with
 `&ground kind = 'record', file = IELC180.AT2` and t_end = 40 s (the whole record); it is skipped when the records are absent.
 
 Compared: peak storey drifts, peak storey shears (the Steel01 force), residual drifts,

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent reference for the plastic hinges of frames (issue 25, docs/notes-hinges.md).
+"""Independent reference for the plastic hinges of frames (issue 25, docs/manual.md, "Inelastic buildings: plastic hinges of frames").
 
 A one-bay, one-storey portal (fixed base, h = 3 m, L = 6 m, E = 3e7 kPa, columns A = 0.16 m^2,
 I = 3.75e-4 m^4, My = 45 kN m; beam A = 0.15 m^2, I = 1e-3 m^4, My = 30 kN m; floor mass 10 t
