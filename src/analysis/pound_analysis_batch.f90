@@ -15,7 +15,7 @@ module pound_analysis_batch
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_analysis_plan, only: analysis_plan, free_newmark
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_yields
    use pound_ground_motion, only: check_ground_samples
    use pound_integrator, only: batch_lanes => max_lanes
    use pound_analysis, only: analysis_result, start_result, run_lanes
@@ -44,7 +44,7 @@ contains
       do ib = 1, size(models)
          if (models(ib)%kd /= 1 .or. .not. models(ib)%stick .or. models(ib)%n < 2) batch_eligible = .false.
          ! Bilinear storeys and plastic hinges (pound_storey_yield) are stepped by `integrate` only.
-         if (allocated(models(ib)%yield_shear) .or. allocated(models(ib)%hinge_moment)) batch_eligible = .false.
+         if (structure_yields(models(ib))) batch_eligible = .false.
          if (batch_eligible) batch_eligible = all(models(ib)%ground == 1.0_dp)
       end do
    end function batch_eligible

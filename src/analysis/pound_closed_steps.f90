@@ -51,6 +51,7 @@ module pound_closed_steps
    use iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_structure, only: structure_model
+   use pound_band, only: band_to_dense
    use pound_band_lapack, only: dsygv
    use pound_modal_step, only: modal_step_response
    use pound_integrator, only: integrator
@@ -275,7 +276,7 @@ contains
       logical, intent(out) :: ok
       real(dp), allocatable :: k(:, :), kc(:, :), mm(:, :), rhs(:, :), fac(:, :), work(:), tsm(:, :), ksm(:, :)
       integer, allocatable :: im(:)
-      integer :: n, nm, ns, i, j, info
+      integer :: n, nm, ns, i, info
 
       ok = .false.
       n = b%n
@@ -294,14 +295,7 @@ contains
       allocate (cb%pos(n))
       cb%pos = 0
       cb%pos(im) = [(i, i=1, nm)]
-      allocate (k(n, n))
-      k = 0.0_dp
-      do j = 1, n
-         do i = max(1, j - b%kd), j
-            k(i, j) = b%kt(b%kd + 1 + i - j, j)
-            k(j, i) = k(i, j)
-         end do
-      end do
+      k = band_to_dense(b%kt)
       kc = k(im, im)
       allocate (cb%phin(n, nm), cb%kgt(ns, n))
       if (ns > 0) then

@@ -28,7 +28,7 @@ module pound_storey_yield
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str
-   use pound_structure, only: structure_model, recovery_rows, recover
+   use pound_structure, only: structure_model, recovery_rows, recover, structure_yields
    use pound_integrator, only: integrator
    use pound_analysis_plan, only: analysis_plan
    use pound_contact, only: contact_system, contact_step, contact_release
@@ -42,7 +42,7 @@ module pound_storey_yield
    public :: stick_khat, stick_active_set
    public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step
    ! (Used by the submodules: gfortran drops private procedures a submodule calls.)
-   public :: drifts, column_of, check_step, grow_lcp, solve_lcp
+   public :: drifts, step_drifts, column_of, check_step, grow_lcp, solve_lcp
 
    !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
    real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
@@ -313,6 +313,13 @@ module pound_storey_yield
          real(dp), intent(out) :: d(:), work(:)
          real(dp), intent(in), optional :: y(:)
       end subroutine drifts
+
+      !> The drifts `dnew` at the end of a solved step: of u + du + xdp (the step's response
+      !> with the plastic increments; pound_storey_yield_stick).
+      pure module subroutine step_drifts(ys, u, du)
+         type(storey_yield_set), intent(inout) :: ys
+         real(dp), intent(in) :: u(:), du(:)
+      end subroutine step_drifts
    end interface
 
 contains
@@ -404,7 +411,7 @@ contains
       collapsed = .false.
       frozen = .false.
       do ib = 1, size(models)
-         if (.not. (allocated(models(ib)%yield_shear) .or. allocated(models(ib)%hinge_moment))) cycle
+         if (.not. structure_yields(models(ib))) cycle
          inelastic = .true.
          if (cfg%average_acceleration()) cycle
          call fatal_error(error, 'building '//models(ib)%name//': '// &
@@ -727,13 +734,7 @@ contains
          call column_of(ys, st, j, ys%work)
          ys%xdp = ys%xdp + (ys%k(j)*ys%dpl(j))*ys%work
       end do
-      do j = 1, ys%nd
-         ys%xdp(j) = ys%xdp(j) + du(j)
-      end do
-      call drifts(ys, u, ys%dnew, ys%work, ys%xdp)
-      do j = 1, ys%nd
-         ys%xdp(j) = ys%xdp(j) - du(j)
-      end do
+      call step_drifts(ys, u, du)
    end subroutine solve_rows
 
    !> Room for an LCP of m rows in the set's workspace.

@@ -106,13 +106,7 @@ contains
          ys%dpl(j) = real(ys%side(j), dp)*ys%z(b)
       end do
       call hinge_loads(ys, st)
-      do j = 1, ys%nd
-         ys%xdp(j) = ys%xdp(j) + du(j)
-      end do
-      call drifts(ys, u, ys%dnew, ys%work, ys%xdp)
-      do j = 1, ys%nd
-         ys%xdp(j) = ys%xdp(j) - du(j)
-      end do
+      call step_drifts(ys, u, du)
 
    end subroutine hinge_solve_rows
 

@@ -181,4 +181,18 @@ contains
       end if
    end subroutine drifts
 
+   pure module subroutine step_drifts(ys, u, du)
+      type(storey_yield_set), intent(inout) :: ys
+      real(dp), intent(in) :: u(:), du(:)
+      integer :: j
+
+      do j = 1, ys%nd
+         ys%xdp(j) = ys%xdp(j) + du(j)
+      end do
+      call drifts(ys, u, ys%dnew, ys%work, ys%xdp)
+      do j = 1, ys%nd
+         ys%xdp(j) = ys%xdp(j) - du(j)
+      end do
+   end subroutine step_drifts
+
 end submodule pound_storey_yield_stick

@@ -42,7 +42,8 @@ contains
       end do
    end subroutine band_symv
 
-   !> Dense copy of a symmetric band matrix (tests and small problems only).
+   !> Dense copy of a symmetric band matrix (tests, and the set-up of small dense problems:
+   !> the condensation of the exact free steps and of the closed steps).
    pure function band_to_dense(ab) result(a)
       !> Band storage, shape (kd+1, n).
       real(dp), intent(in) :: ab(:, :)

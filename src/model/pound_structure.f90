@@ -34,7 +34,7 @@ module pound_structure
    public :: structure_names
    public :: structure_strain_energy
    public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
-             structure_end_row, single_row
+             structure_end_row, single_row, structure_yields
 
    !> Natural modes a builder computes besides the two Rayleigh modes: the periods the listing
    !> shows (the lowest `modes_listed`; fewer when the model has fewer modes).
@@ -451,6 +451,15 @@ contains
          e = e + 0.5_dp*w(j)*x**2
       end do
    end subroutine weighted_rows_kernel
+
+   !> Whether the model can yield: bilinear storeys (`yield_shear`) or a frame's plastic hinges
+   !> (`hinge_moment`).
+   pure logical function structure_yields(m) result(yields)
+      !> The model.
+      type(structure_model), intent(in) :: m
+
+      yields = allocated(m%yield_shear) .or. allocated(m%hinge_moment)
+   end function structure_yields
 
    !> Whether the model is a stick as data: response point i is DOF i (i = 1..n, n DOFs), the
    !> drift rows are u_1 and u_j - u_{j-1} with scale 1, and the shear rows have the drift

@@ -10,7 +10,7 @@ module pound_listing
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_building, only: building_model
-   use pound_structure, only: structure_model, modes_listed
+   use pound_structure, only: structure_model, modes_listed, structure_yields
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
    use pound_contact, only: contact_system
@@ -686,8 +686,7 @@ contains
             line = line//right_cell(trim(heads(k)), 10)
          end do
          ! The peak ductility of bilinear storeys (plastic rotation of hinges), where targeted.
-         mu = cfg%target_quantities(q_ductility) .and. (allocated(models(ib)%yield_shear) .or. &
-                                                         allocated(models(ib)%hinge_moment))
+         mu = cfg%target_quantities(q_ductility) .and. structure_yields(models(ib))
          if (mu) line = line//right_cell('ductility', 11)
          if (cfg%target > 0.0_dp) line = line//'  target'
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line

@@ -67,7 +67,7 @@ module pound_results_h5
    use pound_config, only: deck_type, history_names, n_history_quantities, target_names, q_column_shear, q_ductility, &
                            q_column_moment
    use pound_building, only: building_model
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_yields
    use pound_analysis, only: analysis_result, history_sink
    use pound_analysis_plan, only: output_steps, steps_of
    use pound_contact, only: contact_system
@@ -377,8 +377,7 @@ contains
                if (allocated(error)) return
             end do
             ! The peak ductility of bilinear storeys, where the deck targets it.
-            if (deck%sweep%target_quantities(q_ductility) .and. (allocated(models(ib)%yield_shear) .or. &
-                                                                 allocated(models(ib)%hinge_moment))) then
+            if (deck%sweep%target_quantities(q_ductility) .and. structure_yields(models(ib))) then
                row = sw%max_abs_lambda(q_ductility, ib, :)
                call h5_write(h5, g//'/max_abs_lambda/'//models(ib)%name//'/ductility', row, error, units='%')
                if (allocated(error)) return

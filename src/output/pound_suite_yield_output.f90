@@ -16,7 +16,7 @@ module pound_suite_yield_output
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str, fixed_cell
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_yields
    use pound_text_writer, only: text_writer
    use pound_h5, only: h5_file, h5_write
    use pound_suite, only: suite_result
@@ -72,7 +72,7 @@ contains
 
       if (.not. suite%has_coupled) return
       do ib = 1, size(models)
-         if (.not. (allocated(models(ib)%yield_shear) .or. allocated(models(ib)%hinge_moment))) cycle
+         if (.not. structure_yields(models(ib))) cycle
          call suite_ductility_statistics(suite, ib, mean, maxi, collapses)
          call lst%put('')
          call lst%put('  Suite, '//trim(merge('plastic hinges  ', 'bilinear storeys', allocated(models(ib)%hinge_moment)))// &
@@ -119,7 +119,7 @@ contains
 
       if (.not. suite%has_coupled) return
       do ib = 1, size(models)
-         if (.not. (allocated(models(ib)%yield_shear) .or. allocated(models(ib)%hinge_moment))) cycle
+         if (.not. structure_yields(models(ib))) cycle
          g = '/suite/yielding/'//models(ib)%name//'/'
          q = 'ductility'
          u = '-'

@@ -237,9 +237,8 @@ module pound_newmark
       end subroutine newmark_predict_exact
       !> Complete the exact step predicted by `newmark_predict_exact` (submodule
       !> pound_newmark_exact).
-      module subroutine commit_exact(st, b, w_in, e_out)
+      module subroutine commit_exact(st, w_in, e_out)
          type(newmark_state), intent(inout) :: st
-         type(structure_model), intent(in) :: b
          real(dp), intent(inout), optional :: w_in, e_out
       end subroutine commit_exact
       !> Whether the lanes can run the model: the fused tridiagonal path, two DOFs or more

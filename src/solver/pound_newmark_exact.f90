@@ -19,6 +19,7 @@
 !> over the modes in `ground_terms` (1:3 input work, 4:6 damping energy).
 submodule(pound_newmark) pound_newmark_exact
    use pound_modal_step, only: modal_step_coefficients
+   use pound_band, only: band_to_dense
    use pound_band_lapack, only: dsygv
    implicit none
 
@@ -85,13 +86,10 @@ contains
          return
       end if
       if (nm == n) then
-         allocate (a(n, n), m(n, n), work(max(1, 64*n)))
-         a = 0.0_dp
+         allocate (m(n, n), work(max(1, 64*n)))
+         a = band_to_dense(b%kt)
          m = 0.0_dp
          do j = 1, n
-            do i = max(1, j - b%kd), j
-               a(i, j) = b%kt(b%kd + 1 + i - j, j)
-            end do
             m(j, j) = b%mass(j)
          end do
          call dsygv(1, 'V', 'U', n, a, n, m, n, w, work, size(work), info)
@@ -195,14 +193,8 @@ contains
       ns = n - nm
       im = pack([(i, i=1, n)], b%mass > 0.0_dp)
       is = pack([(i, i=1, n)], .not. (b%mass > 0.0_dp))
-      allocate (k(n, n), mm(nm, nm), work(max(1, 64*nm)))
-      k = 0.0_dp
-      do j = 1, n
-         do i = max(1, j - b%kd), j
-            k(i, j) = b%kt(b%kd + 1 + i - j, j)
-            k(j, i) = k(i, j)
-         end do
-      end do
+      allocate (mm(nm, nm), work(max(1, 64*nm)))
+      k = band_to_dense(b%kt)
       kss = k(is, is)
       wsm = k(is, im)
       call dpotrf('L', ns, kss, ns, info)
@@ -459,11 +451,9 @@ contains
    end subroutine shape_kernel
 
    !> Complete the predicted exact step: u, v, a, C v, the modal coordinates and the energies.
-   module subroutine commit_exact(st, b, w_in, e_out)
+   module subroutine commit_exact(st, w_in, e_out)
       !> Integrator state with a pending exact step.
       type(newmark_state), intent(inout) :: st
-      !> The structural model.
-      type(structure_model), intent(in) :: b
       !> Input work so far (added to; optional, with `e_out`).
       real(dp), intent(inout), optional :: w_in
       !> Kinetic + strain + damping energy so far (added to; optional, with `w_in`).

@@ -116,7 +116,7 @@ contains
       real(dp) :: mdu, ddamp, coef(4), sums(4)
 
       if (st%pending) then
-         call commit_exact(st, b, w_in, e_out)
+         call commit_exact(st, w_in, e_out)
          return
       end if
       if (st%tridiagonal) then
