@@ -379,7 +379,7 @@ contains
             ag_old = ag_new
          end do
          if (n_sub > 1) call swap_steps(st, cs, sub)
-         if (collapsed) call yield_freeze(ys, cs, t, frozen, collapsed)
+         if (collapsed) call yield_freeze(ys, st, cs, t, frozen, collapsed)
          if (collapsed) exit steps
       end do steps
       if (inelastic) call yield_hold(res%building, res%energy, k, coupled, error, sink)

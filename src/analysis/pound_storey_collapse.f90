@@ -4,7 +4,10 @@
 !> integrator is no longer predicted or committed (its state stays that of the collapse, its
 !> energies constant in the balance), its storeys take no part in the steps, its output
 !> samples hold the last one taken, and its joints open (marked fractured: the force they
-!> carried is released in the next step, as for a fracturing joint law).
+!> carried is released in the next step, as for a fracturing joint law, and the work of that
+!> release on the buildings is booked in the joints' energy, pound_joint_state). Its step
+!> increment du is kept at zero, so that the joints read its displacements (`predicted`
+!> = u) and not a stale increment.
 module pound_storey_collapse
    use pound_kinds, only: dp
    use pound_error, only: error_type
@@ -20,11 +23,13 @@ module pound_storey_collapse
 contains
 
    !> After a step in which some building collapsed (`yield_sample`): freeze every building
-   !> that collapsed and is not frozen yet and open its joints. `all_frozen` on return: every
-   !> building is frozen (the analysis can stop).
-   subroutine yield_freeze(ys, cs, t, frozen, all_frozen)
+   !> that collapsed and is not frozen yet (its increment du set to zero) and open its joints.
+   !> `all_frozen` on return: every building is frozen (the analysis can stop).
+   subroutine yield_freeze(ys, st, cs, t, frozen, all_frozen)
       !> The buildings' storeys.
       type(storey_yield_set), intent(inout) :: ys(:)
+      !> The buildings' integrators (at the end of the step).
+      class(integrator), intent(inout), target :: st(:)
       !> The contact system (m = 0: none).
       type(contact_system), intent(inout) :: cs
       !> Time (s).
@@ -39,6 +44,7 @@ contains
          if (ys(ib)%collapse_storey == 0 .or. ys(ib)%frozen) cycle
          ys(ib)%frozen = .true.
          frozen(ib) = .true.
+         call hold_still(st(ib))
          ys(ib)%na = 0
          ys(ib)%loaded = .false.
          ys(ib)%dpl = 0.0_dp
@@ -55,11 +61,12 @@ contains
    end subroutine yield_freeze
 
    !> The step of a frozen building in place of its commit and sample: its (constant) energies
-   !> into the uncoupled balance (`w_in`, `e_out`), and on an output step a copy of its last
-   !> history sample (peaks unchanged).
+   !> into the uncoupled balance (`w_in`, `e_out`), on an output step a copy of its last
+   !> history sample (peaks unchanged), and its increment du back to zero (the step's joint
+   !> forces, released, were added to it).
    subroutine yield_frozen_step(st, rec, output, w_in, e_out)
       !> The building's integrator (not advanced).
-      class(integrator), intent(in) :: st
+      class(integrator), intent(inout), target :: st
       !> The building's response record.
       type(response_record), intent(inout) :: rec
       !> An output step.
@@ -69,6 +76,7 @@ contains
       real(dp) :: w, ek, es, ed, en
       integer :: last
 
+      call hold_still(st)
       w = 0.0_dp
       ek = 0.0_dp
       es = 0.0_dp
@@ -122,6 +130,16 @@ contains
          end associate
       end do
    end subroutine yield_hold
+
+   !> A frozen building's step increment du to zero: the joints read its end-of-step
+   !> displacements (`integrator%predicted`) as u, not u plus a stale increment.
+   subroutine hold_still(st)
+      class(integrator), intent(inout), target :: st
+      real(dp), pointer :: du(:)
+
+      du => st%du_view()
+      du = 0.0_dp
+   end subroutine hold_still
 
    !> Column `from` of every stored history into column `to` (no copy when the same).
    pure subroutine hold_column(r, from, to)

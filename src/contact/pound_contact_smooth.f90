@@ -239,6 +239,8 @@ contains
       changed = .false.
       do i = 1, size(cs%iterating)
          k = cs%iterating(i)
+         ! A fractured joint (a collapse opened it) carries nothing: no equation to solve.
+         if (cs%joint(k)%fractured) cycle
          if (has_force(cs, k)) then
             v = v_pred(k) - dot_product(cs%f(:, k), cs%r_new)
             if (smooth_residual(cs, k, v, cs%r_new(k)) <= smooth_residual_limit) cycle
@@ -275,6 +277,7 @@ contains
       first = 0
       do i = 1, size(cs%iterating)
          k = cs%iterating(i)
+         if (cs%joint(k)%fractured) cycle
          if (has_force(cs, k)) then
             res = smooth_residual(cs, k, v_pred(k) - dot_product(cs%f(:, k), cs%r_new), cs%r_new(k))
             if (res <= smooth_residual_limit) cycle

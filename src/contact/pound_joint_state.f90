@@ -90,7 +90,11 @@ contains
          return
       end if
       if (j%fractured) then
+         ! The force r0 it carried is released over this step (the trapezoid, as the
+         ! integrators take it): its work on the buildings is the joint's too, or the energy
+         ! balance would miss it (a joint opened by a collapse, pound_storey_collapse).
          work = work + 0.5_dp*r0*(v - j%v)
+         element_work = element_work + 0.5_dp*r0*(v - j%v)
          j%r = 0.0_dp
          j%v = v
          return
