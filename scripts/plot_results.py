@@ -285,8 +285,11 @@ def read_results(path):
             sw = {"gap": arr("/sweep/gap", 1), "lambda": {}}
             for b in r.buildings:
                 sw["lambda"][b] = {q: arr(f"/sweep/max_abs_lambda/{b}/{q}", 1)
-                                   for q in list(QUANTITY_LABEL) + list(COLUMN_TARGETS)
+                                   for q in list(QUANTITY_LABEL) + list(COLUMN_TARGETS) + ["ductility"]
                                    if f"/sweep/max_abs_lambda/{b}/{q}" in f}
+            # Yielding buildings: 'bilinear' (storeys) or 'hinges' (a frame's plastic hinges).
+            sw["yielding"] = {b: ("hinges" if f"/model/{b}/hinges/yield_moment" in f else
+                                  "bilinear" if f"/model/{b}/yield_shear" in f else None) for b in r.buildings}
             sw["target"] = float(f["/sweep"].attrs.get("target_lambda", -1.0))
             sw["safe_gap"] = float(f["/sweep"].attrs.get("safe_gap", -1.0))
             # Failed gaps (results left out, zeros in the file): not drawn as values.
@@ -761,14 +764,18 @@ def plot_sweep(plt, r, args, written, notes):
     names = [b for b in r.buildings if sw["lambda"].get(b)]
     fig, axes = plt.subplots(1, len(names), figsize=(3.6 * len(names) + 0.6, 4.2), squeeze=False, sharey=True)
     fig.subplots_adjust(top=0.80, wspace=0.08)
-    # Storey drift has the same lambda as storey shear (Q = k drift, k constant): not drawn twice.
-    order = [q for q in ("storey_shear", "u", "a_abs") + tuple(COLUMN_TARGETS)
+    # Storey drift has the same lambda as storey shear only for elastic shear buildings (Q = k
+    # drift, k constant): drawn once there, as two curves otherwise (frames, yielding storeys).
+    same = {b: "drift" in sw["lambda"][b] and "storey_shear" in sw["lambda"][b] and np.allclose(
+        sw["lambda"][b]["drift"], sw["lambda"][b]["storey_shear"], rtol=0, atol=1e-9) for b in names}
+    order = [q for q in ("storey_shear", "drift", "u", "a_abs") + tuple(COLUMN_TARGETS)
              if any(q in sw["lambda"][b] for b in names)]
-    labels = {"storey_shear": "storey shear Q (= storey drift)", **COLUMN_TARGETS}
     for i, b in enumerate(names):
         ax = axes[0, i]
+        labels = {"storey_shear": "storey shear Q (= storey drift)" if same[b] else "storey shear Q",
+                  **COLUMN_TARGETS}
         for j, q in enumerate(order):
-            if q not in sw["lambda"][b]:
+            if q not in sw["lambda"][b] or (q == "drift" and same[b]):
                 continue
             y = np.array(sw["lambda"][b][q], dtype=float)
             y[sw["failed"]] = np.nan
@@ -797,6 +804,50 @@ def plot_sweep(plt, r, args, written, notes):
     plt.close(fig)
     if sw["joints"]:
         plot_sweep_joints(plt, r, args, written)
+    if any(sw["yielding"].get(b) for b in names):
+        plot_sweep_yielding(plt, r, args, written)
+
+
+def plot_sweep_yielding(plt, r, args, written):
+    """Yielding buildings: the largest |lambda| of the storey drift and of the ductility
+    (bilinear storeys) or plastic rotation (a frame's hinges, the largest of each storey) against
+    the gap (/sweep/max_abs_lambda/<b>/drift and /ductility; the latter where targeted)."""
+    import numpy as np
+
+    sw = r.sweep
+    names = [b for b in r.buildings if sw["yielding"].get(b) and sw["lambda"].get(b)]
+    fig, axes = plt.subplots(1, len(names), figsize=(3.6 * len(names) + 0.6, 4.2), squeeze=False, sharey=True)
+    fig.subplots_adjust(top=0.80, wspace=0.08)
+    for i, b in enumerate(names):
+        ax = axes[0, i]
+        hinges = sw["yielding"][b] == "hinges"
+        series = [("drift", "storey drift")]
+        series.append(("ductility", "plastic rotation (largest hinge of each storey, columns and beams)"
+                       if hinges else "storey ductility mu"))
+        for j, (q, label) in enumerate(series):
+            if q not in sw["lambda"][b]:
+                continue
+            y = np.array(sw["lambda"][b][q], dtype=float)
+            y[sw["failed"]] = np.nan
+            ax.plot(1e3 * sw["gap"], y, color=COLOURS[j], linestyle=LINESTYLES[j], marker=MARKERS[j],
+                    markersize=3, markevery=max(1, len(y) // 12), linewidth=1.0, label=label)
+        if "ductility" not in sw["lambda"][b]:
+            ax.text(0.02, 0.02, "ductility / rotation: not targeted by the sweep\n(target_quantities = 'ductility')",
+                    transform=ax.transAxes, fontsize=6.5, va="bottom")
+        if sw["target"] > 0:
+            ax.axhline(sw["target"], color="black", linestyle=":", linewidth=0.9,
+                       label=f"target {sw['target']:.4g} %")
+        ax.set_yscale("symlog", linthresh=1.0)
+        ax.set_title(f"building {b} ({'plastic hinges' if hinges else 'bilinear storeys'})", loc="left",
+                     fontsize=9)
+        ax.set_xlabel("joint gap [mm]")
+        if i == 0:
+            ax.set_ylabel("largest |lambda| over the storeys [%]")
+        ax.grid(True, color="0.85", linewidth=0.5)
+        ax.legend(loc="best", fontsize=7)
+    suptitle(fig, r, "Gap study of the yielding buildings: drift, ductility and plastic-rotation lambdas")
+    save(fig, r, "sweep_yielding", args, written)
+    plt.close(fig)
 
 
 def plot_sweep_joints(plt, r, args, written):

@@ -4,7 +4,7 @@ largest |lambda| of each building and every pair's peak force against the swept 
 a stiffness) and a law study (/law_study: the same, one group of bars per variant)."""
 
 STUDY_GROUPS = ("stiffness_sweep", "restitution_sweep")
-SHOWN = (("storey_shear", "storey shear Q (= drift)"), ("u", "floor displacement u"),
+SHOWN = (("storey_shear", "storey shear Q"), ("drift", "storey drift"), ("u", "floor displacement u"),
          ("a_abs", "floor absolute acceleration"))
 
 

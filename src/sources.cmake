@@ -71,7 +71,7 @@ set(POUND_SOURCES
   # results file, the text writer (unit + first failure), listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_h5_support.f90 output/pound_h5_attributes.f90
   output/pound_results_h5.f90 output/pound_text_writer.f90
-  output/pound_hinge_output.f90 output/pound_yield_output.f90 output/pound_listing.f90
+  output/pound_influence_output.f90 output/pound_summary_item.f90 output/pound_summary_yield.f90 output/pound_hinge_output.f90 output/pound_yield_output.f90 output/pound_listing.f90
   # outputs: the separation rules' listing table and datasets (a run and a suite)
   output/pound_separation_output.f90 output/pound_sweep_joints_output.f90
   # outputs: the suite's listing sections and /suite

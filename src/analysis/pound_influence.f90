@@ -7,7 +7,15 @@
 !> peaks of two analyses; the run driver keeps them in its results, the listing and the
 !> HDF5 writer print them as they are, and the gap sweep reduces them with
 !> `max_abs_influence`, or with `max_abs_target`, which adds a frame's column segments.
+!>
+!> Not meaningful ("n/m"): a lambda whose uncoupled peak is positive but below
+!> `meaningful_fraction` (1e-6) of the largest uncoupled peak of that quantity in the building
+!> (over its floors/storeys, member rows of the same name, storeys' ductilities or hinges) is
+!> NaN (`influences`): the listing, summary and CSV show "n/m", the HDF5 datasets hold NaN
+!> (attribute `not_meaningful`), and the maxima (`max_abs_meaningful`: largest |lambda|, sweep
+!> targets) leave it out. An uncoupled peak of exactly 0 keeps its rule (+huge or 0).
 module pound_influence
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
    use pound_kinds, only: dp
    use pound_quantities, only: n_history_quantities, n_target_quantities, q_column_shear, q_column_moment, q_ductility
    use pound_analysis, only: analysis_result
@@ -16,13 +24,22 @@ module pound_influence
    private
 
    public :: influence_coefficient, building_influence, influence_of, max_abs_influence, max_abs_target, &
-             column_maxima
+             column_maxima, influences, max_abs_meaningful, largest_meaningful, meaningful_fraction, &
+             not_meaningful_note, created_by_pounding, max_meaningful, not_meaningful
+
+   !> A lambda whose uncoupled peak is below this fraction of the quantity's largest uncoupled
+   !> peak in the building is not meaningful (NaN).
+   real(dp), parameter :: meaningful_fraction = 1.0e-6_dp
+   !> Why a lambda is NaN (the HDF5 attribute `not_meaningful` of a dataset holding one).
+   character(len=*), parameter :: not_meaningful_note = 'NaN: not meaningful (n/m), the uncoupled peak is '// &
+                                                        'below 1e-6 of the largest uncoupled peak of this quantity '// &
+                                                        'in the building'
 
    !> Influence coefficients of one building.
    type :: building_influence
       !> lambda (%) per floor/storey and history quantity (n, n_history_quantities), columns
       !> in the order of `history_names` (pound_response's q_u ... q_shear); +huge where
-      !> only the coupled peak is non-zero, 0 where both are.
+      !> only the coupled peak is non-zero, 0 where both are, NaN where not meaningful.
       real(dp), allocatable :: lambda(:, :)
       !> lambda (%) of each member row (`structure_model%member`, e.g. a frame's column end
       !> forces), the same rule; unallocated without member rows.
@@ -49,21 +66,105 @@ contains
       end if
    end function influence_coefficient
 
+   !> lambda of the peaks of one quantity at the points of one building (`influence_coefficient`),
+   !> NaN (not meaningful) where the uncoupled peak is positive but below `meaningful_fraction`
+   !> of the largest uncoupled peak of `qu`.
+   pure function influences(qc, qu) result(lambda)
+      !> Absolute maxima, coupled.
+      real(dp), intent(in) :: qc(:)
+      !> Absolute maxima, uncoupled (the same points).
+      real(dp), intent(in) :: qu(:)
+      real(dp) :: lambda(size(qu))
+      real(dp) :: floor_
+
+      lambda = influence_coefficient(qc, qu)
+      if (size(qu) == 0) return
+      floor_ = meaningful_fraction*maxval(abs(qu))
+      where (qu > 0.0_dp .and. abs(qu) < floor_) lambda = not_meaningful()
+   end function influences
+
+   !> The value of a lambda that is not meaningful (NaN).
+   pure real(dp) function not_meaningful()
+      not_meaningful = ieee_value(0.0_dp, ieee_quiet_nan)
+   end function not_meaningful
+
+   !> Whether lambda is +huge (the uncoupled peak is 0: pounding created the response); false
+   !> for a lambda that is not meaningful (no comparison touches a NaN).
+   elemental logical function created_by_pounding(lambda)
+      !> Influence coefficient (%).
+      real(dp), intent(in) :: lambda
+
+      created_by_pounding = .false.
+      if (.not. ieee_is_nan(lambda)) created_by_pounding = lambda >= huge(1.0_dp)
+   end function created_by_pounding
+
+   !> The larger of two lambdas leaving out one that is not meaningful (NaN when both are).
+   elemental real(dp) function max_meaningful(a, b) result(m)
+      !> Influence coefficients (%).
+      real(dp), intent(in) :: a, b
+
+      if (ieee_is_nan(a)) then
+         m = b
+      else if (ieee_is_nan(b)) then
+         m = a
+      else
+         m = max(a, b)
+      end if
+   end function max_meaningful
+
+   !> Largest |lambda| of the meaningful entries (not NaN) of `x`; 0 when there are none.
+   pure real(dp) function max_abs_meaningful(x) result(m)
+      !> Influence coefficients (%).
+      real(dp), intent(in) :: x(:)
+
+      m = 0.0_dp
+      if (any(.not. ieee_is_nan(x))) m = maxval(abs(x), mask=.not. ieee_is_nan(x))
+   end function max_abs_meaningful
+
+   !> Index of the largest |lambda| of the meaningful entries of `x` (the first of equals);
+   !> 0 when none is meaningful (or `x` is empty).
+   pure integer function largest_meaningful(x) result(j)
+      !> Influence coefficients (%).
+      real(dp), intent(in) :: x(:)
+
+      j = 0
+      if (any(.not. ieee_is_nan(x))) j = maxloc(abs(x), dim=1, mask=.not. ieee_is_nan(x))
+   end function largest_meaningful
+
    !> Influence coefficients of every building, from the peaks of the uncoupled run `unc` and
    !> of the coupled run `cpl` (the same buildings in the same order).
-   pure function influence_of(unc, cpl) result(infl)
+   pure function influence_of(unc, cpl, models) result(infl)
       !> Uncoupled result.
       type(analysis_result), intent(in) :: unc
       !> Coupled result.
       type(analysis_result), intent(in) :: cpl
+      !> The buildings (their member rows' names: rows of one name are one quantity for the
+      !> n/m rule); absent: every member row of a building is one quantity.
+      type(structure_model), intent(in), optional :: models(:)
       type(building_influence) :: infl(size(unc%building))
-      integer :: ib
+      integer :: ib, q, nq, k
 
       do ib = 1, size(infl)
-         infl(ib)%lambda = influence_coefficient(cpl%building(ib)%peak, unc%building(ib)%peak)
-         if (allocated(cpl%building(ib)%member_peak) .and. allocated(unc%building(ib)%member_peak)) &
-            infl(ib)%member_lambda = influence_coefficient(cpl%building(ib)%member_peak, &
-                                                           unc%building(ib)%member_peak)
+         associate (pc => cpl%building(ib)%peak, pu => unc%building(ib)%peak)
+            allocate (infl(ib)%lambda(size(pu, 1), size(pu, 2)))
+            do q = 1, size(pu, 2)
+               infl(ib)%lambda(:, q) = influences(pc(:, q), pu(:, q))
+            end do
+         end associate
+         if (allocated(cpl%building(ib)%member_peak) .and. allocated(unc%building(ib)%member_peak)) then
+            associate (mc => cpl%building(ib)%member_peak, mu => unc%building(ib)%member_peak)
+               allocate (infl(ib)%member_lambda(size(mu)))
+               ! Member rows of the same name are one quantity (`structure_model%member_names`).
+               nq = 1
+               if (present(models)) then
+                  if (allocated(models(ib)%member_names)) nq = max(1, size(models(ib)%member_names))
+               end if
+               if (mod(size(mu), nq) /= 0) nq = 1
+               do k = 1, nq
+                  infl(ib)%member_lambda(k::nq) = influences(mc(k::nq), mu(k::nq))
+               end do
+            end associate
+         end if
       end do
    end function influence_of
 
@@ -76,7 +177,7 @@ contains
 
       do ib = 1, size(infl)
          do q = 1, n_history_quantities
-            m(q, ib) = maxval(abs(infl(ib)%lambda(:, q)))
+            m(q, ib) = max_abs_meaningful(infl(ib)%lambda(:, q))
          end do
       end do
    end function max_abs_influence
@@ -107,7 +208,7 @@ contains
       if (.not. (allocated(unc%yielding) .and. allocated(cpl%yielding))) return
       do ib = 1, size(infl)
          if (cpl%yielding(ib)%n == 0 .or. unc%yielding(ib)%n == 0) cycle
-         m(q_ductility, ib) = maxval(abs(influence_coefficient(cpl%yielding(ib)%ductility, unc%yielding(ib)%ductility)))
+         m(q_ductility, ib) = max_abs_meaningful(influences(cpl%yielding(ib)%ductility, unc%yielding(ib)%ductility))
       end do
    end function max_abs_target
 
@@ -129,9 +230,9 @@ contains
       do k = 1, nq
          select case (trim(model%member_names(k)))
          case ('shear')
-            m(1) = max(m(1), maxval(abs(member_lambda(k::nq))))
+            m(1) = max(m(1), max_abs_meaningful(member_lambda(k::nq)))
          case ('moment_bottom', 'moment_top')
-            m(2) = max(m(2), maxval(abs(member_lambda(k::nq))))
+            m(2) = max(m(2), max_abs_meaningful(member_lambda(k::nq)))
          end select
       end do
    end function column_maxima

@@ -149,7 +149,7 @@ contains
       if (allocated(error)) return
       nl = n_target_quantities*size(work%models)
       np = work%n_pairs
-      values(1:nl) = reshape(max_abs_target(influence_of(work%unc, cpl), work%models, work%unc, cpl), [nl])
+      values(1:nl) = reshape(max_abs_target(influence_of(work%unc, cpl, work%models), work%models, work%unc, cpl), [nl])
       values(nl + 1) = real(sum(cs%joint(:)%impacts), dp)
       values(nl + 2) = cpl%energy_error
       values(nl + 3) = real(size(cpl%warnings), dp)

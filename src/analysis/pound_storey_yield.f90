@@ -123,7 +123,7 @@ module pound_storey_yield
       logical :: hinges = .false.
       !> (`hk`: each hinge's kinematic hardening modulus H (kN m/rad): |m - H p| <= My.)
       real(dp), allocatable :: kc(:), hk(:)
-      !> (`level`: the storey of a column's hinge, 0 for a beam's.)
+      !> (`level`: the storey of a column's hinge, the floor of a beam's: the storey below it.)
       integer, allocatable :: mate(:), level(:)
       !> Frames: storey drift rows, storey-shear and member rows and their plastic parts (over
       !> the hinges), collapse drift limits, the storeys' drifts and shears of the last commit,
@@ -156,7 +156,8 @@ module pound_storey_yield
       integer :: alternations = 0
       real(dp) :: residual = 0.0_dp
       !> A frame's plastic hinges (0: none; then `ductility` holds each storey's largest peak
-      !> |plastic rotation| of its columns, rad): peak |plastic rotation| (rad) and peak
+      !> |plastic rotation| of its column hinges and of the beam hinges of the floor at its top,
+      !> rad): peak |plastic rotation| (rad) and peak
       !> |moment| / yield moment of each hinge.
       integer :: n_hinges = 0
       real(dp), allocatable :: rotation(:), moment_ratio(:)

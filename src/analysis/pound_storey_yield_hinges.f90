@@ -23,7 +23,7 @@
 !> Recovery: storey shears and member end forces lose their plastic parts (the model's
 !> `shear_plastic`, `member_plastic` rows over p).
 submodule(pound_storey_yield) pound_storey_yield_hinges
-   use pound_frame, only: element_column
+
    implicit none
 
 contains
@@ -44,7 +44,7 @@ contains
       ys%kc = b%hinge_kc
       ys%mate = b%hinge_mate
       ys%hk = b%hinge_hardening
-      ys%level = merge(b%hinge_level, 0, b%hinge_kind == element_column)
+      ys%level = b%hinge_level
       ys%fy = b%hinge_moment
       ys%r = spread(0.0_dp, 1, n)
       ys%limit = spread(huge(1.0_dp), 1, n)
@@ -259,7 +259,7 @@ contains
       end if
       do h = 1, ys%n
          j = ys%level(h)
-         if (j > 0) res%ductility(j) = max(res%ductility(j), ys%pmax(h))
+         if (j > 0 .and. j <= res%n) res%ductility(j) = max(res%ductility(j), ys%pmax(h))
       end do
    end subroutine hinge_finish
 

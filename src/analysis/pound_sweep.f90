@@ -166,7 +166,7 @@ contains
       integer :: nl
 
       nl = n_target_quantities*size(work%models)
-      values(1:nl) = reshape(max_abs_target(influence_of(work%unc, cpl), work%models, work%unc, cpl), [nl])
+      values(1:nl) = reshape(max_abs_target(influence_of(work%unc, cpl, work%models), work%models, work%unc, cpl), [nl])
       values(nl + 1) = real(impacts, dp)
       values(nl + 2) = cpl%energy_error
       values(nl + 3) = real(size(cpl%warnings), dp)

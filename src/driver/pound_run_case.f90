@@ -264,7 +264,7 @@ contains
          end if
          res%has_coupled = .true.
          if (res%has_uncoupled) then
-            res%influence = influence_of(res%unc, res%cpl)
+            res%influence = influence_of(res%unc, res%cpl, res%models)
             if (deck%sweep%active) then
                if (has_ground()) then
                   call run_sweep(plan, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, &

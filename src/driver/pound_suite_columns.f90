@@ -16,9 +16,10 @@
 !> the storeys). `column_target_maxima` gives per motion the largest |lambda| of the segments'
 !> shear and end moments (the sweep's `column_shear`, `column_moment`).
 module pound_suite_columns
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use pound_kinds, only: dp
    use pound_structure, only: structure_model
-   use pound_influence, only: building_influence, column_maxima
+   use pound_influence, only: building_influence, column_maxima, max_meaningful, created_by_pounding, not_meaningful
    use pound_analysis, only: analysis_result
    implicit none
    private
@@ -145,9 +146,13 @@ contains
             c%max_lambda = -huge(1.0_dp)
             do k = 1, size(used)
                c%mean_lambda = c%mean_lambda + c%lambda(:, used(k))/size(used)
-               c%max_lambda = max(c%max_lambda, c%lambda(:, used(k)))
+               c%max_lambda = max_meaningful(c%max_lambda, c%lambda(:, used(k)))
             end do
-            where (any(c%lambda(:, used) >= huge(1.0_dp), dim=2)) c%mean_lambda = huge(1.0_dp)
+            ! Not meaningful (NaN) in every motion: NaN; +huge in one: +huge (`pound_influence`).
+            if (size(used) > 0) then
+               where (all(ieee_is_nan(c%lambda(:, used)), dim=2)) c%max_lambda = not_meaningful()
+            end if
+            where (any(created_by_pounding(c%lambda(:, used)), dim=2)) c%mean_lambda = huge(1.0_dp)
          end associate
       end do
    end subroutine columns_finish

@@ -22,10 +22,11 @@
 !>   (`time_history_gap`, `suite_sweep_statistics`).
 !> * the failed cases, one per motion and gap, sorted (`add_failure`, `sort_failures`).
 module pound_suite_statistics
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use pound_kinds, only: dp
    use pound_config, only: n_history_quantities, code_factors
    use pound_deck_variables, only: word_len, path_len
-   use pound_influence, only: influence_coefficient
+   use pound_influence, only: influences, max_meaningful, created_by_pounding, not_meaningful
    use pound_separation, only: separation_t, code_separation
    use pound_analysis, only: analysis_result
    use pound_sort, only: sort_ascending
@@ -318,18 +319,23 @@ contains
       integer, intent(in) :: used(:)
       !> Mean coupled and uncoupled peaks over them.
       real(dp), intent(in) :: mean_cpl(:, :), mean_unc(:, :)
+      integer :: k, q
 
-      if (size(used) == size(s%lambda, 1)) then
-         s%max_lambda = maxval(s%lambda, dim=1)
-      else
-         s%max_lambda = maxval(s%lambda(used, :, :), dim=1)
-      end if
-      where (any(s%lambda >= huge(1.0_dp), dim=1))
+      ! A lambda that is not meaningful (NaN, `pound_influence`) is left out of the maximum
+      ! (NaN when every motion's is) and makes the mean NaN (unless a motion's is +huge).
+      s%max_lambda = -huge(1.0_dp)
+      do k = 1, size(used)
+         s%max_lambda = max_meaningful(s%max_lambda, s%lambda(used(k), :, :))
+      end do
+      where (all(ieee_is_nan(s%lambda(used, :, :)), dim=1) .and. size(used) > 0) s%max_lambda = not_meaningful()
+      where (any(created_by_pounding(s%lambda), dim=1))
          s%mean_lambda = huge(1.0_dp)
       elsewhere
          s%mean_lambda = sum(s%lambda, dim=1)/size(used)
       end where
-      s%lambda_of_means = influence_coefficient(mean_cpl, mean_unc)
+      do q = 1, size(mean_unc, 2)
+         s%lambda_of_means(:, q) = influences(mean_cpl(:, q), mean_unc(:, q))
+      end do
    end subroutine suite_building_statistics
 
    !> The per-motion arrays of a suite of `nm` motions over buildings of `n_storeys` storeys

@@ -18,7 +18,8 @@ module pound_hinge_output
    use pound_strings, only: fixed_cell, right_cell, str
    use pound_structure, only: structure_model
    use pound_storey_yield, only: storey_yield_result
-   use pound_influence, only: influence_coefficient
+   use pound_influence, only: influences
+   use pound_influence_output, only: lambda_cell
    use pound_h5, only: h5_file, h5_write, h5_write_attr
    use pound_text_writer, only: text_writer
    implicit none
@@ -84,7 +85,7 @@ contains
       type(storey_yield_result), intent(in) :: unc, cpl
       real(dp), allocatable :: lam(:)
 
-      lam = influence_coefficient(cpl%rotation, unc%rotation)
+      lam = influences(cpl%rotation, unc%rotation)
    end function hinge_influence
 
    !> The listing's table of a frame's hinges that yielded in some analysis.
@@ -161,11 +162,7 @@ contains
          real(dp), intent(in) :: x
          character(len=:), allocatable :: s
 
-         if (x >= huge(1.0_dp)) then
-            s = right_cell('inf', 12)
-         else
-            s = fixed_cell(x, 12, 2)
-         end if
+         s = lambda_cell(x, 12, 2)
       end function lambda_text
    end subroutine write_hinge_table
 

@@ -3,6 +3,7 @@
 !> Every write is checked: the writers take a `text_writer` (pound_text_writer), which
 !> keeps the first failure (no space left, file too large, ...); the caller asks it once.
 module pound_listing
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use pound_kinds, only: dp
    use pound_strings, only: counted, fixed_cell, left_cell, right_cell
    use pound_text_writer, only: text_writer
@@ -572,7 +573,9 @@ contains
          real(dp), intent(in) :: x
          character(len=9) :: cell
 
-         if (x >= huge(1.0_dp)) then
+         if (ieee_is_nan(x)) then
+            cell = '      n/m'
+         else if (x >= huge(1.0_dp)) then
             cell = '      inf'
          else
             cell = fixed_cell(x, 9, 1)
@@ -627,7 +630,9 @@ contains
                   line = line//right_cell('-', w)
                else
                   lambda = infl(ib)%lambda(j, q)
-                  if (lambda >= huge(1.0_dp)) then
+                  if (ieee_is_nan(lambda)) then
+                     line = line//right_cell('n/m', w)
+                  else if (lambda >= huge(1.0_dp)) then
                      line = line//right_cell('inf', w)
                   else
                      line = line//repeat(' ', w - 14)//fixed_cell(lambda, 14, 2)

@@ -73,6 +73,7 @@ module pound_results_h5
    use pound_contact, only: contact_system
    use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
+   use pound_influence_output, only: write_lambda_h5
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
    use pound_sweep_joints, only: joint_sweep
@@ -274,8 +275,8 @@ contains
          if (present(influence)) then
             do ib = 1, size(models)
                do q = 1, n_history_quantities
-                  call h5_write(h5, '/influence/'//models(ib)%name//'/'//trim(history_names(q)), &
-                                influence(ib)%lambda(:, q), error, units='%')
+                  call write_lambda_h5(h5, '/influence/'//models(ib)%name//'/'//trim(history_names(q)), &
+                                       influence(ib)%lambda(:, q), error)
                   if (allocated(error)) return
                end do
                if (allocated(influence(ib)%member_lambda)) call write_member_influence(models(ib), influence(ib))
@@ -309,8 +310,8 @@ contains
          nq = size(b%member_names)
          do k = 1, nq
             rv = infl%member_lambda(k::nq)
-            call h5_write(h5, '/influence/'//b%name//'/'//b%member_group//'/'//trim(b%member_names(k)), rv, error, &
-                          units='%')
+            call write_lambda_h5(h5, '/influence/'//b%name//'/'//b%member_group//'/'//trim(b%member_names(k)), rv, &
+                                 error)
             if (allocated(error)) return
          end do
       end subroutine write_member_influence

@@ -17,6 +17,7 @@
 !>         <variant>/peak_force, realised_restitution   (n_pairs) kN, 1 (-1: not computed)
 !>         <variant>  attribute law: the laws of its groups; pairs: the pair labels
 module pound_study_output
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str, fixed_cell, right_cell
@@ -176,7 +177,9 @@ contains
          real(dp), intent(in) :: x
          character(len=:), allocatable :: cell
 
-         if (x >= huge(1.0_dp)) then
+         if (ieee_is_nan(x)) then
+            cell = right_cell('n/m', 10)
+         else if (x >= huge(1.0_dp)) then
             cell = right_cell('inf', 10)
          else
             cell = fixed_cell(x, 10, 2)

@@ -45,7 +45,7 @@ module pound_suite_output
    use pound_strings, only: counted, str, left_cell, right_cell, fixed_cell
    use pound_contact, only: contact_system
    use pound_structure, only: structure_model
-   use pound_influence, only: building_influence
+   use pound_influence, only: building_influence, max_abs_meaningful
    use pound_text_writer, only: text_writer
    use pound_listing, only: write_section, write_influence_tables, gap_cell, mm
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
@@ -175,7 +175,7 @@ contains
          do ib = 1, nb
             line = '  '//left_cell(trim(suite%names(k)), wm)//'  '//left_cell(models(ib)%name, wb)
             do q = 1, n_history_quantities
-               line = line//es_cell(maxval(abs(suite%building(ib)%lambda(k, :, q))), 14)
+               line = line//es_cell(max_abs_meaningful(suite%building(ib)%lambda(k, :, q)), 14)
             end do
             write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
             call lst%note()

@@ -11,7 +11,8 @@
 !>
 !> A frame with plastic hinges (`hinge_law = 'elastic_plastic'`) gets the same group with
 !> `plastic_rotation` in place of `ductility` (rad): per storey, the largest peak |plastic
-!> rotation| of the storey's column hinges (`storey_yield_result%ductility` of a frame).
+!> rotation| of the storey's column hinges and of the beam hinges of the floor at its top
+!> (`storey_yield_result%ductility` of a frame).
 module pound_suite_yield_output
    use pound_kinds, only: dp
    use pound_error, only: error_type
@@ -87,9 +88,10 @@ contains
          end do
          f = 1.0_dp
          if (allocated(models(ib)%hinge_moment)) then
-            ! The storey's largest peak plastic rotation of its column hinges, in mrad.
+            ! The storey's largest peak plastic rotation of its column hinges and its top floor's beam hinges, in mrad.
             f = 1.0e3_dp
-            call lst%put('    storey  (largest column-hinge plastic rotation, mrad) mean unc, max unc, mean cpl, max cpl')
+            call lst%put('    storey  (largest hinge plastic rotation: its columns, the beams above; mrad) mean unc, max unc, '// &
+                         'mean cpl, max cpl')
          else
             call lst%put('    storey   mean mu unc   max mu unc   mean mu cpl   max mu cpl')
          end if

@@ -16,52 +16,42 @@
 !>    the code separation rules (ABS, SRSS, EC8, DDC with its correlation rho; `pair_rules`,
 !>    the one call of `pound_separation` here) on the uncoupled peaks of the facing floors (a
 !>    suite: its row of the suite, on the mean peaks);
-!> 4. collapses (none can happen: the buildings of this version are elastic), failed sweep
-!>    gaps, warnings.
+!> 4. collapses (counted for yielding buildings: buildings x analyses, then per analysis; a
+!>    suite gives its totals over the motions and per motion among its answer, the
+!>    single-motion counts are labelled with their motion), failed sweep gaps, warnings.
+!>
+!> A yielding building (bilinear storeys or plastic hinges) leads with what yielding tells:
+!> the largest storey-drift lambda; bilinear storeys: the storey of largest |lambda| of the
+!> ductility (coupled against uncoupled of the same storey, every storey's on the line), the
+!> largest coupled ductility, the storeys that yield only with pounding; hinges: the hinges
+!> that form only with pounding, the largest plastic-rotation lambda (column and beam hinges
+!> that yield in both analyses), the largest coupled rotation; then the residual drift, and
+!> only then the storey-shear line. A suite does the same with its statistics. A lambda that
+!> is not meaningful (pound_influence) is "n/m" and left out of the largest.
 !>
 !> A value that cannot be given is "n/a" (`available = .false.`), never a number; +huge (a
 !> lambda whose uncoupled peak is 0) is "inf". Gaps are in mm, lambda in %, forces in kN.
 module pound_summary
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite, ieee_is_nan
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: counted, plain_real, str
-   use pound_response, only: q_u, q_shear
+   use pound_response, only: q_u, q_drift, q_shear
    use pound_run_case, only: case_result
    use pound_sweep_joints, only: failed_joint_gaps
    use pound_suite, only: suite_result
    use pound_separation, only: separation_t, no_contact_gap
+   use pound_structure, only: structure_yields
+   use pound_summary_item, only: summary_item, summary_text_len, item, append, largest
+   use pound_summary_yield, only: lambda_item, yield_items, suite_lambdas, suite_yield_items, suite_collapses
    implicit none
    private
 
-   public :: summary_item, build_summary, summary_lines, motion_heading, value_text, suite_answer_line
+   public :: summary_item, summary_text_len, build_summary, summary_lines, motion_heading, value_text, &
+             suite_answer_line
 
-   !> Length of the text fields of an item.
-   integer, parameter, public :: summary_text_len = 1024
    !> Width of the label column of the text lines.
    integer, parameter :: label_width = 56
-
-   !> One line of the summary (one row of the CSV file).
-   type :: summary_item
-      !> 'suite', 'building', 'pair', 'collapse', 'failed' or 'warning'.
-      character(len=16) :: kind = ''
-      !> Building name, pair label, or 'suite' / 'run'.
-      character(len=summary_text_len) :: subject = ''
-      !> Machine name of the quantity, e.g. 'refined_gap_mean', 'lambda_storey_shear'.
-      character(len=40) :: quantity = ''
-      !> Human description for the text lines.
-      character(len=summary_text_len) :: label = ''
-      !> Value in `unit` (valid when `available`).
-      real(dp) :: value = 0.0_dp
-      !> Whether the value exists ('n/a' otherwise).
-      logical :: available = .true.
-      !> 'mm', '%', 'kN', 's', '-' (a count or a ratio), '' (text only).
-      character(len=8) :: unit = ''
-      !> Where (storey, segment, joint, motion), or why n/a.
-      character(len=summary_text_len) :: location = ''
-      !> Time of the peak (s); negative: none.
-      real(dp) :: time = -1.0_dp
-   end type summary_item
 
 contains
 
@@ -75,7 +65,7 @@ contains
       type(summary_item), allocatable, intent(out) :: items(:)
       !> The suite, when the deck has several `&ground`.
       type(suite_result), intent(in), optional :: suite
-      character(len=:), allocatable :: motion
+      character(len=:), allocatable :: motion, where
       integer :: ib, ip, i
 
       allocate (items(0))
@@ -95,12 +85,20 @@ contains
       if (allocated(res%unc%yielding)) then
          i = count(res%unc%yielding%collapse_storey > 0)
          if (allocated(res%cpl%yielding)) i = i + count(res%cpl%yielding%collapse_storey > 0)
-         call add(item('collapse', 'run', 'collapse', 'collapses', real(i, dp), '-', &
-                       location='buildings x analyses whose storey drift / height passed collapse_drift '// &
+         ! A suite's single-motion counts say their motion in the CSV too (its totals are above).
+         where = ''
+         if (present(suite)) where = motion_heading(suite)//' only: '
+         call add(item('collapse', 'run', 'collapse', 'collapses'//motion, real(i, dp), '-', &
+                       location=where//'buildings x analyses whose storey drift / height passed collapse_drift '// &
                        '(the listing''s bilinear-storey tables say which storey when)'))
+         call add(item('collapse', 'run', 'collapses_uncoupled', 'collapses, uncoupled'//motion, &
+                       real(count(res%unc%yielding%collapse_storey > 0), dp), '-', where//'buildings'))
+         if (allocated(res%cpl%yielding)) &
+            call add(item('collapse', 'run', 'collapses_coupled', 'collapses, coupled'//motion, &
+                          real(count(res%cpl%yielding%collapse_storey > 0), dp), '-', where//'buildings'))
       else
          call add(item('collapse', 'run', 'collapse', 'collapses', unit='', &
-                       location='not modelled: the buildings of this version are elastic and cannot collapse', &
+                       location='not modelled: the buildings of this deck are elastic and cannot collapse', &
                        available=.false.))
       end if
       if (res%has_sweep) then
@@ -128,15 +126,14 @@ contains
       subroutine add(it)
          type(summary_item), intent(in) :: it
 
-         items = [items, it]
+         call append(items, it)
       end subroutine add
 
       !> The suite's answer.
       subroutine suite_items(s)
          type(suite_result), intent(in) :: s
-         integer :: nm, ib, j, k, kk
-         real(dp) :: v, best
-         character(len=:), allocatable :: b, tol
+         integer :: nm, ib
+         character(len=:), allocatable :: tol
          character(len=24) :: buf
 
          nm = size(s%names)
@@ -166,32 +163,14 @@ contains
          end if
          if (.not. s%has_coupled) return
          do ib = 1, size(s%building)
-            b = trim(res%models(ib)%name)
-            associate (sb => s%building(ib))
-               j = largest(sb%mean_lambda(:, q_shear))
-               call add(item('suite', b, 'mean_lambda_storey_shear', b//': suite mean of the storey-shear lambdas', &
-                             sb%mean_lambda(j, q_shear), '%', 'storey '//str(j)))
-               j = largest(sb%lambda_of_means(:, q_shear))
-               call add(item('suite', b, 'lambda_of_means_storey_shear', b//': storey-shear lambda of the mean peaks', &
-                             sb%lambda_of_means(j, q_shear), '%', 'storey '//str(j)))
-               best = -1.0_dp
-               j = 1
-               kk = 0
-               do k = 1, nm
-                  if (s%motion_failed(k)) cycle
-                  v = maxval(abs(sb%lambda(k, :, q_shear)))
-                  if (v > best) then
-                     best = v
-                     kk = k
-                     j = largest(sb%lambda(k, :, q_shear))
-                  end if
-               end do
-               if (kk > 0) then
-                  call add(item('suite', b, 'max_lambda_storey_shear', b//': largest storey-shear lambda of any motion', &
-                                sb%lambda(kk, j, q_shear), '%', 'storey '//str(j)//', motion '//trim(s%names(kk))))
-               end if
-            end associate
+            if (structure_yields(res%models(ib))) then
+               call suite_lambdas(items, s, res%models, ib, q_drift, 'storey_drift', 'storey-drift')
+               call suite_yield_items(items, s, res%models, ib)
+            end if
+            call suite_lambdas(items, s, res%models, ib, q_shear, 'storey_shear', 'storey-shear')
          end do
+         if (any([(structure_yields(res%models(ib)), ib=1, size(res%models))])) &
+            call suite_collapses(items, s, res%models)
       end subroutine suite_items
 
       !> A gap item of the suite (m in, mm out; negative: none).
@@ -222,10 +201,8 @@ contains
                           unit='%', location='no &contact: no coupled run', available=.false.))
             return
          end if
-         j = largest(res%influence(ib)%lambda(:, q_shear))
-         call add(item('building', b, 'lambda_storey_shear', b//': largest storey-shear lambda'//motion, &
-                       res%influence(ib)%lambda(j, q_shear), '%', 'storey '//str(j), &
-                       res%cpl%building(ib)%peak_time(j, q_shear)))
+         call yield_items(items, res, ib, motion)
+         call lambda_item(items, res, ib, b, q_shear, 'lambda_storey_shear', 'storey-shear', motion)
          if (allocated(res%buildings(ib)%frame) .and. allocated(res%influence(ib)%member_lambda) .and. &
              allocated(res%cpl%building(ib)%member_time)) then
             nq = size(res%models(ib)%member_names)
@@ -256,7 +233,6 @@ contains
                end do
             end associate
          end if
-         call yield_items(ib, b)
          f = -1.0_dp
          t = -1.0_dp
          joint = ''
@@ -279,34 +255,6 @@ contains
                           location='no joint at this building', available=.false.))
          end if
       end subroutine building_items
-
-      !> A building with bilinear storeys: its largest peak ductility and residual drift,
-      !> coupled (the uncoupled run's beside it in the location text).
-      subroutine yield_items(ib, b)
-         integer, intent(in) :: ib
-         character(len=*), intent(in) :: b
-         integer :: j
-
-         if (.not. allocated(res%cpl%yielding) .or. .not. allocated(res%unc%yielding)) return
-         if (res%cpl%yielding(ib)%n == 0) return
-         associate (yc => res%cpl%yielding(ib), yu => res%unc%yielding(ib))
-            if (yc%n_hinges > 0) then
-               j = largest(yc%rotation)
-               call add(item('building', b, 'plastic_rotation', b//': largest hinge plastic rotation, coupled'// &
-                             motion, 1000.0_dp*yc%rotation(j), 'mrad', 'hinge '//str(j)//'; uncoupled '// &
-                             plain_real(1000.0_dp*yu%rotation(largest(yu%rotation)))//' mrad'))
-            else
-            j = largest(yc%ductility)
-            call add(item('building', b, 'ductility', b//': largest storey ductility, coupled'//motion, &
-                          yc%ductility(j), '-', 'storey '//str(j)//'; uncoupled '// &
-                          plain_real(yu%ductility(largest(yu%ductility)))))
-            end if
-            j = largest(yc%residual_drift)
-            call add(item('building', b, 'residual_drift', b//': largest residual drift, coupled'//motion, &
-                          1000.0_dp*abs(yc%residual_drift(j)), 'mm', 'storey '//str(j)//'; uncoupled '// &
-                          plain_real(1000.0_dp*abs(yu%residual_drift(largest(yu%residual_drift))))//' mm'))
-         end associate
-      end subroutine yield_items
 
       !> No-contact gap, time-history threshold gap and code rules of pair ip.
       subroutine pair_items(ip)
@@ -453,33 +401,6 @@ contains
 
    end subroutine build_summary
 
-   !> An item.
-   pure function item(kind, subject, quantity, label, value, unit, location, time, available) result(it)
-      character(len=*), intent(in) :: kind, subject, quantity, label
-      real(dp), intent(in), optional :: value, time
-      character(len=*), intent(in), optional :: unit, location
-      logical, intent(in), optional :: available
-      type(summary_item) :: it
-
-      it%kind = kind
-      it%subject = subject
-      it%quantity = quantity
-      it%label = label
-      if (present(value)) it%value = value
-      if (present(unit)) it%unit = unit
-      if (present(location)) it%location = location
-      if (present(time)) it%time = time
-      if (present(available)) it%available = available
-   end function item
-
-   !> Index of the largest |x| (the first of equals); 1 for an empty array.
-   pure integer function largest(x) result(j)
-      real(dp), intent(in) :: x(:)
-
-      j = 1
-      if (size(x) > 0) j = maxloc(abs(x), dim=1)
-   end function largest
-
    !> The no-contact gap max_t (u1(t) - u2(t)) of pair ip of a single-motion case (m, >= 0):
    !> the sweep's largest closing displacement of the joint in its run without contact (every
    !> step's path, `/sweep/closing_max`) when the case has one, otherwise from the uncoupled
@@ -592,6 +513,8 @@ contains
 
       if (.not. it%available) then
          text = 'n/a'
+      else if (ieee_is_nan(it%value)) then
+         text = 'n/m'
       else if (it%value >= huge(1.0_dp)) then
          text = 'inf'
       else if (.not. ieee_is_finite(it%value)) then

@@ -10,7 +10,8 @@
 !> * subject: the building's name, the pair's label (`A:1-B:1`), or `suite` / `run`;
 !> * quantity: the item's machine name (`refined_gap_mean`, `lambda_storey_shear`, ...);
 !> * value: the number in `unit` with 17 significant digits, `n/a` when it cannot be given
-!>   (`location` says why), `inf` for a lambda whose uncoupled peak is 0;
+!>   (`location` says why), `inf` for a lambda whose uncoupled peak is 0, `n/m` for a lambda
+!>   that is not meaningful (its uncoupled peak below 1e-6 of the building's largest);
 !> * unit: `mm`, `%`, `kN`, `-` (a count or a ratio) or empty (a text item);
 !> * location: where (storey, column segment, joint, motion), or why the value is n/a, or the
 !>   text of a warning;
@@ -27,6 +28,7 @@
 !> single-motion case of `/uncoupled`, `/coupled`, `/sweep`: `single_motion` (its name),
 !> `single_motion_index` (1-based), `single_motion_heading` ('motion k of n: NAME').
 module pound_summary_output
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_text_writer, only: text_writer, open_text, close_text
@@ -52,6 +54,8 @@ contains
 
       if (.not. it%available) then
          buf = 'n/a'
+      else if (ieee_is_nan(it%value)) then
+         buf = 'n/m'
       else if (it%value >= huge(1.0_dp)) then
          buf = 'inf'
       else if (it%unit == '-' .and. it%value == aint(it%value) .and. abs(it%value) < 1.0e9_dp) then

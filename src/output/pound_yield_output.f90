@@ -21,7 +21,8 @@ module pound_yield_output
    use pound_structure, only: structure_model
    use pound_analysis, only: analysis_result
    use pound_storey_yield, only: storey_yield_result
-   use pound_influence, only: influence_coefficient
+   use pound_influence, only: influences
+   use pound_influence_output, only: write_lambda_h5, lambda_text => lambda_cell
    use pound_h5, only: h5_file, h5_write, h5_write_attr
    use pound_text_writer, only: text_writer
    use pound_hinge_output, only: write_hinge_model_h5, write_hinge_h5, hinge_influence, write_hinge_table
@@ -95,8 +96,8 @@ contains
       !> The coefficients (n_storeys each, %).
       real(dp), allocatable, intent(out) :: lam_mu(:), lam_res(:)
 
-      lam_mu = influence_coefficient(cpl%ductility, unc%ductility)
-      lam_res = influence_coefficient(abs(cpl%residual_drift), abs(unc%residual_drift))
+      lam_mu = influences(cpl%ductility, unc%ductility)
+      lam_res = influences(abs(cpl%residual_drift), abs(unc%residual_drift))
    end subroutine yield_influence
 
    !> /influence/<b>/ductility and /influence/<b>/residual_drift of every building with
@@ -118,13 +119,13 @@ contains
          if (unc%yielding(ib)%n == 0) cycle
          call yield_influence(unc%yielding(ib), cpl%yielding(ib), lam_mu, lam_res)
          if (unc%yielding(ib)%n_hinges > 0) then
-            call h5_write(h5, '/influence/'//models(ib)%name//'/plastic_rotation', &
-                          hinge_influence(unc%yielding(ib), cpl%yielding(ib)), error, units='%')
+            call write_lambda_h5(h5, '/influence/'//models(ib)%name//'/plastic_rotation', &
+                                 hinge_influence(unc%yielding(ib), cpl%yielding(ib)), error)
          else
-            call h5_write(h5, '/influence/'//models(ib)%name//'/ductility', lam_mu, error, units='%')
+            call write_lambda_h5(h5, '/influence/'//models(ib)%name//'/ductility', lam_mu, error)
          end if
-         if (.not. allocated(error)) call h5_write(h5, '/influence/'//models(ib)%name//'/residual_drift', &
-                                                   lam_res, error, units='%')
+         if (.not. allocated(error)) call write_lambda_h5(h5, '/influence/'//models(ib)%name//'/residual_drift', &
+                                                          lam_res, error)
          if (.not. allocated(error) .and. max(unc%yielding(ib)%collapse_storey, cpl%yielding(ib)%collapse_storey) > 0) &
             call h5_write_attr(h5, '/influence/'//models(ib)%name, 'meaningful', 'no: '// &
                                collapse_text(unc%yielding(ib), cpl%yielding(ib)), error)
@@ -226,17 +227,13 @@ contains
                                      'the influence coefficients of '//models(ib)%name//' are not meaningful')
       end subroutine lcp_lines
 
-      !> A lambda right-aligned in `w` columns ('inf' for an infinite one).
+      !> A lambda right-aligned in `w` columns ('inf', 'n/m' or the number).
       function lambda_cell(lambda, w) result(cell)
          real(dp), intent(in) :: lambda
          integer, intent(in) :: w
          character(len=:), allocatable :: cell
 
-         if (lambda >= huge(1.0_dp)) then
-            cell = right_cell('inf', w)
-         else
-            cell = fixed_cell(lambda, w, 2)
-         end if
+         cell = lambda_text(lambda, w, 2)
       end function lambda_cell
    end subroutine write_yield_tables
 
