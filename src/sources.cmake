@@ -65,7 +65,7 @@ set(POUND_SOURCES
   driver/pound_memory.f90
   # driver: a suite of ground motions (scaling, one case per motion, suite statistics, rules)
   driver/pound_suite_columns.f90 driver/pound_suite_outcome.f90 driver/pound_suite_context.f90
-  driver/pound_suite_motions.f90 driver/pound_suite_statistics.f90 driver/pound_suite_refine.f90
+  driver/pound_suite_motions.f90 driver/pound_suite_statistics.f90 driver/pound_suite_refine.f90 driver/pound_suite_joints.f90 driver/pound_planned_runs.f90
   driver/pound_suite.f90
   # outputs: files, HDF5 layer (its attribute writers and low-level helpers in submodules),
   # results file, the text writer (unit + first failure), listing

@@ -12,9 +12,11 @@ submodule(pound_analysis) pound_analysis_reports
 
 contains
 
-   !> dst = src, component by component, but the substep counts of `stepping = 'impact'`
-   !> (the warnings, an array of deferred-length strings, line by line: gfortran 12 does not
-   !> copy such a component of a derived type reliably).
+   !> dst = src, component by component, every one of them (the warnings, an array of
+   !> deferred-length strings, line by line: gfortran 12 does not copy such a component of a
+   !> derived type reliably). Whatever a result holds must be copied here: a suite hands its
+   !> motions' uncoupled results to their runs at other gaps by this copy, and a part left
+   !> out (the bilinear storeys' and hinges' `yielding` was) is silently missing there.
    module subroutine analysis_copy(src, dst)
       !> The result copied.
       type(analysis_result), intent(in) :: src
@@ -33,6 +35,13 @@ contains
       dst%seconds = src%seconds
       dst%contact_seconds = src%contact_seconds
       dst%write_seconds = src%write_seconds
+      dst%substep_factor = src%substep_factor
+      dst%substepped = src%substepped
+      dst%substeps = src%substeps
+      dst%substep = src%substep
+      dst%exact_steps = src%exact_steps
+      dst%closed_steps = src%closed_steps
+      if (allocated(src%yielding)) dst%yielding = src%yielding
       allocate (character(len=1) :: dst%warnings(0))
       if (.not. allocated(src%warnings)) return
       do i = 1, size(src%warnings)

@@ -19,7 +19,7 @@ module pound_influence
    use pound_kinds, only: dp
    use pound_quantities, only: n_history_quantities, n_target_quantities, q_column_shear, q_column_moment, q_ductility
    use pound_analysis, only: analysis_result
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_yields
    implicit none
    private
 
@@ -192,8 +192,9 @@ contains
       type(building_influence), intent(in) :: infl(:)
       !> The buildings (their member rows' group and names), in the same order.
       type(structure_model), intent(in) :: models(:)
-      !> The uncoupled and coupled analyses (their bilinear storeys' peak ductility: the
-      !> largest |lambda| of the ductility over the storeys, `q_ductility`; 0 without them).
+      !> The uncoupled and coupled analyses (their bilinear storeys' or hinges' peak ductility:
+      !> the largest |lambda| of the ductility over the storeys, `q_ductility`; 0 for an
+      !> elastic building, +huge for a yielding one whose runs do not carry it).
       type(analysis_result), intent(in), optional :: unc, cpl
       real(dp) :: m(n_target_quantities, size(infl))
       integer :: ib
@@ -204,10 +205,15 @@ contains
          if (allocated(infl(ib)%member_lambda)) &
             m(q_column_shear:q_column_moment, ib) = column_maxima(infl(ib)%member_lambda, models(ib))
       end do
-      if (.not. (present(unc) .and. present(cpl))) return
-      if (.not. (allocated(unc%yielding) .and. allocated(cpl%yielding))) return
       do ib = 1, size(infl)
+         if (.not. structure_yields(models(ib))) cycle
+         ! A yielding building whose runs do not both carry its storeys' ductility (a result
+         ! rebuilt without them) is never safe: +huge, not a silent 0.
+         m(q_ductility, ib) = huge(1.0_dp)
+         if (.not. (present(unc) .and. present(cpl))) cycle
+         if (.not. (allocated(unc%yielding) .and. allocated(cpl%yielding))) cycle
          if (cpl%yielding(ib)%n == 0 .or. unc%yielding(ib)%n == 0) cycle
+         if (size(cpl%yielding(ib)%ductility) /= size(unc%yielding(ib)%ductility)) cycle
          m(q_ductility, ib) = max_abs_meaningful(influences(cpl%yielding(ib)%ductility, unc%yielding(ib)%ductility))
       end do
    end function max_abs_target

@@ -35,6 +35,7 @@ module pound_sweep_joints
    private
 
    public :: joint_sweep, find_joints, run_joint_sweeps, joint_thresholds, deck_joints, failed_joint_gaps
+   public :: joint_gap_cases, joint_cases_init, joint_sweep_of
 
    !> One independent joint and its sweep.
    type :: joint_sweep
@@ -185,7 +186,7 @@ contains
       !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
       type(ground_motion_t), intent(in), optional :: ground
       type(joint_gap_cases) :: cases
-      type(case_table) :: table, part
+      type(case_table) :: table
       type(error_type), allocatable :: joint_error
       integer(int64) :: c0, c1, rate
       integer :: j, k, ng, nb
@@ -195,26 +196,13 @@ contains
       call system_clock(c0, rate)
       ng = sweep%n_gaps
       nb = size(models)
-      call gap_cases_init(cases%gap_cases, cfg, sweep, models, ag, pairs, unc, error, ground)
+      call joint_cases_init(cases, cfg, sweep, models, ag, pairs, unc, joints, error, ground)
       if (allocated(error)) return
-      cases%deck_gap = pairs(:)%gap
-      cases%n_gaps = ng
-      allocate (cases%joint_of(size(pairs)))
-      do j = 1, size(joints)
-         cases%joint_of(joints(j)%pairs) = j
-      end do
       call run_cases(cases, size(joints)*ng, sweep_column_width(nb), table)
       call system_clock(c1)
       seconds = real(c1 - c0, dp)/real(rate, dp)
       do j = 1, size(joints)
-         associate (cols => [((j - 1)*ng + k, k=1, ng)])
-            part%values = table%values(:, cols)
-            part%failed = table%failed(cols)
-            part%message = table%message(cols)
-            part%time = table%time(cols)
-            part%step = table%step(cols)
-         end associate
-         call sweep_from_table(sweep, nb, part, joints(j)%sweep, joint_error)
+         call joint_sweep_of(sweep, nb, table, 0, j, joints(j)%sweep, joint_error)
          if (allocated(joint_error)) then
             ! Every gap of this joint failed: no threshold; the run goes on.
             call add_warning(warnings, 'gap sweep of joint '//joints(j)%name//': every gap failed, the joint '// &
@@ -230,6 +218,71 @@ contains
          end do
       end do
    end subroutine run_joint_sweeps
+
+   !> The joints' gaps of `sweep` as cases (`joint_gap_cases`; `gap_cases_init` with the deck's
+   !> gap of every pair and the joint of every pair).
+   subroutine joint_cases_init(cases, cfg, sweep, models, ag, pairs, unc, joints, error, ground)
+      !> The cases.
+      type(joint_gap_cases), intent(out) :: cases
+      !> What `&analysis` asks of the runs.
+      type(analysis_plan), intent(in) :: cfg
+      !> `&sweep`.
+      type(sweep_config), intent(in) :: sweep
+      !> The buildings (kept by reference).
+      type(structure_model), intent(in), target :: models(:)
+      !> Ground acceleration at t_n = n dt (m/s^2).
+      real(dp), intent(in) :: ag(0:)
+      !> The constraints of the deck, with their deck gaps.
+      type(contact_pair), intent(in) :: pairs(:)
+      !> Uncoupled result (kept by reference).
+      type(analysis_result), intent(in), target :: unc
+      !> The joints (`find_joints`).
+      type(joint_sweep), intent(in) :: joints(:)
+      !> Error state (the coupled model cannot be prepared).
+      type(error_type), allocatable, intent(out) :: error
+      !> The ground motion `ag` samples (needed by `stepping = 'impact'`).
+      type(ground_motion_t), intent(in), optional :: ground
+      integer :: j
+
+      call gap_cases_init(cases%gap_cases, cfg, sweep, models, ag, pairs, unc, error, ground)
+      if (allocated(error)) return
+      cases%deck_gap = pairs(:)%gap
+      cases%n_gaps = sweep%n_gaps
+      allocate (cases%joint_of(size(pairs)))
+      do j = 1, size(joints)
+         cases%joint_of(joints(j)%pairs) = j
+      end do
+   end subroutine joint_cases_init
+
+   !> Joint j's sweep from the joints' table (`joint_gap_cases`: joint j's gap i in column
+   !> `first` + (j - 1) n_gaps + i), by `sweep_from_table`; an error when its every gap failed.
+   subroutine joint_sweep_of(sweep, nb, table, first, j, res, error)
+      !> `&sweep`.
+      type(sweep_config), intent(in) :: sweep
+      !> Number of buildings.
+      integer, intent(in) :: nb
+      !> The table.
+      type(case_table), intent(in) :: table
+      !> Columns before the joints' (0: the table is the joints').
+      integer, intent(in) :: first
+      !> The joint.
+      integer, intent(in) :: j
+      !> Its sweep.
+      type(sweep_result), intent(out) :: res
+      !> Error state: its every gap failed.
+      type(error_type), allocatable, intent(out) :: error
+      type(case_table) :: part
+      integer :: k
+
+      associate (cols => [(first + (j - 1)*sweep%n_gaps + k, k=1, sweep%n_gaps)])
+         part%values = table%values(:, cols)
+         part%failed = table%failed(cols)
+         part%message = table%message(cols)
+         part%time = table%time(cols)
+         part%step = table%step(cols)
+      end associate
+      call sweep_from_table(sweep, nb, part, res, error)
+   end subroutine joint_sweep_of
 
    !> Joint case i: joint j = (i - 1)/n_gaps + 1 at gap i - (j - 1) n_gaps, the other pairs at
    !> their deck gaps; its coupled run into a column (`gap_cases`).

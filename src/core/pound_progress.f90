@@ -1,8 +1,9 @@
 !> The progress line of long runs on standard error.
 !>
 !> A run is counted in integration runs: every uncoupled run, coupled run and gap of a sweep
-!> (of every motion of a suite) is one. The program says how many it plans
-!> (`progress_start`); the time-step loop reports its step every `progress_stride` steps
+!> (of every motion of a suite) is one, and so is every motion's run at a trial gap of a
+!> suite's refinements. The program says how many it plans (`progress_start`; the
+!> refinements at their most, `progress_skip` takes back those that do not run); the time-step loop reports its step every `progress_stride` steps
 !> (`progress_steps`) and the end of each run (`progress_run_done`). The line
 !>
 !>     pound: 37/561 runs (6.6 %), 12.3 s elapsed, about 2 min 54 s left
@@ -26,7 +27,7 @@ module pound_progress
 
    public :: progress_setup, progress_start, progress_steps, progress_run_done, progress_finish
    public :: progress_line, progress_stride, progress_auto, progress_on, progress_off
-   public :: progress_ended, progress_runs_elsewhere
+   public :: progress_ended, progress_runs_elsewhere, progress_skip, progress_counts
 
    !> Modes of `progress_setup`: on a terminal only, always (`--progress`), never (`--quiet`).
    integer, parameter :: progress_auto = 0, progress_on = 1, progress_off = 2
@@ -37,6 +38,8 @@ module pound_progress
 
    logical, save :: active = .false., tty = .false., forced = .false., shown = .false.
    integer, save :: total = 1, done = 0
+   !> Runs planned (`progress_start`, less `progress_skip`): `total` is never less than `done`.
+   integer, save :: planned = 1
    !> Runs ended in this process, counted whether the line is shown or not.
    integer, save :: ended = 0
    real(dp), save :: fraction = 0.0_dp, last = 0.0_dp
@@ -61,6 +64,7 @@ contains
       integer, intent(in) :: runs
 
       total = max(1, runs)
+      planned = total
       done = 0
       fraction = 0.0_dp
       last = 0.0_dp
@@ -89,6 +93,29 @@ contains
       fraction = 0.0_dp
       call maybe_show()
    end subroutine progress_run_done
+
+   !> `n` of the planned runs will not be made (a negative `n`: more will): the total shrinks
+   !> (grows), never below the runs done (a suite's refinements, planned at their most before
+   !> the sweep tells which of them run and how many trial gaps each takes).
+   subroutine progress_skip(n)
+      !> Number of runs.
+      integer, intent(in) :: n
+
+      planned = planned - n
+      total = max(1, done, planned)
+   end subroutine progress_skip
+
+   !> Runs done so far and runs planned (`progress_start` less `progress_skip`) of the line
+   !> (both counted only while it is active).
+   subroutine progress_counts(n_done, n_planned)
+      !> Runs done.
+      integer, intent(out) :: n_done
+      !> Runs planned.
+      integer, intent(out) :: n_planned
+
+      n_done = done
+      n_planned = planned
+   end subroutine progress_counts
 
    !> Runs ended in this process so far (the case scheduler counts each case's runs with it).
    integer function progress_ended()

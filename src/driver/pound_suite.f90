@@ -21,7 +21,7 @@ module pound_suite
    use pound_error, only: error_type, fatal_error
    use pound_config, only: deck_type, n_history_quantities, n_target_quantities
    use pound_ground_motion, only: ground_motion_t
-   use pound_structure, only: structure_model, structure_names
+   use pound_structure, only: structure_model, structure_names, structure_yields
    use pound_building, only: building_model, build_building
    use pound_spectrum, only: response_spectrum, period_grid, peak_ground_acceleration
    use pound_separation, only: separation_t, no_contact_gap
@@ -39,12 +39,16 @@ module pound_suite
    use pound_suite_outcome, only: suite_failure, motion_outcome, outcome_init, outcome_fail, outcome_width, &
                                   outcome_pack, outcome_unpack
    use pound_suite_context, only: suite_context, suite_pair, suite_pairs
-   use pound_suite_motions, only: suite_motion, suite_motion_samples, motion_names, motion_sources, n_spectrum, &
-                                  spectrum_damping
+   use pound_suite_motions, only: suite_motion, suite_motion_samples, suite_motion_setup, motion_names, &
+                                  motion_sources, n_spectrum, spectrum_damping
    use pound_suite_statistics, only: suite_result, motion_histories, suite_sweep_statistics, &
                                      suite_building_statistics, suite_pair_rules, time_history_gap, &
                                      add_failure, sort_failures, suite_result_init
-   use pound_suite_refine, only: bisection, bisection_step, bisection_update, refine, refine_motions
+   use pound_suite_refine, only: bisection, bisection_step, bisection_update, refine, refine_motions, &
+                                 refine_trials, planned_refinement_runs
+   use pound_progress, only: progress_skip
+   use pound_suite_joints, only: suite_joint_sweeps
+   use pound_sweep_joints, only: joint_thresholds
    implicit none
    private
 
@@ -315,7 +319,11 @@ contains
    end subroutine motion_probe
 
    !> A motion's uncoupled peaks from its outcome (`motion_run`), as the uncoupled result that
-   !> the coupled runs at other gaps compare with (`influence_of` takes the peaks).
+   !> the coupled runs at other gaps compare with: everything a target quantity's lambda reads
+   !> of the uncoupled run (`influence_of`, `max_abs_target`): the floors' and storeys' peaks,
+   !> the frames' member peaks and, for buildings with bilinear storeys or plastic hinges, the
+   !> storeys' peak ductility (a frame's: the storeys' largest plastic rotation), so that a
+   !> sweep's or a refinement's lambda is the single run's at that gap bit for bit.
    pure subroutine peaks_from_outcome(ctx, o, unc)
       !> The suite's data.
       type(suite_context), intent(in) :: ctx
@@ -330,6 +338,14 @@ contains
          unc%building(ib)%peak = o%building(ib)%unc
       end do
       call member_peaks_from_block(ctx%models, o%member, unc)
+      if (.not. any([(structure_yields(ctx%models(ib)), ib=1, size(ctx%models))])) return
+      ! As `yield_results` gives them: one result a building, n = 0 for an elastic one.
+      allocate (unc%yielding(size(ctx%models)))
+      do ib = 1, size(ctx%models)
+         if (.not. structure_yields(ctx%models(ib))) cycle
+         unc%yielding(ib)%n = size(o%building(ib)%yield, 1)
+         unc%yielding(ib)%ductility = o%building(ib)%yield(:, 1)
+      end do
    end subroutine peaks_from_outcome
 
    !> Gap case i of the motions' sweeps (a case of `suite_gap_cases`).
@@ -345,8 +361,7 @@ contains
       type(ground_motion_t) :: gm
       type(contact_pair), allocatable :: pairs(:)
       real(dp), allocatable :: ag(:)
-      real(dp) :: factor
-      integer :: j, k, ng, n_steps
+      integer :: j, k, ng
 
       ng = work%ctx%deck%sweep%n_gaps
       j = (i - 1)/ng + 1
@@ -354,11 +369,7 @@ contains
          work%current = 0
          k = work%motions(j)
          associate (deck => work%ctx%deck)
-            n_steps = steps_of(deck%analysis%t_end, deck%analysis%dt)
-            allocate (ag(0:n_steps))
-            call suite_motion_samples(deck, k, work%ctx%models, gm, factor, ag, error)
-            if (allocated(error)) return
-            pairs = pairs_from_config(deck%contacts, structure_names(work%ctx%models), error)
+            call suite_motion_setup(deck, k, work%ctx%models, gm, ag, pairs, error)
             if (allocated(error)) return
             call gap_cases_init(work%gaps, analysis_plan_of(deck%analysis), deck%sweep, work%ctx%models, ag, pairs, &
                                 work%ctx%unc(k), error, gm)
@@ -424,7 +435,7 @@ contains
       type(suite_cases) :: motions
       type(case_table) :: table
       type(motion_outcome), allocatable :: outcomes(:)
-      logical, allocatable :: whole(:), known(:, :)
+      logical, allocatable :: whole(:), known(:, :), closing_known(:)
       type(case_result) :: res
       type(suite_failure) :: f
       real(dp), allocatable :: mean_unc(:, :, :), mean_cpl(:, :, :), mean_pair(:, :)
@@ -557,9 +568,10 @@ contains
          return
       end if
       ctx%used = pack([(k, k=1, nm)], .not. suite%motion_failed)
-      allocate (mean_pair(2, np), known(2, np))
+      allocate (mean_pair(2, np), known(2, np), closing_known(np))
       mean_pair = 0.0_dp
       known = .true.
+      closing_known = .true.
       do k = 1, nm
          call gather(outcomes(k))
       end do
@@ -582,11 +594,23 @@ contains
       do ip = 1, np
          call rules(mean_pair(1, ip), mean_pair(2, ip), ip, suite%separation(nm + 1, ip))
       end do
-      ! The no-contact gap is -1 where the histories at a pair's ends are not kept.
+      ! The no-contact gap is -1 where the histories at a pair's ends are not kept (for the
+      ! suite's: under some motion).
+      where (.not. closing_known)
+         suite%separation(nm + 1, :)%no_contact = -1.0_dp
+         suite%mean_closing = -1.0_dp
+      end where
       suite%separation%no_contact_valid = suite%separation%no_contact >= 0.0_dp
       if (suite%has_sweep) then
          call suite_sweep_statistics(suite, sweep_all, targeted, deck%sweep%target)
          ctx%gap = suite%sweep_gap
+         ! The progress line planned the refinements at their most: the runs they will take.
+         associate (tol => deck%sweep%refine_tolerance)
+            call progress_skip(planned_refinement_runs(deck%sweep, nm) - size(ctx%used)* &
+                               (refine_trials(ctx%gap, suite%safe_gap_mean, tol) + &
+                                refine_trials(ctx%gap, suite%safe_gap_every, tol)) - &
+                               sum([(refine_trials(ctx%gap, suite%safe_gap_motion(k), tol), k=1, nm)]))
+         end associate
          call refine(ctx, suite%safe_gap_mean, 0, suite%refined_gap_mean, suite%failures, error)
          if (allocated(error)) return
          call refine(ctx, suite%safe_gap_every, -1, suite%refined_gap_every, suite%failures, error)
@@ -601,6 +625,21 @@ contains
          end do
          suite%separation(nm + 1, :)%time_history = time_history_gap(suite%safe_gap_mean, suite%refined_gap_mean)
          suite%separation%time_history_valid = suite%separation%time_history >= 0.0_dp
+         ! With several independent joints, each joint's own sweep over the motions; the
+         ! first motion's are its case's, as a single motion's run has them (the time-history
+         ! gap of each joint's pairs).
+         call suite_joint_sweeps(ctx, suite, first%joints, error)
+         if (allocated(error)) return
+         if (allocated(first%joints) .and. allocated(first%separation)) then
+            block
+               real(dp) :: th_gap(np)
+               logical :: th_valid(np)
+
+               call joint_thresholds(first%joints, np, th_gap, th_valid)
+               first%separation%time_history = th_gap
+               first%separation%time_history_valid = th_valid
+            end block
+         end if
       end if
       call sort_failures(suite%failures)
 
@@ -759,9 +798,12 @@ contains
             known(:, ip) = known(:, ip) .and. o%pair_peak(:, ip) >= 0.0_dp
             mean_pair(:, ip) = mean_pair(:, ip) + o%pair_peak(:, ip)/suite%n_used
             call rules(o%pair_peak(1, ip), o%pair_peak(2, ip), ip, suite%separation(k, ip))
+            ! The suite's no-contact gap: the largest over the motions (no motion makes
+            ! contact at it); their mean is the mean closing displacement.
             suite%separation(k, ip)%no_contact = o%no_contact(ip)
-            suite%separation(nm + 1, ip)%no_contact = suite%separation(nm + 1, ip)%no_contact + &
-                                                      suite%separation(k, ip)%no_contact/suite%n_used
+            suite%separation(nm + 1, ip)%no_contact = max(suite%separation(nm + 1, ip)%no_contact, o%no_contact(ip))
+            suite%mean_closing(ip) = suite%mean_closing(ip) + o%no_contact(ip)/suite%n_used
+            closing_known(ip) = closing_known(ip) .and. o%no_contact(ip) >= 0.0_dp
          end do
       end subroutine gather
 

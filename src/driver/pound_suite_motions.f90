@@ -18,13 +18,15 @@ module pound_suite_motions
    use pound_strings, only: str
    use pound_ground_motion, only: ground_motion_t, sample_ground
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_names
+   use pound_contact, only: contact_pair, pairs_from_config
    use pound_spectrum, only: scale_to_pga, scale_to_sa
    use pound_run_case, only: configured_motion
    use pound_analysis_plan, only: steps_of
    implicit none
    private
 
+   public :: suite_motion_setup
    public :: suite_motion, suite_motion_samples, motion_names, motion_sources, n_spectrum, spectrum_damping
 
    !> Log-spaced periods of the suite spectra (before the buildings' periods are added).
@@ -228,5 +230,31 @@ contains
          end select
       end do
    end subroutine motion_sources
+
+   !> Motion k of the deck set up for its coupled runs at other gaps (a sweep's, the joints'):
+   !> its ground motion and samples at every step (`suite_motion_samples`, indices 0..n_steps)
+   !> and the deck's contact pairs.
+   subroutine suite_motion_setup(deck, k, models, gm, ag, pairs, error)
+      !> A validated configuration.
+      type(deck_type), intent(in) :: deck
+      !> Motion index.
+      integer, intent(in) :: k
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      !> The motion as run.
+      type(ground_motion_t), intent(out) :: gm
+      !> Its ground acceleration at t_n = n dt (m/s^2).
+      real(dp), allocatable, intent(out) :: ag(:)
+      !> The contact pairs of the deck.
+      type(contact_pair), allocatable, intent(out) :: pairs(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: factor
+
+      allocate (ag(0:steps_of(deck%analysis%t_end, deck%analysis%dt)))
+      call suite_motion_samples(deck, k, models, gm, factor, ag, error)
+      if (allocated(error)) return
+      pairs = pairs_from_config(deck%contacts, structure_names(models), error)
+   end subroutine suite_motion_setup
 
 end module pound_suite_motions

@@ -11,7 +11,8 @@ module pound_suite_refine
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str, fit_with_suffix
-   use pound_config, only: n_target_quantities
+   use pound_config, only: n_target_quantities, sweep_config
+   use pound_sweep, only: sweep_gaps
    use pound_influence, only: max_abs_target
    use pound_run_case, only: case_options, case_result, run_case
    use pound_cases, only: case_work, case_table, run_cases, first_failure, case_message_len
@@ -23,6 +24,7 @@ module pound_suite_refine
    private
 
    public :: bisection, bisection_step, bisection_update, refine, refine_motions
+   public :: refine_trials, planned_refinement_runs
 
    !> Failed trial gaps a motion's own threshold refinement carries to the writer (more are
    !> counted in the last one's message).
@@ -268,6 +270,51 @@ contains
          end do
       end do
    end subroutine refine_motions
+
+   !> The trial gaps `refine` takes from the safe grid gap `safe` of the grid `gap` down to the
+   !> tolerance `tol` (0: no refinement): the bisection's halvings (each verdict halves the
+   !> interval alike; counted with every trial passing).
+   pure integer function refine_trials(gap, safe, tol) result(n)
+      !> The sweep's grid (m).
+      real(dp), intent(in) :: gap(:)
+      !> Safe grid gap (m; <= 0: none).
+      real(dp), intent(in) :: safe
+      !> Tolerance (m).
+      real(dp), intent(in) :: tol
+      type(bisection) :: b
+      real(dp) :: mid
+      integer :: ig
+      logical :: more
+
+      n = 0
+      ig = findloc(gap, safe, 1)
+      if (.not. (safe > 0.0_dp) .or. ig <= 1) return
+      b = bisection(gap(ig - 1), safe, tol)
+      mid = safe
+      do
+         call bisection_step(b, mid, more)
+         if (.not. more) exit
+         n = n + 1
+         call bisection_update(b, mid, .true.)
+      end do
+   end function refine_trials
+
+   !> The most integration runs the refinements of a suite of `nm` motions with `sweep` can
+   !> take (for the progress line): the three criteria (mean, every motion, each motion's own)
+   !> refined from the grid's first interval, every motion run at each trial gap of the suite
+   !> criteria and one at each of its own; 0 without a target.
+   pure integer function planned_refinement_runs(sweep, nm) result(runs)
+      !> `&sweep`.
+      type(sweep_config), intent(in) :: sweep
+      !> Number of motions.
+      integer, intent(in) :: nm
+      real(dp), allocatable :: gap(:)
+
+      runs = 0
+      if (.not. (sweep%active .and. sweep%target > 0.0_dp) .or. sweep%n_gaps < 2) return
+      gap = sweep_gaps(sweep)
+      runs = 3*nm*refine_trials(gap, gap(2), sweep%refine_tolerance)
+   end function planned_refinement_runs
 
    !> Next trial gap `mid` of the bisection `b`, or `more` false when hi - lo <= tol.
    pure subroutine bisection_step(b, mid, more)

@@ -35,7 +35,7 @@ module pound_suite_statistics
    implicit none
    private
 
-   public :: suite_result, motion_histories, building_suite
+   public :: suite_joint, suite_result, motion_histories, building_suite
    public :: suite_sweep_statistics, suite_building_statistics, suite_pair_rules, time_history_gap
    public :: add_failure, sort_failures, suite_result_init
 
@@ -62,6 +62,30 @@ module pound_suite_statistics
       integer, allocatable :: collapse(:, :)
    end type building_suite
 
+   !> One independent joint of a suite with several (`pound_sweep_joints`): its own sweep in
+   !> every motion (its pairs at the sweep's gaps, every other pair at its deck gap) and its
+   !> threshold gaps on the suite mean, on every motion and on each motion, as the suite's
+   !> common sweep has them (`suite_sweep_statistics`; on the grid: not refined).
+   type :: suite_joint
+      !> Its name ('<left>-<right>') and its pairs (indices in deck order).
+      character(len=:), allocatable :: name
+      integer, allocatable :: pairs(:)
+      !> Per motion and gap, the largest |lambda| (%) over the targeted quantities and the
+      !> buildings (0 where failed), and whether the run failed (a failed motion: every gap),
+      !> (n_motions, n_gaps).
+      real(dp), allocatable :: lambda(:, :)
+      logical, allocatable :: failed(:, :)
+      !> Per gap: the suite mean (of each quantity's and building's largest |lambda| over the
+      !> motions, then the largest) and the largest over the motions (%; 0 where failed), and
+      !> whether a motion failed there (n_gaps).
+      real(dp), allocatable :: mean(:), max(:)
+      logical, allocatable :: gap_failed(:)
+      !> Threshold gaps (m; -1: none or no target): on the mean, on every motion, on each
+      !> motion's own (n_motions).
+      real(dp) :: safe_gap_mean = -1.0_dp, safe_gap_every = -1.0_dp
+      real(dp), allocatable :: safe_gap_motion(:)
+   end type suite_joint
+
    !> Everything a suite computes.
    type :: suite_result
       !> Motion names, the scale factor applied by the suite (1 for `scale`), PGA (m/s^2) of
@@ -87,8 +111,15 @@ module pound_suite_statistics
       !> Per building: its column segments' lambdas over the suite (frames; `pound_suite_columns`).
       type(column_suite), allocatable :: columns(:)
       !> Separation rules (n_motions + 1, n_pairs; the last row: the suite), over every pair of
-      !> every `&contact` in deck order.
+      !> every `&contact` in deck order. The suite row's no-contact gap is the largest over the
+      !> motions (the gap at which no motion makes contact; -1 when a motion's is not known).
       type(separation_t), allocatable :: separation(:, :)
+      !> With `&sweep` and several independent joints: each joint's own sweep over the
+      !> motions (unallocated otherwise).
+      type(suite_joint), allocatable :: joint(:)
+      !> Per pair: the mean over the motions of their no-contact gaps, the mean closing
+      !> displacement (m; -1 when a motion's is not known; n_pairs).
+      real(dp), allocatable :: mean_closing(:)
       !> Whether the deck's `&sweep` ran for every motion.
       logical :: has_sweep = .false.
       !> Sweep gaps (m).
@@ -357,6 +388,7 @@ contains
       allocate (suite%names(nm), suite%source(nm), suite%target(nm), suite%target_period(nm))
       allocate (suite%scale_factor(nm), suite%pga(nm), suite%sa(nm, size(suite%period)), suite%sa_building(nm, nb))
       allocate (suite%building(nb), suite%separation(nm + 1, np), suite%histories(nm))
+      allocate (suite%mean_closing(np), source=0.0_dp)
       do ib = 1, nb
          associate (n => n_storeys(ib), s => suite%building(ib))
             allocate (s%lambda(nm, n, n_history_quantities), s%mean_lambda(n, n_history_quantities), &

@@ -28,11 +28,11 @@ program pound
    use pound_deck, only: read_deck
    use pound_ground_motion, only: ground_motion_t
    use pound_run_case, only: case_options, case_result, run_case, deck_ground_motion
-   use pound_sweep_joints, only: deck_joints, failed_joint_gaps
+   use pound_sweep_joints, only: failed_joint_gaps
    use pound_sweep_joints_output, only: write_joint_sweep_tables
    use pound_suite, only: suite_result, run_suite
+   use pound_planned_runs, only: planned_runs
    use pound_study_output, only: write_study_tables, write_stiffness_rules, write_study_h5
-   use pound_case_studies, only: has_parameter_sweep, has_law_study
    use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_separation_output, only: write_run_separation, pair_labels
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, write_warning_lines, &
@@ -128,7 +128,7 @@ program pound
    options%label = deck_path
    if (.not. writer) progress_mode = progress_off
    call progress_setup(progress_mode)
-   call progress_start(planned_runs())
+   call progress_start(planned_runs(deck, is_suite))
    if (is_suite) then
       call run_suite(deck, suite, res, error, deck_path)
    else
@@ -298,25 +298,6 @@ contains
       call cases_stop()
       call posix_exit_now(status)
    end subroutine stop_with
-
-   !> The integration runs the analyses make (the progress line's total): per motion, the
-   !> uncoupled run and, with contact, the coupled run and, with a sweep, its run without
-   !> contact and one per gap (a suite's refinement adds runs beyond these).
-   integer function planned_runs()
-      planned_runs = 1
-      if (size(deck%contacts) > 0) then
-         planned_runs = 2
-         ! A sweep: its run without contact (`probe_gap`) and its gaps; a single motion's with
-         ! several independent joints, also each joint's gaps (`pound_sweep_joints`).
-         if (deck%sweep%active) planned_runs = planned_runs + 1 + deck%sweep%n_gaps
-         if (deck%sweep%active .and. .not. is_suite .and. deck_joints(deck%contacts) > 1) &
-            planned_runs = planned_runs + deck_joints(deck%contacts)*deck%sweep%n_gaps
-      end if
-      if (is_suite) planned_runs = planned_runs*size(deck%motions)
-      ! The studies of the joint (single motion only): one run per value or variant.
-      if (has_parameter_sweep(deck)) planned_runs = planned_runs + size(deck%sweep%values)
-      if (has_law_study(deck)) planned_runs = planned_runs + size(deck%variants) + 1
-   end function planned_runs
 
    !> The number of independent joints whose own sweeps ran (0 without a sweep).
    integer function joint_count()

@@ -238,7 +238,8 @@ contains
          call attrs('ec8', '', 'SRSS x 0.7 where floor levels coincide, of the elastic peaks without q_d '// &
                     '(legacy; the EN 1998-1 4.4.2.7 rule is en1998)', '')
          call attrs('ddc', '', 'DDC = sqrt(u1^2 + u2^2 - 2 rho u1 u2)', '')
-         call attrs('no_contact', '', 'max_t (u1(t) - u2(t)) of the uncoupled histories', '')
+         call attrs('no_contact', '', 'max_t (u1(t) - u2(t)) of the uncoupled histories; the suite row: the '// &
+                    'largest over the motions (no motion makes contact)', '')
          call attrs('time_history', '', 'threshold gap of the gap sweep', '-1 where not computed '// &
                     '(time_history_valid = 0)')
          if (.not. allocated(error)) call h5_write(h5, g//'/time_history_valid', &

@@ -17,13 +17,18 @@
 !>        segments' lambdas (pound_suite_columns_output)
 !>     /suite/separation/<rule>                                 (n_motions + 1, n_pairs), m;
 !>        rule: abs, srss, ec8, ddc, no_contact, time_history; the last row is the suite value
-!>        (time_history: the threshold gap of the sweep, -1 when not computed)
+!>        (no_contact: the largest over the motions; time_history: the threshold gap of the
+!>        sweep, -1 when not computed)
+!>     /suite/separation/mean_closing    (n_pairs), m: the mean of the motions' no-contact gaps
+!>        (NaN where a motion's is not known)
 !>     /suite/sweep/gap, /suite/sweep/mean, /suite/sweep/max   (n_gaps), m and %
 !>     /suite/sweep/max_abs_lambda                              (n_motions, n_gaps), %
 !>     /suite/sweep/safe_gap_mean, /suite/sweep/safe_gap_every  scalars (m; -1: none)
 !>     /suite/sweep/refined_gap_mean, /suite/sweep/refined_gap_every  bisection (-1: none)
 !>     /suite/sweep/safe_gap_motion, refined_gap_motion, non_monotone_motion  (n_motions)
 !>     /suite/sweep attributes refine_tolerance (m), non_monotone_mean, non_monotone_every
+!>     /suite/sweep/joints/<left>-<right>/...   with several independent joints: each joint's
+!>        own sweep over the motions (pound_sweep_joints_output)
 !>     /suite/<motion>/ground/acceleration, /suite/<motion>/uncoupled/..., /suite/<motion>/coupled/...
 !>        (as /uncoupled and /coupled) and /suite/<motion>/coupled/contact/force, closing
 !>        (n_out, n_pairs): only for the motions whose `&ground` sets `histories`
@@ -39,6 +44,7 @@
 !> h5py, C and NumPy read them as documented, with one row per motion like the histories' one
 !> row per output time).
 module pound_suite_output
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_config, only: history_names, n_history_quantities
@@ -54,6 +60,7 @@ module pound_suite_output
    use pound_cases, only: case_message_len
    use pound_suite_columns_output, only: write_suite_columns_listing, write_suite_columns_h5
    use pound_suite_yield_output, only: write_suite_yield_listing, write_suite_yield_h5
+   use pound_sweep_joints_output, only: write_suite_joint_tables, write_suite_joints_h5
    use pound_separation_output, only: write_separation_h5, write_separation_head, write_separation_rows, &
                                       write_separation_legend
    implicit none
@@ -205,7 +212,8 @@ contains
       call write_section(lst, 'Separation rules per contact pair [mm]')
       call write_separation_legend(lst, .true.)
       write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  The suite row: rules on the mean peaks; no-contact gap: '// &
-         'mean over the motions'//over//'.'
+         'the largest over the motions'//over//' (the gap at which no motion makes contact); below each table the '// &
+         'mean closing displacement: the mean of the motions'' no-contact gaps (some motion still makes contact there).'
       call lst%note()
       do ip = 1, size(suite%separation, 2)
          call write_separation_head(lst, suite_pair_name(ip, cs), 'motion', wm)
@@ -219,6 +227,12 @@ contains
             end if
             call write_separation_rows(lst, row_name(k), suite%separation(k, ip), wm)
          end do
+         if (suite%mean_closing(ip) >= 0.0_dp) then
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  mean closing displacement (mean over the '// &
+               'motions of max_t (u1 - u2)): '// &
+               trim(adjustl(fixed_cell(1000.0_dp*suite%mean_closing(ip), 14, 3)))//' mm'
+            call lst%note()
+         end if
       end do
       if (suite%has_sweep) then
          call write_section(lst, 'Suite gap sweep: largest |lambda| [%] over the targeted quantities')
@@ -281,6 +295,7 @@ contains
                suite%non_monotone_motion(k)
             call lst%note()
          end do
+         call write_suite_joint_tables(lst, suite, suite_pair_names(size(suite%separation, 2), cs))
       end if
       if (lst%first_ios /= 0) return
       call write_failures()
@@ -442,20 +457,15 @@ contains
                if (allocated(error)) return
             end if
          end if
-         block
-            character(len=:), allocatable :: labels(:)
-            integer :: length, ip
-
-            length = 1
-            do ip = 1, size(suite%separation, 2)
-               length = max(length, len(suite_pair_name(ip, cs)))
-            end do
-            allocate (character(len=length) :: labels(size(suite%separation, 2)))
-            do ip = 1, size(labels)
-               labels(ip) = suite_pair_name(ip, cs)
-            end do
-            call write_separation_h5(h5, '/suite/separation', suite%separation, labels, .true., error)
-         end block
+         call write_separation_h5(h5, '/suite/separation', suite%separation, &
+                                  suite_pair_names(size(suite%separation, 2), cs), .true., error)
+         if (.not. allocated(error)) call h5_write(h5, '/suite/separation/mean_closing', &
+                                                   merge(suite%mean_closing, ieee_value(1.0_dp, ieee_quiet_nan), &
+                                                         suite%mean_closing >= 0.0_dp), error, units='m')
+         if (.not. allocated(error)) call h5_write_attr(h5, '/suite/separation/mean_closing', 'rule', &
+                                                        'mean over the motions of each motion''s no-contact gap '// &
+                                                        'max_t (u1 - u2): not a safe gap (some motion still makes '// &
+                                                        'contact); the suite row of no_contact is the largest', error)
          if (allocated(error)) return
          call write_histories()
          if (allocated(error) .or. .not. suite%has_sweep) return
@@ -479,6 +489,8 @@ contains
                                                         suite%non_monotone_every, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/suite/sweep', 'refine_tolerance', &
                                                         suite%refine_tolerance, error)
+         if (.not. allocated(error)) call write_suite_joints_h5(h5, suite, &
+                                                                suite_pair_names(size(suite%separation, 2), cs), error)
          if (.not. allocated(error) .and. size(suite%failures) > 0) then
             call h5_write(h5, '/suite/sweep/failed', transpose(merge(1, 0, suite%sweep_failed)), error, &
                                 units='1')
@@ -557,6 +569,25 @@ contains
 
 
    end subroutine write_suite_h5
+
+   !> The labels of the pairs 1..np (`suite_pair_name`), one length.
+   function suite_pair_names(np, cs) result(labels)
+      !> Number of pairs (the columns of `suite%separation`).
+      integer, intent(in) :: np
+      !> The contact system of the deck.
+      type(contact_system), intent(in), optional :: cs
+      character(len=:), allocatable :: labels(:)
+      integer :: length, ip
+
+      length = 1
+      do ip = 1, np
+         length = max(length, len(suite_pair_name(ip, cs)))
+      end do
+      allocate (character(len=length) :: labels(np))
+      do ip = 1, np
+         labels(ip) = suite_pair_name(ip, cs)
+      end do
+   end function suite_pair_names
 
    !> The label of pair `ip` ('A:3-B:z=7.50m', `pair_label`), or its number without a contact
    !> system: the separation tables and /suite/separation name the pairs by it.

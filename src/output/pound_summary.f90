@@ -268,9 +268,10 @@ contains
          if (present(suite)) then
             associate (s => suite%separation(size(suite%names) + 1, ip))
                if (s%no_contact >= 0.0_dp) then
-                  call add(item('pair', p, 'no_contact_gap', p//': no-contact gap, mean over the motions', &
+                  call add(item('pair', p, 'no_contact_gap', p//': no-contact gap, largest over the motions', &
                                 1000.0_dp*s%no_contact, 'mm', &
-                                'suite mean over the motions of each motion''s max_t (u1 - u2) of its uncoupled histories'))
+                                'the largest over the motions of each motion''s max_t (u1 - u2) of its uncoupled '// &
+                                'histories: no motion makes contact'))
                else
                   call add(item('pair', p, 'no_contact_gap', p//': no-contact gap', unit='mm', &
                                 location='the u histories at the pair''s ends are not kept (history = ''u''; '// &

@@ -1,18 +1,33 @@
 !> The listing section of the joints' own sweeps (`pound_sweep_joints`): for a deck with
 !> several independent joints, per joint its gaps, impacts, the largest targeted |lambda| over
 !> the buildings, whether the target is met, and its threshold gap (the time-history gap of its
-!> pairs in the separation table); its failed gaps and warnings.
+!> pairs in the separation table); its failed gaps and warnings. For a suite
+!> (`pound_suite_joints`), per joint its suite mean and largest |lambda| over the motions at
+!> each gap and its threshold gaps on the mean, on every motion and on each motion, in the
+!> listing and in HDF5:
+!>
+!>     /suite/sweep/joints/<name>/mean, max            (n_gaps), %: the suite mean (of each
+!>        quantity's and building's largest |lambda| over the motions, then the largest over the
+!>        targeted ones) and the largest over the motions; 0 where a motion failed
+!>     /suite/sweep/joints/<name>/max_abs_lambda       (n_motions, n_gaps), %: each motion's
+!>     /suite/sweep/joints/<name>/failed               (n_motions, n_gaps), 0/1
+!>     /suite/sweep/joints/<name>/safe_gap_mean, safe_gap_every   scalars, m (-1: none)
+!>     /suite/sweep/joints/<name>/safe_gap_motion      (n_motions), m (-1: none)
+!>     /suite/sweep/joints/<name>/pairs                (n_pairs of the joint) the pair labels
 module pound_sweep_joints_output
    use pound_kinds, only: dp
-   use pound_strings, only: fixed_cell, right_cell, str, counted
+   use pound_error, only: error_type
+   use pound_strings, only: fixed_cell, right_cell, left_cell, str, counted
    use pound_config, only: sweep_config
    use pound_sweep_joints, only: joint_sweep
+   use pound_suite_statistics, only: suite_result
    use pound_listing, only: write_section
    use pound_text_writer, only: text_writer
+   use pound_h5, only: h5_file, h5_write
    implicit none
    private
 
-   public :: write_joint_sweep_tables
+   public :: write_joint_sweep_tables, write_suite_joint_tables, write_suite_joints_h5
 
 contains
 
@@ -93,5 +108,124 @@ contains
          end associate
       end do
    end subroutine write_joint_sweep_tables
+
+   !> A suite's joints' own sweeps in the listing (nothing without them): per joint its pairs,
+   !> a table `gap [mm]  mean  max` (FAILED where a motion's run failed) and its thresholds on
+   !> the mean, on every motion and per motion.
+   subroutine write_suite_joint_tables(lst, suite, labels)
+      !> The listing writer (unit, first write failure).
+      type(text_writer), intent(inout) :: lst
+      !> The suite.
+      type(suite_result), intent(in) :: suite
+      !> The pair labels, in deck order.
+      character(len=*), intent(in) :: labels(:)
+      character(len=:), allocatable :: line
+      integer :: i, j, k, w
+
+      if (.not. allocated(suite%joint)) return
+      call write_section(lst, 'Suite gap sweep per joint: the joint''s pairs at the gaps, every other pair at '// &
+                         'its deck gap')
+      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         '  '//str(size(suite%joint))//' independent joints, each swept in every motion; mean and max as the '// &
+         'suite gap sweep''s (largest |lambda| [%] over every building and every targeted quantity);', &
+         '  thresholds on the grid (not refined): the smallest gap from which on every larger gap meets the '// &
+         'target on the mean, on every motion, and on each motion.'
+      call lst%note()
+      w = max(12, maxval(len_trim(suite%names)) + 2)
+      do j = 1, size(suite%joint)
+         associate (jt => suite%joint(j))
+            line = '  Joint '//jt%name//' ('//counted(size(jt%pairs), 'pair')//':'
+            do k = 1, size(jt%pairs)
+               line = line//' '//trim(labels(jt%pairs(k)))
+            end do
+            write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) line//')'
+            call lst%note()
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '      gap [mm]          mean           max'
+            call lst%note()
+            do i = 1, size(suite%sweep_gap)
+               line = '  '//fixed_cell(1000.0_dp*suite%sweep_gap(i), 12, 3)
+               if (jt%gap_failed(i)) then
+                  line = line//'        FAILED'
+               else
+                  line = line//lambda_cell(jt%mean(i))//lambda_cell(jt%max(i))
+               end if
+               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
+               call lst%note()
+            end do
+            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+               '    threshold gap of joint '//jt%name//': on the mean '//gap_text(jt%safe_gap_mean)// &
+               ', on every motion '//gap_text(jt%safe_gap_every)
+            call lst%note()
+            do k = 1, size(suite%names)
+               if (suite%motion_failed(k)) then
+                  line = 'FAILED'
+               else
+                  line = gap_text(jt%safe_gap_motion(k))
+               end if
+               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+                  '      '//left_cell(trim(suite%names(k)), w)//line
+               call lst%note()
+            end do
+         end associate
+      end do
+
+   contains
+
+      !> A gap in mm, or 'n/a (none in the sweep range)'.
+      pure function gap_text(gap) result(text)
+         real(dp), intent(in) :: gap
+         character(len=:), allocatable :: text
+
+         if (gap >= 0.0_dp) then
+            text = trim(adjustl(fixed_cell(1000.0_dp*gap, 12, 3)))//' mm'
+         else
+            text = 'n/a (none in the sweep range, or no target)'
+         end if
+      end function gap_text
+
+      !> A |lambda| (%) in 14 columns, 'inf' for +huge.
+      pure function lambda_cell(x) result(cell)
+         real(dp), intent(in) :: x
+         character(len=14) :: cell
+
+         if (x >= huge(1.0_dp)) then
+            cell = right_cell('inf', 14)
+         else
+            cell = fixed_cell(x, 14, 2)
+         end if
+      end function lambda_cell
+
+   end subroutine write_suite_joint_tables
+
+   !> A suite's joints' own sweeps in HDF5 (see the module; nothing without them).
+   subroutine write_suite_joints_h5(h5, suite, labels, error)
+      !> Open file.
+      type(h5_file), intent(inout) :: h5
+      !> The suite.
+      type(suite_result), intent(in) :: suite
+      !> The pair labels, in deck order.
+      character(len=*), intent(in) :: labels(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=:), allocatable :: g
+      integer :: j
+
+      if (.not. allocated(suite%joint)) return
+      do j = 1, size(suite%joint)
+         associate (jt => suite%joint(j))
+            g = '/suite/sweep/joints/'//jt%name//'/'
+            call h5_write(h5, g//'mean', jt%mean, error, units='%')
+            if (.not. allocated(error)) call h5_write(h5, g//'max', jt%max, error, units='%')
+            if (.not. allocated(error)) call h5_write(h5, g//'max_abs_lambda', transpose(jt%lambda), error, units='%')
+            if (.not. allocated(error)) call h5_write(h5, g//'failed', transpose(merge(1, 0, jt%failed)), error, &
+                                                      units='1')
+            if (.not. allocated(error)) call h5_write(h5, g//'safe_gap_mean', jt%safe_gap_mean, error, units='m')
+            if (.not. allocated(error)) call h5_write(h5, g//'safe_gap_every', jt%safe_gap_every, error, units='m')
+            if (.not. allocated(error)) call h5_write(h5, g//'safe_gap_motion', jt%safe_gap_motion, error, units='m')
+            if (.not. allocated(error)) call h5_write(h5, g//'pairs', labels(jt%pairs), error, units='-')
+         end associate
+         if (allocated(error)) return
+      end do
+   end subroutine write_suite_joints_h5
 
 end module pound_sweep_joints_output

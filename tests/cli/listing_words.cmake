@@ -36,7 +36,7 @@ expect_contains("suite listing" "${listing}" "  smallest gap meeting the target 
 expect_contains("suite listing" "${listing}" "(equal displacements): then enter factors 1 (docs/manual.md, Design-code separation rules).")
 expect_contains("suite listing" "${listing}" "  smallest gap meeting the target on every motion: 70.000 mm\n")
 expect_contains("suite listing" "${listing}" "  refined by bisection (mean, every motion): 68.164 mm, 68.252 mm (tolerance 0.0100 mm)\n")
-expect_contains("suite summary" "${s_out}" "(no-contact: suite mean over the motions of each motion's max_t (u1 - u2) of its uncoupled histories;")
+expect_contains("suite summary" "${s_out}" "(no-contact: the largest over the motions of each motion's max_t (u1 - u2) of its uncoupled histories: no motion makes contact;")
 # A code rule that is n/a for want of a factor names the factor on the pair line.
 expect_contains("suite summary" "${s_out}" "DDC 28.4628, ASCE7 n/a (needs cd), EN1998 n/a (needs behaviour_factor), IS1893 n/a (needs response_reduction) (DDC rho 0.007)")
 expect_contains("suite warning" "${s_out}" "at 3 of 9 gaps; the worst, gap = 10 mm: energy audit")

@@ -2,7 +2,9 @@
 # identical dataset by dataset and attribute by attribute (timings aside), the listings line
 # by line (timings aside), and only rank 0 reports on standard output. With TEST_ENV
 # (NAME=VALUE) every run gets that variable (a test hook of src/main/pound.f90), and STATUS
-# is the exit status expected (default 0; 3: some cases failed, the outputs written).
+# is the exit status expected (default 0; 3: some cases failed, the outputs written). With
+# CHECK (a Python script and its arguments after the file, joined by "|") each run's HDF5
+# file must also pass that script.
 include(${CMAKE_CURRENT_LIST_DIR}/common.cmake.inc)
 get_filename_component(stem ${DECK} NAME_WE)
 if(NOT DEFINED STATUS)
@@ -45,3 +47,12 @@ foreach(dir IN LISTS dirs)
     message(FATAL_ERROR "listings one/ and ${dir}/ differ")
   endif()
 endforeach()
+if(CHECK)
+  string(REPLACE "|" ";" check "${CHECK}")
+  list(GET check 0 script)
+  list(REMOVE_AT check 0)
+  foreach(dir IN LISTS dirs)
+    run(ok ${PYTHON} ${SOURCE_DIR}/${script} ${WORK_DIR}/${dir}/${stem}.h5 ${check})
+    expect_equal("${script} on ${dir}/${stem}.h5:\n${ok_out}${ok_err}\nstatus" 0 "${ok_rc}")
+  endforeach()
+endif()
