@@ -254,7 +254,9 @@ contains
                   if (cc%floor_left(k) == 0 .or. cc%floor_right(k) == 0) then
                      call fail(at, 'parameter', "parameter = 'restitution': &contact #"//str(ic)//' ('// &
                                cc%left//', '//cc%right//') has a pair at a column point between floors '// &
-                               '(no mass to calibrate the dashpot with)', error)
+                               '(no mass of its own: no impact of two masses to calibrate the dashpot to a '// &
+                               'restitution); sweep the stiffness instead, or give the dashpot of an elastic '// &
+                               'law directly in a deck per value', error)
                      return
                   end if
                end do
