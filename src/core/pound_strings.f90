@@ -7,7 +7,7 @@ module pound_strings
    private
 
    public :: str, number_end, decimal_exponent, is_digit, shorten, short_real, fixed_cell, fit_with_suffix, left_cell, right_cell
-   public :: add_warning, plain_real, counted, mm_text
+   public :: add_warning, plain_real, plain_significant, counted, mm_text
 
    !> Shortest readable text of a number.
    interface str
@@ -312,6 +312,24 @@ contains
          s = plain_real(1000.0_dp*x)//' mm'
       end if
    end function mm_text
+
+   !> `x` rounded to `digits` significant digits, in plain decimals (`plain_real`): '266',
+   !> '0.00113', '1.99'.
+   pure function plain_significant(x, digits) result(s)
+      !> Value to format.
+      real(dp), intent(in) :: x
+      !> Significant digits kept (1..15).
+      integer, intent(in) :: digits
+      character(len=:), allocatable :: s
+      real(dp) :: p
+
+      if (.not. (abs(x) > 0.0_dp .and. abs(x) <= huge(1.0_dp))) then
+         s = plain_real(x)
+         return
+      end if
+      p = 10.0_dp**(digits - 1 - floor(log10(abs(x))))
+      s = plain_real(real(nint(x*p, int64), dp)/p)
+   end function plain_significant
 
    !> `x` for messages in plain decimals: 7 significant digits, trailing zeros dropped ('12',
    !> '0.04', '1.25') when 1e-4 <= |x| < 1e7; otherwise as `str` ('1.000000E-5').

@@ -30,8 +30,11 @@ module pound_config
       character(len=:), allocatable :: title
       !> Time step (s).
       real(dp) :: dt = 0.0_dp
-      !> Duration (s).
+      !> End of the analysis (s): the deck's `t_end` plus `t_free`.
       real(dp) :: t_end = 0.0_dp
+      !> Free vibration appended after the motion (s; the deck's `t_free`, default 0): the ground
+      !> is at rest after t_end - t_free (the deck's `t_end`), and the analysis runs on to `t_end`.
+      real(dp) :: t_free = 0.0_dp
       !> History output every `output_every` steps.
       integer :: output_every = 1
       !> Which history quantities are stored (same order as `history_names`).
@@ -46,6 +49,9 @@ module pound_config
       !> acceleration, as every other step) or 'exact' (the exact step of the linear structure
       !> under the ground acceleration linear between its samples, mode by mode).
       character(len=8) :: free_steps = 'newmark'
+      !> Where the deck sets `free_steps` ('deck.nml:4: &analysis: '; the group's start when it
+      !> does not), for a refusal made once the models are built.
+      character(len=:), allocatable :: free_steps_site
       !> Collapse of a building with bilinear storeys: a storey drift / height beyond this (issue 25).
       real(dp) :: collapse_drift = 0.10_dp
       !> Histories in the HDF5 file in compressed (deflate) chunks.

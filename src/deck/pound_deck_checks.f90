@@ -55,9 +55,10 @@ module pound_deck_checks
 
    !> The ranges: generous enough for any real structure and record, tight enough that every
    !> value inside gives finite derived quantities (12EI/h^3, masses, periods, forces).
-   type(bound_t), parameter :: bounds(48) = [ &
+   type(bound_t), parameter :: bounds(49) = [ &
       bound_t('analysis:dt', 1.0e-7_dp, 1.0_dp, 's', .false.), &
       bound_t('analysis:t_end', 0.0_dp, 1.0e4_dp, 's', .false.), &
+      bound_t('analysis:t_free', 0.0_dp, 1.0e4_dp, 's', .false.), &
       bound_t('ground:x0', 1.0e-9_dp, 10.0_dp, 'm', .true.), &
       bound_t('ground:a', 0.0_dp, 1.0e3_dp, '1/s', .false.), &
       bound_t('ground:b', 1.0e-3_dp, 1.0e4_dp, 'rad/s', .false.), &

@@ -1,8 +1,8 @@
 !> Reader of `&contact`: the two buildings, the floor pairs, gaps and the joint law with its
 !> parameters (each law's own variables are checked by its module: pound_law_registry).
 module pound_deck_contact
-   use pound_config, only: building_config, contact_config, is_frame
-   use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, site, site_of, unset_int, &
+   use pound_config, only: building_config, contact_config, is_frame, deck_warning_len
+   use pound_deck_checks, only: check_real, fail, warn, given_count, is_set, read_failed, site, site_of, unset_int, &
                                 unset_real, values_text
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_law_registry, only: registered_law_names, law_is_registered, law_reads, law_restitution, law_take_deck, &
@@ -12,7 +12,7 @@ module pound_deck_contact
    use pound_deck_stiffness, only: stiffness_has_default, default_joint_stiffness
    use pound_error, only: error_type
    use pound_kinds, only: dp
-   use pound_strings, only: str
+   use pound_strings, only: str, plain_real
    implicit none
    private
 
@@ -20,11 +20,13 @@ module pound_deck_contact
 
    !> Elevations closer than this are the same point (m): a pair's elevation and a floor's.
    real(dp), parameter :: elevation_tol = 1.0e-6_dp
+   !> A gap above this (m), or above this fraction of the lower building's height, is warned.
+   real(dp), parameter :: gap_high = 1.0_dp, gap_height_fraction = 0.1_dp
 
 contains
 
    !> `&contact`: unilateral constraints between facing floors of two buildings.
-   subroutine read_contact(path, text, g, buildings, cfg, error)
+   subroutine read_contact(path, text, g, buildings, cfg, error, warnings)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
       !> Deck text, lines separated by LF.
@@ -37,6 +39,8 @@ contains
       type(contact_config), intent(out) :: cfg
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
+      !> The deck's warnings, extended by an implausible gap's (`gap_warning`).
+      character(len=deck_warning_len), allocatable, intent(inout), optional :: warnings(:)
       character(len=word_len) :: left, right, law, dashpot_rate, variant
       integer, allocatable :: floors_left(:), floors_right(:)
       real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:), elevations(:)
@@ -151,6 +155,8 @@ contains
       else
          cfg%gap = gap(1:n)
       end if
+      if (present(warnings)) call gap_warning(at, cfg%gap, buildings(cfg%left_index), &
+                                              buildings(cfg%right_index), warnings)
 
       cfg%law = lower(trim(adjustl(law)))
       if (cfg%law == '') then
@@ -219,9 +225,12 @@ contains
          end if
          do i = 1, n
             if (cfg%floor_left(i) == 0 .or. cfg%floor_right(i) == 0) then
-               call fail(at, 'restitution', 'restitution needs the masses of both facing points, but '// &
-                         'elevations('//str(i)//') = '//str(cfg%elevation(i))//' m is a column point '// &
-                         'between floors (no mass); '//instead(cfg%law), error)
+               call fail(at, 'restitution', 'restitution = '//plain_real(restitution)//" (law = '"//cfg%law// &
+                         "') needs the masses of both facing points: the dashpot is calibrated so that an "// &
+                         'impact of the two facing masses rebounds with that restitution, and elevations('// &
+                         str(i)//') = '//plain_real(cfg%elevation(i))//' m is a column point between floors of '// &
+                         trim(merge(cfg%left, cfg%right, cfg%floor_left(i) == 0))//', which has no mass of its '// &
+                         'own (no impact to calibrate); '//instead(cfg%law), error)
                return
             end if
          end do
@@ -246,9 +255,11 @@ contains
          character(len=:), allocatable :: text
 
          if (name == 'elastic') then
-            text = 'give the dashpot instead'
+            text = 'give the dashpot (kN s/m) instead of restitution'
          else
-            text = "use law = 'hertz' (no damping) or floors instead"
+            text = "instead use law = 'hertz' (the same contact without damping), law = 'elastic' with "// &
+                   'a dashpot (kN s/m) given directly, or put the floor-to-floor pairs in a &contact group '// &
+                   'of their own with this law'
          end if
       end function instead
 
@@ -300,6 +311,33 @@ contains
 
 
    end subroutine read_contact
+
+   !> A gap above `gap_high` m, or above `gap_height_fraction` of the lower building's height,
+   !> most likely in cm or mm instead of m (`gap = 4.0` meant as 4 cm): warned (one line, the
+   !> largest such gap of the group), not refused.
+   pure subroutine gap_warning(at, gaps, a, b, warnings)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> The group's gaps (m), one per pair.
+      real(dp), intent(in) :: gaps(:)
+      !> The two buildings.
+      type(building_config), intent(in) :: a, b
+      !> The deck's warnings.
+      character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
+      real(dp) :: g, h, limit
+
+      if (size(gaps) == 0) return
+      g = maxval(gaps)
+      h = huge(1.0_dp)
+      if (allocated(a%height)) h = min(h, sum(a%height))
+      if (allocated(b%height)) h = min(h, sum(b%height))
+      limit = min(gap_high, gap_height_fraction*h)
+      if (.not. (g > limit)) return
+      call warn(at, 'gap', 'gap = '//plain_real(g)//' m is above '//plain_real(limit)//' m (1 m, or a tenth '// &
+                'of the lower building''s height '//plain_real(h)//' m): gaps are in m; did you mean '// &
+                plain_real(g/100.0_dp)//' m (cm) or '//plain_real(g/1000.0_dp)//' m (mm)? With such a gap the '// &
+                'buildings may never touch', warnings)
+   end subroutine gap_warning
 
    !> Index of the building named `raw` (ignoring case); error if blank or not a building.
    pure subroutine find_building(at, var, raw, what, buildings, idx, error)

@@ -9,7 +9,7 @@ module pound_deck_ground
    use pound_deck_variables, only: path_len, word_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
-   use pound_strings, only: plain_real, str
+   use pound_strings, only: plain_real, plain_significant, str
    implicit none
    private
 
@@ -17,6 +17,8 @@ module pound_deck_ground
 
    !> A scaling `target` (m/s^2) below this is suspicious (probably given in g): a warning.
    real(dp), parameter, public :: low_target = 0.05_dp
+   !> A scaling `target` below this (m/s^2, about 0.2 g) reads as a plausible value in g.
+   real(dp), parameter, public :: g_like_target = 2.0_dp
 
 contains
 
@@ -209,6 +211,12 @@ contains
                   ' m/s^2 is below '//plain_real(low_target)//' m/s^2 (about 0.005 g): did you mean g? '// &
                   'target is in m/s^2; for a target in g use target_g = '//plain_real(target), &
                   warnings)
+               if (cfg%target >= low_target .and. cfg%target < g_like_target) call warn(at, 'target', &
+                  'target = '//plain_real(target)//' m/s^2 = '//plain_significant(target/g_accel, 3)//' g with scale_to = '''// &
+                  cfg%scale_to//''' would be a plausible value in g, while the deck''s accelerations are in m/s^2: '// &
+                  'did you mean target_g = '//plain_real(target)//' ('//plain_significant(target*g_accel, 3)//' m/s^2)? '// &
+                  'if '//plain_real(target)//' m/s^2 is meant, target_g = '//plain_significant(target/g_accel, 3)// &
+                  ' says so without this warning', warnings)
             end if
             if (is_set(period)) then
                if (cfg%scale_to == 'pga') then

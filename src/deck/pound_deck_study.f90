@@ -8,7 +8,8 @@ module pound_deck_study
    use pound_deck_lexer, only: group_ref, lower, is_name_char
    use pound_law_registry, only: law_reads, law_restitution, law_from_config
    use pound_contact_law, only: contact_law
-   use pound_error, only: error_type
+   use pound_error, only: error_type, fatal_error
+   use pound_law_smooth, only: hertz_stiffness_range, smooth_law
    use pound_kinds, only: dp
    use pound_strings, only: str
    implicit none
@@ -192,17 +193,14 @@ contains
       end subroutine check_value
    end subroutine take_parameter_sweep
 
-   !> Whether the deck runs as a suite (several `&ground`, a synthetic motion or a scaled one),
-   !> as the program decides (`pound.f90`).
+   !> Whether the deck is a suite for a joint study: several `&ground`. A single motion, also
+   !> one scaled by `scale_to` or a synthetic one, is one motion: a deck with a joint study runs
+   !> it as one case (`pound.f90`).
    pure logical function study_deck_is_suite(d)
       !> The deck (its motions read).
       type(deck_type), intent(in) :: d
 
       study_deck_is_suite = size(d%motions) > 1
-      if (.not. study_deck_is_suite .and. allocated(d%ground%kind)) &
-         study_deck_is_suite = d%ground%kind == 'synthetic'
-      if (.not. study_deck_is_suite .and. allocated(d%ground%scale_to)) &
-         study_deck_is_suite = len_trim(d%ground%scale_to) > 0
    end function study_deck_is_suite
 
    !> A stiffness or restitution sweep against the deck's joints (the base groups): every
@@ -228,8 +226,8 @@ contains
       at = site_of(path, g)
       if (study_deck_is_suite(d)) then
          call fail(at, 'parameter', "parameter = '"//trim(d%sweep%parameter)//"' runs with one ground motion; "// &
-                   'this deck is a suite (several &ground, a synthetic or a scaled motion): run its motions '// &
-                   'one by one', error)
+                   'this deck is a suite of '//str(size(d%motions))//' motions (several &ground): run its '// &
+                   'motions one by one (one &ground each; it may be scaled by scale_to)', error)
          return
       end if
       do ic = 1, size(d%contacts)
@@ -256,7 +254,9 @@ contains
                   if (cc%floor_left(k) == 0 .or. cc%floor_right(k) == 0) then
                      call fail(at, 'parameter', "parameter = 'restitution': &contact #"//str(ic)//' ('// &
                                cc%left//', '//cc%right//') has a pair at a column point between floors '// &
-                               '(no mass to calibrate the dashpot with)', error)
+                               '(no mass of its own: no impact of two masses to calibrate the dashpot to a '// &
+                               'restitution); sweep the stiffness instead, or give the dashpot of an elastic '// &
+                               'law directly in a deck per value', error)
                      return
                   end if
                end do
@@ -264,6 +264,18 @@ contains
             do i = 1, size(d%sweep%values)
                c = swept_config(cc, d%sweep%parameter, d%sweep%values(i))
                call law_from_config(c, law, law_error)
+               if (.not. allocated(law_error) .and. d%sweep%parameter == 'stiffness') then
+                  ! The deck's range of a Hertz-type stiffness (pound_law_smooth), which the law
+                  ! itself does not check.
+                  select type (given => law%given)
+                  class is (smooth_law)
+                     if (given%stiffness_unit() == 'kN/m^(3/2)' .and. .not. (c%stiffness >= &
+                         hertz_stiffness_range(1) .and. c%stiffness <= hertz_stiffness_range(2))) &
+                        call fatal_error(law_error, "law '"//cc%law//"': a Hertz-type stiffness must be in "// &
+                                         str(hertz_stiffness_range(1))//' to '//str(hertz_stiffness_range(2))// &
+                                         ' kN/m^(3/2), as the deck''s stiffness (concrete floors: about 1e6 to 1e9)')
+                  end select
+               end if
                if (allocated(law_error)) then
                   call fail(at, 'values', trim(d%sweep%parameter)//' = '//str(d%sweep%values(i))// &
                             ' (value '//str(i)//') makes no valid law of &contact #'//str(ic)//' ('//cc%left// &
@@ -344,7 +356,8 @@ contains
       at = site_of(path, groups(gi(findloc(owner > 0, .true., 1))))
       if (study_deck_is_suite(d)) then
          call fail(at, 'variant', 'a law study (&contact variant) runs with one ground motion; this deck is '// &
-                   'a suite (several &ground, a synthetic or a scaled motion): run its motions one by one', error)
+                   'a suite of '//str(size(d%motions))//' motions (several &ground): run its motions one by one '// &
+                   '(one &ground each; it may be scaled by scale_to)', error)
          return
       end if
       if (all(owner > 0)) then

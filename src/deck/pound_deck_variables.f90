@@ -59,9 +59,10 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(114) = [ &
+   type(var_spec), parameter :: variables(115) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
-      var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 'output_every', 'i', 0), &
+      var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 't_free', 'r', 0), &
+      var_spec('analysis', 'output_every', 'i', 0), &
       var_spec('analysis', 'history', 'c', 0), &
       var_spec('ground', 'kind', 'c', 0), var_spec('ground', 'x0', 'r', 0), &
       var_spec('ground', 'a', 'r', 0), var_spec('ground', 'b', 'r', 0), &

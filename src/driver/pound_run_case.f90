@@ -18,18 +18,20 @@ module pound_run_case
    use pound_config, only: deck_type, ground_config, analysis_config
    use pound_analysis_plan, only: analysis_plan, steps_of, stepping_uniform, stepping_impact, free_newmark, &
                                   free_exact, lcp_auto, lcp_lemke, integrator_newmark, integrator_hht
-   use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, &
+   use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, stop_ground, &
                                   describe_ground
    use pound_building, only: building_model, build_building
-   use pound_structure, only: structure_model, structure_names
+   use pound_structure, only: structure_model, structure_names, structure_yields
+   use pound_newmark, only: exact_max_dofs
+   use pound_residual_settle, only: residual_warning, ground_tail_fraction, kinetic_tail_fraction
    use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, add_warning, history_sink, &
-                             analysis_copy
+                             analysis_copy, e_kinetic
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
    use pound_influence, only: building_influence, influence_of
    use pound_sweep, only: sweep_result, run_sweep
    use pound_sweep_joints, only: joint_sweep, find_joints, run_joint_sweeps, joint_thresholds
    use pound_separation, only: separation_t, code_separation, levels_coincide, not_computed
-   use pound_plausibility, only: period_warning, unit_suspects
+   use pound_plausibility, only: period_warning, unit_suspects, pga_warning, scale_warning
    use pound_joint_study, only: joint_study_result
    use pound_case_studies, only: has_parameter_sweep, has_law_study, run_deck_study
    implicit none
@@ -140,6 +142,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       call configured_motion(deck%ground, gm, error)
+      if (allocated(error)) return
+      gm%name = deck%ground%name
+      if (deck%analysis%t_free > 0.0_dp) &
+         call stop_ground(gm, deck%analysis%t_end - deck%analysis%t_free, deck%analysis%dt)
    end subroutine deck_ground_motion
 
    !> The pulse or the record (read whole from its file) that one `&ground` describes.
@@ -234,6 +240,20 @@ contains
          end if
       end do
 
+      ! The exact free steps hold every building's n x n modes: refused for a larger model,
+      ! pointing at the deck's free_steps.
+      if (plan%free_steps == free_exact) then
+         do ib = 1, size(res%models)
+            if (res%models(ib)%n <= exact_max_dofs) cycle
+            text = ''
+            if (allocated(deck%analysis%free_steps_site)) text = deck%analysis%free_steps_site
+            call fatal_error(error, text//"free_steps = 'exact' takes at most "//str(exact_max_dofs)// &
+                             ' DOFs a building (it holds the n x n modes and costs O(n^2) a step); building '// &
+                             res%models(ib)%name//' has '//str(res%models(ib)%n)//": use free_steps = 'newmark'")
+            return
+         end do
+      end if
+
       ! Analyses.
       if (.not. coupled_only) then
          if (has_uncoupled()) then
@@ -297,15 +317,61 @@ contains
                                unit_suspects(deck%buildings(ib)))
          if (len(text) > 0) call add_warning(res%warnings, text)
       end do
+      if (has_ground()) then
+         call ground_plausible(options%ground)
+      else
+         call ground_plausible(deck_gm)
+      end if
       res%n_input_warnings = size(res%warnings)
       if (res%has_uncoupled) call collect(res%unc%warnings)
       if (res%has_coupled) call collect(res%cpl%warnings)
+      call residual_settled()
       if (res%has_sweep) call collect(res%sweep%warnings)
       if (allocated(joint_warnings)) call collect(joint_warnings)
       if (res%has_parameter_sweep) call collect(res%parameter_sweep%warnings)
       if (res%has_law_study) call collect(res%law_study%warnings)
 
    contains
+
+      !> The motion's plausibility warnings (`pound_plausibility`): its PGA as run, the factor
+      !> of its `scale_to`.
+      subroutine ground_plausible(gm)
+         type(ground_motion_t), intent(in) :: gm
+         character(len=:), allocatable :: name
+
+         name = ''
+         if (allocated(gm%name)) name = gm%name
+         text = pga_warning(name, maxval(abs(ag)), gm%scale, gm%scaled, gm%kind == 'record')
+         if (len(text) > 0) call add_warning(res%warnings, text)
+         if (.not. gm%scaled) return
+         text = scale_warning(name, gm%scale)
+         if (len(text) > 0) call add_warning(res%warnings, text)
+      end subroutine ground_plausible
+
+      !> The warning of `pound_residual_settle` when yielding buildings' residual drift is read
+      !> while the ground or the buildings still move.
+      subroutine residual_settled()
+         character(len=:), allocatable :: names
+         real(dp) :: period, span, k_unc, k_cpl
+
+         names = ''
+         period = 0.0_dp
+         do ib = 1, size(res%models)
+            if (.not. structure_yields(res%models(ib))) cycle
+            if (len(names) > 0) names = names//', '
+            names = names//res%models(ib)%name
+            period = max(period, res%models(ib)%period(1))
+         end do
+         if (len(names) == 0) return
+         span = max(1.0_dp, period)
+         k_unc = 0.0_dp
+         k_cpl = 0.0_dp
+         if (res%has_uncoupled) k_unc = kinetic_tail_fraction(res%unc%time, res%unc%energy(e_kinetic, :), span)
+         if (res%has_coupled) k_cpl = kinetic_tail_fraction(res%cpl%time, res%cpl%energy(e_kinetic, :), span)
+         text = residual_warning(names, ground_tail_fraction(ag, plan%dt), k_unc, k_cpl, plan%t_end, &
+                                 deck%analysis%t_free, period)
+         if (len(text) > 0) call add_warning(res%warnings, text)
+      end subroutine residual_settled
 
       !> The stiffness or restitution sweep and the law study of the deck, if it asks for them.
       subroutine joint_studies()

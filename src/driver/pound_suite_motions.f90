@@ -16,18 +16,19 @@ module pound_suite_motions
    use pound_config, only: deck_type, ground_config
    use pound_deck_variables, only: word_len
    use pound_strings, only: str
-   use pound_ground_motion, only: ground_motion_t, sample_ground
+   use pound_ground_motion, only: ground_motion_t, sample_ground, stop_ground
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
    use pound_structure, only: structure_model, structure_names
    use pound_contact, only: contact_pair, pairs_from_config
    use pound_spectrum, only: scale_to_pga, scale_to_sa
    use pound_run_case, only: configured_motion
+   use pound_building, only: build_building, building_model
    use pound_analysis_plan, only: steps_of
    implicit none
    private
 
    public :: suite_motion_setup
-   public :: suite_motion, suite_motion_samples, motion_names, motion_sources, n_spectrum, spectrum_damping
+   public :: suite_motion, suite_motion_samples, single_motion, motion_names, motion_sources, n_spectrum, spectrum_damping
 
    !> Log-spaced periods of the suite spectra (before the buildings' periods are added).
    integer, parameter :: n_spectrum = 60
@@ -58,7 +59,8 @@ contains
 
       g = deck%motions(k)
       dt = deck%analysis%dt
-      n_steps = steps_of(deck%analysis%t_end, dt)
+      ! The motion's steps (t_free's free vibration after them does not enter the scaling).
+      n_steps = steps_of(deck%analysis%t_end - deck%analysis%t_free, dt)
       factor = 1.0_dp
       if (g%kind == 'synthetic') then
          call synthetic(base, error)
@@ -72,6 +74,8 @@ contains
       end if
       if (len(g%scale_to) == 0 .and. g%kind /= 'synthetic') then
          gm = base
+         gm%name = g%name
+         if (deck%analysis%t_free > 0.0_dp) call stop_ground(gm, deck%analysis%t_end - deck%analysis%t_free, dt)
          return
       end if
       allocate (ag(0:n_steps))
@@ -101,6 +105,9 @@ contains
       gm%dt = dt
       gm%time = [(real(i, dp)*dt, i=0, n_steps)]
       gm%accel = factor*ag
+      gm%name = g%name
+      gm%scaled = len(g%scale_to) > 0
+      if (deck%analysis%t_free > 0.0_dp) call stop_ground(gm, deck%analysis%t_end - deck%analysis%t_free, dt)
 
    contains
 
@@ -134,6 +141,29 @@ contains
       end subroutine synthetic
 
    end subroutine suite_motion
+
+   !> The deck's one motion as run when it is scaled (`scale_to`) or synthetic (`suite_motion`
+   !> of motion 1, with the deck's buildings built for the period of `scale_to = 'sa'`): a deck
+   !> with a joint study runs it as one case.
+   subroutine single_motion(deck, gm, error)
+      !> A validated configuration with one `&ground`.
+      type(deck_type), intent(in) :: deck
+      !> The motion as run.
+      type(ground_motion_t), intent(out) :: gm
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      type(structure_model), allocatable :: models(:)
+      type(building_model), allocatable :: kinds(:)
+      real(dp) :: factor
+      integer :: ib
+
+      allocate (models(size(deck%buildings)), kinds(size(deck%buildings)))
+      do ib = 1, size(models)
+         call build_building(deck%buildings(ib), models(ib), kinds(ib), error)
+         if (allocated(error)) return
+      end do
+      call suite_motion(deck, 1, models, gm, factor, error)
+   end subroutine single_motion
 
    !> Motion k as run (`suite_motion`) and its ground accelerations at t_n = n dt,
    !> n = 0..size(ag) - 1 (m/s^2).

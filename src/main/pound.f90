@@ -32,6 +32,8 @@ program pound
    use pound_sweep_joints_output, only: write_joint_sweep_tables
    use pound_suite, only: suite_result, run_suite
    use pound_planned_runs, only: planned_runs
+   use pound_suite_motions, only: single_motion
+   use pound_case_studies, only: has_parameter_sweep, has_law_study
    use pound_study_output, only: write_study_tables, write_stiffness_rules, write_study_h5
    use pound_suite_output, only: write_suite_listing, write_suite_h5
    use pound_separation_output, only: write_run_separation, pair_labels
@@ -68,7 +70,7 @@ program pound
    type(error_type), allocatable :: error
    character(len=512) :: ground_text(1)
    type(suite_result) :: suite
-   logical :: is_suite, streamed
+   logical :: is_suite, streamed, one_scaled
    !> The engineering summary (`pound_summary`): its items and its text lines.
    type(summary_item), allocatable :: summary_items(:)
    character(len=2*summary_text_len), allocatable :: summary_text(:)
@@ -96,11 +98,20 @@ program pound
    ! Ground motion (a record is read whole: its memory is proportional to the file). A suite
    ! (several &ground, a synthetic motion or scale_to) builds its motions one at a time.
    is_suite = size(deck%motions) > 1 .or. deck%ground%kind == 'synthetic' .or. len(deck%ground%scale_to) > 0
+   ! A joint study (stiffness or restitution sweep, law study) with one scaled or synthetic
+   ! motion runs that motion as one case.
+   one_scaled = .false.
+   if (is_suite .and. size(deck%motions) == 1) one_scaled = has_parameter_sweep(deck) .or. has_law_study(deck)
+   if (one_scaled) is_suite = .false.
    ! One deck, one motion, no node histories: the histories go to the file during the run.
    streamed = .not. (is_suite .or. deck%analysis%node_histories)
    if (.not. is_suite) then
       allocate (options%ground)
-      call deck_ground_motion(deck, options%ground, error)
+      if (one_scaled) then
+         call single_motion(deck, options%ground, error)
+      else
+         call deck_ground_motion(deck, options%ground, error)
+      end if
       call check(error)
    end if
 

@@ -13,6 +13,9 @@
 !>   and after its last one, a_g = 0: after the end of the record the buildings vibrate
 !>   freely.
 !>
+!> Free vibration after the motion (`&analysis t_free`): `stop_ground` sets the time after which
+!> a_g = 0 whatever the motion (the pulse, or a record longer than the deck's t_end).
+!>
 !> The solver does not call `ground_accel` in its time loop: `sample_ground` fills an array
 !> a_g(t_n), t_n = n dt, once before integration.
 module pound_ground_motion
@@ -28,7 +31,7 @@ module pound_ground_motion
    public :: ground_motion_t
    public :: pulse_motion, record_motion, sample_ground, ground_accel, check_ground_samples
    public :: pulse_displacement, pulse_velocity, pulse_acceleration
-   public :: peak_ground_accel, describe_ground
+   public :: peak_ground_accel, describe_ground, stop_ground
 
    !> Two times closer than this fraction of the record's step count as the same sample
    !> (absorbs rounding in n*dt, so solver steps that fall on samples get them exactly).
@@ -50,6 +53,12 @@ module pound_ground_motion
       real(dp), allocatable :: time(:)
       !> Record: ground acceleration at the samples (m/s^2), scale and g applied.
       real(dp), allocatable :: accel(:)
+      !> The ground is at rest after this time (s; `stop_ground`; default: never).
+      real(dp) :: t_stop = huge(1.0_dp)
+      !> The `&ground`'s name (blank: not known) and whether `scale` was computed by its
+      !> `scale_to` (for the plausibility warnings of pound_plausibility).
+      character(len=:), allocatable :: name
+      logical :: scaled = .false.
    end type ground_motion_t
 
 contains
@@ -101,6 +110,21 @@ contains
       gm%time = rec%time
       gm%accel = rec%accel*(scale*g_accel)
    end subroutine record_motion
+
+   !> The ground at rest after step nint(t_ground/dt) (the deck's t_end, when `t_free` appends
+   !> free vibration): a_g = 0 from the next step on, and at the impact substeps after that step.
+   pure subroutine stop_ground(gm, t_ground, dt)
+      !> Ground motion.
+      type(ground_motion_t), intent(inout) :: gm
+      !> End of the motion (s).
+      real(dp), intent(in) :: t_ground
+      !> Solver time step (s).
+      real(dp), intent(in) :: dt
+
+      ! A millionth of a step beyond the step, so that a substep time rounded onto it still
+      ! gets the motion.
+      gm%t_stop = (real(nint(t_ground/dt), dp) + 1.0e-6_dp)*dt
+   end subroutine stop_ground
 
    !> Ground acceleration at the solver's steps: ag(n) = a_g(n dt), n = 0..n_steps.
    !> With `error`, the samples are checked (`check_ground_samples`).
@@ -167,6 +191,10 @@ contains
       real(dp), intent(in) :: t
       real(dp) :: ag
 
+      if (t > gm%t_stop) then
+         ag = 0.0_dp
+         return
+      end if
       select case (gm%kind)
       case ('pulse')
          ag = pulse_acceleration(gm%x0, gm%a, gm%b, t)

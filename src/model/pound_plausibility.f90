@@ -8,14 +8,19 @@
 !> `period_low` times the smallest (0.050 H^0.75) is reported. Masses in kg instead of t, or
 !> E (or the storey stiffness) in MPa instead of kN/m^2 (kN/m), make T1 sqrt(1000) = 31.6
 !> times too long; both together 1000 times; E or stiffness in N/m^2 (N/m) 31.6 times too short.
+!>
+!> The ground motion as run: a PGA above `pga_high` (2 g) (a record in cm/s^2 read as g is
+!> 981 times too strong; a record scaled to Sa(T1) of a period 31.6 times too long gets a
+!> huge factor), and a factor of `scale_to` outside `factor_low`..`factor_high` (0.1..10).
 module pound_plausibility
    use pound_kinds, only: dp
    use pound_config, only: building_config
-   use pound_strings, only: plain_real
+   use pound_strings, only: plain_real, plain_significant
+   use pound_constants, only: g_accel
    implicit none
    private
 
-   public :: period_estimate, period_warning, unit_suspects
+   public :: period_estimate, period_warning, unit_suspects, pga_warning, scale_warning
 
    !> Ct of EN 1998-1 4.3.3.2.2(3): the smallest (other structures) and the largest (steel
    !> moment-resisting frames).
@@ -25,6 +30,10 @@ module pound_plausibility
    !> A floor mass (t) from this on looks like kg; an E (kN/m^2) below this looks like MPa
    !> (structural steel 2.1e8, concrete 3e7, timber 1e7 kN/m^2; in MPa 2.1e5, 3e4, 1e4).
    real(dp), parameter, public :: kg_like_mass = 1.0e4_dp, mpa_like_e = 1.0e6_dp
+   !> A PGA as run above this (in g) is warned.
+   real(dp), parameter, public :: pga_high = 2.0_dp
+   !> A factor of `scale_to` outside factor_low..factor_high is warned.
+   real(dp), parameter, public :: factor_low = 0.1_dp, factor_high = 10.0_dp
    !> The cause named for a period more than 3000 times off the estimate.
    character(len=*), parameter :: beyond_units = 'more than a unit slip: check every mass, load and '// &
       'stiffness input (masses t, E kN/m^2, I m^4, stiffness kN/m, heights m)'
@@ -125,6 +134,76 @@ contains
          text = text//'E in MPa instead of kN/m^2 (E = '//plain_real(e_min)//' kN/m^2)'
       end if
    end function unit_suspects
+
+   !> The warning for a motion whose PGA as run, `pga` (m/s^2), is above `pga_high` g: empty
+   !> otherwise.
+   pure function pga_warning(name, pga, scale, scaled, record) result(text)
+      !> The `&ground`'s name (blank: not known).
+      character(len=*), intent(in) :: name
+      !> Peak |a_g| of the motion as run (m/s^2).
+      real(dp), intent(in) :: pga
+      !> Its scale factor (of `scale`, or computed by `scale_to`).
+      real(dp), intent(in) :: scale
+      !> Whether the factor was computed by `scale_to`.
+      logical, intent(in) :: scaled
+      !> Whether the motion is a record or a synthetic motion (not the pulse).
+      logical, intent(in) :: record
+      character(len=:), allocatable :: text, cause
+
+      text = ''
+      if (.not. (pga > pga_high*g_accel)) return
+      if (scaled) then
+         cause = 'likely a target in the wrong unit (target in m/s^2, target_g in g), or a building period '// &
+                 'far too long (masses in kg: see the period warning) that makes Sa(T1) tiny and the factor huge; '// &
+                 'check target and the buildings'' units'
+      else if (record) then
+         cause = 'likely a record in cm/s^2 (gal) read as g (its values are taken in g: give scale = '// &
+                 '0.00102 = 1/981 for cm/s^2, 0.102 = 1/9.81 for m/s^2) or a scale in the wrong unit'
+      else
+         cause = 'likely x0 (m), a (1/s) or b (rad/s) in the wrong unit'
+      end if
+      text = ground_name(name)//'PGA of the motion as run = '//sig3(pga/g_accel)//' g ('//sig3(pga)// &
+             ' m/s^2, scale factor '//sig3(scale)//') is above '//sig3(pga_high)//' g: '//cause
+   end function pga_warning
+
+   !> The warning for a factor `factor` of `scale_to` outside factor_low..factor_high: empty
+   !> otherwise.
+   pure function scale_warning(name, factor) result(text)
+      !> The `&ground`'s name (blank: not known).
+      character(len=*), intent(in) :: name
+      !> The factor `scale_to` computed.
+      real(dp), intent(in) :: factor
+      character(len=:), allocatable :: text
+
+      text = ''
+      if (factor >= factor_low .and. factor <= factor_high) return
+      text = ground_name(name)//'scale_to needs a scale factor of '//sig3(factor)//' (outside '// &
+             sig3(factor_low)//' to '//sig3(factor_high)//'): likely a unit mistake in the record (cm/s^2 '// &
+             'read as g: factor about 0.001), in target (g given as m/s^2: factor 9.81 times too small) '// &
+             'or in the buildings (masses in kg: T1 31.6 times too long); check them, or choose a record '// &
+             'closer to the target'
+   end function scale_warning
+
+   !> "&ground 'name': " ('&ground: ' without a name).
+   pure function ground_name(name) result(s)
+      character(len=*), intent(in) :: name
+      character(len=:), allocatable :: s
+
+      if (len_trim(name) > 0) then
+         s = "&ground '"//trim(name)//"': "
+      else
+         s = '&ground: '
+      end if
+   end function ground_name
+
+   !> `x` with 3 significant digits in plain decimals ('266', '0.00113').
+   pure function sig3(x) result(s)
+      !> A positive number.
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: s
+
+      s = plain_significant(x, 3)
+   end function sig3
 
    !> `x` with 3 significant digits ('18.2', '0.321', '0.659E+07').
    pure function sig(x) result(s)

@@ -5,7 +5,7 @@
 module pound_listing
    use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use pound_kinds, only: dp
-   use pound_strings, only: counted, fixed_cell, left_cell, right_cell
+   use pound_strings, only: counted, fixed_cell, left_cell, right_cell, plain_real
    use pound_text_writer, only: text_writer
    use pound_analysis_plan, only: steps_of
    use pound_version, only: program_name, program_version
@@ -107,9 +107,15 @@ contains
       call write_section(lst, 'Analysis and ground motion')
       write (lst%unit, '(a,es12.4,a,f10.4,a,i0,a,i0)', iostat=lst%ios, iomsg=lst%msg) &
          '  dt =', deck%analysis%dt, ' s   t_end =', &
-         deck%analysis%t_end, ' s   steps = ', steps_of(deck%analysis%t_end, deck%analysis%dt), &
+         deck%analysis%t_end - deck%analysis%t_free, ' s   steps = ', steps_of(deck%analysis%t_end, deck%analysis%dt), &
          '   history every ', deck%analysis%output_every
       call lst%note()
+      if (deck%analysis%t_free > 0.0_dp) then
+         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  t_free = '//plain_real(deck%analysis%t_free)// &
+            ' s of free vibration after t_end, the ground at rest: the analysis ends at '// &
+            plain_real(deck%analysis%t_end)//' s (the steps above include it; residual drift read there)'
+         call lst%note()
+      end if
       do i = 1, size(ground_text)
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//trim(ground_text(i))
          call lst%note()

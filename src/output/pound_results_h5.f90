@@ -251,6 +251,9 @@ contains
          if (allocated(error)) return
          call h5_write_attr(h5, '/', 'dt', deck%analysis%dt, error)
          if (allocated(error)) return
+         ! Free vibration after the motion (the histories run on to t_end + t_free).
+         if (deck%analysis%t_free > 0.0_dp) call h5_write_attr(h5, '/', 't_free', deck%analysis%t_free, error)
+         if (allocated(error)) return
          if (present(summary)) call h5_write_attr(h5, '/', 'summary', summary, error)
          if (allocated(error)) return
          call h5_write(h5, '/ground/time', unc%time, error, units='s')

@@ -12,14 +12,6 @@ set(sweep_group "&sweep
    target_quantities = 'storey_shear drift'
 /")
 
-# refused(<name> <deck text> <needle>): the deck written as <name>.nml is refused with `needle`.
-function(refused name text needle)
-  file(MAKE_DIRECTORY ${WORK_DIR}/${name})
-  file(WRITE ${WORK_DIR}/${name}/${name}.nml "${text}")
-  run_pound(r ${name}/${name}.nml -o ${name})
-  expect_clean_failure("${name}" r "${needle}" ${name})
-endfunction()
-
 # The sweep group replaced by `group`.
 function(sweep_refused name group needle)
   string(REPLACE "${sweep_group}" "${group}" text "${sweep_deck}")

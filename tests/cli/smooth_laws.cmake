@@ -62,7 +62,8 @@ expect_equal("exit status of hertz_impact (${h_err})" 0 "${h_rc}")
 expect_contains("substeps" "${h_out}" "impact stepping:       m = 9 substeps")
 
 # A damped smooth law at column points between floors (no mass to calibrate to): refused, and
-# the message points to 'hertz' or floors (not to a dashpot, which these laws refuse).
+# the message says why and points to 'hertz', an elastic law with a dashpot, or floors (not to a
+# dashpot of this law, which these laws refuse).
 file(READ ${SOURCE_DIR}/input/frame_to_column.nml deck)
 string(REPLACE "law = 'elastic'\n   stiffness = 5.0e5        ! kN/m"
        "law = 'jankowski'\n   stiffness = 1.0e8\n   restitution = 0.6" deck "${deck}")
@@ -70,4 +71,6 @@ file(WRITE ${WORK_DIR}/jankowski_columns.nml "${deck}")
 run_pound(c jankowski_columns.nml)
 expect_equal("exit status of jankowski_columns" 1 "${c_rc}")
 expect_contains("message of jankowski_columns" "${c_err}"
-                "m is a column point between floors (no mass); use law = 'hertz' (no damping) or floors instead")
+                "jankowski_columns.nml:89: &contact #1 (A, B): restitution = 0.6 (law = 'jankowski') needs the masses of both facing points")
+expect_contains("reason of jankowski_columns" "${c_err}"
+                "elevations(1) = 3 m is a column point between floors of A, which has no mass of its own (no impact to calibrate); instead use law = 'hertz' (the same contact without damping), law = 'elastic' with a dashpot (kN s/m) given directly")
