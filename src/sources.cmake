@@ -67,6 +67,9 @@ set(POUND_SOURCES
   driver/pound_suite_columns.f90 driver/pound_suite_outcome.f90 driver/pound_suite_context.f90
   driver/pound_suite_motions.f90 driver/pound_suite_statistics.f90 driver/pound_suite_refine.f90
   driver/pound_suite.f90
+  # risk: the normal distribution's tails, lognormal fragility fits (binomial maximum
+  # likelihood over stripes), the hazard curve and the risk integral
+  risk/pound_normal.f90 risk/pound_fragility.f90 risk/pound_hazard.f90
   # outputs: files, HDF5 layer (its attribute writers and low-level helpers in submodules),
   # results file, the text writer (unit + first failure), listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_h5_support.f90 output/pound_h5_attributes.f90
