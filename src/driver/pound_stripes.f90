@@ -22,9 +22,10 @@
 !> between grid gaps). Per (stripe, motion) the coupled demands at the deck gap for loss tools:
 !> peak interstorey drift ratio per storey, peak floor acceleration per floor (floor 0: PGA).
 module pound_stripes
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
+   use, intrinsic :: iso_fortran_env, only: int64
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type
    use pound_strings, only: str
    use pound_config, only: deck_type, n_target_quantities
    use pound_ground_motion, only: ground_motion_t
@@ -51,7 +52,7 @@ module pound_stripes
    !> The outcomes, in this order.
    integer, parameter :: n_outcomes = 4
    integer, parameter :: o_contact = 1, o_lambda = 2, o_collapse = 3, o_due = 4
-   character(len=*), parameter :: outcome_names(n_outcomes) = [character(len=23) :: 'contact', &
+   character(len=*), parameter :: outcome_names(n_outcomes) = [character(len=24) :: 'contact', &
       'lambda_exceeded', 'collapse', 'collapse_due_to_pounding']
 
    !> What the multiple-stripe analysis gives.
@@ -141,7 +142,7 @@ contains
       type(building_model) :: bm
       character(len=300), allocatable :: names(:)
       integer :: ib, nm, ns, ng, s, k, i, nb
-      integer(8) :: c0, c1, rate
+      integer(int64) :: c0, c1, rate
 
       call system_clock(c0, rate)
       nm = size(deck%motions)

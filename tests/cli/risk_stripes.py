@@ -128,6 +128,25 @@ names = [m.decode() if isinstance(m, bytes) else m for m in h5py.File(os.path.jo
 if names != ['M1', 'm2']:
     fail.append(f'record set motions {names}, expected M1, m2')
 
+# Yielding storeys: the collapse outcomes exist, collapse due to pounding implies collapse.
+lines = text.replace("&building name = 'A', n_storeys = 2,",
+                     "&building name = 'A', n_storeys = 2, storey_law = 'bilinear', yield_shear = 2*10.0, "
+                     "hardening_ratio = 2*0.0,").replace("&analysis ", "&analysis collapse_drift = 0.005, ").splitlines()
+open(os.path.join(work, 'yield.nml'), 'w').write('\n'.join(lines) + '\n')
+out = run('yield.nml', 'yield')
+y = h5py.File(os.path.join(work, 'yield', 'yield.h5'), 'r')
+names = sorted(y['/risk/outcomes'])
+if names != ['collapse', 'collapse_due_to_pounding', 'contact', 'lambda_exceeded']:
+    fail.append(f'outcomes with yielding storeys: {names}')
+else:
+    col, due = y['/risk/outcomes/collapse'][()], y['/risk/outcomes/collapse_due_to_pounding'][()]
+    if np.any(due > col):
+        fail.append('collapse_due_to_pounding without collapse')
+    if not np.any(col):
+        fail.append('no collapse in the yielding deck (the check would be empty)')
+if 'P(collapse due to pounding)' not in out:
+    fail.append('no P(collapse due to pounding) line with yielding storeys')
+
 if fail:
     print('\n'.join(fail))
     sys.exit(1)
