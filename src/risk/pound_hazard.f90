@@ -82,6 +82,11 @@ contains
       end if
       mu = log(fit%median)
       beta = fit%beta
+      if (beta > 1.0e100_dp) then
+         ! so wide that (k beta)^2 would overflow: the integral does
+         maf = huge(1.0_dp)
+         return
+      end if
       nseg = size(hz%im) + 1
       ! segment i (1..n+1) runs from ln im(i-1) to ln im(i), open at both ends; it follows
       ! the power law of points (max(i-1,1), min(i,n)) extended
