@@ -5,11 +5,12 @@
 !> HDF5 (names pinned): /risk/stripes/levels (n_stripes, m/s^2), /risk/motions (names),
 !> /risk/gaps (n_gaps, m), /risk/outcomes/<outcome> (h5py shape (n_gaps, n_stripes,
 !> n_motions), 0/1), /risk/fragility/<outcome>/median (m/s^2) and /beta (n_gaps; NaN with an
-!> attribute `na` holding the reason where the fit is n/a, and the attributes `bracket_lo`,
-!> `bracket_hi` of the median there), /risk/maf/<outcome> (1/year) and
+!> attribute `na` holding the reasons where the fit is n/a; /bracket_lo and /bracket_hi, the
+!> bracket of the median), /risk/maf/<outcome> (1/year) and
 !> /risk/probability/<outcome> (n_gaps), /risk/gap/<outcome> (scalar, m; NaN where none); on
 !> /risk the attributes `years`, `target_probability` (NaN: none), `measure`, `period`,
-!> `target_lambda`, `deck_gap`. The collapse outcomes only where a building can yield.
+!> `target_lambda`, `deck_gap` and `answer` (the first answer line). The collapse outcomes only
+!> where a building can yield.
 !>
 !> Demand files, one per stripe k: `<deck>_demands_stripe<k>.csv`, one row per motion, the
 !> coupled peaks at the deck gap in pelicun's column naming `event-type-location-direction`:
@@ -295,6 +296,7 @@ contains
 
       subroutine write_all()
          real(dp) :: nan, median(size(res%gaps)), beta(size(res%gaps))
+         character(len=2*summary_text_len), allocatable :: answer(:)
          integer :: o, g
          character(len=:), allocatable :: p, na
 
@@ -311,6 +313,10 @@ contains
          if (.not. allocated(error)) call h5_write_attr(h5, '/risk', 'period', res%period, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/risk', 'target_lambda', deck%risk%target_lambda, error)
          if (.not. allocated(error)) call h5_write_attr(h5, '/risk', 'deck_gap', res%deck_gap, error)
+         if (.not. allocated(error)) then
+            answer = risk_answer_lines(deck, res)
+            call h5_write_attr(h5, '/risk', 'answer', trim(answer(1)), error)
+         end if
          if (.not. allocated(error)) call h5_write(h5, '/risk/hazard/im', deck%risk%im, error, units='m/s^2')
          if (.not. allocated(error)) call h5_write(h5, '/risk/hazard/rate', deck%risk%rate, error, units='1/year')
          if (allocated(error)) return

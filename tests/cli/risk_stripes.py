@@ -105,6 +105,8 @@ for o in ('contact', 'lambda_exceeded'):
     med = h[f'/risk/fragility/{o}/median'][()]
     if np.any(np.isnan(med)) and 'na' not in h[f'/risk/fragility/{o}/median'].attrs:
         fail.append(f'{o}: NaN median without an na attribute')
+if not str(h['/risk'].attrs.get('answer', '')).startswith('risk-targeted gap: '):
+    fail.append('/risk has no attribute answer holding the answer line')
 first = stdout.splitlines()[3]
 if not first.startswith('  risk-targeted gap: '):
     fail.append(f'answer not first on the terminal: {first!r}')
