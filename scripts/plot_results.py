@@ -17,7 +17,10 @@ and end moment, against the segment's mid-height, one line per column line facin
 the contact elevations marked: only for frames with /influence/<b>/columns), study (the studies of
 the joint, scripts/plot_studies.py: <stem>_stiffness_sweep or _restitution_sweep, the largest
 |lambda| and every pair's peak force against the swept value; <stem>_law_study, one bar per
-variant: only when the file holds /stiffness_sweep, /restitution_sweep or /law_study). Files are named
+variant: only when the file holds /stiffness_sweep, /restitution_sweep or /law_study), risk (a file
+with /risk, from a deck with &stripes and &hazard: the plots of scripts/plot_risk.py,
+<stem>_risk_fragility, the fragility curves with the stripe fractions at a few gaps, and
+_risk_probability, P in `years` against the gap with the target). Files are named
 <stem>_<plot>.png / .pdf.
 
 Any problem with the file (missing, not HDF5, not a pound results file) gives one line
@@ -31,7 +34,7 @@ import sys
 import tempfile
 
 PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite", "frame",
-         "deformed", "columns", "study", "hysteresis")
+         "deformed", "columns", "study", "hysteresis", "risk")
 # The sweep's column-segment target quantities of frames (/sweep/max_abs_lambda/<b>/<q>, where targeted).
 COLUMN_TARGETS = {"column_shear": "column segment shear V", "column_moment": "column segment end moment M"}
 CONTACT_PLOTS = ("displacement", "force", "loops")
@@ -881,19 +884,35 @@ def plot_sweep_joints(plt, r, args, written):
     plt.close(fig)
 
 
-def plot_suite_group(plt, r, args, written, notes):
-    """The suite plots (scripts/plot_suite.py: spectra, lambda, separation, sweep) of /suite."""
+def plot_group(plt, r, args, written, module, group):
+    """The plots of /<group> drawn by scripts/<module>.py's plot_all(f[group], plt, np, save),
+    written as <stem>_<group>_<what>; a problem of the file it names (its RiskError or the like,
+    the module's ERRORS) becomes a PlotError."""
+    import importlib
     import h5py
     import numpy as np
     sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    import plot_suite
+    plots = importlib.import_module(module)
 
-    def save_suite(fig, what):
-        save(fig, r, "suite_" + what, args, written)
+    def save_group(fig, what):
+        save(fig, r, group + "_" + what, args, written)
         plt.close(fig)
 
     with h5py.File(r.path, "r") as f:
-        plot_suite.plot_all(f["suite"], plt, np, save_suite)
+        try:
+            plots.plot_all(f[group], plt, np, save_group)
+        except getattr(plots, "ERRORS", ()) as e:
+            raise PlotError(f"{r.path}: {e}") from None
+
+
+def plot_suite_group(plt, r, args, written, notes):
+    """The suite plots (scripts/plot_suite.py: spectra, lambda, separation, sweep) of /suite."""
+    plot_group(plt, r, args, written, "plot_suite", "suite")
+
+
+def plot_risk_group(plt, r, args, written, notes):
+    """The risk plots (scripts/plot_risk.py: fragility, probability) of /risk."""
+    plot_group(plt, r, args, written, "plot_risk", "risk")
 
 
 def plot_study_group(plt, r, args, written, notes):
@@ -920,6 +939,12 @@ def has_study(path):
         return plot_studies.has_study(f)
 
 
+def has_risk(path):
+    import h5py
+    with h5py.File(path, "r") as f:
+        return "risk" in f
+
+
 def has_suite(path):
     import h5py
     with h5py.File(path, "r") as f:
@@ -928,7 +953,8 @@ def has_suite(path):
 
 PLOTTERS = {"displacement": plot_displacement, "force": plot_force, "loops": plot_loops,
             "shear": plot_shear, "influence": plot_influence, "ground": plot_ground, "sweep": plot_sweep,
-            "suite": plot_suite_group, "study": plot_study_group, "hysteresis": plot_hysteresis}
+            "suite": plot_suite_group, "study": plot_study_group, "hysteresis": plot_hysteresis,
+            "risk": plot_risk_group}
 
 
 # --------------------------------------------------------------------------------------------
@@ -1210,6 +1236,10 @@ def run(argv):
         if name == "suite" and not has_suite(r.path):
             if "suite" in args.explicit:
                 notes.append("suite: skipped (no /suite in this file: the deck has one &ground)")
+            continue
+        if name == "risk" and not has_risk(r.path):
+            if "risk" in args.explicit:
+                notes.append("risk: skipped (no /risk in this file: the deck has no &stripes)")
             continue
         if name == "frame" and not any("nodes" in r.model[b] for b in r.buildings):
             if "frame" in args.explicit:

@@ -180,8 +180,16 @@ def plot_all(s, plt, np, save):
         save(fig, "sweep")
 
 
-def main(argv=None):
-    ap = argparse.ArgumentParser(description="Plots of /suite in a pound results file")
+def group_main(argv, group, prog, plot_fn, absent, errors=()):
+    """The command line of a group's plots (plot_suite.py, plot_risk.py): FILE.h5 [--outdir DIR];
+    writes <stem>_<group>_<what>.png and .pdf through plot_fn(f[group], plt, np, save); one
+    '<prog>: error: ...' line and exit status 1 on a bad file (`absent`: why /<group> may be
+    missing; `errors`: exceptions of plot_fn that name a problem of the file)."""
+    def fail(message):
+        sys.stderr.write(f"{prog}: error: {message}\n")
+        sys.exit(1)
+
+    ap = argparse.ArgumentParser(prog=prog, description=f"Plots of /{group} in a pound results file")
     ap.add_argument("file")
     ap.add_argument("--outdir", default=None)
     args = ap.parse_args(argv)
@@ -197,23 +205,29 @@ def main(argv=None):
         f = h5py.File(args.file, "r")
     except OSError as e:
         fail(f"cannot open {args.file}: {e}")
-    if "suite" not in f:
-        fail(f"{args.file}: no /suite (the deck has one ground motion)")
-    s = f["suite"]
+    if group not in f:
+        fail(f"{args.file}: no /{group} ({absent})")
     outdir = args.outdir or os.path.dirname(os.path.abspath(args.file))
     stem = os.path.join(outdir, os.path.splitext(os.path.basename(args.file))[0])
     written = []
 
     def save(fig, what):
         for ext in ("png", "pdf"):
-            path = f"{stem}_suite_{what}.{ext}"
+            path = f"{stem}_{group}_{what}.{ext}"
             fig.savefig(path, dpi=150)
             written.append(path)
         plt.close(fig)
 
-    plot_all(s, plt, np, save)
+    try:
+        plot_fn(f[group], plt, np, save)
+    except errors as e:
+        fail(f"{args.file}: {e}")
     for path in written:
         print("wrote " + path)
+
+
+def main(argv=None):
+    group_main(argv, "suite", "plot_suite", plot_all, "the deck has one ground motion")
 
 
 if __name__ == "__main__":

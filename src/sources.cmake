@@ -2,10 +2,10 @@
 set(POUND_SOURCES
   # core: kinds, physical constants, the response quantities, the analysis plan, the sweep, code-factor and contact settings, errors, strings, whole-file reading, version, POSIX calls, the progress line, sorting
   core/pound_kinds.f90 core/pound_constants.f90 core/pound_quantities.f90 core/pound_analysis_plan.f90
-  core/pound_sweep_settings.f90 core/pound_code_factors.f90 core/pound_contact_settings.f90
+  core/pound_sweep_settings.f90 core/pound_risk_settings.f90 core/pound_code_factors.f90 core/pound_contact_settings.f90
   core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
   core/pound_version.f90 core/pound_posix.f90 core/pound_progress.f90
-  core/pound_sort.f90
+  core/pound_sort.f90 core/pound_folder.f90
   # core: pound's own pseudo-random numbers
   core/pound_random.f90
   # core: exchanging values and allocatable arrays without copies
@@ -21,7 +21,7 @@ set(POUND_SOURCES
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
   deck/pound_config.f90 deck/pound_deck_variables.f90 deck/pound_deck_values.f90 deck/pound_deck_lexer.f90 deck/pound_deck_checks.f90
   deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_hinge_law.f90 deck/pound_deck_building.f90
-  deck/pound_deck_stiffness.f90 deck/pound_deck_contact.f90 deck/pound_deck_study.f90 deck/pound_deck_sweep.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
+  deck/pound_deck_stiffness.f90 deck/pound_deck_contact.f90 deck/pound_deck_study.f90 deck/pound_deck_targets.f90 deck/pound_deck_sweep.f90 deck/pound_deck_risk.f90 deck/pound_deck_record_set.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
   model/pound_band.f90 model/pound_structure.f90 model/pound_storey_properties.f90
   model/pound_shear_building.f90 model/pound_ground_motion.f90
@@ -67,6 +67,11 @@ set(POUND_SOURCES
   driver/pound_suite_columns.f90 driver/pound_suite_outcome.f90 driver/pound_suite_context.f90
   driver/pound_suite_motions.f90 driver/pound_suite_statistics.f90 driver/pound_suite_refine.f90 driver/pound_suite_joints.f90 driver/pound_planned_runs.f90
   driver/pound_suite.f90
+  # risk: the normal distribution's tails, lognormal fragility fits (binomial maximum
+  # likelihood over stripes), the hazard curve and the risk integral
+  risk/pound_normal.f90 risk/pound_fragility.f90 risk/pound_hazard.f90
+  # driver: the multiple-stripe analysis (the risk-targeted joint)
+  driver/pound_stripes.f90
   # outputs: files, HDF5 layer (its attribute writers and low-level helpers in submodules),
   # results file, the text writer (unit + first failure), listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_h5_support.f90 output/pound_h5_attributes.f90
@@ -78,6 +83,7 @@ set(POUND_SOURCES
   output/pound_suite_output.f90 output/pound_suite_columns_output.f90 output/pound_suite_yield_output.f90 output/pound_study_output.f90
   # outputs: the engineering summary (terminal, top of the listing, <stem>_summary.csv, root attributes)
   output/pound_summary.f90 output/pound_summary_output.f90
+  output/pound_stripes_output.f90
 )
 # The case scheduler's implementation (a submodule of pound_cases): the cases in order by
 # default, shared over MPI ranks with -DPOUND_MPI=ON (the top CMakeLists.txt picks one).

@@ -13,7 +13,7 @@ module pound_posix
 
    public :: posix_errno, posix_set_errno, posix_strerror, posix_getpid, posix_storage_error
    public :: posix_rename, posix_unlink, posix_mkdir, posix_file_id, posix_is_directory
-   public :: posix_lock_directory, posix_unlock_directory, posix_exit_now
+   public :: posix_lock_directory, posix_unlock_directory, posix_exit_now, posix_directory_names
    public :: posix_ignore_signal, posix_set_handler, posix_std_fd_open, posix_reserve_fd
    public :: posix_address_space_limit, posix_unlink_c, posix_write_stderr_c, posix_write, posix_sleep
    public :: posix_isatty, posix_keep_freed_memory, posix_is_empty_file
@@ -87,6 +87,12 @@ module pound_posix
          character(kind=c_char), intent(in) :: path(*)
          type(c_ptr) :: dir
       end function c_opendir
+
+      function c_readdir(dir) bind(C, name='readdir') result(entry)
+         import :: c_ptr
+         type(c_ptr), value :: dir
+         type(c_ptr) :: entry
+      end function c_readdir
 
       function c_closedir(dir) bind(C, name='closedir') result(stat)
          import :: c_ptr, c_int
@@ -400,6 +406,53 @@ contains
       ignore = c_closedir(handle)
       handle = c_null_ptr
    end subroutine posix_lock_directory
+
+   !> The names of the entries of directory `path` (readdir's order, '.' and '..' among them;
+   !> names longer than `len(names)` left out), or `e` the errno of opendir. glibc's `struct
+   !> dirent` on 64-bit Linux holds the name at byte 19.
+   subroutine posix_directory_names(path, names, e)
+      !> Directory.
+      character(len=*), intent(in) :: path
+      !> Its entries' names.
+      character(len=*), allocatable, intent(out) :: names(:)
+      !> 0 or errno.
+      integer, intent(out) :: e
+      character(kind=c_char), pointer :: raw(:)
+      character(len=len(names)), allocatable :: grown(:)
+      type(c_ptr) :: dir, entry
+      integer(c_int) :: ignore
+      integer :: n, k
+
+      e = 0
+      allocate (names(16))
+      n = 0
+      dir = c_opendir(path//c_null_char)
+      if (.not. c_associated(dir)) then
+         e = posix_errno()
+         names = names(1:0)
+         return
+      end if
+      do
+         entry = c_readdir(dir)
+         if (.not. c_associated(entry)) exit
+         call c_f_pointer(entry, raw, [19 + len(names) + 1])
+         k = 0
+         do while (k <= len(names))
+            if (raw(20 + k) == c_null_char) exit
+            k = k + 1
+         end do
+         if (k > len(names)) cycle
+         if (n == size(names)) then
+            allocate (grown(2*n))
+            grown(1:n) = names(1:n)
+            call move_alloc(grown, names)
+         end if
+         n = n + 1
+         names(n) = transfer(raw(20:19 + k), names(n)(1:k))
+      end do
+      ignore = c_closedir(dir)
+      names = names(1:n)
+   end subroutine posix_directory_names
 
    !> Release a lock taken by `posix_lock_directory` (nothing if none is held).
    subroutine posix_unlock_directory(handle)

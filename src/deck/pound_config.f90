@@ -11,11 +11,12 @@ module pound_config
    use pound_sweep_settings, only: sweep_config
    use pound_code_factors, only: code_factors
    use pound_contact_settings, only: contact_config, contact_variant
+   use pound_risk_settings, only: risk_config
    implicit none
    private
 
    public :: analysis_config, ground_config, building_config, code_factors, contact_config, sweep_config, deck_type, &
-             contact_variant
+             contact_variant, risk_config
    public :: is_frame, deck_warning_len
    ! The quantities (pound_quantities), named here too for the deck's readers.
    public :: n_history_quantities, history_names, n_target_quantities, target_names, q_column_shear, q_column_moment
@@ -72,12 +73,15 @@ module pound_config
    type :: ground_config
       !> Name of the motion ('ground' when the deck has one `&ground` without a name).
       character(len=:), allocatable :: name
-      !> 'pulse', 'record' or 'synthetic'.
+      !> 'pulse', 'record' or 'synthetic' ('record_set' only inside the deck reader).
       character(len=:), allocatable :: kind
       !> Pulse amplitude x0 (m), decay a (1/s), circular frequency b (rad/s).
       real(dp) :: x0 = 0.0_dp, a = 0.0_dp, b = 0.0_dp
       !> Record file (resolved relative to the deck's directory).
       character(len=:), allocatable :: file
+      !> `kind = 'record_set'` (before the deck reader turns it into one 'record' per file):
+      !> its folder (resolved relative to the deck's directory) and shell-style pattern.
+      character(len=:), allocatable :: folder, pattern
       !> Record format: 'auto', 'at2' or 'columns'.
       character(len=:), allocatable :: format
       !> Scale factor applied to the record or the synthetic motion (record values are in g).
@@ -206,6 +210,9 @@ module pound_config
       type(contact_variant), allocatable :: variants(:)
       !> `&sweep` (inactive when the deck has none).
       type(sweep_config) :: sweep
+      !> `&stripes` and `&hazard`: the multiple-stripe analysis and the risk-targeted joint
+      !> (inactive when the deck has neither; pound_stripes).
+      type(risk_config) :: risk
       !> Plausibility warnings of the deck's values (one line each, 'deck.nml:12: &group: ...',
       !> trailing blanks not part of them; unallocated: none): suspicious, not refused. (Fixed
       !> length: gfortran's intrinsic assignment of the deck mishandles deferred-length arrays.)

@@ -68,6 +68,8 @@ module pound_deck
    use pound_deck_ground, only: read_ground
    use pound_deck_lexer, only: find_single, group_ref, normalize_text, scan_groups
    use pound_deck_sweep, only: read_sweep
+   use pound_deck_risk, only: read_stripes, read_hazard, check_risk
+   use pound_deck_record_set, only: expand_record_sets
    use pound_deck_study, only: split_variants, check_parameter_sweep
    use pound_deck_variables, only: max_name_length, max_pairs, max_storeys
    use pound_error, only: error_type, fatal_error
@@ -111,7 +113,8 @@ contains
       type(deck_type), intent(out) :: d
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
-      type(group_ref), allocatable :: groups(:)
+      type(group_ref), allocatable :: groups(:), ground_groups(:)
+      type(group_ref) :: stripes_group, hazard_group
       integer :: n_groups, i, j, k, nb, ia, ng
 
       d%path = path
@@ -125,7 +128,7 @@ contains
       ng = count([(groups(i)%name == 'ground', i=1, n_groups)])
       if (ng == 0) then
          call fatal_error(error, path//': &ground is missing; at least one &ground is required '// &
-                          "(kind = 'pulse', 'record' or 'synthetic' and its parameters)")
+                          "(kind = 'pulse', 'record', 'record_set' or 'synthetic' and its parameters)")
          return
       end if
       nb = count([(groups(i)%name == 'building', i=1, n_groups)])
@@ -177,14 +180,42 @@ contains
       call split_variants(path, groups(1:n_groups), d, error)
       if (allocated(error)) return
       k = count([(groups(i)%name == 'sweep', i=1, n_groups)])
-      if (k == 0) return
-      call find_single(path, groups(1:n_groups), 'sweep', 'gap_from, gap_to, n_gaps', i, error)
+      if (k > 0) then
+         call find_single(path, groups(1:n_groups), 'sweep', 'gap_from, gap_to, n_gaps', i, error)
+         if (allocated(error)) return
+         call read_sweep(path, text, groups(i), size(d%contacts), &
+                         any([(is_frame(d%buildings(k)), k=1, size(d%buildings))]), d%sweep, error, &
+                         any(d%buildings%storey_law == 'bilinear' .or. d%buildings%hinge_law == 'elastic_plastic'))
+         if (allocated(error)) return
+         call check_parameter_sweep(path, groups(i), d, error)
+         if (allocated(error)) return
+      end if
+      ! The multiple-stripe analysis (pound_deck_risk) and the record sets (one motion per file).
+      allocate (ground_groups(ng))
+      k = 0
+      do i = 1, n_groups
+         if (groups(i)%name /= 'ground') cycle
+         k = k + 1
+         ground_groups(k) = groups(i)
+      end do
+      do i = 1, n_groups
+         if (groups(i)%name == 'stripes' .or. groups(i)%name == 'hazard') then
+            call find_single(path, groups(1:n_groups), groups(i)%name, 'see docs/manual.md', k, error)
+            if (allocated(error)) return
+         end if
+         if (groups(i)%name == 'stripes') then
+            stripes_group = groups(i)
+            call read_stripes(path, text, groups(i), d, error)
+         else if (groups(i)%name == 'hazard') then
+            hazard_group = groups(i)
+            call read_hazard(path, text, groups(i), d%risk, error)
+         end if
+         if (allocated(error)) return
+      end do
+      call expand_record_sets(path, ground_groups, d%motions, error)
       if (allocated(error)) return
-      call read_sweep(path, text, groups(i), size(d%contacts), &
-                      any([(is_frame(d%buildings(k)), k=1, size(d%buildings))]), d%sweep, error, &
-                      any(d%buildings%storey_law == 'bilinear' .or. d%buildings%hinge_law == 'elastic_plastic'))
-      if (allocated(error)) return
-      call check_parameter_sweep(path, groups(i), d, error)
+      d%ground = d%motions(1)
+      call check_risk(path, d, stripes_group, hazard_group, ground_groups, size(d%motions), error)
    end subroutine parse_deck
 
    !> The pairs of `c` between floors (by elevation) become column nodes of the frames: the

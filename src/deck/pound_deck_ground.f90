@@ -13,7 +13,7 @@ module pound_deck_ground
    implicit none
    private
 
-   public :: read_ground
+   public :: read_ground, resolve_path
 
    !> A scaling `target` (m/s^2) below this is suspicious (probably given in g): a warning.
    real(dp), parameter, public :: low_target = 0.05_dp
@@ -22,7 +22,8 @@ module pound_deck_ground
 
 contains
 
-   !> `&ground`: a pulse or a record file.
+   !> `&ground`: a pulse, a record file, a synthetic motion, or a folder of records
+   !> (`kind = 'record_set'`: `folder`, `pattern`; its files become motions in pound_deck_record_set).
    subroutine read_ground(path, text, g, n_motions, cfg, error, warnings)
       !> Deck path as given (named in messages).
       character(len=*), intent(in) :: path
@@ -39,7 +40,7 @@ contains
       !> The deck's plausibility warnings, this group's appended.
       character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
       character(len=word_len) :: kind, format, name, scale_to, filter, envelope
-      character(len=path_len) :: file
+      character(len=path_len) :: file, folder, pattern
       real(dp) :: x0, a, b, scale, target, target_g, period
       real(dp) :: ground_frequency, ground_damping, filter_frequency, filter_damping
       real(dp) :: rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga
@@ -51,11 +52,14 @@ contains
       type(site) :: at
       namelist /ground/ kind, x0, a, b, file, format, scale, name, scale_to, target, period, &
          filter, ground_frequency, ground_damping, filter_frequency, filter_damping, envelope, &
-         rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga, seed, histories, target_g
+         rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga, seed, histories, target_g, &
+         folder, pattern
 
       kind = ' '
       format = ' '
       file = ' '
+      folder = ' '
+      pattern = ' '
       name = ' '
       scale_to = ' '
       filter = ' '
@@ -91,12 +95,14 @@ contains
       cfg%name = trim(adjustl(name))
       cfg%histories = histories
       if (len(cfg%name) == 0) then
-         if (n_motions > 1) then
+         if (n_motions > 1 .and. lower(trim(adjustl(kind))) /= 'record_set') then
             call fail(at, 'name', 'name is missing: every motion of a suite (a deck with more '// &
                       'than one &ground) needs a name', error)
             return
          end if
          cfg%name = 'ground'
+         ! A record set's motions take their files' stems (pound_deck_record_set).
+         if (lower(trim(adjustl(kind))) == 'record_set') cfg%name = '(record set #'//str(g%occurrence)//')'
       end if
       if (n_motions > 1) at%label = at%label//' ('//cfg%name//')'
       call read_scaling(error)
@@ -104,9 +110,17 @@ contains
       cfg%kind = lower(trim(adjustl(kind)))
       if (cfg%kind /= 'synthetic') call no_synthetic(error)
       if (allocated(error)) return
+      if (cfg%kind /= 'record_set') then
+         if (len_trim(folder) > 0) then
+            call fail(at, 'folder', "folder applies only to kind = 'record_set'", error)
+         else if (len_trim(pattern) > 0) then
+            call fail(at, 'pattern', "pattern applies only to kind = 'record_set'", error)
+         end if
+         if (allocated(error)) return
+      end if
       select case (cfg%kind)
       case ('')
-         call fail(at, 'kind', "kind is missing, must be 'pulse', 'record' or 'synthetic'", error)
+         call fail(at, 'kind', "kind is missing, must be 'pulse', 'record', 'record_set' or 'synthetic'", error)
       case ('synthetic')
          call read_synthetic(error)
       case ('pulse')
@@ -135,6 +149,33 @@ contains
          cfg%b = b
          cfg%file = ''
          cfg%format = ''
+      case ('record_set')
+         call no_pulse(error)
+         if (allocated(error)) return
+         if (len_trim(file) > 0) then
+            call fail(at, 'file', "file applies only to kind = 'record' (a record_set takes folder and "// &
+                      'pattern)', error)
+            return
+         end if
+         if (len_trim(folder) == 0) then
+            call fail(at, 'folder', 'folder is missing (the folder of the records, relative to the deck''s '// &
+                      'directory unless absolute)', error)
+            return
+         end if
+         if (len_trim(folder) == len(folder)) then
+            call fail(at, 'folder', 'folder is longer than '//str(len(folder) - 1)//' characters', error)
+            return
+         end if
+         cfg%folder = resolve_path(path, trim(adjustl(folder)))
+         cfg%pattern = trim(adjustl(pattern))
+         if (len(cfg%pattern) == 0) cfg%pattern = '*.AT2'
+         if (index(cfg%pattern, '/') > 0) then
+            call fail(at, 'pattern', "pattern = '"//cfg%pattern//"': a pattern matches file names in the "// &
+                      'folder and holds no /', error)
+            return
+         end if
+         cfg%file = ''
+         call record_format(error)
       case ('record')
          call no_pulse(error)
          if (allocated(error)) return
@@ -155,6 +196,18 @@ contains
             return
          end if
          cfg%file = resolved
+         call record_format(error)
+      case default
+         call fail(at, 'kind', "kind = '"//trim(adjustl(kind))//"', must be 'pulse', 'record', "// &
+                   "'record_set' or 'synthetic'", error)
+      end select
+
+   contains
+
+      !> `format` and `scale` of a record (or of every record of a set).
+      subroutine record_format(error)
+         type(error_type), allocatable, intent(out) :: error
+
          cfg%format = lower(trim(adjustl(format)))
          if (len(cfg%format) == 0) cfg%format = 'auto'
          select case (cfg%format)
@@ -168,12 +221,7 @@ contains
          call check_real(at, 'scale', scale, '/=', 0.0_dp, error)
          if (allocated(error)) return
          cfg%scale = scale
-      case default
-         call fail(at, 'kind', "kind = '"//trim(adjustl(kind))//"', must be 'pulse', 'record' "// &
-                   "or 'synthetic'", error)
-      end select
-
-   contains
+      end subroutine record_format
 
       !> `scale_to`, `target`, `period`.
       subroutine read_scaling(error)

@@ -161,7 +161,7 @@ contains
             if (.not. any(known_groups == gname) .or. len(gname) == 0) then
                call fatal_error(error, path//':'//str(line)//": unknown namelist group '&"// &
                                 printable(text(i + 1:j))//"'; known groups: &analysis, "// &
-                                '&ground, &building, &contact, &sweep')
+                                '&ground, &building, &contact, &sweep, &stripes, &hazard')
                return
             end if
             if (n_groups == size(groups)) then

@@ -1,10 +1,11 @@
 !> Reader of `&sweep`: the range of seismic-joint gaps and the optional target for |lambda|.
 module pound_deck_sweep
-   use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment, q_ductility
-   use pound_deck_checks, only: check_real, fail, given_count, is_set, parse_history, read_failed, require_real, &
+   use pound_config, only: sweep_config
+   use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, require_real, &
                                 site, site_of, unset_int, unset_real
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_deck_study, only: take_parameter_sweep, max_study_values
+   use pound_deck_targets, only: take_target_quantities
    use pound_deck_variables, only: path_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
@@ -124,33 +125,7 @@ contains
             if (allocated(error)) return
             cfg%refine_tolerance = refine_tolerance
          end if
-         call parse_history(at, target_quantities, cfg%target_quantities, error, 'target_quantities', target_names)
-         if (allocated(error)) return
-         if (.not. has_frame .and. any(cfg%target_quantities([q_column_shear, q_column_moment]))) then
-            ! 'all' (or blank) names every quantity that exists: no column segments without a frame.
-            if (index(lower(target_quantities), 'column_') > 0) then
-               call fail(at, 'target_quantities', "target_quantities = '"//trim(adjustl(target_quantities))// &
-                         "': column_shear and column_moment are the column segments' lambdas of frames, "// &
-                         "and no building of the deck is a frame (model = 'frame')", error)
-               return
-            end if
-            cfg%target_quantities([q_column_shear, q_column_moment]) = .false.
-         end if
-         if (cfg%target_quantities(q_ductility) .and. .not. bilinear()) then
-            ! 'all' names it only where it exists.
-            if (index(lower(target_quantities), 'ductility') > 0) then
-               call fail(at, 'target_quantities', "target_quantities = '"//trim(adjustl(target_quantities))// &
-                         "': ductility is the peak ductility of bilinear storeys (the peak plastic rotation of "// &
-                         "a frame's hinges), and no building of the deck has storey_law = 'bilinear' or "// &
-                         "hinge_law = 'elastic_plastic'", error)
-               return
-            end if
-            cfg%target_quantities(q_ductility) = .false.
-         end if
-         if (.not. any(cfg%target_quantities)) then
-            call fail(at, 'target_quantities', "target_quantities = 'none' leaves nothing to check", error)
-            return
-         end if
+         call take_target_quantities(at, target_quantities, has_frame, bilinear(), cfg%target_quantities, error)
       end subroutine take_target
 
       !> Whether some building has bilinear storeys or plastic hinges.

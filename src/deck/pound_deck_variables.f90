@@ -13,7 +13,7 @@ module pound_deck_variables
              variable_list, group_variable_count, findloc_name, join
    public :: max_storeys, max_name_length, max_pairs, max_columns, max_steps, title_len, path_len, &
              word_len, max_substeps, max_envelope_points, max_segments, max_bays, max_column_elements, &
-             frame_variables
+             frame_variables, max_risk_points
 
    !> Largest number of storeys a `&building` may have.
    integer, parameter :: max_storeys = 20000
@@ -39,12 +39,14 @@ module pound_deck_variables
    integer, parameter :: title_len = 1024, path_len = 4096, word_len = 256
    !> Largest number of envelope points of a `piecewise` law (the contact law's own limit).
    integer, parameter :: max_envelope_points = max_law_points
+   !> Largest number of stripe levels of `&stripes` and of points of the `&hazard` curve.
+   integer, parameter :: max_risk_points = 1000
    !> Largest number of chords per curved branch of `parabola_cubic`.
    integer, parameter :: max_segments = 64
 
    !> The groups a deck may hold.
-   character(len=*), parameter :: known_groups(5) = &
-      [character(len=8) :: 'analysis', 'ground', 'building', 'contact', 'sweep']
+   character(len=*), parameter :: known_groups(7) = &
+      [character(len=8) :: 'analysis', 'ground', 'building', 'contact', 'sweep', 'stripes', 'hazard']
 
    !> One variable of one group.
    type :: var_spec
@@ -59,7 +61,7 @@ module pound_deck_variables
    end type var_spec
 
    !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(115) = [ &
+   type(var_spec), parameter :: variables(128) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 't_free', 'r', 0), &
       var_spec('analysis', 'output_every', 'i', 0), &
@@ -124,7 +126,14 @@ module pound_deck_variables
       var_spec('building', 'hardening_ratio', 'r', max_storeys), var_spec('analysis', 'collapse_drift', 'r', 0), &
       var_spec('building', 'hinge_law', 'c', 0), var_spec('building', 'column_yield_moment', 'r', max_storeys), &
       var_spec('building', 'beam_yield_moment', 'r', max_storeys), &
-      var_spec('building', 'hinge_hardening', 'r', max_storeys)]
+      var_spec('building', 'hinge_hardening', 'r', max_storeys), &
+      var_spec('ground', 'folder', 'c', 0), var_spec('ground', 'pattern', 'c', 0), &
+      var_spec('stripes', 'measure', 'c', 0), var_spec('stripes', 'period', 'r', 0), &
+      var_spec('stripes', 'levels', 'r', max_risk_points), var_spec('stripes', 'levels_g', 'r', max_risk_points), &
+      var_spec('stripes', 'target_lambda', 'r', 0), var_spec('stripes', 'target_quantities', 'c', 0), &
+      var_spec('hazard', 'im', 'r', max_risk_points), var_spec('hazard', 'im_g', 'r', max_risk_points), &
+      var_spec('hazard', 'rate', 'r', max_risk_points), var_spec('hazard', 'years', 'r', 0), &
+      var_spec('hazard', 'target_probability', 'r', 0)]
 
 contains
 

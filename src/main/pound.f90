@@ -57,6 +57,9 @@ program pound
    use pound_progress, only: progress_setup, progress_start, progress_finish, progress_auto, progress_on, &
                              progress_off
    use pound_cases, only: cases_start, cases_stop, cases_abort, cases_rank, cases_ranks, cases_all
+   use pound_stripes, only: stripes_result, run_stripes, stripes_runs
+   use pound_stripes_output, only: risk_answer_lines, risk_summary_items, write_stripes_listing, write_stripes_h5, &
+                                   write_demand_files
    implicit none
 
    character(len=:), allocatable :: deck_path, out_dir
@@ -70,6 +73,10 @@ program pound
    type(error_type), allocatable :: error
    character(len=512) :: ground_text(1)
    type(suite_result) :: suite
+   !> `&stripes` (pound_stripes): the deck as given (its sweep serves the stripes; the suite of
+   !> the motions as given runs without it) and the multiple-stripe analysis.
+   type(deck_type) :: risk_deck
+   type(stripes_result) :: risk
    logical :: is_suite, streamed, one_scaled
    !> The engineering summary (`pound_summary`): its items and its text lines.
    type(summary_item), allocatable :: summary_items(:)
@@ -94,6 +101,10 @@ program pound
    call read_deck(deck_path, deck, error)
    call check(error)
    call test_overflow()
+   if (deck%risk%active) then
+      risk_deck = deck
+      deck%sweep%active = .false.
+   end if
 
    ! Ground motion (a record is read whole: its memory is proportional to the file). A suite
    ! (several &ground, a synthetic motion or scale_to) builds its motions one at a time.
@@ -139,12 +150,17 @@ program pound
    options%label = deck_path
    if (.not. writer) progress_mode = progress_off
    call progress_setup(progress_mode)
-   call progress_start(planned_runs(deck, is_suite))
+   if (risk_deck%risk%active) then
+      call progress_start(planned_runs(deck, is_suite) + stripes_runs(risk_deck))
+   else
+      call progress_start(planned_runs(deck, is_suite))
+   end if
    if (is_suite) then
       call run_suite(deck, suite, res, error, deck_path)
    else
       call run_case(deck, res, error, options)
    end if
+   if (.not. allocated(error) .and. risk_deck%risk%active) call run_stripes(risk_deck, risk, error)
    call check(error)
    alone = .false.
    call progress_finish(.true.)
@@ -167,6 +183,7 @@ program pound
    if (.not. allocated(error) .and. size(deck%motions) > 1) &
       call write_suite_h5(outputs%h5_tmp, res%models, suite, error, res%cs)
    if (.not. allocated(error)) call write_studies_h5(error)
+   if (.not. allocated(error) .and. risk_deck%risk%active) call write_stripes_h5(outputs%h5_tmp, risk_deck, risk, error)
    if (.not. allocated(error) .and. size(deck%motions) > 1) call write_summary_h5(error)
    if (allocated(error)) error%message = 'cannot write '//outputs%h5//': '//error%message
    call check(error)
@@ -174,6 +191,10 @@ program pound
    call check(error)
    call publish_outputs(outputs, error)
    call check(error)
+   if (risk_deck%risk%active) then
+      call write_demand_files(outputs%listing, risk_deck, risk, error)
+      call check(error)
+   end if
    call write_summary()
    ! Results written, but some cases failed (named in the listing, the file and the summary).
    ! (A suite of one motion writes no /suite: its failed gaps are those of its own sweep.)
@@ -248,6 +269,11 @@ contains
       else
          call build_summary(res, summary_items)
          summary_text = summary_lines(summary_items)
+      end if
+      ! The multiple-stripe analysis's answer first.
+      if (risk_deck%risk%active) then
+         summary_items = [risk_summary_items(risk_deck, risk), summary_items]
+         summary_text = [character(len=len(summary_text)) :: risk_answer_lines(risk_deck, risk), summary_text]
       end if
    end subroutine make_summary
 
@@ -400,6 +426,7 @@ contains
       if (size(deck%motions) > 1) then
          call write_suite_listing(lst, res%models, suite, res%cs)
       end if
+      if (risk_deck%risk%active) call write_stripes_listing(lst, risk_deck, risk)
       write (lst%unit, '(/,a,es10.3,a)', iostat=lst%ios, iomsg=lst%msg) '  uncoupled integration: ', res%unc%seconds, ' s'
       if (res%has_coupled .and. lst%ios == 0) write (lst%unit, '(a,es10.3,a,es10.3,a)', iostat=lst%ios, iomsg=lst%msg) &
          '  coupled integration:   ', res%cpl%seconds, ' s, of which LCP solves ', res%cpl%contact_seconds, ' s'

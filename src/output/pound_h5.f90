@@ -92,7 +92,7 @@ module pound_h5
    !> `units` becomes the dataset's string attribute `units`.
    interface h5_write
       module procedure write_real_0d, write_real_1d, write_real_2d, write_int_1d, write_int_2d, &
-         write_string_1d
+         write_int_3d, write_string_1d
    end interface h5_write
 
    !> Set an attribute of the object at a path ('/' is the root), replacing an existing one:
@@ -538,6 +538,27 @@ contains
       packed = values
       call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_INTEGER, c_loc(packed), error, units)
    end subroutine write_int_2d
+
+   !> Integer 3-D dataset (stored as 32-bit signed; h5py sees the dimensions reversed).
+   subroutine write_int_3d(file, path, values, error, units)
+      !> File open for writing.
+      type(h5_file), intent(in) :: file
+      !> Dataset path.
+      character(len=*), intent(in) :: path
+      !> Values, e.g. outcome(n_motions, n_stripes, n_gaps).
+      integer, intent(in) :: values(:, :, :)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      !> Its `units` attribute; none when absent.
+      character(len=*), intent(in), optional :: units
+      character(len=:), allocatable :: p
+      integer, allocatable, target :: packed(:, :, :)
+
+      call dataset_path(file, path, p, error)
+      if (allocated(error)) return
+      packed = values
+      call new_dataset(file, p, shape(values, kind=hsize_t), H5T_NATIVE_INTEGER, c_loc(packed), error, units)
+   end subroutine write_int_3d
 
    ! ------------------------------------------------------------------ chunked histories
 
