@@ -44,7 +44,7 @@ module pound_suite_output
    use pound_config, only: history_names, n_history_quantities
    use pound_strings, only: counted, str, left_cell, right_cell, fixed_cell
    use pound_contact, only: contact_system
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_names
    use pound_influence, only: building_influence
    use pound_text_writer, only: text_writer
    use pound_listing, only: write_section, write_influence_tables, gap_cell, mm
@@ -55,7 +55,7 @@ module pound_suite_output
    use pound_suite_columns_output, only: write_suite_columns_listing, write_suite_columns_h5
    use pound_suite_yield_output, only: write_suite_yield_listing, write_suite_yield_h5
    use pound_separation_output, only: write_separation_h5, write_separation_head, write_separation_rows, &
-                                      write_separation_legend
+                                      write_separation_legend, write_setbacks
    implicit none
    private
 
@@ -203,12 +203,12 @@ contains
       if (lst%first_ios /= 0) return
 
       call write_section(lst, 'Separation rules per contact pair [mm]')
-      call write_separation_legend(lst, .true.)
+      call write_separation_legend(lst, .true., suite%separation(nm + 1, :))
       write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  The suite row: rules on the mean peaks; no-contact gap: '// &
          'mean over the motions'//over//'.'
       call lst%note()
       do ip = 1, size(suite%separation, 2)
-         call write_separation_head(lst, suite_pair_name(ip, cs), 'motion', wm)
+         call write_separation_head(lst, suite_pair_name(ip, cs), 'motion', wm, suite%separation(nm + 1, ip))
          do k = 1, nm + 1
             if (k <= nm) then
                if (suite%motion_failed(k)) then
@@ -220,6 +220,14 @@ contains
             call write_separation_rows(lst, row_name(k), suite%separation(k, ip), wm)
          end do
       end do
+      block
+         character(len=64) :: plabels(size(suite%separation, 2))
+
+         do ip = 1, size(plabels)
+            plabels(ip) = suite_pair_name(ip, cs)
+         end do
+         call write_setbacks(lst, structure_names(models), plabels, suite%separation(nm + 1, :), 'the suite''s mean ')
+      end block
       if (suite%has_sweep) then
          call write_section(lst, 'Suite gap sweep: largest |lambda| [%] over the targeted quantities')
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  mean: the suite mean of each quantity''s and '// &
@@ -454,7 +462,8 @@ contains
             do ip = 1, size(labels)
                labels(ip) = suite_pair_name(ip, cs)
             end do
-            call write_separation_h5(h5, '/suite/separation', suite%separation, labels, .true., error)
+            call write_separation_h5(h5, '/suite/separation', suite%separation, labels, .true., error, &
+                                     structure_names(models))
          end block
          if (allocated(error)) return
          call write_histories()
