@@ -20,8 +20,10 @@ the joint, scripts/plot_studies.py: <stem>_stiffness_sweep or _restitution_sweep
 variant: only when the file holds /stiffness_sweep, /restitution_sweep or /law_study), risk (a file
 with /risk, from a deck with &stripes and &hazard: the plots of scripts/plot_risk.py,
 <stem>_risk_fragility, the fragility curves with the stripe fractions at a few gaps, and
-_risk_probability, P in `years` against the gap with the target). Files are named
-<stem>_<plot>.png / .pdf.
+_risk_probability, P in `years` against the gap with the target), separation
+(the separation rules of every contact pair as computed, with the codes' factors, n/a not drawn,
+and each building's property-line setback; the title says which peaks they used: only for a
+single-motion run with contact, /separation). Files are named <stem>_<plot>.png / .pdf.
 
 Any problem with the file (missing, not HDF5, not a pound results file) gives one line
 "plot: error: ..." on stderr and exit status 1; usage errors exit 2. POUND_DEBUG=1 shows
@@ -34,7 +36,7 @@ import sys
 import tempfile
 
 PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite", "frame",
-         "deformed", "columns", "study", "hysteresis", "risk")
+         "deformed", "columns", "study", "hysteresis", "risk", "separation")
 # The sweep's column-segment target quantities of frames (/sweep/max_abs_lambda/<b>/<q>, where targeted).
 COLUMN_TARGETS = {"column_shear": "column segment shear V", "column_moment": "column segment end moment M"}
 CONTACT_PLOTS = ("displacement", "force", "loops")
@@ -951,10 +953,61 @@ def has_suite(path):
         return "suite" in f
 
 
+# The rules of /separation (a single-motion run) as the program computed them, with the codes'
+# factors: (dataset, marker, label).
+SEPARATION_RULES = (("abs", "^", "ABS = u1 + u2"), ("srss", "v", "SRSS"), ("ddc", "x", "DDC (CQC rho)"),
+                    ("asce7", "s", "ASCE 7 12.12.3: SRSS of Cd u / Ie"),
+                    ("en1998", "D", "EN 1998 4.4.2.7: SRSS of q u, x0.7 only for floors at one level"),
+                    ("is1893", "P", "IS 1893 7.11.3: R1 u1 + R2 u2, x0.5 only for floors at one level"),
+                    ("no_contact", "o", "no-contact gap (uncoupled histories)"),
+                    ("time_history", "*", "time-history threshold gap (sweep)"))
+
+
+def has_separation(path):
+    import h5py
+
+    with h5py.File(path, "r") as f:
+        return "separation/srss" in f
+
+
+def plot_separation(plt, r, args, written, notes):
+    """The separation rules of every pair as computed (with the codes' factors; n/a not drawn),
+    the two buildings' setbacks, and which peaks they used (/separation attribute peaks)."""
+    import h5py
+    import numpy as np
+
+    with h5py.File(r.path, "r") as f:
+        g = f["separation"]
+        pairs = [_text(p) for p in g["pair"][...]]
+        rules = {k: np.array(g[k][...], dtype=float) for k, _, _ in SEPARATION_RULES if k in g}
+        setback = [np.array(g[k][...], dtype=float) if k in g else None for k in ("setback_left", "setback_right")]
+        peaks = _text(g.attrs.get("peaks", "the rules use the uncoupled peaks"))
+    x = np.arange(len(pairs))
+    fig, ax = plt.subplots(figsize=(max(6.0, 1.1 * len(pairs) + 3.0), 4.8))
+    fig.subplots_adjust(top=0.80, bottom=0.28, right=0.62)
+    for j, (k, m, label) in enumerate(SEPARATION_RULES):
+        if k not in rules or not np.isfinite(rules[k]).any():
+            continue
+        ax.plot(x, 1e3 * rules[k], marker=m, linestyle="none", markersize=6, color=COLOURS[j % len(COLOURS)],
+                label=label)
+    for e, (v, m) in enumerate(zip(setback, ("<", ">"))):
+        if v is not None and np.isfinite(v).any():
+            ax.plot(x, 1e3 * v, marker=m, linestyle="none", markersize=5, color="0.45",
+                    label=f"setback of the {('left', 'right')[e]} building (Cd u / Ie, u without cd)")
+    ax.set_xticks(x)
+    ax.set_xticklabels(pairs, rotation=60, ha="right", fontsize=7)
+    ax.set_ylabel("separation [mm]")
+    ax.grid(True, color="0.85", linewidth=0.5)
+    ax.legend(loc="upper left", bbox_to_anchor=(1.02, 1.0), fontsize=7)
+    suptitle(fig, r, "Separation rules per pair, as computed with the codes' factors", peaks)
+    save(fig, r, "separation", args, written)
+    plt.close(fig)
+
+
 PLOTTERS = {"displacement": plot_displacement, "force": plot_force, "loops": plot_loops,
             "shear": plot_shear, "influence": plot_influence, "ground": plot_ground, "sweep": plot_sweep,
             "suite": plot_suite_group, "study": plot_study_group, "hysteresis": plot_hysteresis,
-            "risk": plot_risk_group}
+            "risk": plot_risk_group, "separation": plot_separation}
 
 
 # --------------------------------------------------------------------------------------------
@@ -1260,6 +1313,10 @@ def run(argv):
         if name == "study" and not has_study(r.path):
             if "study" in args.explicit:
                 notes.append("study: skipped (no /stiffness_sweep, /restitution_sweep or /law_study in this file)")
+            continue
+        if name == "separation" and not has_separation(r.path):
+            if "separation" in args.explicit:
+                notes.append("separation: skipped (no /separation in this file: no contact, or a suite)")
             continue
         if name == "sweep" and r.sweep is None:
             if "sweep" in args.explicit:

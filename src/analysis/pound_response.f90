@@ -14,7 +14,10 @@
 !>
 !> **Member rows.** A model with member recovery rows (`structure_model%member`, a frame's
 !> column end forces) gets their absolute maxima and times at every step (`member_peak`,
-!> `member_time`), whatever the rows mean. **Deformed shapes** (`snapshots`): the DOF vector
+!> `member_time`), whatever the rows mean. **Points between floors** (a frame's split column
+!> nodes, contact ends of `&contact elevations`: `point_dof`, `point_dof_left`) get their
+!> absolute maxima of u at every step (`point_peak`, `response_point_peak`; not refined between
+!> samples). **Deformed shapes** (`snapshots`): the DOF vector
 !> at the step of each storey's peak storey shear (`deformed` (n_dofs, n_storeys), after
 !> `response_finish`); asked for only where n_dofs x n_storeys <= `deformed_limit`. During the
 !> run a pool of n_storeys + 1 DOF vectors, preallocated (no allocation in the loop), holds
@@ -33,7 +36,7 @@ module pound_response
    public :: response_record, response_init, response_sample, response_finish, response_store
    public :: history_sink, response_flush, default_block_bytes, history_block, discard_sink
    public :: response_block_full, response_sample_rows, response_release, response_peaks_inside
-   public :: q_u, q_v, q_a_abs, q_drift, q_shear, deformed_limit
+   public :: q_u, q_v, q_a_abs, q_drift, q_shear, deformed_limit, response_point_peak
 
    !> Quantity indices.
    integer, parameter :: q_u = 1, q_v = 2, q_a_abs = 3, q_drift = 4, q_shear = 5
@@ -115,6 +118,10 @@ module pound_response
       !> Member rows (`structure_model%member`): peak absolute value and its time per row, and
       !> the rows' values of the step (work); unallocated without member rows.
       real(dp), allocatable :: member_peak(:), member_time(:), pm(:)
+      !> Points between floors (the model's `point_dof` and `point_dof_left`, each DOF once):
+      !> their DOFs and the peak |u| of each at every step (m); unallocated: none.
+      integer, allocatable :: point_dofs(:)
+      real(dp), allocatable :: point_peak(:)
       !> Whether the deformed shapes are kept, and (after `response_finish`) the DOF vector at
       !> the peak storey shear of each storey (n_dofs, n_storeys); its time is
       !> `peak_time(:, q_shear)`.
@@ -205,6 +212,8 @@ contains
          rec%n_free = n + 1
          if (stat(8) == 0) rec%free = [(n + 2 - k, k=1, n + 1)]
       end if
+      call point_dof_list(b, rec%point_dofs)
+      if (allocated(rec%point_dofs)) allocate (rec%point_peak(size(rec%point_dofs)), source=0.0_dp)
       allocate (rec%peak(n, n_history_quantities), rec%peak_time(n, n_history_quantities), rec%work(n), &
                 stat=stat(6))
       if (any(stat /= 0)) then
@@ -255,7 +264,57 @@ contains
          call response_sample_rows(rec, b, u, v, a, ag, t, output)
       end if
       if (rec%refine) call refine_peaks(rec, b, u, v, t)
+      if (allocated(rec%point_peak)) call track_points(size(rec%point_dofs), b%n, rec%point_dofs, u, rec%point_peak)
    end subroutine response_sample
+
+   !> Running absolute maxima of u at the points between floors.
+   pure subroutine track_points(np, nu, dof, u, peak)
+      integer, intent(in) :: np, nu, dof(np)
+      real(dp), intent(in) :: u(nu)
+      real(dp), intent(inout) :: peak(np)
+      integer :: i
+
+      do i = 1, np
+         peak(i) = max(peak(i), abs(u(dof(i))))
+      end do
+   end subroutine track_points
+
+   !> The DOFs of the model's points between floors (right face, then the left face's not
+   !> already listed); unallocated when it has none.
+   pure subroutine point_dof_list(b, dofs)
+      !> The model.
+      type(structure_model), intent(in) :: b
+      !> Their DOFs.
+      integer, allocatable, intent(out) :: dofs(:)
+      integer :: i
+
+      if (allocated(b%point_dof)) dofs = b%point_dof
+      if (allocated(b%point_dof_left)) then
+         if (.not. allocated(dofs)) allocate (dofs(0))
+         do i = 1, size(b%point_dof_left)
+            if (all(dofs /= b%point_dof_left(i))) dofs = [dofs, b%point_dof_left(i)]
+         end do
+      end if
+      if (allocated(dofs)) then
+         if (size(dofs) == 0) deallocate (dofs)
+      end if
+   end subroutine point_dof_list
+
+   !> The peak |u| (m) over the run of DOF `dof` when it is one of the record's points between
+   !> floors (`point_peak`); -1 when it is not (or `dof` is 0).
+   pure real(dp) function response_point_peak(rec, dof) result(peak)
+      !> The record after the run.
+      type(response_record), intent(in) :: rec
+      !> A DOF of the model.
+      integer, intent(in) :: dof
+      integer :: i
+
+      peak = -1.0_dp
+      if (.not. allocated(rec%point_dofs) .or. dof < 1) return
+      do i = 1, size(rec%point_dofs)
+         if (rec%point_dofs(i) == dof) peak = rec%point_peak(i)
+      end do
+   end function response_point_peak
 
    !> `response_sample` of a model that is not a stick: through the response points and
    !> the recovery rows (a procedure of its own, so that a stick's step calls a small

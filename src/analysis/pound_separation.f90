@@ -3,12 +3,17 @@
 !> on the left, its displacement to the right closes the joint), the buildings' fundamental
 !> periods T1, T2 (s), damping ratios z1, z2 and their design-code factors (`code_factors`).
 !>
-!> Combinations of the elastic peaks (no factor):
+!> The peaks are the uncoupled response-history peaks of the buildings as analysed: elastic
+!> buildings' elastic peaks, yielding buildings' (bilinear storeys, plastic hinges) their own
+!> inelastic peaks (`inelastic`, `peaks_label`). A facing point is a floor or a point between
+!> floors (a frame's split column node, whose displacement is a DOF of the model).
+!>
+!> Combinations of the peaks (no factor):
 !>
 !> * ABS = u1 + u2 (the sum: both peaks at the same time, in opposite directions);
 !> * SRSS = sqrt(u1^2 + u2^2);
 !> * ec8 (legacy name, kept for the HDF5 layout): the SRSS, times 0.7 where the floor levels
-!>   coincide, of the elastic peaks, without q_d: not a code check (see `en1998`);
+!>   coincide, of the peaks, without q_d: not a code check (see `en1998`);
 !> * DDC (double difference combination) = sqrt(u1^2 + u2^2 - 2 rho u1 u2), with the CQC
 !>   correlation of two oscillators (Der Kiureghian 1981), r = T1/T2:
 !>   rho = 8 sqrt(z1 z2) (z1 + r z2) r^1.5 / ((1 - r^2)^2 + 4 z1 z2 r (1 + r^2) + 4 (z1^2 + z2^2) r^2);
@@ -21,6 +26,14 @@
 !>   of the two, times 0.7 where the floor levels coincide;
 !> * IS 1893 (Part 1):2016 7.11.3: R1 D1 + R2 D2 (the code's R (D1 + D2) with each
 !>   building's own R), times 0.5 where the floor levels coincide;
+!>
+!> The floor levels coincide (`levels_coincide`) only where both facing points are floors and
+!> their elevations above the common base differ by at most `level_tolerance` (0.01 m): a floor
+!> facing a column between floors never does (EC8 4.4.2.7(3)).
+!>
+!> The property-line setback of each building at its facing point (ASCE 7-16 12.12.2 style,
+!> `separation_setback`): its own delta_M = Cd u / Ie where `cd` is given, else its peak u
+!> itself (factor 1: the response-history peak of an unreduced motion is the displacement).
 !>
 !> and from the histories:
 !>
@@ -44,13 +57,16 @@ module pound_separation
    public :: separation_abs, separation_srss, separation_ec8, separation_ddc, cqc_correlation
    public :: no_contact_gap, separation_t, separation_rules, code_separation, levels_coincide
    public :: separation_asce7, separation_en1998, separation_is1893, not_computed
+   public :: separation_setback, peaks_label, building_setbacks
 
    !> The EC8 reduction factor where floor levels coincide.
    real(dp), parameter, public :: ec8_coincident_factor = 0.7_dp
    !> The IS 1893 7.11.3 reduction factor (R/2 instead of R) where floor levels coincide.
    real(dp), parameter, public :: is1893_coincident_factor = 0.5_dp
-   !> Two floor levels (m above the common base) coincide when they differ by at most this.
-   real(dp), parameter, public :: level_tolerance = 1.0e-9_dp
+   !> Two floor levels (m above the common base) coincide when they differ by at most this
+   !> (a centimetre: a level survey's precision; storey heights that differ by more are
+   !> staggered floors).
+   real(dp), parameter, public :: level_tolerance = 0.01_dp
 
    !> All rules for one pair (m; rho dimensionless).
    type :: separation_t
@@ -74,9 +90,23 @@ module pound_separation
       real(dp) :: time_history = -1.0_dp
       !> Whether `time_history` was computed.
       logical :: time_history_valid = .false.
-      !> False when no rule could be computed for the pair (a facing point between floors,
-      !> whose peak is not tracked): every rule n/a.
+      !> False when no rule could be computed for the pair (a facing point whose peak is not
+      !> known: a suite's point between floors whose model has no such node): every rule n/a.
       logical :: computed = .true.
+      !> The peaks the rules used: u1, u2 of the facing points (m; 0 when not computed).
+      real(dp) :: u(2) = 0.0_dp
+      !> Property-line setback of each building at its facing point (m): its own delta_M,
+      !> Cd u / Ie where `cd` is given (`setback_amplified`), else u (`separation_setback`).
+      real(dp) :: setback(2) = 0.0_dp
+      logical :: setback_amplified(2) = .false.
+      !> Whether each peak is a yielding building's inelastic peak (bilinear storeys or plastic
+      !> hinges) rather than an elastic one (set by the caller, who knows the models).
+      logical :: inelastic(2) = .false.
+      !> Whether the facing floors' levels coincided (EC8 x 0.7, IS 1893 x 0.5 applied).
+      logical :: coincide = .false.
+      !> The pair's buildings (left, right; indices in deck order; 0: not set), for the
+      !> per-building setbacks.
+      integer :: building(2) = 0
    end type separation_t
 
 contains
@@ -152,7 +182,7 @@ contains
    !> ASCE 7-16 12.12.3 (Eq. 12.12-1, 12.12-2): delta_MT = sqrt(delta_M1^2 + delta_M2^2) with
    !> delta_M = Cd delta_max / Ie of each building (m). Factors > 0.
    elemental function separation_asce7(u1, u2, cd1, ie1, cd2, ie2) result(s)
-      !> Elastic peak displacements (m) >= 0.
+      !> Peak displacements (m) >= 0.
       real(dp), intent(in) :: u1, u2
       !> Deflection amplification and importance factors of building 1 and of building 2.
       real(dp), intent(in) :: cd1, ie1, cd2, ie2
@@ -164,7 +194,7 @@ contains
    !> EN 1998-1 4.4.2.7(2)-(3): the SRSS of d = q_d d_e of each building (4.3.4), times 0.7
    !> where the floor levels coincide (m). Factors > 0.
    elemental function separation_en1998(u1, u2, q1, q2, floors_coincide) result(s)
-      !> Elastic peak displacements (m) >= 0.
+      !> Peak displacements (m) >= 0.
       real(dp), intent(in) :: u1, u2
       !> Displacement behaviour factors q_d of building 1 and of building 2.
       real(dp), intent(in) :: q1, q2
@@ -178,7 +208,7 @@ contains
    !> IS 1893 (Part 1):2016 7.11.3: R1 D1 + R2 D2 (the code's R (D1 + D2), each building with
    !> its own R), times 0.5 (R/2) where the floor levels coincide (m). Factors > 0.
    elemental function separation_is1893(u1, u2, r1, r2, floors_coincide) result(s)
-      !> Elastic peak displacements (m) >= 0.
+      !> Peak displacements (m) >= 0.
       real(dp), intent(in) :: u1, u2
       !> Response reduction factors of building 1 and of building 2.
       real(dp), intent(in) :: r1, r2
@@ -190,13 +220,53 @@ contains
       if (floors_coincide) s = is1893_coincident_factor*s
    end function separation_is1893
 
-   !> Whether two floor levels (m above the common base) coincide (within `level_tolerance`).
-   elemental logical function levels_coincide(z1, z2)
+   !> Whether the facing points of a pair are floors whose levels coincide: both are floors
+   !> (`floor1`, `floor2` >= 1; 0: a point between floors, which never coincides) and their
+   !> levels (m above the common base) differ by at most `level_tolerance`.
+   elemental logical function levels_coincide(z1, z2, floor1, floor2)
       !> The two levels (m).
       real(dp), intent(in) :: z1, z2
+      !> The facing floors (0: a point between floors).
+      integer, intent(in) :: floor1, floor2
 
-      levels_coincide = abs(z1 - z2) <= level_tolerance
+      levels_coincide = floor1 >= 1 .and. floor2 >= 1 .and. abs(z1 - z2) <= level_tolerance
    end function levels_coincide
+
+   !> Property-line setback of one building at its facing point (m), ASCE 7-16 12.12.2 style:
+   !> its own delta_M = Cd u / Ie (Eq. 12.12-1) where Cd is given (> 0), else its peak u
+   !> itself (the response-history peak of an unreduced motion is the displacement demand).
+   elemental real(dp) function separation_setback(u, f) result(s)
+      !> Peak displacement of the facing point (m) >= 0.
+      real(dp), intent(in) :: u
+      !> The building's design-code factors.
+      type(code_factors), intent(in) :: f
+
+      s = u
+      if (f%cd > 0.0_dp .and. f%importance > 0.0_dp) s = f%cd*u/f%importance
+   end function separation_setback
+
+   !> Which peaks the rules of `sep` used, as a phrase: 'uncoupled elastic peaks' (no end
+   !> inelastic), 'uncoupled peaks of the yielding buildings (inelastic)' (every end), or
+   !> 'uncoupled peaks as analysed (inelastic for the yielding buildings, elastic for the
+   !> others)'.
+   pure function peaks_label(sep) result(text)
+      !> The rules of every pair of a run (or of one pair).
+      type(separation_t), intent(in) :: sep(:)
+      character(len=:), allocatable :: text
+      integer :: n, k
+
+      n = 0
+      do k = 1, size(sep)
+         n = n + count(sep(k)%inelastic)
+      end do
+      if (n == 0) then
+         text = 'uncoupled elastic peaks'
+      else if (n == 2*size(sep)) then
+         text = 'uncoupled peaks of the yielding buildings (inelastic)'
+      else
+         text = 'uncoupled peaks as analysed (inelastic for the yielding buildings, elastic for the others)'
+      end if
+   end function peaks_label
 
    !> The value of a rule that is not computed: a quiet NaN (never a number).
    elemental real(dp) function not_computed(x)
@@ -206,13 +276,14 @@ contains
       not_computed = ieee_value(x, ieee_quiet_nan)
    end function not_computed
 
-   !> Every rule of one pair from the elastic peaks u1, u2 (m, >= 0) of its facing points:
-   !> ABS, SRSS, the legacy ec8, DDC with its rho, and the design-code rules with the two
-   !> buildings' factors (a rule whose factor is not given (<= 0) is NaN and not valid).
+   !> Every rule of one pair from the peaks u1, u2 (m, >= 0) of its facing points:
+   !> ABS, SRSS, the legacy ec8, DDC with its rho, the design-code rules with the two
+   !> buildings' factors (a rule whose factor is not given (<= 0) is NaN and not valid), the
+   !> peaks themselves and each building's setback.
    !> Periods > 0, 0 <= z < 1 (not checked here; `separation_rules` checks). The no-contact
    !> and time-history gaps are left at their defaults.
    elemental function code_separation(u1, u2, f1, f2, t1, t2, z1, z2, floors_coincide) result(sep)
-      !> Elastic peak displacements of the facing points (m).
+      !> Peak displacements of the facing points (m).
       real(dp), intent(in) :: u1, u2
       !> Design-code factors of building 1 (left) and building 2 (right).
       type(code_factors), intent(in) :: f1, f2
@@ -224,6 +295,10 @@ contains
       logical, intent(in) :: floors_coincide
       type(separation_t) :: sep
 
+      sep%u = [u1, u2]
+      sep%coincide = floors_coincide
+      sep%setback = [separation_setback(u1, f1), separation_setback(u2, f2)]
+      sep%setback_amplified = [f1%cd > 0.0_dp, f2%cd > 0.0_dp]
       sep%abs = separation_abs(u1, u2)
       sep%srss = separation_srss(u1, u2)
       sep%ec8 = separation_ec8(u1, u2, floors_coincide)
@@ -249,6 +324,30 @@ contains
          sep%is1893 = not_computed(u1)
       end if
    end function code_separation
+
+   !> Building ib's property-line setback (m): its largest setback over the pairs it faces
+   !> (`separation_t%setback` at its end); NaN when it faces no pair whose rules were computed.
+   pure real(dp) function building_setbacks(sep, ib, nb) result(setback)
+      !> The rules per pair.
+      type(separation_t), intent(in) :: sep(:)
+      !> The building (index in deck order) and the number of buildings.
+      integer, intent(in) :: ib, nb
+      integer :: ip, e
+
+      setback = not_computed(0.0_dp)
+      if (ib < 1 .or. ib > nb) return
+      do ip = 1, size(sep)
+         if (.not. sep(ip)%computed) cycle
+         do e = 1, 2
+            if (sep(ip)%building(e) /= ib) cycle
+            if (setback >= 0.0_dp) then
+               setback = max(setback, sep(ip)%setback(e))
+            else
+               setback = sep(ip)%setback(e)
+            end if
+         end do
+      end do
+   end function building_setbacks
 
    !> Exact no-contact gap max_t (u1(t) - u2(t)) (m) of two histories sampled at the same
    !> times, 0 if the joint never closes. Both must have the same size.

@@ -241,7 +241,36 @@ contains
       if (.not. allocated(error)) call code_factor(at, 'response_reduction', response_reduction, 1.0_dp, 8.0_dp, &
                                                    'IS 1893 Table 9 gives R from 1.5 to 5', &
                                                    cfg%factors%response_reduction, warnings, error)
+      if (allocated(error)) return
+      call unreduced_factor(at, 'cd', cfg%factors%cd, 'Cd', 'R/Ie', warnings)
+      call unreduced_factor(at, 'behaviour_factor', cfg%factors%behaviour_factor, 'q', 'q', warnings)
+      call unreduced_factor(at, 'response_reduction', cfg%factors%response_reduction, 'R', 'R', warnings)
    end subroutine read_building
+
+   !> A design factor above 1 (`cd`, `behaviour_factor`, `response_reduction`) with the
+   !> motions at full intensity: a warning. pound has no motion reduced to the design action
+   !> (every record, synthetic motion and pulse is taken at the intensity the deck gives), so
+   !> the uncoupled response-history peak already is the displacement demand; the code's
+   !> factor converts a reduced elastic analysis and would amplify the peak again.
+   pure subroutine unreduced_factor(at, var, value, symbol, reduction, warnings)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> The resolved factor (0: not given).
+      real(dp), intent(in) :: value
+      !> The code's symbol of the factor and of the reduction it undoes.
+      character(len=*), intent(in) :: symbol, reduction
+      !> The deck's plausibility warnings.
+      character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
+
+      if (.not. (value > 1.0_dp)) return
+      call warn(at, var, var//' = '//plain_real(value)//' > 1 with motions at full intensity (pound''s '// &
+                'records, synthetic motions and pulses are not reduced): their response-history peak already is '// &
+                'the displacement demand and '//symbol//' amplifies it again ('//plain_real(value)// &
+                ' x); set '//var//' = 1, unless the motions are scaled down to the design spectrum / '// &
+                reduction, warnings)
+   end subroutine unreduced_factor
 
    !> One design-code factor of the separation rules (`cd`, `importance`, `behaviour_factor`,
    !> `response_reduction`): when given, > 0 (refused otherwise) and, outside the usual range

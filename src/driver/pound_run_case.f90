@@ -16,14 +16,16 @@ module pound_run_case
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: deck_type, ground_config, analysis_config
+   use pound_contact_settings, only: contact_config
    use pound_analysis_plan, only: analysis_plan, steps_of, stepping_uniform, stepping_impact, free_newmark, &
                                   free_exact, lcp_auto, lcp_lemke, integrator_newmark, integrator_hht
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, stop_ground, &
                                   describe_ground
    use pound_building, only: building_model, build_building
-   use pound_structure, only: structure_model, structure_names, structure_yields
+   use pound_structure, only: structure_model, structure_names, structure_yields, structure_end_dof
    use pound_newmark, only: exact_max_dofs
    use pound_residual_settle, only: residual_warning, ground_tail_fraction, kinetic_tail_fraction
+   use pound_response, only: response_point_peak
    use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, add_warning, history_sink, &
                              analysis_copy, e_kinetic
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
@@ -426,7 +428,7 @@ contains
       end function has_uncoupled
 
       !> The separation rules of every pair from the uncoupled peak displacements of the
-      !> facing floors.
+      !> facing points (floors, or points between floors).
       subroutine separations()
          integer :: ic, k, np
          ! Contiguous copies for `joint_thresholds` (no array temporary at the call).
@@ -436,14 +438,16 @@ contains
          np = 0
          allocate (res%separation(sum([(size(deck%contacts(ic)%floor_left), ic=1, size(deck%contacts))])))
          do ic = 1, size(deck%contacts)
-            associate (c => deck%contacts(ic))
+            associate (c => deck%contacts(ic), z => elevations(deck%contacts(ic)))
                do k = 1, size(c%floor_left)
                   np = np + 1
                   res%separation(np) = pair_separation(deck, c%left_index, c%right_index, c%floor_left(k), &
-                                                       c%floor_right(k), peak_u(c%left_index, c%floor_left(k)), &
-                                                       peak_u(c%right_index, c%floor_right(k)), &
+                                                       c%floor_right(k), peak_u(c%left_index, 1, c%floor_left(k), z(k)), &
+                                                       peak_u(c%right_index, 2, c%floor_right(k), z(k)), &
                                                        res%models(c%left_index)%period(1), &
                                                        res%models(c%right_index)%period(1))
+                  res%separation(np)%inelastic = [structure_yields(res%models(c%left_index)), &
+                                                  structure_yields(res%models(c%right_index))]
                end do
             end associate
          end do
@@ -468,12 +472,28 @@ contains
          end if
       end subroutine separations
 
-      !> Peak |u| (m) of floor j of building ib in the uncoupled run (0 for a point between floors).
-      real(dp) function peak_u(ib, j)
-         integer, intent(in) :: ib, j
+      !> The elevations (m) of a `&contact`'s pairs (0 where it gives floors).
+      pure function elevations(c) result(z)
+         type(contact_config), intent(in) :: c
+         real(dp) :: z(size(c%floor_left))
 
-         peak_u = 0.0_dp
-         if (j >= 1) peak_u = res%unc%building(ib)%peak(j, 1)
+         z = 0.0_dp
+         if (allocated(c%elevation)) z = c%elevation
+      end function elevations
+
+      !> Peak |u| (m) in the uncoupled run of building ib at its end `side` of a pair (1: it
+      !> stands on the left): floor j, or for j = 0 the point between floors at elevation z
+      !> (m; a frame's split column node, `response_point_peak`; -1 when the model has no
+      !> such node).
+      real(dp) function peak_u(ib, side, j, z)
+         integer, intent(in) :: ib, side, j
+         real(dp), intent(in) :: z
+
+         if (j >= 1) then
+            peak_u = res%unc%building(ib)%peak(j, 1)
+         else
+            peak_u = response_point_peak(res%unc%building(ib), structure_end_dof(res%models(ib), side, 0, z))
+         end if
       end function peak_u
 
       subroutine collect(warnings)
@@ -490,10 +510,11 @@ contains
 
    !> The rules of one contact pair of the deck (`code_separation`): building `left` (its
    !> floor `floor_left`) facing building `right` (its floor `floor_right`), with their factors
-   !> and damping ratios from the deck, the periods t1, t2 (s) and the peaks u1, u2 (m) of
-   !> the facing floors. The floors coincide when their levels above the common base agree
-   !> (`levels_coincide`). A pair with a point between floors (floor 0) has no rule (`computed`
-   !> false).
+   !> and damping ratios from the deck, the periods t1, t2 (s) and the uncoupled peaks u1, u2
+   !> (m) of the facing points (a floor, or for floor 0 a point between floors). The floors
+   !> coincide when both ends are floors whose levels above the common base agree
+   !> (`levels_coincide`); a point between floors never coincides. A peak < 0 (not known) gives
+   !> no rule (`computed` false, every rule NaN).
    pure function pair_separation(deck, left, right, floor_left, floor_right, u1, u2, t1, t2) result(sep)
       !> A validated configuration.
       type(deck_type), intent(in) :: deck
@@ -501,14 +522,14 @@ contains
       integer, intent(in) :: left, right
       !> Facing floors (0: a point between floors).
       integer, intent(in) :: floor_left, floor_right
-      !> Elastic peak displacements of the facing floors (m).
+      !> Uncoupled peak displacements of the facing points (m; < 0: not known).
       real(dp), intent(in) :: u1, u2
       !> Fundamental periods of the two buildings (s).
       real(dp), intent(in) :: t1, t2
       type(separation_t) :: sep
       logical :: coincide
 
-      if (floor_left < 1 .or. floor_right < 1) then
+      if (u1 < 0.0_dp .or. u2 < 0.0_dp) then
          sep%computed = .false.
          sep%abs = not_computed(u1)
          sep%srss = sep%abs
@@ -518,13 +539,18 @@ contains
          sep%asce7 = sep%abs
          sep%en1998 = sep%abs
          sep%is1893 = sep%abs
+         sep%u = sep%abs
+         sep%setback = sep%abs
+         sep%building = [left, right]
          return
       end if
       associate (b1 => deck%buildings(left), b2 => deck%buildings(right))
-         coincide = levels_coincide(sum(b1%height(1:floor_left)), sum(b2%height(1:floor_right)))
+         coincide = levels_coincide(sum(b1%height(1:floor_left)), sum(b2%height(1:floor_right)), floor_left, &
+                                    floor_right)
          sep = code_separation(u1, u2, b1%factors, b2%factors, t1, t2, b1%damping_ratio, b2%damping_ratio, &
                                coincide)
       end associate
+      sep%building = [left, right]
    end function pair_separation
 
 end module pound_run_case

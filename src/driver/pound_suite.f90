@@ -28,6 +28,7 @@ module pound_suite
    use pound_run_case, only: case_options, case_result, run_case, label_prefix, analysis_plan_of
    use pound_analysis_plan, only: steps_of, output_steps
    use pound_analysis, only: analysis_result, n_energy, analysis_copy, add_warning
+   use pound_response, only: response_point_peak
    use pound_contact, only: contact_pair, pairs_from_config
    use pound_sweep, only: sweep_result, gap_cases, gap_cases_init, gap_cases_probe, gap_cases_set_probe, &
                           sweep_column_width, sweep_from_table
@@ -244,8 +245,8 @@ contains
    end subroutine motion_run
 
    !> A pair's uncoupled response: the peak displacement at each end (a floor's peak; for a
-   !> point between floors, the largest |u| of its DOF's stored history, `node_histories`; -1
-   !> without it) and the no-contact gap max_t (u1 - u2) of the two ends' stored histories
+   !> point between floors, its DOF's peak |u| at every step, `response_point_peak`; -1 when
+   !> the model has no such node) and the no-contact gap max_t (u1 - u2) of the two ends' stored histories
    !> (a floor's with `history` 'u', a point's with `node_histories`; -1 without them).
    subroutine pair_response(ctx, pair, unc, peak, gap)
       !> The suite's data.
@@ -275,10 +276,9 @@ contains
                   have(e) = .true.
                end if
             else
-               peak(e) = -1.0_dp
+               peak(e) = response_point_peak(b, pair%dof(e))
                if (allocated(b%u_nodes) .and. .not. b%streamed .and. b%n_out > 0 .and. pair%dof(e) > 0) then
                   u(:, e) = b%u_nodes(pair%dof(e), 1:n)
-                  peak(e) = maxval(abs(b%u_nodes(pair%dof(e), 1:b%n_out)))
                   have(e) = .true.
                end if
             end if
@@ -819,6 +819,8 @@ contains
             call suite_pair_rules(p1, p2, deck%buildings(b(1))%factors, deck%buildings(b(2))%factors, &
                                   suite%building_period(b(1)), suite%building_period(b(2)), &
                                   z(b(1)), z(b(2)), ctx%pair(ip)%coincide, sep)
+            sep%inelastic = [structure_yields(models(b(1))), structure_yields(models(b(2)))]
+            sep%building = b
          end associate
       end subroutine rules
 

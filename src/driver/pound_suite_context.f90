@@ -6,13 +6,15 @@
 !> The pairs are indexed by pair, in deck order (every pair of every `&contact`): each end is
 !> a building and either a floor or a point between floors (a frame's column node, `&contact
 !> elevations`), with its DOF; the levels of the two ends (a floor's: the sum of the storey
-!> heights below it; a point's: its elevation) decide whether the floors coincide (EC8).
+!> heights below it; a point's: its elevation) decide whether the floors coincide (EC8; both
+!> ends floors, `levels_coincide`).
 module pound_suite_context
    use pound_kinds, only: dp
    use pound_config, only: deck_type, n_target_quantities
    use pound_structure, only: structure_model, structure_end_dof
    use pound_analysis, only: analysis_result
    use pound_suite_outcome, only: outcome_layout
+   use pound_separation, only: levels_coincide
    implicit none
    private
 
@@ -26,7 +28,7 @@ module pound_suite_context
       integer :: floor(2) = 0
       !> DOF of each end in its building's model.
       integer :: dof(2) = 0
-      !> Whether the two ends' levels coincide (EC8 4.4.2.7's factor 0.7).
+      !> Whether the two ends are floors whose levels coincide (EC8 4.4.2.7's factor 0.7).
       logical :: coincide = .false.
    end type suite_pair
 
@@ -95,7 +97,7 @@ contains
                      end if
                   end associate
                end do
-               pair(n)%coincide = abs(level(1) - level(2)) <= 1.0e-9_dp
+               pair(n)%coincide = levels_coincide(level(1), level(2), pair(n)%floor(1), pair(n)%floor(2))
             end do
          end associate
       end do

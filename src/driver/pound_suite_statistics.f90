@@ -11,10 +11,12 @@
 !>   from the uncoupled peak displacements at the pair's two ends and their stored uncoupled
 !>   histories (the no-contact gap needs `history` with 'u', or for a point between floors
 !>   `node_histories`; it is sampled every `output_every` steps), and for the suite from the
-!>   mean peak displacements (ABS, SRSS, EC8, DDC) and the mean of the per-motion no-contact
-!>   gaps. Elastic time-history peaks, no amplification factors. An end between floors (a
-!>   frame's column node) has its peak from its DOF's stored history (`node_histories`), the
-!>   largest |u| at the output steps; without it its pair's rules are n/a (-1).
+!>   mean peak displacements (ABS, SRSS, EC8, DDC, the design-code rules with the buildings'
+!>   factors, the setbacks) and the mean of the per-motion no-contact gaps. The peaks are the
+!>   uncoupled response-history peaks of the buildings as analysed (a yielding building's
+!>   inelastic ones, `separation_t%inelastic`). An end between floors (a frame's split column
+!>   node) has its DOF's peak |u| at every step (`response_point_peak`); the x0.7 / x0.5 of
+!>   coinciding floors apply only where both ends are floors at the same level.
 !> * the time-history threshold gap (with `&sweep` and a target): per motion, the smallest gap
 !>   of the sweep from which on the motion's own largest |lambda| meets the target, refined by
 !>   bisection (`pound_suite_refine`); for the suite, that of the suite mean. One value for
@@ -308,8 +310,8 @@ contains
    !> The separation rules of one pair from the peaks p1, p2 at its ends (`code_separation`:
    !> ABS, SRSS, EC8, DDC, and ASCE 7, EN 1998, IS 1893 with the buildings' factors f1, f2),
    !> keeping the no-contact and time-history gaps already in `sep`. A peak < 0 is not known
-   !> (a point between floors without node histories): then the pair's rules are n/a
-   !> (`computed` false; ABS, SRSS, EC8, DDC -1 as in /suite/separation).
+   !> (a point between floors the model has no node at): then the pair's rules are n/a
+   !> (`computed` false; ABS, SRSS, EC8, DDC, the peaks and setbacks -1 as in /suite/separation).
    pure subroutine suite_pair_rules(p1, p2, f1, f2, t1, t2, z1, z2, coincide, sep)
       !> Peak displacements at the two ends (m; < 0: not known).
       real(dp), intent(in) :: p1, p2
@@ -330,6 +332,8 @@ contains
          rules%srss = -1.0_dp
          rules%ec8 = -1.0_dp
          rules%ddc = -1.0_dp
+         rules%u = -1.0_dp
+         rules%setback = -1.0_dp
       else
          rules = code_separation(p1, p2, f1, f2, t1, t2, z1, z2, coincide)
       end if

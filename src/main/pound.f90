@@ -28,6 +28,7 @@ program pound
    use pound_deck, only: read_deck
    use pound_ground_motion, only: ground_motion_t
    use pound_run_case, only: case_options, case_result, run_case, deck_ground_motion
+   use pound_structure, only: structure_names
    use pound_sweep_joints, only: failed_joint_gaps
    use pound_sweep_joints_output, only: write_joint_sweep_tables
    use pound_suite, only: suite_result, run_suite
@@ -417,7 +418,8 @@ contains
          if (res%has_sweep) call write_sweep_column_table(lst, res%models, deck%sweep, res%sweep)
          if (joint_count() > 1) call write_joint_sweep_tables(lst, deck%sweep, res%joints, pair_labels(res%cs))
          if (size(deck%motions) == 1 .and. allocated(res%separation)) &
-            call write_run_separation(lst, pair_labels(res%cs), res%separation, per_joint=joint_count() > 1)
+            call write_run_separation(lst, pair_labels(res%cs), res%separation, per_joint=joint_count() > 1, &
+                                      names=structure_names(res%models))
          if (res%has_parameter_sweep) call write_study_tables(lst, res%models, res%parameter_sweep, &
                                                               deck%sweep%target, deck%sweep%target_quantities)
          if (res%has_law_study) call write_study_tables(lst, res%models, res%law_study, deck%sweep%target, &

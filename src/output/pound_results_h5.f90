@@ -67,7 +67,7 @@ module pound_results_h5
    use pound_config, only: deck_type, history_names, n_history_quantities, target_names, q_column_shear, q_ductility, &
                            q_column_moment
    use pound_building, only: building_model
-   use pound_structure, only: structure_model, structure_yields
+   use pound_structure, only: structure_model, structure_yields, structure_names
    use pound_analysis, only: analysis_result, history_sink
    use pound_analysis_plan, only: output_steps, steps_of
    use pound_contact, only: contact_system
@@ -295,7 +295,7 @@ contains
          if (.not. present(cs)) return
          if (size(separation) > 0 .and. size(deck%motions) == 1) &
             call write_separation_h5(h5, '/separation', reshape(separation, [1, size(separation)]), &
-                                     pair_labels(cs), .false., error)
+                                     pair_labels(cs), .false., error, structure_names(models))
          if (allocated(error) .or. .not. (present(sweep) .and. present(joints))) return
          if (size(joints) > 1 .and. size(separation) > 0 .and. size(deck%motions) == 1) &
             call h5_write_attr(h5, '/separation/time_history', 'rule', 'per pair, the threshold of its joint''s own '// &

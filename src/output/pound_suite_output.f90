@@ -50,7 +50,7 @@ module pound_suite_output
    use pound_config, only: history_names, n_history_quantities
    use pound_strings, only: counted, str, left_cell, right_cell, fixed_cell
    use pound_contact, only: contact_system
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_names
    use pound_influence, only: building_influence, max_abs_meaningful
    use pound_text_writer, only: text_writer
    use pound_listing, only: write_section, write_influence_tables, gap_cell, mm
@@ -62,7 +62,7 @@ module pound_suite_output
    use pound_suite_yield_output, only: write_suite_yield_listing, write_suite_yield_h5
    use pound_sweep_joints_output, only: write_suite_joint_tables, write_suite_joints_h5
    use pound_separation_output, only: write_separation_h5, write_separation_head, write_separation_rows, &
-                                      write_separation_legend
+                                      write_separation_legend, write_setbacks
    implicit none
    private
 
@@ -210,13 +210,13 @@ contains
       if (lst%first_ios /= 0) return
 
       call write_section(lst, 'Separation rules per contact pair [mm]')
-      call write_separation_legend(lst, .true.)
+      call write_separation_legend(lst, .true., suite%separation(nm + 1, :))
       write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  The suite row: rules on the mean peaks; no-contact gap: '// &
          'the largest over the motions'//over//' (the gap at which no motion makes contact); below each table the '// &
          'mean closing displacement: the mean of the motions'' no-contact gaps (some motion still makes contact there).'
       call lst%note()
       do ip = 1, size(suite%separation, 2)
-         call write_separation_head(lst, suite_pair_name(ip, cs), 'motion', wm)
+         call write_separation_head(lst, suite_pair_name(ip, cs), 'motion', wm, suite%separation(nm + 1, ip))
          do k = 1, nm + 1
             if (k <= nm) then
                if (suite%motion_failed(k)) then
@@ -234,6 +234,14 @@ contains
             call lst%note()
          end if
       end do
+      block
+         character(len=64) :: plabels(size(suite%separation, 2))
+
+         do ip = 1, size(plabels)
+            plabels(ip) = suite_pair_name(ip, cs)
+         end do
+         call write_setbacks(lst, structure_names(models), plabels, suite%separation(nm + 1, :), 'the suite''s mean ')
+      end block
       if (suite%has_sweep) then
          call write_section(lst, 'Suite gap sweep: largest |lambda| [%] over the targeted quantities')
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  mean: the suite mean of each quantity''s and '// &
@@ -458,7 +466,7 @@ contains
             end if
          end if
          call write_separation_h5(h5, '/suite/separation', suite%separation, &
-                                  suite_pair_names(size(suite%separation, 2), cs), .true., error)
+                                  suite_pair_names(size(suite%separation, 2), cs), .true., error, structure_names(models))
          if (.not. allocated(error)) call h5_write(h5, '/suite/separation/mean_closing', &
                                                    merge(suite%mean_closing, ieee_value(1.0_dp, ieee_quiet_nan), &
                                                          suite%mean_closing >= 0.0_dp), error, units='m')

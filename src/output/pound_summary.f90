@@ -13,9 +13,10 @@
 !>    frame also of the column segments' shear and end moments with the segment (storey,
 !>    column line) and time; the largest impact force on the building with its joint and time;
 !> 3. per contact pair: the no-contact gap, the time-history threshold gap of the sweep and
-!>    the code separation rules (ABS, SRSS, EC8, DDC with its correlation rho; `pair_rules`,
-!>    the one call of `pound_separation` here) on the uncoupled peaks of the facing floors (a
-!>    suite: its row of the suite, on the mean peaks);
+!>    the code separation rules (ABS, SRSS, DDC with its correlation rho, ASCE 7, EN 1998,
+!>    IS 1893) and the two buildings' setbacks on the uncoupled peaks of the facing points, the
+!>    location saying which peaks (`peaks_label`; a suite: its row of the suite, on the mean
+!>    peaks); then each building's property-line setback (`building_setbacks`);
 !> 4. collapses (counted for yielding buildings: buildings x analyses, then per analysis; a
 !>    suite gives its totals over the motions and per motion among its answer, the
 !>    single-motion counts are labelled with their motion), failed sweep gaps, warnings.
@@ -40,7 +41,7 @@ module pound_summary
    use pound_run_case, only: case_result
    use pound_sweep_joints, only: failed_joint_gaps
    use pound_suite, only: suite_result
-   use pound_separation, only: separation_t, no_contact_gap
+   use pound_separation, only: separation_t, no_contact_gap, peaks_label, building_setbacks
    use pound_structure, only: structure_yields
    use pound_summary_item, only: summary_item, summary_text_len, item, append, largest
    use pound_summary_yield, only: lambda_item, yield_items, suite_lambdas, suite_yield_items, suite_collapses
@@ -81,6 +82,7 @@ contains
          do ip = 1, res%cs%m
             call pair_items(ip)
          end do
+         call setback_items()
       end if
       if (allocated(res%unc%yielding)) then
          i = count(res%unc%yielding%collapse_storey > 0)
@@ -279,9 +281,9 @@ contains
                end if
                call th_item(p, s%time_history, 'suite sweep threshold on the mean (one gap for every joint)')
                if (s%abs >= 0.0_dp) then
-                  call rule_items(p, s, .true., 'suite mean peaks')
+                  call rule_items(p, s, .true., 'suite mean of the '//peaks_label(suite%separation(size(suite%names) + 1, :)))
                else
-                  call rule_items(p, s, .false., 'a pair end between floors: its peak needs &analysis node_histories')
+                  call rule_items(p, s, .false., 'a pair end between floors whose model has no node there')
                end if
             end associate
             return
@@ -309,11 +311,11 @@ contains
             if (ip <= size(res%separation)) then
                sep = res%separation(ip)
                have = sep%computed
-               why = 'the pair is between floors: its peak displacement is not kept'
+               why = 'a pair end between floors whose model has no node there: its peak is not known'
             end if
          end if
          if (have) then
-            call rule_items(p, sep, .true., 'uncoupled peaks of the facing floors')
+            call rule_items(p, sep, .true., peaks_label(res%separation)//' of the facing points')
          else
             call rule_items(p, sep, .false., why)
          end if
@@ -373,6 +375,8 @@ contains
                                                    'IS 1893-1 7.11.3 (R)']
          character(len=*), parameter :: factor(6) = [character(len=20) :: '', '', '', 'cd', 'behaviour_factor', &
                                                      'response_reduction']
+         character(len=*), parameter :: side_quantity(2) = [character(len=13) :: 'setback_left', 'setback_right']
+         character(len=*), parameter :: side_name(2) = [character(len=5) :: 'left', 'right']
          real(dp) :: v(6)
          logical :: valid(6)
          integer :: r
@@ -398,7 +402,52 @@ contains
             call add(item('pair', p, 'ddc_rho', p//': DDC correlation rho', unit='-', location=where, &
                           available=.false.))
          end if
+         do r = 1, 2
+            if (have) then
+               call add(item('pair', p, trim(side_quantity(r)), p//': property-line setback of the '// &
+                             trim(side_name(r))//' building', 1000.0_dp*sep%setback(r), 'mm', &
+                             trim(merge('Cd u / Ie', 'u (no cd)', sep%setback_amplified(r)))//' of the '//where))
+            else
+               call add(item('pair', p, trim(side_quantity(r)), p//': property-line setback of the '// &
+                             trim(side_name(r))//' building', unit='mm', location=where, available=.false.))
+            end if
+         end do
       end subroutine rule_items
+
+      !> Each building's property-line setback (ASCE 7-16 12.12.2 style): its largest setback
+      !> over the pairs it faces (a suite: its row of the suite, on the mean peaks).
+      subroutine setback_items()
+         type(separation_t), allocatable :: sep(:)
+         character(len=:), allocatable :: what
+         real(dp) :: setback
+         integer :: jb, k, e
+         logical :: amplified
+
+         if (present(suite)) then
+            sep = suite%separation(size(suite%names) + 1, :)
+         else if (allocated(res%separation)) then
+            sep = res%separation
+         else
+            return
+         end if
+         if (size(sep) == 0) return
+         what = peaks_label(sep)
+         if (present(suite)) what = 'suite mean of the '//what
+         do jb = 1, size(res%models)
+            setback = building_setbacks(sep, jb, size(res%models))
+            if (.not. (setback >= 0.0_dp)) cycle
+            amplified = .false.
+            do k = 1, size(sep)
+               do e = 1, 2
+                  if (sep(k)%building(e) == jb .and. sep(k)%setback_amplified(e)) amplified = .true.
+               end do
+            end do
+            call add(item('building', res%models(jb)%name, 'setback', res%models(jb)%name// &
+                          ': property-line setback (ASCE 7 12.12.2 style)', 1000.0_dp*setback, 'mm', &
+                          'largest over its facing points of its own delta_M = '// &
+                          trim(merge('Cd u / Ie', 'u (no cd)', amplified))//', u: '//what))
+         end do
+      end subroutine setback_items
 
    end subroutine build_summary
 
@@ -644,6 +693,10 @@ contains
             name = 'DDC'
          case ('ddc_rho')
             name = '(DDC rho'
+         case ('setback_left')
+            name = 'setback left'
+         case ('setback_right')
+            name = 'setback right'
          case default
             name = trim(quantity)
          end select

@@ -27,7 +27,8 @@ expect_equal("frames listing and results (${out}${err})" 0 "${rc}")
 run_pound(s ${SOURCE_DIR}/tests/data/listing/long_names_suite.nml)
 expect_equal("pound exit, suite (${s_err})" 0 "${s_rc}")
 file(READ ${WORK_DIR}/long_names_suite.out listing)
-expect_contains("separation table named by pair" "${listing}" "  pair ${RC}:2-${ST}:2\n")
+expect_contains("separation table named by pair" "${listing}"
+                "  pair ${RC}:2-${ST}:2  (u1 elastic, u2 elastic; floor levels coincide: EN 1998 x 0.7, IS 1893 x 0.5)\n")
 expect_contains("separation table in mm" "${listing}" "Separation rules per contact pair [mm]")
 execute_process(COMMAND ${PY} ${CHECK} ${WORK_DIR}/long_names_suite.out ${WORK_DIR}/long_names_suite.h5 30 2
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
