@@ -29,10 +29,11 @@ if(SERIAL_EXE)
   expect_equal("serial build: exit status (${serial_err})" ${STATUS} "${serial_rc}")
   list(APPEND dirs serial)
 endif()
-# Listing lines that carry wall-clock times or the date are left out of the comparison.
+# Listing lines that carry wall-clock times or the date (the runs', the sweep's, the multiple-stripe
+# analysis's) are left out of the comparison.
 function(listing_of var dir)
   file(READ ${WORK_DIR}/${dir}/${stem}.out text)
-  string(REGEX REPLACE "[^\n]*(run on |integration:|s for all coupled runs)[^\n]*" "" text "${text}")
+  string(REGEX REPLACE "[^\n]*(run on |integration:|s for all coupled runs|multiple-stripe analysis:)[^\n]*" "" text "${text}")
   set(${var} "${text}" PARENT_SCOPE)
 endfunction()
 listing_of(reference one)
