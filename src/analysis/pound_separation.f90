@@ -333,17 +333,21 @@ contains
       !> The building (index in deck order) and the number of buildings.
       integer, intent(in) :: ib, nb
       integer :: ip, e
+      logical :: found
 
       setback = not_computed(0.0_dp)
       if (ib < 1 .or. ib > nb) return
+      found = .false.
       do ip = 1, size(sep)
          if (.not. sep(ip)%computed) cycle
          do e = 1, 2
             if (sep(ip)%building(e) /= ib) cycle
-            if (setback >= 0.0_dp) then
+            ! (no comparison with a NaN: it traps under -ffpe-trap=invalid)
+            if (found) then
                setback = max(setback, sep(ip)%setback(e))
             else
                setback = sep(ip)%setback(e)
+               found = .true.
             end if
          end do
       end do

@@ -435,7 +435,7 @@ contains
          if (present(suite)) what = 'suite mean of the '//what
          do jb = 1, size(res%models)
             setback = building_setbacks(sep, jb, size(res%models))
-            if (.not. (setback >= 0.0_dp)) cycle
+            if (ieee_is_nan(setback)) cycle
             amplified = .false.
             do k = 1, size(sep)
                do e = 1, 2
