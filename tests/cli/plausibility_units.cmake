@@ -84,6 +84,12 @@ foreach(deck ${shipped})
   if(stem MATCHES "^suite_")
     continue()
   endif()
+  # A deck that reads the records of ../shared runs only where they are (a fresh clone may
+  # stand without them).
+  file(READ ${deck} deck_text)
+  if(deck_text MATCHES "shared/records" AND NOT EXISTS ${SOURCE_DIR}/../shared/records)
+    continue()
+  endif()
   run_pound(s ${deck} -o shipped --quiet)
   expect_equal("${stem}: exit status (${s_err})" 0 "${s_rc}")
   file(READ ${WORK_DIR}/shipped/${stem}.out listing)
