@@ -55,7 +55,6 @@ module pound_closed_steps
    use pound_band_lapack, only: dsygv
    use pound_modal_step, only: modal_step_response
    use pound_integrator, only: integrator
-   use pound_newmark, only: newmark_state, newmark_u, newmark_v, newmark_u_at, newmark_v_at, newmark_put_state
    use pound_contact, only: contact_system
    use pound_contact_pair, only: end_sign
    use pound_law_smooth, only: is_smooth
@@ -339,7 +338,7 @@ contains
    end subroutine building_modes
 
    !> Try the step from the integrators' state as an exact step of the closed joints (those
-   !> carrying force). On success the integrators hold the step's end (`newmark_put_state`)
+   !> carrying force). On success the integrators hold the step's end (`integrator%put_state`)
    !> and `cs%r_new`, `cs%x_new` the joints' forces at the end (for `contact_commit`); `taken`
    !> is false when the step must be substepped (nothing changed then).
    subroutine closed_step(cl, st, models, cs, ag0, ag1, step, taken, rec, t0)
@@ -363,18 +362,20 @@ contains
       type(response_record), intent(inout) :: rec(:)
       real(dp), intent(in) :: t0
 
+      integer :: ib
+
       taken = .false.
       if (.not. cl%on) return
-      select type (st)
-      type is (newmark_state)
-         call closed_newmark(cl, st, models, cs, ag0, ag1, step, taken, rec, t0)
-      end select
+      do ib = 1, size(st)
+         if (.not. st(ib)%takes_state()) return
+      end do
+      call closed_take(cl, st, models, cs, ag0, ag1, step, taken, rec, t0)
    end subroutine closed_step
 
-   !> `closed_step` of Newmark integrators.
-   subroutine closed_newmark(cl, st, models, cs, ag0, ag1, step, taken, rec, t0)
+   !> `closed_step` of integrators that take in a state (`integrator%takes_state`).
+   subroutine closed_take(cl, st, models, cs, ag0, ag1, step, taken, rec, t0)
       type(closed_stepper), intent(inout) :: cl
-      type(newmark_state), intent(inout), target :: st(:)
+      class(integrator), intent(inout), target :: st(:)
       type(structure_model), intent(in) :: models(:)
       type(contact_system), intent(inout) :: cs
       real(dp), intent(in) :: ag0, ag1
@@ -410,8 +411,8 @@ contains
       if (cl%last /= step - 1) then
          do ib = 1, cl%nb
             associate (cb => cl%b(ib))
-               u => newmark_u(st(ib))
-               v => newmark_v(st(ib))
+               u => st(ib)%u_view()
+               v => st(ib)%v_view()
                cb%xn(:, 1) = u
                cb%xn(:, 2) = v
                call mvk(cb%nm, cb%n, 2, cb%phimt, cb%xn, cb%xm)
@@ -498,7 +499,7 @@ contains
             bb = cs%ends(2*e - 1, k)
             if (bb == 0) cycle
             i = cs%ends(2*e, k)
-            w0 = newmark_u_at(st(bb), i)
+            w0 = st(bb)%u_at(i)
             w1 = cl%ue(i, bb)
             cl%jw(bb) = cl%jw(bb) - end_sign(e)*0.5_dp*(cs%joint(k)%r + cs%r_new(k))*(w1 - w0)
          end do
@@ -507,9 +508,9 @@ contains
       ! without mass have none), strain (sum omega^2 q^2 + g^T K_ss^-1 g)/2.
       do ib = 1, cl%nb
          associate (n => models(ib)%n, cb => cl%b(ib), o => cl%b(ib)%off)
-            call newmark_put_state(st(ib), cl%ue(1:n, ib), cl%ve(1:n, ib), cl%ae(1:n, ib), &
-                                   0.5_dp*sum(cl%qd(o + 1:o + cb%nm)**2), &
-                                   0.5_dp*(sum(cb%lam*cl%q(o + 1:o + cb%nm)**2) + cl%ez(ib)), cl%win(ib), cl%jw(ib))
+            call st(ib)%put_state(cl%ue(1:n, ib), cl%ve(1:n, ib), cl%ae(1:n, ib), &
+                                  0.5_dp*sum(cl%qd(o + 1:o + cb%nm)**2), &
+                                  0.5_dp*(sum(cb%lam*cl%q(o + 1:o + cb%nm)**2) + cl%ez(ib)), cl%win(ib), cl%jw(ib))
             ! The next closed step starts from these coordinates.
             cl%g0(1:cb%ns, ib) = cb%decay*cl%g0(1:cb%ns, ib)
          end associate
@@ -535,7 +536,7 @@ contains
       cs%idle = .false.
       cl%steps = cl%steps + 1
       taken = .true.
-   end subroutine closed_newmark
+   end subroutine closed_take
 
    !> One pass of ms substeps of length h (coefficients cf, the set's implicit forces hk)
    !> from cl%q, cl%qd, cl%p0: the end in cl%q, cl%qd, cl%p1, cl%r, the input work in cl%win;

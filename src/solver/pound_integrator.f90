@@ -101,6 +101,13 @@ module pound_integrator
       procedure :: show_lane => no_lane
       !> Lanes: bring lane l to rest (a motion dropped from the batch).
       procedure :: drop_lane => no_lane
+      !> Steps computed elsewhere (the closed steps of `pound_closed_steps`): whether
+      !> `put_state` takes in such a step's end.
+      procedure :: takes_state => no_takes_state
+      !> Put in the end of a step computed elsewhere: u, v, a, the kinetic and strain energy
+      !> of that state, the step's input work and the work of the joints' forces on the model
+      !> (the damping energy is the balance). The default does nothing (`takes_state` false).
+      procedure :: put_state => no_put_state
    end type integrator
 
    abstract interface
@@ -294,6 +301,29 @@ contains
 
       if (same_type_as(st, st) .or. l < 1) return
    end subroutine no_lane
+
+   !> Default `takes_state`: no.
+   pure logical function no_takes_state(st)
+      !> Integrator.
+      class(integrator), intent(in) :: st
+
+      no_takes_state = .not. same_type_as(st, st)
+   end function no_takes_state
+
+   !> Default `put_state`: nothing (`takes_state` is false).
+   pure subroutine no_put_state(st, u, v, a, kinetic, strain, work, joint_work)
+      !> Integrator.
+      class(integrator), intent(inout) :: st
+      !> Displacement, velocity and acceleration at the end of the step (n each).
+      real(dp), intent(in) :: u(:), v(:), a(:)
+      !> Kinetic and strain energy of that state (kJ).
+      real(dp), intent(in) :: kinetic, strain
+      !> Input work of the step and work of the joints' forces on the model (kJ).
+      real(dp), intent(in) :: work, joint_work
+
+      if (same_type_as(st, st) .or. size(u) + size(v) + size(a) < 0) return
+      if (kinetic + strain + work + joint_work < 0.0_dp) return
+   end subroutine no_put_state
 
    !> The velocity per displacement increment of the trapezoidal rule, 2/dt (1/s): the
    !> default rate of a joint's compression when no integrator is given

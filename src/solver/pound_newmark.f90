@@ -176,6 +176,8 @@ module pound_newmark
       procedure :: advance_lanes => newmark_advance_lanes
       procedure :: show_lane => newmark_show_lane
       procedure :: drop_lane => newmark_drop_lane
+      procedure :: takes_state => newmark_takes_state
+      procedure :: put_state => newmark_put_state
    end type newmark_state
 
    interface
@@ -493,6 +495,14 @@ contains
       st%pending = .false.
       st%modal_valid = .false.
    end subroutine newmark_set_state
+
+   !> `takes_state`: Newmark takes in the end of a step computed elsewhere (`newmark_put_state`).
+   pure logical function newmark_takes_state(st)
+      !> Integrator state.
+      class(newmark_state), intent(in) :: st
+
+      newmark_takes_state = same_type_as(st, st)
+   end function newmark_takes_state
 
    !> Put in the end of a step computed elsewhere (an exact step with joints closed,
    !> pound_closed_steps): u, v, a, with the kinetic and strain energy of that state (the
