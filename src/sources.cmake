@@ -40,18 +40,20 @@ set(POUND_SOURCES
   solver/pound_newmark_batch.f90
   # solver: HHT-alpha; the integrator an analysis plan names
   solver/pound_hht.f90 solver/pound_integrators.f90
-  # contact: joint laws, condensation and the per-step LCP, Lemke, enumeration
+  # lcp: the complementarity solvers (Lemke, the active-set method, enumeration of the
+  # complementary bases), their tallies, and a dense LCP with its storage
+  lcp/pound_lemke.f90 lcp/pound_lcp_statistics.f90 lcp/pound_lcp_enumerate.f90 lcp/pound_lcp_active_set.f90
+  lcp/pound_lcp_dense.f90
+  # contact: joint laws, condensation and the per-step LCP
   contact/pound_joint_law.f90 contact/pound_contact_law.f90 contact/pound_law_elastic.f90
   contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90
   contact/pound_law_impact.f90 contact/pound_law_smooth.f90 contact/pound_law_kelvin.f90 contact/pound_law_hertz.f90
   contact/pound_law_hertz_damp.f90 contact/pound_law_jankowski.f90
-  contact/pound_law_registry.f90 contact/pound_lemke.f90 contact/pound_contact_pair.f90
-  contact/pound_joint_state.f90 contact/pound_lcp_statistics.f90 contact/pound_contact_lcp.f90
+  contact/pound_law_registry.f90 contact/pound_contact_pair.f90
+  contact/pound_joint_state.f90 contact/pound_contact_lcp.f90
   contact/pound_contact_system.f90 contact/pound_contact_smooth.f90 contact/pound_contact.f90
   # contact: the contact half-period of a joint (substep count), ends without mass condensed
   contact/pound_contact_period.f90
-  contact/pound_lcp_enumerate.f90
-  contact/pound_lcp_active_set.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
   analysis/pound_response.f90 analysis/pound_storey_yield.f90 analysis/pound_storey_yield_stick.f90 analysis/pound_storey_yield_coupled.f90 analysis/pound_storey_yield_hinges.f90 analysis/pound_storey_yield_energy.f90 analysis/pound_storey_collapse.f90 analysis/pound_residual_settle.f90 analysis/pound_step_retry.f90 analysis/pound_closed_kernels.f90 analysis/pound_closed_steps.f90 analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_analysis_loop.f90 analysis/pound_influence.f90
   analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90 analysis/pound_joint_study.f90

@@ -33,7 +33,8 @@ module pound_storey_yield
    use pound_analysis_plan, only: analysis_plan
    use pound_contact, only: contact_system, contact_step, contact_release
    use pound_response, only: response_record, q_shear, history_sink, response_flush
-   use pound_lemke, only: lemke_workspace, lemke_report, lemke_init, lemke_solve, lemke_status_name
+   use pound_lemke, only: lemke_report, lemke_status_name
+   use pound_lcp_dense, only: dense_lcp, dense_lcp_init, dense_lcp_reserve, dense_lcp_solve
    implicit none
    private
 
@@ -42,7 +43,7 @@ module pound_storey_yield
    public :: stick_khat, stick_active_set
    public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step
    ! (Used by the submodules: gfortran drops private procedures a submodule calls.)
-   public :: drifts, step_drifts, column_of, check_step, grow_lcp, solve_lcp
+   public :: drifts, step_drifts, column_of, check_step, solve_lcp
 
    !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
    real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
@@ -82,10 +83,8 @@ module pound_storey_yield
       integer, allocatable :: slot(:)
       integer :: n_slots = 0
       real(dp) :: col_dt = -1.0_dp
-      !> LCP storage.
-      type(lemke_workspace) :: ws
-      real(dp), allocatable :: mat(:, :), q(:), z(:), w(:)
-      logical, allocatable :: guess(:)
+      !> The LCP of the set's rows (`pound_lcp_dense`).
+      type(dense_lcp) :: lcp
       !> Collapse: drift limit of each storey (collapse_drift x height; m), the storey that
       !> passed it first (0: none) and when (s).
       real(dp), allocatable :: limit(:)
@@ -111,11 +110,10 @@ module pound_storey_yield
       !> A DOF vector of work (the coupled step's end-of-step increment).
       real(dp), allocatable :: tmp(:)
       !> The coupled LCP of joints and storeys (`yield_coupled`; held by the first building's
-      !> set): matrix, vector, solution, w, reference, warm start, building and storey of each
-      !> storey row, the joints' coupling G(k, s) = B_k^T Khat^{-1} b_s (m, rows).
-      type(lemke_workspace) :: cws
-      real(dp), allocatable :: cmat(:, :), cq(:), cz(:), cw(:), cref(:), cg(:, :)
-      logical, allocatable :: cguess(:)
+      !> set), the building and storey of each storey row, the joints' coupling
+      !> G(k, s) = B_k^T Khat^{-1} b_s (m, rows).
+      type(dense_lcp) :: clcp
+      real(dp), allocatable :: cg(:, :)
       integer, allocatable :: cb(:), cj(:)
       !> Plastic hinges of a frame (pound_storey_yield_hinges): the rows are the hinges' end
       !> rotations (k = 4EI/L, fy the yield moment, r = 0), each coupled by kc = 2EI/L to the
@@ -387,8 +385,7 @@ contains
                    source=0.0_dp)
       end if
       i = min(n, 16)
-      call lemke_init(ys%ws, i)
-      allocate (ys%mat(i, i), ys%q(i), ys%z(i), ys%w(i), ys%guess(i))
+      call dense_lcp_init(ys%lcp, i)
    end subroutine yield_set_init
 
    !> Set up the storeys of every building; `inelastic`: some building has bilinear storeys
@@ -710,7 +707,7 @@ contains
       integer :: a, b, i, j, m
 
       m = ys%na
-      call grow_lcp(ys, m)
+      call dense_lcp_reserve(ys%lcp, m, m)
       ys%xdp = 0.0_dp
       ys%dpl = 0.0_dp
       ! mat = S (K - D A) S with A_ij = k_j b_i^T Khat^{-1} b_j, D = diag((1-r) k), S the sides.
@@ -719,36 +716,24 @@ contains
          call column_of(ys, st, j, ys%work)
          do a = 1, m
             i = ys%act(a)
-            ys%mat(a, b) = -real(ys%side(i)*ys%side(j), dp)*(1.0_dp - ys%r(i))*ys%k(i)*ys%k(j)*recover(ys%rows, i, ys%work)
+            ys%lcp%mat(a, b) = -real(ys%side(i)*ys%side(j), dp)*(1.0_dp - ys%r(i))*ys%k(i)*ys%k(j)*recover(ys%rows, i, ys%work)
          end do
-         ys%mat(b, b) = ys%mat(b, b) + ys%k(j)
+         ys%lcp%mat(b, b) = ys%lcp%mat(b, b) + ys%k(j)
          h = (1.0_dp - ys%r(j))*ys%fy(j)
          ftr = ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j))
-         ys%q(b) = h - real(ys%side(j), dp)*(ftr - ys%r(j)*ys%k(j)*ys%dtr(j))
+         ys%lcp%q(b) = h - real(ys%side(j), dp)*(ftr - ys%r(j)*ys%k(j)*ys%dtr(j))
       end do
       call solve_lcp(ys, m, t, step, label, error)
       if (allocated(error)) return
       do b = 1, m
          j = ys%act(b)
-         ys%dpl(j) = real(ys%side(j), dp)*ys%z(b)
+         ys%dpl(j) = real(ys%side(j), dp)*ys%lcp%z(b)
          if (ys%dpl(j) == 0.0_dp) cycle
          call column_of(ys, st, j, ys%work)
          ys%xdp = ys%xdp + (ys%k(j)*ys%dpl(j))*ys%work
       end do
       call step_drifts(ys, u, du)
    end subroutine solve_rows
-
-   !> Room for an LCP of m rows in the set's workspace.
-   subroutine grow_lcp(ys, m)
-      type(storey_yield_set), intent(inout) :: ys
-      integer, intent(in) :: m
-
-      if (m <= ys%ws%m_max) return
-      call lemke_init(ys%ws, max(m, 2*ys%ws%m_max))
-      deallocate (ys%mat, ys%q, ys%z, ys%w, ys%guess)
-      allocate (ys%mat(ys%ws%m_max, ys%ws%m_max), ys%q(ys%ws%m_max), ys%z(ys%ws%m_max), &
-                ys%w(ys%ws%m_max), ys%guess(ys%ws%m_max))
-   end subroutine grow_lcp
 
    !> Lemke's method on the assembled LCP (`mat`, `q`) of m rows (storeys or hinges): `z`,
    !> the tallies, an error naming the building, time and step when it is not solved.
@@ -761,8 +746,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(lemke_report) :: rep
 
-      ys%guess(1:m) = .true.
-      call lemke_solve(ys%ws, m, ys%mat, ys%q, ys%z, ys%w, rep, active_guess=ys%guess(1:m))
+      ys%lcp%guess(1:m) = .true.
+      call dense_lcp_solve(ys%lcp, m, rep)
       ys%solves = ys%solves + 1
       ys%lcp_rows = ys%lcp_rows + m
       ys%max_rows = max(ys%max_rows, m)

@@ -103,8 +103,7 @@ contains
          n = nj + ns
          call coupled_workspace(ys(1), n, cs%m)
          call assemble_coupled(ys, st, cs, na, nj, n)
-         call lemke_solve(ys(1)%cws, n, ys(1)%cmat, ys(1)%cq, ys(1)%cz, ys(1)%cw, rep, &
-                          active_guess=ys(1)%cguess(1:n))
+         call dense_lcp_solve(ys(1)%clcp, n, rep)
          call statistics_count_solve(cs%stats, rep%pivots, rep%status == LEMKE_TRIVIAL, rep%warm_started)
          cs%stats%largest_lcp = max(cs%stats%largest_lcp, n)
          if ((rep%status /= LEMKE_SOLVED .and. rep%status /= LEMKE_TRIVIAL) .or. &
@@ -117,8 +116,8 @@ contains
                                 ', too large to enumerate (reduce dt)')
                return
             end if
-            call lcp_enumerate(ys(1)%cmat(1:n, 1:n), ys(1)%cq(1:n), nsol, z=ys(1)%cz(1:n), &
-                               reference=ys(1)%cref(1:n), error=error)
+            call lcp_enumerate(ys(1)%clcp%mat(1:n, 1:n), ys(1)%clcp%q(1:n), nsol, z=ys(1)%clcp%z(1:n), &
+                               reference=ys(1)%clcp%ref(1:n), error=error)
             if (allocated(error)) return
             if (nsol == 0) then
                call fatal_error(error, 'the coupled LCP of '//str(na)//' joints and '//str(ns)//' yielding storeys '// &
@@ -131,10 +130,10 @@ contains
          ! The solution: joints' forces and plastic increments, storeys' plastic increments.
          cs%r_new = 0.0_dp
          cs%x_new = 0.0_dp
-         cs%r_new(cs%act(1:na)) = ys(1)%cz(1:na)
+         cs%r_new(cs%act(1:na)) = ys(1)%clcp%z(1:na)
          do a = 1, na
             k = cs%act(a)
-            if (cs%yrow(k) > 0) cs%x_new(k) = ys(1)%cz(cs%yrow(k))/cs%pair(k)%law%stiffness
+            if (cs%yrow(k) > 0) cs%x_new(k) = ys(1)%clcp%z(cs%yrow(k))/cs%pair(k)%law%stiffness
          end do
          do ib = 1, size(ys)
             if (ys(ib)%n > 0) ys(ib)%dpl = 0.0_dp
@@ -142,7 +141,7 @@ contains
          do s = nj + 1, n
             associate (y => ys(ys(1)%cb(s)))
                j = ys(1)%cj(s)
-               y%dpl(j) = real(y%side(j), dp)*ys(1)%cz(s)
+               y%dpl(j) = real(y%side(j), dp)*ys(1)%clcp%z(s)
             end associate
          end do
          call end_drifts(ys, st, cs)
@@ -180,13 +179,13 @@ contains
       end if
 
       ! Every row checked: the assembled LCP (relative to ||q||) and the joints left out.
-      call lcp_evaluate(n, ys(1)%cmat, ys(1)%cq, ys(1)%cz, ys(1)%cw, resid)
-      resid = resid*max(maxval(abs(ys(1)%cq(1:n))), tiny(1.0_dp))
+      call lcp_evaluate(n, ys(1)%clcp%mat, ys(1)%clcp%q, ys(1)%clcp%z, ys(1)%clcp%w, resid)
+      resid = resid*max(maxval(abs(ys(1)%clcp%q(1:n))), tiny(1.0_dp))
       do k = 1, cs%m
          if (cs%in_lcp(k) .or. cs%joint(k)%fractured) cycle
          resid = max(resid, -min(0.0_dp, opening(k)))
       end do
-      resid = resid/max(qnorm, maxval(abs(ys(1)%cq(1:n))))
+      resid = resid/max(qnorm, maxval(abs(ys(1)%clcp%q(1:n))))
       cs%stats%residual_max = max(cs%stats%residual_max, resid)
       if (nonconvex) cs%stats%nonconvex = cs%stats%nonconvex + 1
       if (.not. (resid <= residual_limit)) then
@@ -231,7 +230,7 @@ contains
 
          w = cs%q(k)
          do a = 1, na
-            w = w + cs%f(k, cs%act(a))*ys(1)%cz(a)
+            w = w + cs%f(k, cs%act(a))*ys(1)%clcp%z(a)
          end do
          do s = nj + 1, n
             associate (y => ys(ys(1)%cb(s)))
@@ -306,18 +305,14 @@ contains
    subroutine coupled_workspace(w, n, m)
       type(storey_yield_set), intent(inout) :: w
       integer, intent(in) :: n, m
-      integer :: nmax
+      logical :: grew
 
-      if (allocated(w%cmat)) then
-         if (size(w%cmat, 1) >= n .and. size(w%cg, 1) >= m) return
-         nmax = max(n, 2*size(w%cmat, 1))
-         deallocate (w%cmat, w%cq, w%cz, w%cw, w%cref, w%cg, w%cguess, w%cb, w%cj)
-      else
-         nmax = max(n, 16)
-      end if
-      call lemke_init(w%cws, nmax)
-      allocate (w%cmat(nmax, nmax), w%cq(nmax), w%cz(nmax), w%cw(nmax), w%cref(nmax), w%cg(max(m, 1), nmax), &
-                w%cguess(nmax), w%cb(nmax), w%cj(nmax))
+      call dense_lcp_reserve(w%clcp, n, 16, grew)
+      if (.not. grew .and. size(w%cg, 1) >= m) return
+      if (allocated(w%cg)) deallocate (w%cg, w%cb, w%cj)
+      associate (nmax => w%clcp%ws%m_max)
+         allocate (w%cg(max(m, 1), nmax), w%cb(nmax), w%cj(nmax))
+      end associate
    end subroutine coupled_workspace
 
    !> The coupled LCP (module comment) from the joints' assembled rows (cs%mat, cs%qa: nj rows,
@@ -330,13 +325,13 @@ contains
       real(dp) :: g, h, ftr, shift
       integer :: ib, j, i, k, a, s, s2, e, sg
 
-      associate (mat => ys(1)%cmat, q => ys(1)%cq)
+      associate (mat => ys(1)%clcp%mat, q => ys(1)%clcp%q)
          mat(1:n, 1:n) = 0.0_dp
          if (nj > 0) then
             mat(1:nj, 1:nj) = cs%mat(1:nj, 1:nj)
             q(1:nj) = cs%qa(1:nj)
-            ys(1)%cguess(1:nj) = cs%guess(1:nj)
-            ys(1)%cref(1:nj) = cs%zref(1:nj)
+            ys(1)%clcp%guess(1:nj) = cs%guess(1:nj)
+            ys(1)%clcp%ref(1:nj) = cs%zref(1:nj)
          end if
          s = nj
          do ib = 1, size(ys)
@@ -387,8 +382,8 @@ contains
             ftr = ys(ib)%f(j) + ys(ib)%k(j)*(ys(ib)%dtr(j) - ys(ib)%d(j))
             q(s) = (h - real(sg, dp)*(ftr - ys(ib)%r(j)*ys(ib)%k(j)*ys(ib)%dtr(j)))/ys(ib)%k(j) - &
                    real(sg, dp)*(1.0_dp - ys(ib)%r(j))*shift
-            ys(1)%cguess(s) = .true.
-            ys(1)%cref(s) = 0.0_dp
+            ys(1)%clcp%guess(s) = .true.
+            ys(1)%clcp%ref(s) = 0.0_dp
          end do
       end associate
 
@@ -405,7 +400,7 @@ contains
          real(dp) :: sij
          integer :: a, k, s2, i
 
-         associate (mat => ys(1)%cmat, q => ys(1)%cq)
+         associate (mat => ys(1)%clcp%mat, q => ys(1)%clcp%q)
             do a = 1, na
                k = cs%act(a)
                mat(a, s) = -real(sg, dp)*ys(1)%cg(k, s)
@@ -423,8 +418,8 @@ contains
             q(s) = (y%fy(j) - real(sg, dp)*(y%f(j) + y%k(j)*(y%dtr(j) - y%d(j)) + &
                                             y%kc(j)*(y%dtr(y%mate(j)) - y%d(y%mate(j))) - y%hk(j)*y%p(j)) - &
                   real(sg, dp)*shift)/y%k(j)
-            ys(1)%cguess(s) = .true.
-            ys(1)%cref(s) = 0.0_dp
+            ys(1)%clcp%guess(s) = .true.
+            ys(1)%clcp%ref(s) = 0.0_dp
          end associate
       end subroutine hinge_entries
    end subroutine assemble_coupled

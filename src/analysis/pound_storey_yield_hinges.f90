@@ -84,7 +84,7 @@ contains
       integer :: a, b, i, j, m
 
       m = ys%na
-      call grow_lcp(ys, m)
+      call dense_lcp_reserve(ys%lcp, m, m)
       ! The trial moments (no plastic increment of this step).
       ys%dpl = 0.0_dp
       do b = 1, m
@@ -93,17 +93,17 @@ contains
          do a = 1, m
             i = ys%act(a)
             s = real(ys%side(i)*ys%side(j), dp)
-            ys%mat(a, b) = -s*(ys%k(i)*recover(ys%rows, i, ys%work) + ys%kc(i)*recover(ys%rows, ys%mate(i), ys%work))
-            if (i == j) ys%mat(a, b) = ys%mat(a, b) + ys%k(j) + ys%hk(j)
-            if (i == ys%mate(j)) ys%mat(a, b) = ys%mat(a, b) + s*ys%kc(j)
+            ys%lcp%mat(a, b) = -s*(ys%k(i)*recover(ys%rows, i, ys%work) + ys%kc(i)*recover(ys%rows, ys%mate(i), ys%work))
+            if (i == j) ys%lcp%mat(a, b) = ys%lcp%mat(a, b) + ys%k(j) + ys%hk(j)
+            if (i == ys%mate(j)) ys%lcp%mat(a, b) = ys%lcp%mat(a, b) + s*ys%kc(j)
          end do
-         ys%q(b) = ys%fy(j) - real(ys%side(j), dp)*hinge_force(ys, j, ys%dtr)
+         ys%lcp%q(b) = ys%fy(j) - real(ys%side(j), dp)*hinge_force(ys, j, ys%dtr)
       end do
       call solve_lcp(ys, m, t, step, label, error)
       if (allocated(error)) return
       do b = 1, m
          j = ys%act(b)
-         ys%dpl(j) = real(ys%side(j), dp)*ys%z(b)
+         ys%dpl(j) = real(ys%side(j), dp)*ys%lcp%z(b)
       end do
       call hinge_loads(ys, st)
       call step_drifts(ys, u, du)
