@@ -55,7 +55,13 @@ set(POUND_SOURCES
   # contact: the contact half-period of a joint (substep count), ends without mass condensed
   contact/pound_contact_period.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
-  analysis/pound_response.f90 analysis/pound_storey_yield.f90 analysis/pound_storey_yield_stick.f90 analysis/pound_storey_yield_coupled.f90 analysis/pound_storey_yield_hinges.f90 analysis/pound_storey_yield_energy.f90 analysis/pound_storey_collapse.f90 analysis/pound_residual_settle.f90 analysis/pound_step_retry.f90 analysis/pound_closed_kernels.f90 analysis/pound_closed_steps.f90 analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_analysis_loop.f90 analysis/pound_influence.f90
+  analysis/pound_response.f90 analysis/pound_storey_yield.f90 analysis/pound_storey_yield_stick.f90 analysis/pound_storey_yield_coupled.f90 analysis/pound_storey_yield_hinges.f90 analysis/pound_storey_yield_energy.f90 analysis/pound_storey_collapse.f90 analysis/pound_residual_settle.f90
+  # stepping: the step policies (how the time loop takes a step: uniform, exact free steps,
+  # impact substeps, closed steps and their kernels, the retry around any of them)
+  stepping/pound_step_policy.f90 stepping/pound_step_retry.f90 stepping/pound_step_exact.f90 stepping/pound_step_impact.f90
+  stepping/pound_closed_kernels.f90 stepping/pound_closed_steps.f90 stepping/pound_step_closed.f90
+  # analyses: the time loop, influence coefficients
+  analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_analysis_loop.f90 analysis/pound_influence.f90
   analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90 analysis/pound_joint_study.f90
   # analyses: the uncoupled runs of several motions at once
   analysis/pound_analysis_batch.f90

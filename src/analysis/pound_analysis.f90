@@ -1,8 +1,9 @@
 !> The analyses a deck asks for: the buildings uncoupled (no contact) and coupled.
 !>
 !> Each building is integrated with Newmark's average acceleration method; in the coupled
-!> analysis the contact forces of every step come from the step's LCP (pound_contact; a step
-!> whose solve fails is retried with substeps, pound_step_retry). The response record keeps
+!> analysis the contact forces of every step come from the step's LCP (pound_contact). How a
+!> step is taken is a step policy's (src/stepping: uniform, exact free steps, impact
+!> substeps, closed steps, and the retry with substeps of a step whose solve fails). The response record keeps
 !> peaks at every step and histories at output steps, and the energy balance W_input =
 !> E_kinetic + E_strain + E_damping + E_contact + E_plastic is audited at every step
 !> (E_contact: stored in the joints' springs and dissipated by their dashpots; E_plastic:
@@ -25,26 +26,28 @@ module pound_analysis
    use pound_strings, only: str, add_warning
    use pound_analysis_plan, only: analysis_plan, output_steps, stepping_impact, free_exact, lcp_lemke
    use pound_structure, only: structure_model
-   use pound_ground_motion, only: check_ground_samples, ground_motion_t, ground_accel
+   use pound_ground_motion, only: check_ground_samples, ground_motion_t
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_integrator, only: integrator, max_lanes, en_input, en_damping, en_numerical, n_integrator_energies
    use pound_integrators, only: integrators_for
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_store, &
                              response_flush, history_block, deformed_limit, response_block_full, response_release
-   use pound_contact, only: contact_system, contact_pair, contact_init, contact_step, contact_commit, &
+   use pound_contact, only: contact_system, contact_pair, contact_init, &
                             joint_history, joint_history_init, joint_history_record, &
-                            contact_may_act, contact_carries_force, lcp_solver_lemke, contact_track_closing, &
-                            contact_track_paths
+                            lcp_solver_lemke, contact_track_closing
    use pound_deck_variables, only: max_substeps
-   use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, yield_steps, &
+   use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, &
                                  yield_sample, yield_results, yield_energy_step
-   use pound_storey_collapse, only: yield_hold, yield_freeze, yield_frozen_step
+   use pound_storey_collapse, only: yield_hold, yield_freeze
    use pound_contact_period, only: joint_half_period, substep_impact_speed
-   use pound_step_retry, only: step_retry, retry_step, swap_step_data
+   use pound_step_policy, only: step_policy, step_state, step_counts, uniform_policy, step_state_point
+   use pound_step_exact, only: exact_policy
+   use pound_step_impact, only: impact_policy, impact_setup
+   use pound_step_closed, only: closed_policy, closed_setup
+   use pound_step_retry, only: retry_policy
    use pound_law_smooth, only: is_smooth
    use pound_law_impact, only: law_impact, impact_result
-   use pound_closed_steps, only: closed_stepper, closed_init, closed_step
    implicit none
    private
 
@@ -146,19 +149,6 @@ module pound_analysis
       class(integrator), allocatable :: st_sub(:)
       type(contact_system) :: cs_sub
    end type coupled_model
-
-   !> What the time loop needs for impact-aware substeps (`stepping = 'impact'`).
-   type :: impact_stepping
-      !> Substeps per impact step.
-      integer :: m = 1
-      !> Integrators and contact system holding the substep's step data.
-      class(integrator), allocatable :: st(:)
-      type(contact_system) :: cs
-      !> The ground motion, evaluated at the substep times.
-      type(ground_motion_t) :: ground
-      !> With exact free steps: exact steps while elastic joints stay closed (pound_closed_steps).
-      type(closed_stepper) :: closed
-   end type impact_stepping
 
    !> The integrator's u, v, a of one building, taken once before the time loop.
    type :: state_view

@@ -1,4 +1,5 @@
-!> The retry of a step whose contact solve fails (issue 26): a step (or an impact substep) of
+!> The retry of a step whose contact solve fails, a decorator around any step policy
+!> (`retry_policy`, pound_step_policy): a step (or an impact substep) of
 !> size h whose end-of-step contact equations do not converge (`contact_step`: the smooth
 !> laws' Newton after `max_law_iterations` solves, or any other failure of the step's LCPs)
 !> is taken again from its start as `retry_substeps` substeps of h/`retry_substeps`, with the
@@ -19,10 +20,11 @@ module pound_step_retry
    use pound_integrator, only: integrator
    use pound_contact, only: contact_system, contact_init, contact_step, contact_commit
    use pound_contact_system, only: contact_swap_step
+   use pound_step_policy, only: step_policy, step_state, step_counts, policy_start
    implicit none
    private
 
-   public :: step_retry, retry_step, retry_substeps, swap_step_data
+   public :: step_retry, retry_step, retry_substeps, swap_step_data, retry_policy
 
    !> Substeps of a retried step.
    integer, parameter :: retry_substeps = 10
@@ -38,7 +40,69 @@ module pound_step_retry
       integer :: count = 0
    end type step_retry
 
+   !> The retry around a step policy (`inner`): a pass whose contact solve fails is taken
+   !> again with substeps (`retry_step`).
+   type, extends(step_policy) :: retry_policy
+      !> The policy retried.
+      class(step_policy), allocatable :: inner
+      !> The retries' step data.
+      type(step_retry) :: rt
+   contains
+      procedure :: start => retry_start
+      procedure :: begin => retry_begin
+      procedure :: pass => retry_pass
+      procedure :: tally => retry_tally
+   end type retry_policy
+
 contains
+
+   !> `start`: the run's flags, and the wrapped policy's start.
+   subroutine retry_start(pol, s, inelastic)
+      !> The policy.
+      class(retry_policy), intent(inout) :: pol
+      !> The step (what it acts on, at t = 0).
+      type(step_state), intent(inout) :: s
+      !> Some building yields (no retry then: the failure is the run's).
+      logical, intent(in) :: inelastic
+
+      call policy_start(pol, s, inelastic)
+      call pol%inner%start(s, inelastic)
+   end subroutine retry_start
+
+   !> `begin`: the wrapped policy's.
+   subroutine retry_begin(pol, s)
+      !> The policy.
+      class(retry_policy), intent(inout) :: pol
+      !> The step.
+      type(step_state), intent(inout) :: s
+
+      call pol%inner%begin(s)
+   end subroutine retry_begin
+
+   !> `pass`: the wrapped policy's; a pass whose contact solve failed is taken again as
+   !> `retry_substeps` substeps (`retry_step`, committed), unless a building yields.
+   subroutine retry_pass(pol, s, error)
+      !> The policy.
+      class(retry_policy), intent(inout) :: pol
+      !> The step.
+      type(step_state), intent(inout) :: s
+      !> Error state.
+      type(error_type), allocatable, intent(inout) :: error
+
+      call pol%inner%pass(s, error)
+      if (.not. s%solve_failed .or. pol%inelastic) return
+      call retry_step(pol%rt, s%models, s%st, s%cs, s%ag_old, s%ag_new, s%t_pass, s%h, s%step, error, s%warnings)
+      s%solve_failed = allocated(error)
+   end subroutine retry_pass
+
+   !> `tally`: the wrapped policy's counts.
+   pure function retry_tally(pol) result(n)
+      !> The policy.
+      class(retry_policy), intent(in) :: pol
+      type(step_counts) :: n
+
+      n = pol%inner%tally()
+   end function retry_tally
 
    !> Take the step from t - h to t, whose `contact_step` failed with `error`, again as
    !> `retry_substeps` substeps, committed (integrators and joints). On return `error` is
