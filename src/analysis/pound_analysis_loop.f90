@@ -127,8 +127,7 @@ contains
       nb = size(models)
       n_steps = size(ag) - 1
       allocate (view(nb))
-      call yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen, error)
-      if (allocated(error)) return
+      call yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen)
       coupled = cs%m > 0
       impact = present(sub)
       exact = cfg%free_steps == free_exact .and. .not. inelastic
