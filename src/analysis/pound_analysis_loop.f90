@@ -115,8 +115,7 @@ contains
       type(storey_yield_set), allocatable, target :: ys(:)
 
       n_steps = size(ag) - 1
-      call yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen, error)
-      if (allocated(error)) return
+      call yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen)
       coupled = cs%m > 0
       call step_state_point(s, st, models, cs, ag, ys, frozen, res%building)
       call pol%start(s, inelastic)

@@ -43,7 +43,7 @@ module pound_storey_yield
    public :: stick_khat, stick_active_set
    public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step
    ! (Used by the submodules: gfortran drops private procedures a submodule calls.)
-   public :: drifts, step_drifts, column_of, check_step, solve_lcp
+   public :: drifts, step_drifts, column_of, check_step, solve_lcp, plastic_loads
 
    !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
    real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
@@ -130,7 +130,8 @@ module pound_storey_yield
       type(recovery_rows) :: crows, srows, sprows, mrows, mprows
       real(dp), allocatable :: climit(:), cdrift(:), sval(:), speak(:), stime(:), mpeak(:), mtime(:)
       real(dp), allocatable :: pmax(:), ratio(:), pold(:), fold(:)
-      !> Frames: the step's plastic loads sum_j dp_j a_j over every DOF (`alldof`: 1 .. nd).
+      !> The step's plastic loads over every DOF (`alldof`: 1 .. nd), as given to the
+      !> integrator's `add_load_rows`: sum_j k_j dp_j b_j (storeys), sum_j dp_j a_j (hinges).
       real(dp), allocatable :: fload(:)
       integer, allocatable :: alldof(:)
    end type storey_yield_set
@@ -162,13 +163,14 @@ module pound_storey_yield
    end type storey_yield_result
 
    interface
-      !> A stick's tridiagonal Khat = (1 + c2 a1) (K+G) + (c1 + c2 a0) M for the step dt, as
-      !> the integrator forms it (`yield_set_init` keeps K+G, M, a0, a1 for it).
-      module subroutine stick_khat(ys, dt)
+      !> A stick's tridiagonal matrix fk (K+G) + fm M whose inverse the integrator's `solve`
+      !> applies, its coefficients from the integrator (`solve_matrix`; `yield_set_init` keeps
+      !> K+G, M, a0, a1 for it).
+      module subroutine stick_khat(ys, st)
          !> The building's storeys (a stick).
          type(storey_yield_set), intent(inout) :: ys
-         !> The time step (s).
-         real(dp), intent(in) :: dt
+         !> Its integrator, set up for the step.
+         class(integrator), intent(in) :: st
       end subroutine stick_khat
 
       !> The storeys' step of a stick by the primal-dual active-set method on the tangent
@@ -371,6 +373,10 @@ contains
       allocate (ys%d(n), ys%f(n), ys%p(n), ys%dmax(n), ys%fmax(n), ys%tmax(n), ys%dtr(n), ys%dpl(n), &
                 ys%dnew(n), ys%dold(n), source=0.0_dp)
       allocate (ys%xdp(b%n), ys%work(b%n), ys%tmp(b%n), source=0.0_dp)
+      if (.not. ys%hinges) then
+         allocate (ys%fload(b%n), source=0.0_dp)
+         ys%alldof = [(i, i=1, b%n)]
+      end if
       allocate (ys%side(n), ys%act(n), source=0)
       allocate (ys%slot(n), source=0)
       i = n
@@ -389,37 +395,24 @@ contains
    end subroutine yield_set_init
 
    !> Set up the storeys of every building; `inelastic`: some building has bilinear storeys
-   !> (`ys` is then allocated, one set a building).
-   subroutine yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen, error)
+   !> or plastic hinges (`ys` is then allocated, one set a building). Any integrator: the
+   !> storeys load and solve only through its `add_load_rows`, `solve` and `solve_matrix`.
+   subroutine yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen)
       !> One set a building (unallocated when every building is elastic).
       type(storey_yield_set), allocatable, intent(out) :: ys(:)
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
-      !> The analysis plan (`collapse_drift`, the integrator).
+      !> The analysis plan (`collapse_drift`).
       type(analysis_plan), intent(in) :: cfg
       !> Some building has bilinear storeys; none has collapsed (false).
       logical, intent(out) :: inelastic, collapsed
       !> Per building: collapsed, no longer integrated (all false).
       logical, intent(out) :: frozen(:)
-      !> Error state: bilinear storeys with an integrator other than average acceleration.
-      type(error_type), allocatable, intent(out) :: error
       integer :: ib
 
-      inelastic = .false.
       collapsed = .false.
       frozen = .false.
-      do ib = 1, size(models)
-         if (.not. structure_yields(models(ib))) cycle
-         inelastic = .true.
-         if (cfg%average_acceleration()) cycle
-         call fatal_error(error, 'building '//models(ib)%name//': '// &
-                          trim(merge('plastic hinges (hinge_law = ''elastic_plastic'')', &
-                                     'bilinear storeys (storey_law = ''bilinear'')    ', &
-                                     allocated(models(ib)%hinge_moment)))// &
-                          ' need integrator = ''newmark'' (or hht_alpha = 0): HHT-alpha with alpha < 0 is not '// &
-                          'available with them')
-         return
-      end do
+      inelastic = any([(structure_yields(models(ib)), ib=1, size(models))])
       if (.not. inelastic) return
       allocate (ys(size(models)))
       do ib = 1, size(models)
@@ -496,14 +489,9 @@ contains
 
       changed = .false.
       if (ys%n == 0) return
+      ! The trial (elastic) state: du without this step's plastic loads.
+      if (ys%loaded) call plastic_loads(ys, st, -1.0_dp)
       du => st%du_view()
-      ! The trial (elastic) state: du without this step's plastic loads (hinges: the
-      ! integrator keeps their loads, `fload`, beside du).
-      if (ys%loaded .and. ys%hinges) then
-         call st%add_load_rows(-1.0_dp, ys%alldof, ys%fload, ys%xdp)
-      else if (ys%loaded) then
-         du = du - ys%xdp
-      end if
       call drifts(ys, u, ys%dtr, ys%work, du)
       ys%na = 0
       ! Every storey whose trial force is outside its elastic range (the loop of an elastic
@@ -527,7 +515,7 @@ contains
          ys%slot = 0
          ys%n_slots = 0
          ys%col_dt = st%step_size()
-         if (ys%stick) call stick_khat(ys, ys%col_dt)
+         if (ys%stick) call stick_khat(ys, st)
       end if
       ! A stick: the active-set method on the tridiagonal tangent system first (O(n) a pass).
       solved = .false.
@@ -557,11 +545,7 @@ contains
       end do
       call check_step(ys, t, step, label, error)
       if (allocated(error)) return
-      if (ys%hinges) then
-         call st%add_load_rows(1.0_dp, ys%alldof, ys%fload, ys%xdp)
-      else
-         du = du + ys%xdp
-      end if
+      call plastic_loads(ys, st, 1.0_dp)
       ys%loaded = .true.
       ! Changed beyond round-off (a coupled step solves its joints again).
       do j = 1, ys%n
@@ -665,6 +649,30 @@ contains
                        ' alternations of their LCPs at t = '//str(t)//' s (step '//str(step)//'; reduce dt)')
       call error_at(error, t, step)
    end subroutine yield_steps
+
+   !> Apply (s = 1) or take back (s = -1) the step's plastic loads `fload` and their response
+   !> `xdp` through the integrator's `add_load_rows` (it keeps the loads, for HHT-alpha's
+   !> F_{n+1}). Applying forms the storeys' loads sum_j k_j dp_j b_j from `dpl` (a frame's
+   !> hinges have them from `hinge_loads`); taking back uses the loads applied.
+   subroutine plastic_loads(ys, st, s)
+      type(storey_yield_set), intent(inout) :: ys
+      class(integrator), intent(inout) :: st
+      real(dp), intent(in) :: s
+      real(dp) :: c
+      integer :: j, e
+
+      if (s > 0.0_dp .and. .not. ys%hinges) then
+         ys%fload = 0.0_dp
+         do j = 1, ys%n
+            if (ys%dpl(j) == 0.0_dp) cycle
+            c = ys%k(j)*ys%dpl(j)
+            do e = ys%rows%start(j), ys%rows%start(j + 1) - 1
+               ys%fload(ys%rows%dof(e)) = ys%fload(ys%rows%dof(e)) + c*ys%rows%coef(e)
+            end do
+         end do
+      end if
+      call st%add_load_rows(s, ys%alldof, ys%fload, ys%xdp)
+   end subroutine plastic_loads
 
    !> Column Khat^{-1} b_j of storey j (solved once per dt, kept when the building is small).
    subroutine column_of(ys, st, j, x)

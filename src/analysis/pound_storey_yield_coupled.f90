@@ -56,12 +56,8 @@ contains
       call contact_release(cs, st)
       do ib = 1, size(ys)
          if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
+         if (ys(ib)%loaded) call plastic_loads(ys(ib), st(ib), -1.0_dp)
          du => st(ib)%du_view()
-         if (ys(ib)%loaded .and. ys(ib)%hinges) then
-            call st(ib)%add_load_rows(-1.0_dp, ys(ib)%alldof, ys(ib)%fload, ys(ib)%xdp)
-         else if (ys(ib)%loaded) then
-            du = du - ys(ib)%xdp
-         end if
          ys(ib)%loaded = .false.
          ys(ib)%dold = ys(ib)%dpl
          call drifts(ys(ib), st(ib)%u_view(), ys(ib)%dtr, ys(ib)%work, du)
@@ -202,12 +198,7 @@ contains
          if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
          call check_step(ys(ib), t, step, models(ib)%name, error)
          if (allocated(error)) return
-         if (ys(ib)%hinges) then
-            call st(ib)%add_load_rows(1.0_dp, ys(ib)%alldof, ys(ib)%fload, ys(ib)%xdp)
-         else
-            du => st(ib)%du_view()
-            du = du + ys(ib)%xdp
-         end if
+         call plastic_loads(ys(ib), st(ib), 1.0_dp)
          ys(ib)%loaded = ys(ib)%na > 0
          ys(ib)%alternations = max(ys(ib)%alternations, round - 1)
          if (ys(ib)%na > 0) then

@@ -24,17 +24,14 @@ submodule(pound_storey_yield) pound_storey_yield_stick
 
 contains
 
-   module subroutine stick_khat(ys, dt)
+   module subroutine stick_khat(ys, st)
       type(storey_yield_set), intent(inout) :: ys
-      real(dp), intent(in) :: dt
-      real(dp) :: c1, c2, fk, fm
+      class(integrator), intent(in) :: st
+      real(dp) :: fk, fm
       integer :: n
 
       n = ys%n
-      c1 = 4.0_dp/dt**2
-      c2 = 2.0_dp/dt
-      fk = 1.0_dp + c2*ys%a1
-      fm = c1 + c2*ys%a0
+      call st%solve_matrix(ys%a0, ys%a1, fk, fm)
       ys%khat_d = fk*ys%kt(2, :) + fm*ys%mass
       ys%khat_e = 0.0_dp
       if (n > 1) ys%khat_e(1:n - 1) = fk*ys%kt(1, 2:n)

@@ -62,7 +62,7 @@
 module pound_deck
    use pound_config, only: building_config, contact_config, deck_type, is_frame
    use pound_kinds, only: dp
-   use pound_deck_analysis, only: read_analysis, check_yielding_integrator
+   use pound_deck_analysis, only: read_analysis
    use pound_deck_building, only: read_building
    use pound_deck_contact, only: read_contact
    use pound_deck_ground, only: read_ground
@@ -165,8 +165,6 @@ contains
          call read_building(path, text, groups(i), d%buildings(1:k - 1), d%buildings(k), error, d%warnings)
          if (allocated(error)) return
       end do
-      call check_yielding_integrator(path, groups(ia), d%analysis, d%buildings, error)
-      if (allocated(error)) return
       allocate (d%contacts(count([(groups(i)%name == 'contact', i=1, n_groups)])))
       k = 0
       do i = 1, n_groups

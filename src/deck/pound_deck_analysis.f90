@@ -1,18 +1,18 @@
 !> Reader of `&analysis`: title, dt, t_end, t_free, output_every, history, stepping, impact_substeps,
 !> compress, node_histories, lcp_solver, free_steps, integrator, hht_alpha, collapse_drift.
 module pound_deck_analysis
-   use pound_config, only: analysis_config, building_config
+   use pound_config, only: analysis_config
    use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
                                 site_of, site_text, unset_real
    use pound_deck_lexer, only: base_name, group_ref, group_text, lower
    use pound_deck_variables, only: max_steps, max_substeps, path_len, title_len, word_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
-   use pound_strings, only: plain_real, str
+   use pound_strings, only: str
    implicit none
    private
 
-   public :: read_analysis, check_yielding_integrator
+   public :: read_analysis
 
 contains
 
@@ -174,50 +174,5 @@ contains
          word = v
       end subroutine one_of
    end subroutine read_analysis
-
-   !> Yielding buildings (bilinear storeys, plastic hinges) are solved with Newmark's average
-   !> acceleration only: `integrator = 'hht'` with alpha < 0 (`hht_alpha`, or its default
-   !> -0.05 when the deck does not give it) is refused here, naming the variable (`hht_alpha`
-   !> when given, else `integrator`) and the first yielding building.
-   pure subroutine check_yielding_integrator(path, g, cfg, buildings, error)
-      !> Deck path as given (named in messages).
-      character(len=*), intent(in) :: path
-      !> The `&analysis` group occurrence.
-      type(group_ref), intent(in) :: g
-      !> Resolved `&analysis`.
-      type(analysis_config), intent(in) :: cfg
-      !> The deck's buildings.
-      type(building_config), intent(in) :: buildings(:)
-      !> Unallocated on success; otherwise the refusal.
-      type(error_type), allocatable, intent(out) :: error
-      type(site) :: at
-      character(len=:), allocatable :: var, alpha, what
-      integer :: ib, i
-
-      if (cfg%integrator /= 'hht' .or. .not. (cfg%hht_alpha < 0.0_dp)) return
-      do ib = 1, size(buildings)
-         if (buildings(ib)%storey_law == 'bilinear') then
-            what = "bilinear storeys (storey_law = 'bilinear')"
-         else if (buildings(ib)%hinge_law == 'elastic_plastic') then
-            what = "plastic hinges (hinge_law = 'elastic_plastic')"
-         else
-            cycle
-         end if
-         at = site_of(path, g)
-         var = 'integrator'
-         alpha = 'hht_alpha = '//plain_real(cfg%hht_alpha)//' (its default)'
-         do i = 1, g%n_vars
-            if (g%vars(i)%name == 'hht_alpha') then
-               var = 'hht_alpha'
-               alpha = 'hht_alpha = '//plain_real(cfg%hht_alpha)
-            end if
-         end do
-         call fail(at, var, "integrator = 'hht' with "//alpha//' and building '//trim(buildings(ib)%name)// &
-                   "'s "//what//': HHT-alpha with alpha < 0 is not available with yielding storeys or '// &
-                   "hinges (their exact per-step LCP is average acceleration's); use integrator = 'newmark' "// &
-                   '(or hht_alpha = 0, the same method)', error)
-         return
-      end do
-   end subroutine check_yielding_integrator
 
 end module pound_deck_analysis

@@ -76,6 +76,7 @@ module pound_hht
       procedure :: commit => hht_commit
       procedure :: advance => hht_advance
       procedure :: solve => hht_solve
+      procedure :: solve_matrix => hht_solve_matrix
       procedure :: add_load => hht_add_load
       procedure :: add_load_rows => hht_add_load_rows
       procedure :: swap_step => hht_swap_step
@@ -336,6 +337,20 @@ contains
       call dpbtrs_vec(st, x)
       x = (1.0_dp + st%alpha)*x
    end subroutine hht_solve
+
+   !> The matrix whose inverse `hht_solve` applies, Khat/(1+alpha) = fk (K+G) + fm M:
+   !> fk = 1 + c1 a1, fm = c0/(1+alpha) + c1 a0.
+   pure subroutine hht_solve_matrix(st, a0, a1, fk, fm)
+      !> Integrator.
+      class(hht_state), intent(in) :: st
+      !> Rayleigh damping coefficients of the model.
+      real(dp), intent(in) :: a0, a1
+      !> Coefficients of K+G and of M.
+      real(dp), intent(out) :: fk, fm
+
+      fk = 1.0_dp + st%c1*a1
+      fm = st%c0/(1.0_dp + st%alpha) + st%c1*a0
+   end subroutine hht_solve_matrix
 
    !> du = du + s x, x = `hht_solve` of e_dof; the load increment kept for F_{n+1}.
    pure subroutine hht_add_load(st, s, dof, x)

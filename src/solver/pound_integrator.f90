@@ -62,6 +62,10 @@ module pound_integrator
       procedure(advance_i), deferred :: advance
       !> x = Khat^{-1} x.
       procedure(solve_i), deferred :: solve
+      !> The matrix whose inverse `solve` applies, fk (K+G) + fm M, for Rayleigh damping
+      !> C = a0 M + a1 (K+G): its two coefficients (an element that forms a tangent system on
+      !> that matrix, `stick_active_set`, takes them from here).
+      procedure(solve_matrix_i), deferred :: solve_matrix
       !> du = du + s x for a load increment s at one DOF, x = Khat^{-1} e_dof.
       procedure(add_load_i), deferred :: add_load
       !> du = du + s x for a load increment s along the weights w of the DOFs dof.
@@ -163,6 +167,13 @@ module pound_integrator
          class(integrator), intent(in) :: st
          real(dp), intent(inout) :: x(:)
       end subroutine solve_i
+      !> Interface of the binding(s) declared with `solve_matrix_i` (see the type).
+      pure subroutine solve_matrix_i(st, a0, a1, fk, fm)
+         import :: integrator, dp
+         class(integrator), intent(in) :: st
+         real(dp), intent(in) :: a0, a1
+         real(dp), intent(out) :: fk, fm
+      end subroutine solve_matrix_i
       !> Interface of the binding(s) declared with `add_load_i` (see the type).
       pure subroutine add_load_i(st, s, dof, x)
          import :: integrator, dp

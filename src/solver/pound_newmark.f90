@@ -151,6 +151,7 @@ module pound_newmark
       procedure :: commit => newmark_commit
       procedure :: advance => newmark_advance
       procedure :: solve => newmark_solve
+      procedure :: solve_matrix => newmark_solve_matrix
       procedure :: add_load => newmark_add_response
       procedure :: add_load_rows => newmark_add_response_rows
       procedure :: swap_step => swap_binding
@@ -549,6 +550,19 @@ contains
          call dpbtrs('U', st%n, st%kd, 1, st%chol, st%kd + 1, x, st%n, info)
       end if
    end subroutine newmark_solve
+
+   !> Khat = fk (K+G) + fm M: fk = 1 + c2 a1, fm = c1 + c2 a0 (as `newmark_init` forms it).
+   pure subroutine newmark_solve_matrix(st, a0, a1, fk, fm)
+      !> Integrator state.
+      class(newmark_state), intent(in) :: st
+      !> Rayleigh damping coefficients of the model.
+      real(dp), intent(in) :: a0, a1
+      !> Coefficients of K+G and of M.
+      real(dp), intent(out) :: fk, fm
+
+      fk = 1.0_dp + st%c2*a1
+      fm = st%c1 + st%c2*a0
+   end subroutine newmark_solve_matrix
 
    !> du = du + s x: the response to a load increment s at DOF `dof` of the step,
    !> x = Khat^{-1} e_dof (from `newmark_solve`, computed once). The general path also keeps

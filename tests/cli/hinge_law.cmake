@@ -70,12 +70,7 @@ bad(hardening_count "beam_yield_moment = 100.0" "beam_yield_moment = 100.0, hing
 bad(law_name "hinge_law = 'elastic_plastic'             ! rigid" "hinge_law = 'plastic'             ! rigid"
     "&building #1 (A): hinge_law = 'plastic', must be 'none' or 'elastic_plastic'")
 
-# HHT-alpha with alpha < 0 is refused with plastic hinges, at the deck (its line, group, variable).
-string(REPLACE "history = 'all'" "history = 'all', integrator = 'hht', hht_alpha = -0.1" deck "${good}")
-file(WRITE ${WORK_DIR}/hht_hinges.nml "${deck}")
-run_pound(r hht_hinges.nml)
-expect_equal("hht: exit status" 1 "${r_rc}")
-expect_contains("hht: message" "${r_err}" "hht_hinges.nml:21: &analysis: integrator = 'hht' with hht_alpha = -0.1 and building A's plastic hinges (hinge_law = 'elastic_plastic'): HHT-alpha with alpha < 0 is not available with yielding storeys or hinges")
+# HHT-alpha with plastic hinges runs: tests/cli/hht_integrator.cmake.
 
 # A shear building takes no hinge law.
 file(READ ${SOURCE_DIR}/input/seed_bilinear.nml good)
