@@ -3,7 +3,7 @@ set(POUND_SOURCES
   # core: kinds, physical constants, the response quantities, the analysis plan, the sweep, code-factor and contact settings, errors, strings, whole-file reading, version, POSIX calls, the progress line, sorting
   core/pound_kinds.f90 core/pound_constants.f90 core/pound_quantities.f90 core/pound_analysis_plan.f90
   core/pound_sweep_settings.f90 core/pound_risk_settings.f90 core/pound_code_factors.f90 core/pound_contact_settings.f90
-  core/pound_error.f90 core/pound_strings.f90 core/pound_text_file.f90
+  core/pound_error.f90 core/pound_model_sink.f90 core/pound_strings.f90 core/pound_text_file.f90
   core/pound_version.f90 core/pound_posix.f90 core/pound_progress.f90
   core/pound_sort.f90 core/pound_folder.f90
   # core: pound's own pseudo-random numbers
@@ -31,7 +31,8 @@ set(POUND_SOURCES
   model/pound_synthetic_motion.f90
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)
   model/pound_band_lapack.f90 model/pound_band_solve.f90 model/pound_band_eigen.f90 model/pound_frame_element.f90
-  model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_hinges.f90 model/pound_frame_building.f90 model/pound_building.f90
+  model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_hinges.f90 model/pound_frame_building.f90 model/pound_building_kind.f90
+  model/pound_shear_kind.f90 model/pound_frame_kind.f90 model/pound_building.f90
   # solver: Newmark average acceleration
   solver/pound_integrator.f90 solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
   # solver: exact free steps (modes of (K+G, M), each mode's exact step)
@@ -82,7 +83,7 @@ set(POUND_SOURCES
   driver/pound_stripes.f90
   # outputs: files, HDF5 layer (its attribute writers and low-level helpers in submodules),
   # results file, the text writer (unit + first failure), listing
-  output/pound_files.f90 output/pound_h5.f90 output/pound_h5_support.f90 output/pound_h5_attributes.f90
+  output/pound_files.f90 output/pound_h5.f90 output/pound_h5_sink.f90 output/pound_h5_support.f90 output/pound_h5_attributes.f90
   output/pound_results_h5.f90 output/pound_text_writer.f90
   output/pound_influence_output.f90 output/pound_summary_item.f90 output/pound_summary_yield.f90 output/pound_hinge_output.f90 output/pound_yield_output.f90 output/pound_listing.f90
   # outputs: the separation rules' listing table and datasets (a run and a suite)

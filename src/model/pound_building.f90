@@ -1,34 +1,27 @@
 !> One building of a deck, whatever its model: `build_building` makes the `structure_model`
-!> the analyses read and, beside it, the per-kind data the writers need (`building_model`: the
-!> shear building's storey table, the frame's nodes, elements and gravity analysis). The two
-!> are kept in separate arrays by the run driver, so that the analyses get a contiguous
-!> array of structural models (no copy).
+!> the analyses read and, beside it, its building kind (`building_model%kind`, a
+!> `building_kind`: `shear_kind` with the storey table, `frame_kind` with the nodes, elements
+!> and gravity analysis), which answers the writers. The two are kept in separate arrays by
+!> the run driver, so that the analyses get a contiguous array of structural models (no copy).
 module pound_building
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_config, only: building_config, is_frame
    use pound_structure, only: structure_model
    use pound_shear_building, only: shear_building, build_shear_building
-   use pound_frame_building, only: frame_data, build_frame_building
+   use pound_frame_building, only: build_frame_building
+   use pound_building_kind, only: building_kind
+   use pound_shear_kind, only: shear_kind
+   use pound_frame_kind, only: frame_kind
    implicit none
    private
 
    public :: building_model, build_building
 
-   !> What the writers need of a building besides its structural model (a plain data type,
-   !> written once by `build_building`).
+   !> What the writers need of a building besides its structural model: its kind.
    type :: building_model
-      !> Number of storeys (= floors, = response points).
-      integer :: n_storeys = 0
-      !> Storey heights (m) and floor masses (t).
-      real(dp), allocatable :: height(:), floor_mass(:)
-      !> Whether P-Delta is modelled.
-      logical :: p_delta = .false.
-      !> Shear building: first-order storey stiffness k_j, geometric storey stiffness P_j/h_j
-      !> (kN/m) and storey axial load P_j (kN); unallocated for a frame.
-      real(dp), allocatable :: storey_stiffness(:), geometric_stiffness(:), axial_load(:)
-      !> Frame: nodes, elements, gravity analysis; unallocated for a shear building.
-      type(frame_data), allocatable :: frame
+      !> The building kind (shear building, frame).
+      class(building_kind), allocatable :: kind
    end type building_model
 
 contains
@@ -46,33 +39,56 @@ contains
       !> Occurrence of the `&building` group in the deck, for messages.
       integer, intent(in), optional :: number
       type(shear_building) :: sb
+      type(shear_kind), allocatable :: shear
+      type(frame_kind), allocatable :: frame
       integer :: j
 
-      b%n_storeys = deck_entry%n_storeys
-      b%height = deck_entry%height
-      b%p_delta = deck_entry%p_delta
       if (is_frame(deck_entry)) then
-         allocate (b%frame)
-         call build_frame_building(deck_entry, m, b%frame, error, number)
+         allocate (frame)
+         call set_common(frame)
+         call build_frame_building(deck_entry, m, frame%frame, error, number)
          if (allocated(error)) return
-         allocate (b%floor_mass(b%n_storeys))
-         do j = 1, b%n_storeys
-            b%floor_mass(j) = sum(b%frame%frame%node_mass(b%frame%frame%floor_node(:, j)))
-         end do
+         allocate (frame%floor_mass(frame%n_storeys))
+         associate (f => frame%frame%frame, ce => frame%frame%column_element)
+            do j = 1, frame%n_storeys
+               frame%floor_mass(j) = sum(f%node_mass(f%floor_node(:, j)))
+            end do
+            frame%participation = frame%frame%participation
+            frame%effective_mass = frame%frame%effective_mass
+            frame%segment_storey = f%element_group(ce)
+            frame%segment_line = f%node_line(f%element_nodes(1, ce))
+            frame%segment_z = reshape([(f%node_z(f%element_nodes(:, ce(j))), j=1, size(ce))], [2, size(ce)])
+         end associate
+         call move_alloc(frame, b%kind)
       else
          call build_shear_building(deck_entry, sb, error, number)
          if (allocated(error)) return
+         allocate (shear)
+         call set_common(shear)
          m = sb%structure_model
-         b%floor_mass = sb%mass
-         call move_alloc(sb%storey_stiffness, b%storey_stiffness)
-         call move_alloc(sb%geometric_stiffness, b%geometric_stiffness)
-         call move_alloc(sb%axial_load, b%axial_load)
+         shear%floor_mass = sb%mass
+         call move_alloc(sb%storey_stiffness, shear%storey_stiffness)
+         call move_alloc(sb%geometric_stiffness, shear%geometric_stiffness)
+         call move_alloc(sb%axial_load, shear%axial_load)
          if (allocated(deck_entry%yield_shear)) then
             m%yield_shear = deck_entry%yield_shear
             m%hardening = deck_entry%hardening_ratio
             m%yield_height = deck_entry%height
          end if
+         call move_alloc(shear, b%kind)
       end if
+
+   contains
+
+      !> What every kind takes from the deck entry.
+      subroutine set_common(kind)
+         class(building_kind), intent(inout) :: kind
+
+         kind%n_storeys = deck_entry%n_storeys
+         kind%height = deck_entry%height
+         kind%p_delta = deck_entry%p_delta
+      end subroutine set_common
+
    end subroutine build_building
 
 end module pound_building

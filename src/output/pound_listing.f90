@@ -11,6 +11,7 @@ module pound_listing
    use pound_version, only: program_name, program_version
    use pound_config, only: deck_type
    use pound_building, only: building_model
+   use pound_model_sink, only: text_lines
    use pound_structure, only: structure_model, modes_listed, structure_yields
    use pound_response, only: q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_analysis, only: analysis_result
@@ -141,53 +142,37 @@ contains
       type(structure_model), intent(in) :: models(:)
       !> Their per-kind data (storey table, frame).
       type(building_model), intent(in) :: buildings(:)
+      type(text_lines) :: lines
+      character(len=128) :: buf
       integer :: ib, j
-      character(len=3) :: pd
 
       call write_section(lst, 'Models (shear buildings: rigid beams, one lateral DOF per floor; '// &
                          'frames: planar beam-column elements)')
       do ib = 1, size(models)
-         associate (b => models(ib), s => buildings(ib))
-            pd = 'off'
-            if (s%p_delta) pd = 'on'
-            if (allocated(s%frame)) then
-               call write_frame_summary(lst, b, s)
+         associate (b => models(ib), s => buildings(ib)%kind)
+            lines = text_lines()
+            call s%describe(b, lines)
+            do j = 1, lines%n
+               call lst%put(lines%line(j)%text)
+            end do
+            ! The mode table, with the modal participation where the kind computes it.
+            if (allocated(s%participation)) then
+               call lst%put('    mode      T [s]      f [Hz]  omega [rad/s]'// &
+                            '  Gamma [t^0.5]  eff. mass [%]  cumulative [%]')
             else
-               write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '  Building '//b%name//': '//counted(b%n, 'storey')//', P-Delta '//trim(pd)
-               call lst%note()
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '  storey    h [m]    mass [t]     k [kN/m]      P [kN]   P/h [kN/m]  theta=P/(hk)'
-               call lst%note()
-               do j = 1, b%n
-                  write (lst%unit, '(2x,i6,a9,a12,es13.5,es12.4,es13.5,a14)', iostat=lst%ios, iomsg=lst%msg) &
-                     j, fixed_cell(s%height(j), 9, 3, .true.), fixed_cell(s%floor_mass(j), 12, 4, .true.), &
-                     s%storey_stiffness(j), s%axial_load(j), s%geometric_stiffness(j), &
-                     fixed_cell(s%geometric_stiffness(j)/s%storey_stiffness(j), 14, 5)
-                  call lst%note()
-               end do
+               call lst%put('    mode      T [s]      f [Hz]  omega [rad/s]')
             end if
-            if (allocated(s%frame)) then
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '    mode      T [s]      f [Hz]  omega [rad/s]'// &
-                  '  Gamma [t^0.5]  eff. mass [%]  cumulative [%]'
-            else
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '    mode      T [s]      f [Hz]  omega [rad/s]'
-            end if
-            call lst%note()
             do j = 1, min(size(b%period), max_listed_modes)
-               if (allocated(s%frame)) then
-                  write (lst%unit, '(2x,i6,a11,a12,a15,es15.5,2a15)', iostat=lst%ios, iomsg=lst%msg) j, &
-                     fixed_cell(b%period(j), 11, 5, .true.), fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), &
-                     fixed_cell(b%omega(j), 15, 4, .true.), s%frame%participation(j), &
-                     fixed_cell(100.0_dp*s%frame%effective_mass(j), 15, 3), &
-                     fixed_cell(100.0_dp*sum(s%frame%effective_mass(1:j)), 15, 3)
+               write (buf, '(2x,i6,a11,a12,a15)') j, fixed_cell(b%period(j), 11, 5, .true.), &
+                  fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), fixed_cell(b%omega(j), 15, 4, .true.)
+               if (allocated(s%participation)) then
+                  write (lst%unit, '(a,es15.5,2a15)', iostat=lst%ios, iomsg=lst%msg) trim(buf), &
+                     s%participation(j), fixed_cell(100.0_dp*s%effective_mass(j), 15, 3), &
+                     fixed_cell(100.0_dp*sum(s%effective_mass(1:j)), 15, 3)
+                  call lst%note()
                else
-                  write (lst%unit, '(2x,i6,a11,a12,a15)', iostat=lst%ios, iomsg=lst%msg) &
-                     j, fixed_cell(b%period(j), 11, 5, .true.), &
-                     fixed_cell(1.0_dp/b%period(j), 12, 5, .true.), fixed_cell(b%omega(j), 15, 4, .true.)
+                  call lst%put(trim(buf))
                end if
-               call lst%note()
             end do
             if (size(b%period) > max_listed_modes) write (lst%unit, '(a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
                '    (', &
@@ -202,101 +187,6 @@ contains
          end associate
       end do
    end subroutine write_model_summary
-
-   !> A frame's geometry, sections, DOFs and (with P-Delta) its gravity analysis.
-   subroutine write_frame_summary(lst, b, s)
-      !> The listing writer (unit, first write failure).
-      type(text_writer), intent(inout) :: lst
-      !> Its structural model.
-      type(structure_model), intent(in) :: b
-      !> The building (a frame).
-      type(building_model), intent(in) :: s
-      character(len=:), allocatable :: cons
-      integer :: j, e, ln, eb
-
-      associate (f => s%frame%frame)
-         cons = ''
-         if (s%frame%rigid_beams) cons = cons//' rigid_beams'
-         if (s%frame%rigid_diaphragm) cons = cons//' rigid_diaphragm'
-         if (s%frame%rigid_columns) cons = cons//' rigid_columns'
-         if (len(cons) == 0) cons = ' none'
-         write (lst%unit, '(/,a,i0,a,i0,a,i0,a,i0,a,i0,a)', iostat=lst%ios, iomsg=lst%msg) '  Building '//b%name// &
-            ' (frame): ', f%n_storeys, ' storeys, ', f%n_lines, ' column lines, ', f%n_nodes, ' nodes, ', &
-            f%n_elements, ' elements, ', b%n, ' DOFs'
-         call lst%note()
-         write (lst%unit, '(a,i0,a)', iostat=lst%ios, iomsg=lst%msg) &
-            '  half-bandwidth ', b%kd, ', constraints:'//cons// &
-            ', base '//s%frame%base
-         call lst%note()
-         if (s%p_delta) then
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-               "  P-Delta on, geometric stiffness '"//s%frame%geometric// &
-               "' of the gravity analysis (unconstrained frame)"
-         else
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  P-Delta off'
-         end if
-         call lst%note()
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  x of the column lines [m]:'
-         call lst%note()
-         write (lst%unit, '(4x,*(a))', iostat=lst%ios, iomsg=lst%msg) &
-            (fixed_cell(f%line_x(j), 10, 3), j=1, size(f%line_x))
-         call lst%note()
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  storey    h [m]    mass [t]  column E [kN/m2]'// &
-            '   A [m2]     I [m4]  beam E [kN/m2]   A [m2]     I [m4]'
-         call lst%note()
-         do j = 1, f%n_storeys
-            e = first_element(j, 1)
-            eb = first_element(j, 2)
-            if (eb == 0) eb = e
-            write (lst%unit, '(2x,i6,a9,a12,es18.5,2es11.3,es16.5,2es11.3)', iostat=lst%ios, iomsg=lst%msg) j, &
-               fixed_cell(s%height(j), 9, 3, .true.), fixed_cell(s%floor_mass(j), 12, 4, .true.), &
-               f%element_e(e), f%element_a(e), f%element_i(e), f%element_e(eb), f%element_a(eb), &
-               f%element_i(eb)
-            call lst%note()
-         end do
-         if (s%p_delta) then
-            write (lst%unit, '(a,es12.4,a)', iostat=lst%ios, iomsg=lst%msg) '  gravity analysis: total load ', &
-               s%frame%gravity%total_load, ' kN; base reactions per column line (H [kN], V [kN], M [kN m]):'
-            call lst%note()
-            do ln = 1, f%n_lines
-               write (lst%unit, '(4x,i6,3es13.4)', iostat=lst%ios, iomsg=lst%msg) ln, s%frame%gravity%reactions(:, ln)
-               call lst%note()
-            end do
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  column axial force N [kN] (tension +) at the '// &
-               'bottom of each storey, column lines 1.. (at most 8):'
-            call lst%note()
-            do j = 1, f%n_storeys
-               write (lst%unit, '(4x,i6,8es13.4)', iostat=lst%ios, iomsg=lst%msg) j, &
-                  (s%frame%gravity%axial(bottom_column(j, ln)), ln=1, min(f%n_lines, 8))
-               call lst%note()
-            end do
-         end if
-      end associate
-
-   contains
-
-      !> First element of storey/floor j of kind k (1 column, 2 beam); 0 if none.
-      integer function first_element(j, k) result(e)
-         integer, intent(in) :: j, k
-
-         do e = 1, s%frame%frame%n_elements
-            if (s%frame%frame%element_group(e) == j .and. s%frame%frame%element_kind(e) == k) return
-         end do
-         e = 0
-      end function first_element
-
-      !> The lowest column element of storey j on column line `line`.
-      integer function bottom_column(j, line) result(e)
-         integer, intent(in) :: j, line
-
-         do e = 1, s%frame%frame%n_elements
-            if (s%frame%frame%element_kind(e) == 1 .and. s%frame%frame%element_group(e) == j .and. &
-                s%frame%frame%node_line(s%frame%frame%element_nodes(1, e)) == line) return
-         end do
-         e = 1
-      end function bottom_column
-
-   end subroutine write_frame_summary
 
    !> Peak tables of an analysis: floors (u, v, a_abs) and storeys (drift, shear).
    subroutine write_peak_tables(lst, label, models, res)
@@ -513,13 +403,13 @@ contains
       character(len=*), parameter :: heads(4) = ['|V| [kN]  ', '|M1| [kNm]', '|M2| [kNm]', '|dN| [kN] ']
       character(len=:), allocatable :: line
       character(len=256) :: head
-      integer :: ib, s, q, e, nq
+      integer :: ib, s, q, nq
       logical :: both, first
 
       both = present(cpl) .and. present(infl)
       first = .true.
       do ib = 1, size(models)
-         if (.not. allocated(buildings(ib)%frame) .or. .not. allocated(unc%building(ib)%member_peak)) cycle
+         if (buildings(ib)%kind%n_segments() == 0 .or. .not. allocated(unc%building(ib)%member_peak)) cycle
          if (first) then
             line = 'Column segments: peak first-order end forces (V shear, M1 bottom and M2 top end moment, '// &
                    'dN = N - N_gravity axial)'
@@ -549,11 +439,10 @@ contains
          end if
          write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
          call lst%note()
-         associate (f => buildings(ib)%frame%frame, ce => buildings(ib)%frame%column_element)
-            do s = size(ce), 1, -1
-               e = ce(s)
-               write (head, '(2x,i6,i8,i6,2a12)') s, f%element_group(e), f%node_line(f%element_nodes(1, e)), &
-                  fixed_cell(f%node_z(f%element_nodes(1, e)), 12, 3), fixed_cell(f%node_z(f%element_nodes(2, e)), 12, 3)
+         associate (kind => buildings(ib)%kind)
+            do s = kind%n_segments(), 1, -1
+               write (head, '(2x,i6,i8,i6,2a12)') s, kind%segment_storey(s), kind%segment_line(s), &
+                  fixed_cell(kind%segment_z(1, s), 12, 3), fixed_cell(kind%segment_z(2, s), 12, 3)
                line = head(1:46)
                do q = 1, nq
                   associate (k => (s - 1)*nq + q)

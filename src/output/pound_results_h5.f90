@@ -67,6 +67,7 @@ module pound_results_h5
    use pound_config, only: deck_type, history_names, n_history_quantities, target_names, q_column_shear, q_ductility, &
                            q_column_moment
    use pound_building, only: building_model
+   use pound_h5_sink, only: h5_sink
    use pound_structure, only: structure_model, structure_yields, structure_names
    use pound_analysis, only: analysis_result, history_sink
    use pound_analysis_plan, only: output_steps, steps_of
@@ -111,11 +112,6 @@ module pound_results_h5
    !> Units, as written in the root attribute.
    character(len=*), parameter :: units = 'kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
                                           'influence coefficients percent'
-   !> Units of a frame's node map coefficients.
-   character(len=*), parameter :: node_coefficient_units = '1 (m where a rotation enters a translation)'
-   !> Columns of a frame's node map (`node_dofs`, `node_coefficients`): two terms per direction.
-   character(len=*), parameter :: node_map_columns = 'horizontal(term 1, term 2) vertical(term 1, term 2) '// &
-                                                     'rotation(term 1, term 2); DOF 0: no term'
 
 contains
 
@@ -414,24 +410,16 @@ contains
          type(structure_model), intent(in) :: b
          type(building_model), intent(in) :: s
          character(len=:), allocatable :: g
+         type(h5_sink) :: sink
 
          g = '/model/'//b%name//'/'
-         call h5_write(h5, g//'height', s%height, error, units='m')
+         sink = h5_sink(file=h5, group=g)
+         call h5_write(h5, g//'height', s%kind%height, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, g//'mass', s%floor_mass, error, units='t')
+         call h5_write(h5, g//'mass', s%kind%floor_mass, error, units='t')
          if (allocated(error)) return
-         if (allocated(s%frame)) then
-            call write_frame(g, s)
-            if (.not. allocated(error)) call write_dof_layout(g, b, s)
-            if (.not. allocated(error)) call write_yield_model_h5(h5, g, b, error)
-         else
-            call h5_write(h5, g//'storey_stiffness', s%storey_stiffness, error, units='kN/m')
-            if (allocated(error)) return
-            call h5_write(h5, g//'geometric_stiffness', s%geometric_stiffness, error, units='kN/m')
-            if (allocated(error)) return
-            call h5_write(h5, g//'axial_load', s%axial_load, error, units='kN')
-            if (.not. allocated(error)) call write_yield_model_h5(h5, g, b, error)
-         end if
+         call s%kind%write_data(b, sink, error)
+         if (.not. allocated(error)) call write_yield_model_h5(h5, g, b, error)
          if (allocated(error)) return
          call h5_write(h5, g//'periods', b%period, error, units='s')
          if (allocated(error)) return
@@ -439,70 +427,10 @@ contains
          if (allocated(error)) return
          call h5_write(h5, g//'rayleigh', [b%a0, b%a1], error, units='1/s, s')
          if (allocated(error)) return
-         call h5_write_attr(h5, '/model/'//b%name, 'p_delta', merge(1, 0, s%p_delta), error)
+         call h5_write_attr(h5, '/model/'//b%name, 'p_delta', merge(1, 0, s%kind%p_delta), error)
          if (allocated(error)) return
          call h5_write_attr(h5, '/model/'//b%name, 'damping_ratio', b%damping_ratio, error)
       end subroutine write_model
-
-      !> A frame's nodes (x, z per node), elements (end nodes, kind 1 column / 2 beam, storey
-      !> or floor) and sections (E, A, I per element), and its gravity analysis.
-      subroutine write_frame(g, s)
-         character(len=*), intent(in) :: g
-         type(building_model), intent(in) :: s
-
-         associate (f => s%frame%frame)
-            call h5_write(h5, g//'nodes', reshape([f%node_x, f%node_z], [f%n_nodes, 2]), error, units='m')
-            if (allocated(error)) return
-            call h5_write_attr(h5, g//'nodes', 'columns', 'x z (m)', error)
-            if (allocated(error)) return
-            call h5_write(h5, g//'elements', reshape([f%element_nodes(1, :), f%element_nodes(2, :), &
-                          f%element_kind, f%element_group], [f%n_elements, 4]), error, units='1')
-            if (allocated(error)) return
-            call h5_write_attr(h5, g//'elements', 'columns', 'node1 node2 kind(1 column, 2 beam) storey', error)
-            if (allocated(error)) return
-            call h5_write(h5, g//'sections', reshape([f%element_e, f%element_a, f%element_i], &
-                          [f%n_elements, 3]), error, units='kN/m^2, m^2, m^4')
-            if (allocated(error)) return
-            call h5_write_attr(h5, g//'sections', 'columns', 'E (kN/m2) A (m2) I (m4)', error)
-            if (allocated(error)) return
-            if (s%p_delta) call h5_write(h5, g//'gravity_axial_force', s%frame%gravity%axial, error, units='kN')
-            if (allocated(error)) return
-            associate (ce => s%frame%column_element)
-               call h5_write(h5, g//'columns', reshape([ce, f%element_group(ce), f%node_line(f%element_nodes(1, ce))], &
-                             [size(ce), 3]), error, units='1')
-            end associate
-            if (allocated(error)) return
-            call h5_write_attr(h5, g//'columns', 'columns', 'element storey line of each column '// &
-                               'segment of /<analysis>/<b>/columns and /influence/<b>/columns '// &
-                               '(element: row of elements, 1-based)', error)
-         end associate
-      end subroutine write_frame
-
-
-
-      !> The DOF layout of a frame's `u_nodes`: node and direction of each DOF, and each node's
-      !> displacements as combinations of the DOFs (the constraints' master-slave map).
-      subroutine write_dof_layout(g, b, s)
-         character(len=*), intent(in) :: g
-         type(structure_model), intent(in) :: b
-         type(building_model), intent(in) :: s
-
-         associate (f => s%frame%frame)
-            call h5_write(h5, g//'dofs', reshape([b%dof_node, b%dof_direction], [b%n, 2]), error, units='1')
-            if (allocated(error)) return
-            call h5_write_attr(h5, g//'dofs', 'columns', 'node direction(1 horizontal, 2 vertical, 3 rotation)', &
-                               error)
-            if (allocated(error)) return
-            call h5_write(h5, g//'node_dofs', transpose(reshape(f%map_dof, [6, f%n_nodes])), error, units='1')
-            if (allocated(error)) return
-            call h5_write_attr(h5, g//'node_dofs', 'columns', node_map_columns, error)
-            if (allocated(error)) return
-            call h5_write(h5, g//'node_coefficients', transpose(reshape(f%map_coef, [6, f%n_nodes])), error, &
-                          units=node_coefficient_units)
-            if (allocated(error)) return
-            call h5_write_attr(h5, g//'node_coefficients', 'columns', node_map_columns, error)
-         end associate
-      end subroutine write_dof_layout
 
       subroutine write_contact()
          character(len=*), parameter :: c = '/coupled/contact'

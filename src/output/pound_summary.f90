@@ -193,7 +193,7 @@ contains
       subroutine building_items(ib)
          integer, intent(in) :: ib
          character(len=:), allocatable :: b
-         integer :: j, k, s, nq, e, best_k
+         integer :: j, k, s, nq, best_k
          real(dp) :: f, t
          character(len=:), allocatable :: joint
 
@@ -205,15 +205,14 @@ contains
          end if
          call yield_items(items, res, ib, motion)
          call lambda_item(items, res, ib, b, q_shear, 'lambda_storey_shear', 'storey-shear', motion)
-         if (allocated(res%buildings(ib)%frame) .and. allocated(res%influence(ib)%member_lambda) .and. &
+         if (res%buildings(ib)%kind%n_segments() > 0 .and. allocated(res%influence(ib)%member_lambda) .and. &
              allocated(res%cpl%building(ib)%member_time)) then
             nq = size(res%models(ib)%member_names)
-            associate (ml => res%influence(ib)%member_lambda, fr => res%buildings(ib)%frame%frame, &
-                       ce => res%buildings(ib)%frame%column_element)
+            associate (ml => res%influence(ib)%member_lambda, kind => res%buildings(ib)%kind)
                ! Shear (quantity 1 of a segment), then the larger of the end moments (2, 3).
                do k = 1, 2
                   best_k = 0
-                  do s = 1, size(ce)
+                  do s = 1, kind%n_segments()
                      do j = merge(1, 2, k == 1), merge(1, 3, k == 1)
                         if (best_k == 0) then
                            best_k = (s - 1)*nq + j
@@ -224,12 +223,11 @@ contains
                   end do
                   if (best_k == 0) cycle
                   s = (best_k - 1)/nq + 1
-                  e = ce(s)
                   call add(item('building', b, merge('lambda_column_shear ', 'lambda_column_moment', k == 1), &
                                 b//': largest column-segment '//merge('shear lambda ', 'moment lambda', k == 1)// &
                                 motion, ml(best_k), '%', 'segment '//str(s)//' (storey '// &
-                                str(fr%element_group(e))//', column line '// &
-                                str(fr%node_line(fr%element_nodes(1, e)))//', '// &
+                                str(kind%segment_storey(s))//', column line '// &
+                                str(kind%segment_line(s))//', '// &
                                 trim(res%models(ib)%member_names(best_k - (s - 1)*nq))//')', &
                                 res%cpl%building(ib)%member_time(best_k)))
                end do
