@@ -22,6 +22,7 @@
 module pound_analysis
    use iso_fortran_env, only: int64
    use pound_kinds, only: dp
+   use pound_constants, only: pi
    use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str, add_warning
    use pound_analysis_plan, only: analysis_plan, output_steps, stepping_impact, free_exact, lcp_lemke
@@ -442,7 +443,6 @@ contains
       type(contact_pair), intent(in) :: p
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
-      real(dp), parameter :: pi = acos(-1.0_dp)
       type(impact_result) :: imp
 
       half = pi*sqrt(effective_mass(p, models)/p%law%stiffness)

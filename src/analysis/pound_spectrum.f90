@@ -14,6 +14,7 @@
 module pound_spectrum
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
+   use pound_constants, only: two_pi
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_sdof, only: sdof_step_t, sdof_step, sdof_advance
@@ -31,7 +32,6 @@ module pound_spectrum
    integer, parameter :: points_per_period = 32
    !> Periods closer than this relative distance count as the same period in `period_grid`.
    real(dp), parameter :: same_period = 1.0e-9_dp
-   real(dp), parameter :: two_pi = 2.0_dp*acos(-1.0_dp)
    !> Oscillators advanced together by `peak_displacements` (two AVX2 vectors of doubles).
    integer, parameter :: lanes = 8
 

@@ -14,6 +14,7 @@
 !> 1/k = 1/k0 + sum 1/k_p, half = pi/omega.
 module pound_contact_period
    use pound_kinds, only: dp
+   use pound_constants, only: pi
    use pound_structure, only: structure_model
    use pound_contact_pair, only: contact_pair
    use pound_law_smooth, only: is_smooth
@@ -40,7 +41,6 @@ contains
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       real(dp) :: half
-      real(dp), parameter :: pi = acos(-1.0_dp)
       real(dp) :: m(2), kp, minv, flex
       integer :: e
 

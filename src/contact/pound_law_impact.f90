@@ -13,6 +13,7 @@
 !> kinetic energy), the end located by linear interpolation in the last step.
 module pound_law_impact
    use pound_kinds, only: dp
+   use pound_constants, only: pi
    use pound_joint_law, only: joint_law
    implicit none
    private
@@ -47,7 +48,6 @@ contains
       !> Approach speed (m/s), > 0.
       real(dp), intent(in) :: v
       type(impact_result) :: res
-      real(dp), parameter :: pi = acos(-1.0_dp)
       real(dp) :: meff, dmax, h, t, x, u, k1x, k1u, k2x, k2u, k3x, k3u, k4x, k4u, xn, un, f, df, dv, s
       integer :: i
       logical :: defined

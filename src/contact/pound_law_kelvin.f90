@@ -5,6 +5,7 @@
 !> pound_contact_smooth).
 module pound_law_kelvin
    use pound_kinds, only: dp
+   use pound_constants, only: pi
    use pound_error, only: error_type
    use pound_joint_law, only: law_input
    use pound_contact_law, only: contact_law
@@ -59,7 +60,6 @@ contains
       real(dp), intent(in) :: d, ddot, v0
       real(dp), intent(out) :: f, df_dd, df_dv
       logical, intent(out) :: defined
-      real(dp), parameter :: pi = acos(-1.0_dp)
       real(dp) :: xi, c
 
       associate (unused => v0)

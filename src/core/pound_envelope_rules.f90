@@ -4,7 +4,7 @@
 !> depend on the contact step, and the two cannot disagree about what is a valid envelope.
 module pound_envelope_rules
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input
    use pound_strings, only: str
    implicit none
    private
@@ -35,33 +35,33 @@ contains
       n = size(d)
       if (n < 2 .or. size(r) /= n) then
          call fatal_error(error, 'a piecewise envelope needs at least 2 points (d, r) with as many '// &
-                          'forces as penetrations')
+                          'forces as penetrations', status_input)
          return
       end if
       if (n > max_law_points) then
-         call fatal_error(error, 'a piecewise envelope may have at most '//str(max_law_points)//' points')
+         call fatal_error(error, 'a piecewise envelope may have at most '//str(max_law_points)//' points', status_input)
          return
       end if
       if (.not. (d(1) > 0.0_dp .and. r(1) > 0.0_dp)) then
-         call fatal_error(error, 'the first point must have d > 0 and r > 0 (k0 = r/d is its slope)')
+         call fatal_error(error, 'the first point must have d > 0 and r > 0 (k0 = r/d is its slope)', status_input)
          return
       end if
       k0 = r(1)/d(1)
       do i = 2, n
          if (.not. (d(i) > d(i - 1))) then
             call fatal_error(error, 'point '//str(i)//': penetrations must increase, d = '//str(d(i))// &
-                             ' after '//str(d(i - 1)))
+                             ' after '//str(d(i - 1)), status_input)
             return
          end if
          if (.not. (r(i) >= 0.0_dp) .or. (r(i) == 0.0_dp .and. i < n)) then
             call fatal_error(error, 'point '//str(i)//': force r = '//str(r(i))//' must be > 0 '// &
-                             '(only the last point may have r = 0, the fracture point)')
+                             '(only the last point may have r = 0, the fracture point)', status_input)
             return
          end if
          s = (r(i) - r(i - 1))/(d(i) - d(i - 1))
          if (.not. (s < k0*(1.0_dp - 1.0e-9_dp))) then
             call fatal_error(error, 'point '//str(i)//': slope '//str(s)//' must be below the first '// &
-                             'slope k0 = '//str(k0)//' (the envelope yields at point 1)')
+                             'slope k0 = '//str(k0)//' (the envelope yields at point 1)', status_input)
             return
          end if
       end do
@@ -78,11 +78,11 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       if (.not. (k0 > 0.0_dp .and. k0 < huge(1.0_dp))) then
-         call fatal_error(error, 'stiffness k0 must be > 0 and finite, got '//str(k0))
+         call fatal_error(error, 'stiffness k0 must be > 0 and finite, got '//str(k0), status_input)
          return
       end if
       if (.not. (dashpot >= 0.0_dp .and. dashpot < huge(1.0_dp))) then
-         call fatal_error(error, 'dashpot must be >= 0 and finite, got '//str(dashpot))
+         call fatal_error(error, 'dashpot must be >= 0 and finite, got '//str(dashpot), status_input)
       end if
    end subroutine check_law_constants
 

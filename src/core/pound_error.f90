@@ -6,20 +6,35 @@
 !> Beside its message an error carries, where the code that raised it knows them, the time
 !> and step of an integration, the building, the joint and the case it concerns, so that no
 !> caller parses them back out of the text (`error_at` sets them; unknown: -1 or 0).
+!>
+!> Its `status` says what kind of failure it is (`status_input`, `status_io`, ...), set by the
+!> code that raised it, so that a caller that reacts to one kind (a temporary file that
+!> exists: take another name) tests the status, never the message.
 module pound_error
    use pound_kinds, only: dp
    implicit none
    private
 
    public :: error_type, fatal_error, error_at
+   public :: status_failure, status_input, status_io, status_exists
+
+   ! Kinds of failure, the values of `error_type%status`.
+   !> A failure of no more particular kind (the default).
+   integer, parameter :: status_failure = 1
+   !> Input that breaks a rule: a deck, a record file, a value.
+   integer, parameter :: status_input = 2
+   !> A file or folder that cannot be opened, read, written, created or renamed.
+   integer, parameter :: status_io = 3
+   !> A file or folder to be created that exists already (or a file where a folder is wanted).
+   integer, parameter :: status_exists = 4
 
    !> A failure, described in one message for the user, and where it happened as numbers.
    type :: error_type
       !> What failed and where.
       character(len=:), allocatable :: message
-      !> Exit status of a program that stops on it (1: a failure; the main program may use
-      !> others for classes of failures).
-      integer :: status = 1
+      !> Kind of failure (`status_failure`, `status_input`, ...; not an exit status: the main
+      !> program exits 1 on every error).
+      integer :: status = status_failure
       !> Time (s) and step of the integration at which it failed (-1: not an integration's,
       !> or not known).
       real(dp) :: time = -1.0_dp
@@ -30,15 +45,18 @@ module pound_error
 
 contains
 
-   !> Create an error carrying `message`.
-   pure subroutine fatal_error(error, message)
+   !> Create an error carrying `message` and its kind `status` (default `status_failure`).
+   pure subroutine fatal_error(error, message, status)
       !> Error to allocate.
       type(error_type), allocatable, intent(out) :: error
       !> One-line description naming what failed and where.
       character(len=*), intent(in) :: message
+      !> Kind of failure (one of the `status_` values).
+      integer, intent(in), optional :: status
 
       allocate (error)
       error%message = message
+      if (present(status)) error%status = status
    end subroutine fatal_error
 
    !> Say where an allocated `error` happened: the time and step (kept when already known:

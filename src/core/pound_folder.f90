@@ -4,6 +4,7 @@
 module pound_folder
    use pound_error, only: error_type, fatal_error
    use pound_posix, only: posix_directory_names, posix_strerror
+   use pound_strings, only: lower
    implicit none
    private
 
@@ -89,14 +90,14 @@ contains
          close = index(pattern(3:), ']') + 2
          if (close == 2 .or. len(name) == 0) then
             if (len(name) > 0) then
-               if (fold(name(1:1)) == '[') yes = pattern_matches(pattern(2:), name(2:))
+               if (lower(name(1:1)) == '[') yes = pattern_matches(pattern(2:), name(2:))
             end if
             return
          end if
          if (in_set(pattern(2:close - 1), name(1:1))) yes = pattern_matches(pattern(close + 1:), name(2:))
       case default
          if (len(name) > 0) then
-            if (fold(pattern(1:1)) == fold(name(1:1))) yes = pattern_matches(pattern(2:), name(2:))
+            if (lower(pattern(1:1)) == lower(name(1:1))) yes = pattern_matches(pattern(2:), name(2:))
          end if
       end select
    end function pattern_matches
@@ -114,22 +115,15 @@ contains
       i = first
       do while (i <= len(set))
          if (i + 2 <= len(set) .and. set(i + 1:i + 1) == '-') then
-            if (lge(fold(c), fold(set(i:i))) .and. lle(fold(c), fold(set(i + 2:i + 2)))) yes = .true.
+            if (lge(lower(c), lower(set(i:i))) .and. lle(lower(c), lower(set(i + 2:i + 2)))) yes = .true.
             i = i + 3
          else
-            if (fold(c) == fold(set(i:i))) yes = .true.
+            if (lower(c) == lower(set(i:i))) yes = .true.
             i = i + 1
          end if
       end do
       if (negate) yes = .not. yes
    end function in_set
 
-   !> Lower-case letter of `c`.
-   pure character function fold(c)
-      character, intent(in) :: c
-
-      fold = c
-      if (c >= 'A' .and. c <= 'Z') fold = achar(iachar(c) + 32)
-   end function fold
 
 end module pound_folder

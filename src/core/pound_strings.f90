@@ -7,7 +7,7 @@ module pound_strings
    private
 
    public :: str, number_end, decimal_exponent, is_digit, shorten, short_real, fixed_cell, fit_with_suffix, left_cell, right_cell
-   public :: add_warning, plain_real, plain_significant, counted, mm_text
+   public :: add_warning, plain_real, plain_significant, counted, mm_text, lower
 
    !> Shortest readable text of a number.
    interface str
@@ -79,19 +79,11 @@ contains
          if (s(i:i) == '+' .or. s(i:i) == '-') i = i + 1
       end if
       nd = 0
-      do while (i <= n)
-         if (.not. is_digit(s(i:i))) exit
-         i = i + 1
-         nd = nd + 1
-      end do
+      call skip_digits(s, i, nd)
       if (i <= n) then
          if (s(i:i) == '.') then
             i = i + 1
-            do while (i <= n)
-               if (.not. is_digit(s(i:i))) exit
-               i = i + 1
-               nd = nd + 1
-            end do
+            call skip_digits(s, i, nd)
          end if
       end if
       if (nd == 0) return
@@ -107,13 +99,25 @@ contains
          end if
       end if
       nd = 0
-      do while (j <= n)
-         if (.not. is_digit(s(j:j))) exit
-         j = j + 1
-         nd = nd + 1
-      end do
+      call skip_digits(s, j, nd)
       if (nd > 0) q = j - 1
    end function number_end
+
+   !> Move `i` past the decimal digits of `s` that start at `i`, adding their count to `nd`.
+   pure subroutine skip_digits(s, i, nd)
+      !> Text scanned.
+      character(len=*), intent(in) :: s
+      !> Position: the first digit on entry, the first character after the digits on return.
+      integer, intent(inout) :: i
+      !> Digits counted so far.
+      integer, intent(inout) :: nd
+
+      do while (i <= len(s))
+         if (.not. is_digit(s(i:i))) exit
+         i = i + 1
+         nd = nd + 1
+      end do
+   end subroutine skip_digits
 
    !> Decimal exponent of the leading significant digit of a valid real constant `s`
    !> (-huge for zero; +-huge when the exponent field has more than 6 significant digits).
@@ -384,5 +388,18 @@ contains
       grown(n + 1) = text
       call move_alloc(grown, warnings)
    end subroutine add_warning
+
+   !> Lower-case copy of `s` (ASCII letters; the rest as it is).
+   pure function lower(s) result(t)
+      !> Text.
+      character(len=*), intent(in) :: s
+      character(len=len(s)) :: t
+      integer :: i
+
+      t = s
+      do i = 1, len(s)
+         if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') t(i:i) = achar(iachar(s(i:i)) + 32)
+      end do
+   end function lower
 
 end module pound_strings

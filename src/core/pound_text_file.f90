@@ -1,7 +1,7 @@
 !> Whole input files read into memory (decks, accelerograms).
 module pound_text_file
    use, intrinsic :: iso_fortran_env, only: iostat_end, iostat_eor, int64
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input, status_io
    use pound_strings, only: str
    implicit none
    private
@@ -37,12 +37,12 @@ contains
 
       inquire (file=path, exist=exists, size=nbytes)
       if (.not. exists) then
-         call fatal_error(error, path//': cannot open the '//what//': file not found')
+         call fatal_error(error, path//': cannot open the '//what//': file not found', status_io)
          return
       end if
       if (nbytes > huge(1)) then
          call fatal_error(error, path//': the '//what//' has '//str(nbytes)//' bytes, more than '// &
-                          'the '//str(huge(1))//' pound reads')
+                          'the '//str(huge(1))//' pound reads', status_input)
          return
       end if
       msg = ' '
@@ -55,7 +55,7 @@ contains
                status='old', iostat=ios, iomsg=msg)
       end if
       if (ios /= 0) then
-         call fatal_error(error, path//': cannot open the '//what//': '//trim(msg))
+         call fatal_error(error, path//': cannot open the '//what//': '//trim(msg), status_io)
          return
       end if
       if (nbytes <= 0) then
@@ -72,7 +72,7 @@ contains
       ios = 0
       read (u, iostat=ios, iomsg=msg) buf
       close (u)
-      if (ios /= 0) call fatal_error(error, path//': cannot read the '//what//': '//trim(msg))
+      if (ios /= 0) call fatal_error(error, path//': cannot read the '//what//': '//trim(msg), status_io)
    end subroutine read_whole_file
 
    !> Read the unit `u` (formatted stream) line by line until its end (works on pipes).
@@ -97,14 +97,14 @@ contains
          got = 0
          read (u, '(a)', advance='no', size=got, iostat=ios, iomsg=msg) chunk
          if (ios /= 0 .and. ios /= iostat_eor .and. ios /= iostat_end) then
-            call fatal_error(error, path//': cannot read the '//what//': '//trim(msg))
+            call fatal_error(error, path//': cannot read the '//what//': '//trim(msg), status_io)
             return
          end if
          need = n + got
          if (ios == iostat_eor) need = need + 1
          if (need > max_unsized_bytes) then
             call fatal_error(error, path//': the '//what//' read from a pipe or device is larger '// &
-                             'than '//str(max_unsized_bytes/1048576)//' MiB; give it as a regular file')
+                             'than '//str(max_unsized_bytes/1048576)//' MiB; give it as a regular file', status_input)
             return
          end if
          if (need > len(buf)) then

@@ -27,9 +27,9 @@
 module pound_accelerogram
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input
    use pound_text_file, only: read_whole_file
-   use pound_strings, only: counted, str, number_end, decimal_exponent, is_digit, shorten, short_real
+   use pound_strings, only: counted, str, number_end, decimal_exponent, is_digit, shorten, short_real, lower
    implicit none
    private
 
@@ -91,7 +91,7 @@ contains
       fmt = accelerogram_format(path, format)
       if (len(fmt) == 0) then
          call fatal_error(error, path//": unknown accelerogram format '"//trim(format)// &
-                          "' (expected 'at2', 'columns' or 'auto')")
+                          "' (expected 'at2', 'columns' or 'auto')", status_input)
          return
       end if
       call read_whole_file(path, 'accelerogram file', buf, error)
@@ -151,7 +151,7 @@ contains
          call next_line(buf, c, found)
          if (.not. found) then
             call fatal_error(error, path//': only '//str(c%line)//' line(s); an AT2 file has 4 '// &
-                             'header lines and then the values')
+                             'header lines and then the values', status_input)
             return
          end if
          if (i == 1) rec%title = trim(buf(c%first:c%last))
@@ -163,7 +163,7 @@ contains
          return
       end if
       if (npts_header < 2) then
-         call fatal_error(error, path//':4: NPTS = '//str(npts_header)//'; at least 2 samples are needed')
+         call fatal_error(error, path//':4: NPTS = '//str(npts_header)//'; at least 2 samples are needed', status_input)
          return
       end if
       ! Size checks before allocating: every value takes at least 2 bytes (digit, separator).
@@ -173,22 +173,22 @@ contains
          if (npts_header == huge(npts_header)) shown = 'a number of more than 18 digits'
          call fatal_error(error, path//':4: NPTS = '//shown//' values, but the '// &
                           str(max(len(buf) - c%pos + 1, 0))//' bytes after the header hold at most '// &
-                          str(room)//'; the header does not match the file')
+                          str(room)//'; the header does not match the file', status_input)
          return
       end if
       if (npts_header > max_record_points) then
          call fatal_error(error, path//':4: NPTS = '//str(npts_header)//' values, more than '// &
-                          'the '//str(max_record_points)//' a record may have')
+                          'the '//str(max_record_points)//' a record may have', status_input)
          return
       end if
       npts = int(npts_header)
       if (.not. (dt > 0.0_dp)) then
-         call fatal_error(error, path//':4: DT = '//str(dt)//' s; DT must be > 0')
+         call fatal_error(error, path//':4: DT = '//str(dt)//' s; DT must be > 0', status_input)
          return
       end if
       if (dt < record_dt_range(1) .or. dt > record_dt_range(2)) then
          call fatal_error(error, path//':4: DT = '//str(dt)//' s, outside the plausible range '// &
-                          short_real(record_dt_range(1))//'..'//short_real(record_dt_range(2))//' s')
+                          short_real(record_dt_range(1))//'..'//short_real(record_dt_range(2))//' s', status_input)
          return
       end if
 
@@ -226,7 +226,7 @@ contains
       end do
       if (count /= npts) then
          call fatal_error(error, path//': header line 4 gives NPTS = '//str(npts)//' but the file holds '// &
-                          counted(count, 'value'))
+                          counted(count, 'value'), status_input)
          return
       end if
       rec%time = [(real(i - 1, dp)*dt, i=1, npts)]
@@ -245,8 +245,8 @@ contains
 
       npts = 0
       dt = 0.0_dp
-      u = upper(s)
-      p = index(u, 'NPTS')
+      u = lower(s)
+      p = index(u, 'npts')
       ok = .false.
       if (p > 0) call value_after_equals(s, p + 4, b, e, ok)
       if (ok) then
@@ -254,7 +254,7 @@ contains
          ok = is_integer(s(b:e))
          if (ok) then
             npts = count_value(s(b:e))
-            q = index(u(e + 1:), 'DT')
+            q = index(u(e + 1:), 'dt')
             ok = q > 0
          end if
          if (ok) call value_after_equals(s, e + q + 2, b, e, ok)
@@ -276,7 +276,7 @@ contains
       end if
       if (.not. ok) then
          call fatal_error(error, "cannot read NPTS and DT from header line 4 '"//shorten(trim(s))// &
-                          "' (expected 'NPTS= n, DT= dt SEC' or 'n dt NPTS, DT')")
+                          "' (expected 'NPTS= n, DT= dt SEC' or 'n dt NPTS, DT')", status_input)
          return
       end if
       call to_real(s(b:e), dt, error)
@@ -352,21 +352,21 @@ contains
          end do
          if (ntok /= 2) then
             call fatal_error(error, path//':'//str(c%line)//': expected 2 numbers (time in s, '// &
-                             'acceleration), found '//str(ntok)//' fields')
+                             'acceleration), found '//str(ntok)//' fields', status_input)
             return
          end if
          if (n > 0) then
             if (.not. (x(1) > t(n))) then
                call fatal_error(error, path//':'//str(c%line)//': time '//str(x(1))// &
                                 ' s does not increase (previous time '//str(t(n))// &
-                                ' s on line '//str(prev_line)//')')
+                                ' s on line '//str(prev_line)//')', status_input)
                return
             end if
          end if
          if (n == size(t)) then
             if (n >= max_record_points) then
                call fatal_error(error, path//':'//str(c%line)//': more than '//str(max_record_points)// &
-                                ' samples, more than a record may have')
+                                ' samples, more than a record may have', status_input)
                return
             end if
             allocate (tmp(2*n), stat=stat)
@@ -390,7 +390,7 @@ contains
       end do
       if (n < 2) then
          call fatal_error(error, path//': '//str(n)//' data line(s); at least 2 samples '// &
-                          '(time, acceleration) are needed')
+                          '(time, acceleration) are needed', status_input)
          return
       end if
       rec%npts = n
@@ -480,12 +480,12 @@ contains
 
       x = 0.0_dp
       if (decimal_exponent(s) > 300) then
-         call fatal_error(error, "'"//shorten(s)//"' is out of range (magnitude 1e301 or more)")
+         call fatal_error(error, "'"//shorten(s)//"' is out of range (magnitude 1e301 or more)", status_input)
          return
       end if
       read (s, '(f'//str(len(s))//'.0)', iostat=ios) x
       if (ios /= 0) then
-         call fatal_error(error, "'"//shorten(s)//"' is not a finite number")
+         call fatal_error(error, "'"//shorten(s)//"' is not a finite number", status_input)
       end if
    end subroutine to_real
 
@@ -507,7 +507,7 @@ contains
 
       if (abs(x) <= max_record_value) return
       call fatal_error(error, "acceleration '"//shorten(s)//"' is outside the plausible range: "// &
-                       '|value| <= 1e6 (in g, or in the file''s unit converted by the deck''s scale)')
+                       '|value| <= 1e6 (in g, or in the file''s unit converted by the deck''s scale)', status_input)
    end subroutine check_value
 
    subroutine bad_token(path, line, token, error)
@@ -515,7 +515,7 @@ contains
       integer, intent(in) :: line
       type(error_type), allocatable, intent(out) :: error
 
-      call fatal_error(error, path//':'//str(line)//": '"//shorten(token)//"' is not a number")
+      call fatal_error(error, path//':'//str(line)//": '"//shorten(token)//"' is not a number", status_input)
    end subroutine bad_token
 
 
@@ -529,29 +529,5 @@ contains
          is_integer = is_digit(s(i:i))
       end do
    end function is_integer
-
-   pure function lower(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: t
-      integer :: i, k
-
-      t = s
-      do i = 1, len(s)
-         k = iachar(s(i:i))
-         if (k >= iachar('A') .and. k <= iachar('Z')) t(i:i) = achar(k + 32)
-      end do
-   end function lower
-
-   pure function upper(s) result(t)
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: t
-      integer :: i, k
-
-      t = s
-      do i = 1, len(s)
-         k = iachar(s(i:i))
-         if (k >= iachar('a') .and. k <= iachar('z')) t(i:i) = achar(k - 32)
-      end do
-   end function upper
 
 end module pound_accelerogram

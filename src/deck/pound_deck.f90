@@ -72,7 +72,7 @@ module pound_deck
    use pound_deck_record_set, only: expand_record_sets
    use pound_deck_study, only: split_variants, check_parameter_sweep
    use pound_deck_variables, only: max_name_length, max_pairs, max_storeys
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input
    use pound_strings, only: str
    use pound_text_file, only: read_whole_file
    implicit none
@@ -128,13 +128,13 @@ contains
       ng = count([(groups(i)%name == 'ground', i=1, n_groups)])
       if (ng == 0) then
          call fatal_error(error, path//': &ground is missing; at least one &ground is required '// &
-                          "(kind = 'pulse', 'record', 'record_set' or 'synthetic' and its parameters)")
+                          "(kind = 'pulse', 'record', 'record_set' or 'synthetic' and its parameters)", status_input)
          return
       end if
       nb = count([(groups(i)%name == 'building', i=1, n_groups)])
       if (nb == 0) then
          call fatal_error(error, path//': no &building group; give one &building per '// &
-                          'building, left to right')
+                          'building, left to right', status_input)
          return
       end if
 
@@ -151,7 +151,7 @@ contains
             if (d%motions(j)%name == d%motions(k)%name) then
                call fatal_error(error, path//':'//str(groups(i)%line1)//': &ground #'//str(k)// &
                                 ": name = '"//d%motions(k)%name//"' is already the name of "// &
-                                '&ground #'//str(j)//'; the motions of a suite need distinct names')
+                                '&ground #'//str(j)//'; the motions of a suite need distinct names', status_input)
                return
             end if
          end do

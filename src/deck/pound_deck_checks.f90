@@ -7,7 +7,7 @@ module pound_deck_checks
    use pound_config, only: deck_warning_len, history_names, n_history_quantities
    use pound_deck_lexer, only: group_label, group_ref, lower
    use pound_deck_variables, only: findloc_name, join, max_columns
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input
    use pound_kinds, only: dp
    use pound_strings, only: counted, short_real, str
    implicit none
@@ -19,7 +19,7 @@ module pound_deck_checks
    end interface given_count
 
    public :: check_plausible, check_real, fail, warn, site_text, given_count, is_set, parse_history, read_failed, &
-             require_real, site, site_of, take_ints, take_reals, unset_int, unset_real, values_text, widen
+             require_real, site, site_of, take_ints, take_real, take_reals, unset_int, unset_real, values_text, widen
 
    !> Marks namelist values the deck did not give.
    real(dp), parameter :: unset_real = -huge(1.0_dp)
@@ -139,7 +139,7 @@ contains
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
 
-      call fatal_error(error, site_text(at, var)//text)
+      call fatal_error(error, site_text(at, var)//text, status_input)
    end subroutine fail
 
    !> 'deck.nml:14: &building #2 (B): ': where a message about `var` points (the line of its
@@ -193,7 +193,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
 
       if (ios == 0) return
-      call fatal_error(error, at%path//':'//str(at%group%line1)//': '//at%label//': '//trim(msg))
+      call fatal_error(error, at%path//':'//str(at%group%line1)//': '//at%label//': '//trim(msg), status_input)
    end subroutine read_failed
 
    !> Number of values given: position of the last one that is not `unset_real`.
@@ -404,6 +404,29 @@ contains
       end if
       call fail(at, var, shown//' = '//str(x)//', must be '//rule//' '//limit, error)
    end subroutine check_real
+
+   !> Take an optional value: when the deck gives `x`, check it (`check_real`) and store it
+   !> in `dest`; otherwise leave `dest` (its default) alone.
+   pure subroutine take_real(at, var, x, rule, bound, dest, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable name as in the deck.
+      character(len=*), intent(in) :: var
+      !> Value read (`unset_real`: not given).
+      real(dp), intent(in) :: x
+      !> Comparison with the bound: '>', '>=' or '/='.
+      character(len=*), intent(in) :: rule
+      !> Bound of the rule.
+      real(dp), intent(in) :: bound
+      !> Where the value goes.
+      real(dp), intent(inout) :: dest
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. is_set(x)) return
+      call check_real(at, var, x, rule, bound, error)
+      if (.not. allocated(error)) dest = x
+   end subroutine take_real
 
    !> `x` must lie in the plausible range of `var` (if it has one, see `bounds`).
    pure subroutine check_plausible(at, var, x, shown, error, line_of)

@@ -3,7 +3,7 @@
 module pound_deck_ground
    use pound_config, only: ground_config, deck_warning_len
    use pound_constants, only: g_accel
-   use pound_deck_checks, only: check_real, fail, is_set, read_failed, require_real, site, site_of, &
+   use pound_deck_checks, only: check_real, fail, take_real, is_set, read_failed, require_real, site, site_of, &
                                 unset_int, unset_real, warn
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_deck_variables, only: path_len, word_len
@@ -359,11 +359,8 @@ contains
                return
             end if
          end if
-         if (is_set(scale)) then
-            call check_real(at, 'scale', scale, '/=', 0.0_dp, error)
-            if (allocated(error)) return
-            cfg%scale = scale
-         end if
+         call take_real(at, 'scale', scale, '/=', 0.0_dp, cfg%scale, error)
+         if (allocated(error)) return
       end subroutine read_synthetic
 
       !> The variables of `kind = 'pulse'` must not appear with another kind.

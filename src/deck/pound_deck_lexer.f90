@@ -5,7 +5,7 @@
 module pound_deck_lexer
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_deck_variables, only: known_groups, known_variable, variable_list, variable_type
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input
    use pound_strings, only: decimal_exponent, number_end, shorten, str
    use pound_deck_values, only: lower, value_problem
    implicit none
@@ -161,7 +161,7 @@ contains
             if (.not. any(known_groups == gname) .or. len(gname) == 0) then
                call fatal_error(error, path//':'//str(line)//": unknown namelist group '&"// &
                                 printable(text(i + 1:j))//"'; known groups: &analysis, "// &
-                                '&ground, &building, &contact, &sweep, &stripes, &hazard')
+                                '&ground, &building, &contact, &sweep, &stripes, &hazard', status_input)
                return
             end if
             if (n_groups == size(groups)) then
@@ -181,7 +181,7 @@ contains
          else if (c /= ' ' .and. c /= tab) then
             call fatal_error(error, path//':'//str(line)//": text outside a namelist group: '"// &
                              printable(trim(text(i:min(line_end(text, i) - 1, i + 39))))// &
-                             "'; groups start with &name and end with /, comments start with !")
+                             "'; groups start with &name and end with /, comments start with !", status_input)
             return
          end if
          i = i + 1
@@ -232,7 +232,7 @@ contains
             j = name_end(text, i + 1)
             if (lower(text(i + 1:j)) /= 'end') then
                call fatal_error(error, path//':'//str(g%line1)//': '//group_label(g)// &
-                                " is not closed with '/' before line "//str(line))
+                                " is not closed with '/' before line "//str(line), status_input)
                return
             end if
             g%pos2 = i
@@ -249,7 +249,7 @@ contains
             call quoted_end(text, i, j, nl)
             if (j == 0) then
                call fatal_error(error, path//':'//str(g%line1)//': '//group_label(g)// &
-                                ': a character value opened with '//c//' is not closed')
+                                ': a character value opened with '//c//' is not closed', status_input)
                return
             end if
             call push_token(toks, tok_quoted, i, j, line)
@@ -281,7 +281,7 @@ contains
       end do
       if (next > n .and. g%pos2 == 0) then
          call fatal_error(error, path//':'//str(g%line1)//': '//group_label(g)// &
-                          " is not closed with '/'")
+                          " is not closed with '/'", status_input)
          return
       end if
       call check_assignments(path, text, toks, g, error)
@@ -404,7 +404,7 @@ contains
             k = neq + 1
          else if (na == 0) then
             call fatal_error(error, path//':'//str(toks%t(4, k))//': '//label//": expected "// &
-                             "'name = value', found '"//token_text(text, toks, k)//"'")
+                             "'name = value', found '"//token_text(text, toks, k)//"'", status_input)
             return
          else
             k = k + 1
@@ -430,7 +430,7 @@ contains
          end if
          if (.not. known_variable(g%name, vname)) then
             call fatal_error(error, path//':'//str(line)//': '//label//": unknown variable '"// &
-                             printable(vname)//"'; known: "//variable_list(g%name))
+                             printable(vname)//"'; known: "//variable_list(g%name), status_input)
             return
          end if
          call variable_type(g%name, vname, vtype, vsize)
@@ -439,7 +439,7 @@ contains
          if (i > 0) then
             call parse_subscript(designator(i:), vname, vsize, lo, hi_lim, why)
             if (len(why) > 0) then
-               call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
+               call fatal_error(error, path//':'//str(line)//': '//label//': '//why, status_input)
                return
             end if
          end if
@@ -452,7 +452,7 @@ contains
                seen = .false.
             case (tok_equals)
                call fatal_error(error, path//':'//str(toks%t(4, k))//': '//label//': '//vname// &
-                                ": unexpected '='; write "//vname//' = value')
+                                ": unexpected '='; write "//vname//' = value', status_input)
                return
             case default
                tline = toks%t(4, k)
@@ -469,7 +469,7 @@ contains
                      designator = vname
                   end if
                   call fatal_error(error, path//':'//str(tline)//': '//label//': '//designator// &
-                                   ' = '//shorten(printable(token_text(text, toks, k)))//': '//why)
+                                   ' = '//shorten(printable(token_text(text, toks, k)))//': '//why, status_input)
                   return
                end if
                positions = positions + rep
@@ -479,7 +479,7 @@ contains
          hi = lo + positions - 1
          if (vsize == 0 .and. positions > 1) then
             call fatal_error(error, path//':'//str(line)//': '//label//': '//vname//' has '// &
-                             str(int(min(positions, int(huge(1), int64))))//' values, takes one')
+                             str(int(min(positions, int(huge(1), int64))))//' values, takes one', status_input)
             return
          end if
          if (hi > hi_lim) then
@@ -490,7 +490,7 @@ contains
                why = vname//' has '//str(int(min(positions, int(huge(1), int64))))// &
                      ' values, must have at most '//str(hi_lim)
             end if
-            call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
+            call fatal_error(error, path//':'//str(line)//': '//label//': '//why, status_input)
             return
          end if
          call earlier_owner(g, vname, lo, int(hi), k, before)
@@ -502,7 +502,7 @@ contains
                why = vname//' is given twice (also on line '//str(before)// &
                      '); give each variable once per group'
             end if
-            call fatal_error(error, path//':'//str(line)//': '//label//': '//why)
+            call fatal_error(error, path//':'//str(line)//': '//label//': '//why, status_input)
             return
          end if
          call add_var(g, vname, line, lo, int(hi))
@@ -723,13 +723,13 @@ contains
          if (idx /= 0) then
             call fatal_error(error, path//':'//str(groups(i)%line1)//': &'//name// &
                              ' appears again (first at line '//str(groups(idx)%line1)// &
-                             '); exactly one &'//name//' is allowed')
+                             '); exactly one &'//name//' is allowed', status_input)
             return
          end if
          idx = i
       end do
       if (idx == 0) call fatal_error(error, path//': &'//name//' is missing; exactly one &'// &
-                                     name//' is required ('//contents//')')
+                                     name//' is required ('//contents//')', status_input)
    end subroutine find_single
 
    !> Just the text of group `g`, as a one-record internal file for a namelist read:

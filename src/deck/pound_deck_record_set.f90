@@ -7,7 +7,7 @@ module pound_deck_record_set
    use pound_config, only: ground_config
    use pound_deck_checks, only: fail, site_of
    use pound_deck_lexer, only: group_ref
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input
    use pound_folder, only: folder_files
    use pound_strings, only: str
    implicit none
@@ -76,7 +76,7 @@ contains
                                 str(groups(origin(i))%occurrence)//": motion '"//out(i)%name// &
                                 "' (of a record set: named by its file stem) is already the name of a motion of "// &
                                 '&ground #'//str(groups(origin(j))%occurrence)//'; the motions of a suite need '// &
-                                'distinct names')
+                                'distinct names', status_input)
                return
             end if
          end do

@@ -5,7 +5,7 @@
 module pound_deck_risk
    use pound_config, only: deck_type, risk_config, is_frame
    use pound_constants, only: g_accel
-   use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, &
+   use pound_deck_checks, only: check_real, fail, take_real, given_count, is_set, read_failed, &
                                 site, site_of, unset_real
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_deck_targets, only: take_target_quantities
@@ -81,11 +81,8 @@ contains
             r%target_lambda = d%sweep%target
             r%target_quantities = d%sweep%target_quantities
          end if
-         if (is_set(target_lambda)) then
-            call check_real(at, 'target_lambda', target_lambda, '>', 0.0_dp, error)
-            if (allocated(error)) return
-            r%target_lambda = target_lambda
-         end if
+         call take_real(at, 'target_lambda', target_lambda, '>', 0.0_dp, r%target_lambda, error)
+         if (allocated(error)) return
          if (len_trim(target_quantities) > 0) then
             call take_target_quantities(at, target_quantities, any([(is_frame(d%buildings(ios)), &
                                         ios=1, size(d%buildings))]), any(d%buildings%storey_law == 'bilinear' .or. &
@@ -156,11 +153,8 @@ contains
          end if
       end do
       r%rate = rate(1:n)
-      if (is_set(years)) then
-         call check_real(at, 'years', years, '>', 0.0_dp, error)
-         if (allocated(error)) return
-         r%years = years
-      end if
+      call take_real(at, 'years', years, '>', 0.0_dp, r%years, error)
+      if (allocated(error)) return
       if (is_set(target_probability)) then
          call check_real(at, 'target_probability', target_probability, '>', 0.0_dp, error)
          if (allocated(error)) return

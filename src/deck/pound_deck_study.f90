@@ -8,7 +8,7 @@ module pound_deck_study
    use pound_deck_lexer, only: group_ref, lower, is_name_char
    use pound_law_registry, only: law_reads, law_restitution, law_from_config
    use pound_contact_law, only: contact_law
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input
    use pound_law_smooth, only: hertz_stiffness_range, smooth_law
    use pound_kinds, only: dp
    use pound_strings, only: str
@@ -273,7 +273,7 @@ contains
                          hertz_stiffness_range(1) .and. c%stiffness <= hertz_stiffness_range(2))) &
                         call fatal_error(law_error, "law '"//cc%law//"': a Hertz-type stiffness must be in "// &
                                          str(hertz_stiffness_range(1))//' to '//str(hertz_stiffness_range(2))// &
-                                         ' kN/m^(3/2), as the deck''s stiffness (concrete floors: about 1e6 to 1e9)')
+                                         ' kN/m^(3/2), as the deck''s stiffness (concrete floors: about 1e6 to 1e9)', status_input)
                   end select
                end if
                if (allocated(law_error)) then

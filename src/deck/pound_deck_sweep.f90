@@ -1,7 +1,7 @@
 !> Reader of `&sweep`: the range of seismic-joint gaps and the optional target for |lambda|.
 module pound_deck_sweep
    use pound_config, only: sweep_config
-   use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, require_real, &
+   use pound_deck_checks, only: check_real, fail, take_real, given_count, is_set, read_failed, require_real, &
                                 site, site_of, unset_int, unset_real
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_deck_study, only: take_parameter_sweep, max_study_values
@@ -115,16 +115,10 @@ contains
       subroutine take_target(error)
          type(error_type), allocatable, intent(out) :: error
 
-         if (is_set(target_lambda)) then
-            call check_real(at, 'target_lambda', target_lambda, '>', 0.0_dp, error)
-            if (allocated(error)) return
-            cfg%target = target_lambda
-         end if
-         if (is_set(refine_tolerance)) then
-            call check_real(at, 'refine_tolerance', refine_tolerance, '>', 0.0_dp, error)
-            if (allocated(error)) return
-            cfg%refine_tolerance = refine_tolerance
-         end if
+         call take_real(at, 'target_lambda', target_lambda, '>', 0.0_dp, cfg%target, error)
+         if (allocated(error)) return
+         call take_real(at, 'refine_tolerance', refine_tolerance, '>', 0.0_dp, cfg%refine_tolerance, error)
+         if (allocated(error)) return
          call take_target_quantities(at, target_quantities, has_frame, bilinear(), cfg%target_quantities, error)
       end subroutine take_target
 

@@ -3,7 +3,7 @@
 !> and the ASCII lower case the deck's names are compared in (`lower`).
 module pound_deck_values
    use, intrinsic :: iso_fortran_env, only: int64
-   use pound_strings, only: decimal_exponent, number_end, shorten, str
+   use pound_strings, only: decimal_exponent, lower, number_end, shorten, str
    implicit none
    private
 
@@ -123,20 +123,5 @@ contains
       if (s(1:1) == '+' .or. s(1:1) == '-') s = s(2:)
       is_special_real = s == 'inf' .or. s == 'infinity' .or. s == 'nan'
    end function is_special_real
-
-
-   !> Lower-case copy of `s` (ASCII).
-   pure function lower(s) result(t)
-      !> Text.
-      character(len=*), intent(in) :: s
-      character(len=len(s)) :: t
-      integer :: i
-
-      t = s
-      do i = 1, len(s)
-         if (s(i:i) >= 'A' .and. s(i:i) <= 'Z') t(i:i) = achar(iachar(s(i:i)) + 32)
-      end do
-   end function lower
-
 
 end module pound_deck_values

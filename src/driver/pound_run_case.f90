@@ -190,8 +190,10 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
       !> What distinguishes this case (defaults: the configuration as it is).
-      type(case_options), intent(in), optional :: options
-      type(ground_motion_t) :: deck_gm
+      type(case_options), intent(in), optional, target :: options
+      type(ground_motion_t), target :: deck_gm
+      !> The case's ground motion: `options%ground`, else the deck's (`deck_gm`).
+      type(ground_motion_t), pointer :: gm
       type(contact_pair), allocatable :: pairs(:)
       type(analysis_plan) :: plan
       character(len=:), allocatable :: prefix, text, joint_warnings(:)
@@ -221,15 +223,17 @@ contains
                           'quantities, shorten t_end or enlarge dt')
          return
       end if
-      if (has_ground()) then
-         call sample_ground(options%ground, deck%analysis%dt, n_steps, ag)
-         res%ground_text = describe_ground(options%ground)
-      else
+      nullify (gm)
+      if (present(options)) then
+         if (allocated(options%ground)) gm => options%ground
+      end if
+      if (.not. associated(gm)) then
          call deck_ground_motion(deck, deck_gm, error)
          if (allocated(error)) return
-         call sample_ground(deck_gm, deck%analysis%dt, n_steps, ag)
-         res%ground_text = describe_ground(deck_gm)
+         gm => deck_gm
       end if
+      call sample_ground(gm, deck%analysis%dt, n_steps, ag)
+      res%ground_text = describe_ground(gm)
       res%ag_out = ag(0:n_steps:deck%analysis%output_every)
 
       ! Models.
@@ -275,11 +279,7 @@ contains
          if (present(options)) then
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
-         if (has_ground()) then
-            call run_coupled(plan, res%models, ag, pairs, res%cpl, res%cs, error, options%ground, sink)
-         else
-            call run_coupled(plan, res%models, ag, pairs, res%cpl, res%cs, error, deck_gm, sink)
-         end if
+         call run_coupled(plan, res%models, ag, pairs, res%cpl, res%cs, error, gm, sink)
          if (allocated(error)) then
             error%message = prefix//error%message
             return
@@ -288,12 +288,7 @@ contains
          if (res%has_uncoupled) then
             res%influence = influence_of(res%unc, res%cpl, res%models)
             if (deck%sweep%active) then
-               if (has_ground()) then
-                  call run_sweep(plan, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, &
-                                 options%ground)
-               else
-                  call run_sweep(plan, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, deck_gm)
-               end if
+               call run_sweep(plan, deck%sweep, res%models, ag, pairs, res%unc, res%sweep, error, gm)
                if (allocated(error)) then
                   error%message = prefix//error%message
                   return
@@ -319,11 +314,7 @@ contains
                                unit_suspects(deck%buildings(ib)))
          if (len(text) > 0) call add_warning(res%warnings, text)
       end do
-      if (has_ground()) then
-         call ground_plausible(options%ground)
-      else
-         call ground_plausible(deck_gm)
-      end if
+      call ground_plausible(gm)
       res%n_input_warnings = size(res%warnings)
       if (res%has_uncoupled) call collect(res%unc%warnings)
       if (res%has_coupled) call collect(res%cpl%warnings)
@@ -393,18 +384,9 @@ contains
          logical, intent(in) :: law
          type(joint_study_result), intent(out) :: study
 
-         if (has_ground()) then
-            call run_deck_study(law, deck, plan, res%models, ag, res%unc, study, error, options%ground)
-         else
-            call run_deck_study(law, deck, plan, res%models, ag, res%unc, study, error, deck_gm)
-         end if
+         call run_deck_study(law, deck, plan, res%models, ag, res%unc, study, error, gm)
          if (allocated(error)) error%message = prefix//error%message
       end subroutine deck_study
-
-      logical function has_ground()
-         has_ground = .false.
-         if (present(options)) has_ground = allocated(options%ground)
-      end function has_ground
 
       !> The independent joints and, where there are several, each one's sweep (its warnings
       !> into `joint_warnings`).
@@ -412,13 +394,8 @@ contains
          res%joints = find_joints(pairs, structure_names(res%models))
          if (size(res%joints) < 2) return
          allocate (character(len=1) :: joint_warnings(0))
-         if (has_ground()) then
-            call run_joint_sweeps(plan, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
-                                  joint_warnings, error, options%ground)
-         else
-            call run_joint_sweeps(plan, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
-                                  joint_warnings, error, deck_gm)
-         end if
+         call run_joint_sweeps(plan, deck%sweep, res%models, ag, pairs, res%unc, res%joints, &
+                               joint_warnings, error, gm)
          if (allocated(error)) error%message = prefix//error%message
       end subroutine joint_sweeps
 

@@ -310,14 +310,14 @@ contains
       end if
    end subroutine write_h5
 
-   !> Stop with the message and the error's status (1 unless the code that raised it chose
-   !> another) if `err` is set; remove this run's temporaries.
+   !> Stop with the message and exit status 1 if `err` is set (whatever its kind: the
+   !> `status` of an error is for the code, not the shell); remove this run's temporaries.
    subroutine check(err)
       type(error_type), allocatable, intent(in) :: err
 
       if (.not. allocated(err)) return
       call discard_outputs(outputs)
-      call stop_with(err%message, err%status)
+      call stop_with(err%message, 1)
    end subroutine check
 
    !> Write `message` to standard error and end the process with `status` by _exit, after

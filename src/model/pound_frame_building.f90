@@ -33,6 +33,7 @@
 module pound_frame_building
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
+   use pound_constants, only: pi
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: building_config
@@ -52,7 +53,6 @@ module pound_frame_building
 
    public :: frame_data, build_frame_building, frame_spec_of, column_rows, column_elements, shear_rows
 
-   real(dp), parameter :: pi = acos(-1.0_dp)
 
    !> What the writers need of a frame besides its structural model.
    type :: frame_data

@@ -23,7 +23,7 @@ module pound_ground_motion
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str
-   use pound_constants, only: g_accel
+   use pound_constants, only: g_accel, pi
    use pound_accelerogram, only: accelerogram_t, read_accelerogram
    implicit none
    private
@@ -267,7 +267,6 @@ contains
       real(dp), intent(out) :: pga
       !> Time of the peak (s).
       real(dp), intent(out) :: t_pga
-      real(dp), parameter :: pi = acos(-1.0_dp)
       real(dp) :: theta, tk, ak
       integer :: i
 

@@ -10,6 +10,7 @@
 module pound_shear_building
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_kinds, only: dp
+   use pound_constants, only: pi
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_plausibility, only: buckling_hint
@@ -28,7 +29,6 @@ module pound_shear_building
       module procedure structure_label
    end interface building_label
 
-   real(dp), parameter :: pi = acos(-1.0_dp)
 
    !> A shear building ready for time integration: the structural model (kd = 1, floor i
    !> on DOF i, every DOF moved by the ground) and its storey table for the writers.

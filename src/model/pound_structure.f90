@@ -18,13 +18,12 @@
 !> builder and then only read, every reader needs most of it, and accessors for a dozen
 !> arrays would add nothing but calls inside the time-step kernels. The invariants (sizes
 !> n, kd+1; one drift and one shear row per storey; `floor_dof` within 1..n) are the
-!> builder's to keep and are checked by `structure_check`. Builder-specific data (e.g. the
+!> builder's to keep. Builder-specific data (e.g. the
 !> shear building's storey table of heights, storey stiffnesses and axial loads) lives in
 !> an extension of this type (`shear_building` extends it), so writers can still reach it.
 module pound_structure
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_band, only: band_symv
    implicit none
@@ -33,7 +32,7 @@ module pound_structure
    public :: structure_model, recovery_rows, recover, recover_all, recover_peaks, group_rows, structure_label
    public :: structure_names
    public :: structure_strain_energy
-   public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
+   public :: chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
              structure_end_row, single_row, structure_yields
 
    !> Natural modes a builder computes besides the two Rayleigh modes: the periods the listing
@@ -649,38 +648,5 @@ contains
       shear = drift
       shear%scale = k
    end subroutine chain_rows
-
-   !> Check the sizes and index ranges of a model (a builder's invariants).
-   pure subroutine structure_check(m, error)
-      !> The model.
-      class(structure_model), intent(in) :: m
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      if (.not. (allocated(m%kt) .and. allocated(m%mass) .and. allocated(m%ground) .and. &
-                 allocated(m%floor_dof) .and. allocated(m%drift%start) .and. allocated(m%shear%start))) then
-         call fatal_error(error, structure_label(m)//': incomplete structural model')
-         return
-      end if
-      if (size(m%kt, 1) /= m%kd + 1 .or. size(m%kt, 2) /= m%n .or. size(m%mass) /= m%n .or. &
-          size(m%ground) /= m%n .or. m%kd < 1) then
-         call fatal_error(error, structure_label(m)//': structural model of '//str(m%n)//' DOFs and '// &
-                          'half-bandwidth '//str(m%kd)//' has arrays of the wrong size')
-         return
-      end if
-      if (any(m%floor_dof < 1) .or. any(m%floor_dof > m%n) .or. m%drift%n /= m%shear%n .or. &
-          any(m%drift%dof < 1) .or. any(m%drift%dof > m%n) .or. any(m%shear%dof < 1) .or. &
-          any(m%shear%dof > m%n)) then
-         call fatal_error(error, structure_label(m)//': response points or storey rows out of range')
-         return
-      end if
-      if (m%member%n > 0) then
-         if (.not. allocated(m%member_names) .or. .not. allocated(m%member_group)) then
-            call fatal_error(error, structure_label(m)//': member rows without names')
-         else if (mod(m%member%n, max(1, size(m%member_names))) /= 0 .or. any(m%member%dof < 1) .or. &
-                  any(m%member%dof > m%n)) then
-            call fatal_error(error, structure_label(m)//': member rows out of range')
-         end if
-      end if
-   end subroutine structure_check
 
 end module pound_structure

@@ -23,7 +23,7 @@
 !> SIGKILL cannot be caught: it may leave `.<stem>.*.partial` files in the output folder.
 module pound_files
    use, intrinsic :: iso_c_binding, only: c_char, c_int, c_int64_t, c_null_char, c_ptr, c_funloc, c_funptr
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input, status_io, status_exists
    use pound_strings, only: str
    use pound_posix, only: posix_rename, posix_unlink, posix_unlink_c, posix_mkdir, posix_file_id, &
                           posix_is_directory, posix_lock_directory, posix_unlock_directory, &
@@ -106,19 +106,19 @@ contains
          set%summary_previous = join_path(dir, '.'//stem//'_summary.csv.'//tag//'.previous.partial')
          if (len(set%h5_tmp) >= max_name .or. len(set%listing_tmp) >= max_name .or. &
              len(set%summary_tmp) >= max_name) then
-            call fatal_error(error, 'output path too long: '//set%summary_tmp)
+            call fatal_error(error, 'output path too long: '//set%summary_tmp, status_input)
             return
          end if
          call create_new(set%listing_tmp, 1, error)
          if (allocated(error)) then
-            if (index(error%message, 'exists') > 0) cycle
+            if (error%status == status_exists) cycle
             return
          end if
          call create_new(set%h5_tmp, 2, error)
          if (.not. allocated(error)) call create_new(set%summary_tmp, 3, error)
          if (.not. allocated(error)) return
          call discard_outputs(set)
-         if (index(error%message, 'exists') == 0) return
+         if (error%status /= status_exists) return
       end do
    end subroutine plan_outputs
 
@@ -145,50 +145,46 @@ contains
          e = posix_rename(set%h5, set%previous)
          had_previous = e == 0
          if (e /= 0 .and. e /= errno_enoent) then
-            call fatal_error(error, 'cannot replace '//set%h5//': '//posix_strerror(e))
+            call fatal_error(error, 'cannot replace '//set%h5//': '//posix_strerror(e), status_io)
          end if
       end if
       if (.not. allocated(error)) then
          e = posix_rename(set%summary, set%summary_previous)
          had_summary = e == 0
          if (e /= 0 .and. e /= errno_enoent) then
-            call fatal_error(error, 'cannot replace '//set%summary//': '//posix_strerror(e))
+            call fatal_error(error, 'cannot replace '//set%summary//': '//posix_strerror(e), status_io)
             call restore_previous(.false.)
          end if
       end if
+      call publish(set%h5_tmp, set%h5, .false.)
+      call publish(set%summary_tmp, set%summary, .true.)
+      summary_published = .not. allocated(error)
+      call publish(set%listing_tmp, set%listing, .true.)
       if (.not. allocated(error)) then
-         e = posix_rename(set%h5_tmp, set%h5)
-         if (e /= 0) then
-            call fatal_error(error, 'cannot publish '//set%h5//' (renaming '//set%h5_tmp//'): '// &
-                             posix_strerror(e))
-            call restore_previous(.false.)
-         end if
-      end if
-      if (.not. allocated(error)) then
-         e = posix_rename(set%summary_tmp, set%summary)
-         summary_published = e == 0
-         if (e /= 0) then
-            call fatal_error(error, 'cannot publish '//set%summary//' (renaming '//set%summary_tmp//'): '// &
-                             posix_strerror(e)//'; '//set%h5//' was not published either')
-            call restore_previous(.true.)
-         end if
-      end if
-      if (.not. allocated(error)) then
-         e = posix_rename(set%listing_tmp, set%listing)
-         if (e /= 0) then
-            call fatal_error(error, 'cannot publish '//set%listing//' (renaming '//set%listing_tmp// &
-                             '): '//posix_strerror(e)//'; '//set%h5//' was not published either')
-            call restore_previous(.true.)
-         else
-            if (had_previous) e = posix_unlink(set%previous)
-            if (had_summary) e = posix_unlink(set%summary_previous)
-         end if
+         if (had_previous) e = posix_unlink(set%previous)
+         if (had_summary) e = posix_unlink(set%summary_previous)
       end if
       call discard_outputs(set)
       call posix_unlock_directory(lock)
       call leave_critical()
 
    contains
+
+      !> Rename the temporary `tmp` to its final name `final` unless an error came before; on
+      !> failure the error and the undo (`h5_in_place`: the new `.h5` is in place already).
+      subroutine publish(tmp, final, h5_in_place)
+         character(len=*), intent(in) :: tmp, final
+         logical, intent(in) :: h5_in_place
+         character(len=:), allocatable :: text
+
+         if (allocated(error)) return
+         e = posix_rename(tmp, final)
+         if (e == 0) return
+         text = 'cannot publish '//final//' (renaming '//tmp//'): '//posix_strerror(e)
+         if (h5_in_place) text = text//'; '//set%h5//' was not published either'
+         call fatal_error(error, text, status_io)
+         call restore_previous(h5_in_place)
+      end subroutine publish
 
       !> Undo: the new files in place removed (`published`: the new `.h5`, and the new
       !> `_summary.csv` if it was renamed), the previous ones renamed back.
@@ -232,14 +228,14 @@ contains
             target = set%summary
          end if
          if (posix_is_directory(target)) then
-            call fatal_error(error, 'output '//target//' is a folder: remove or rename it')
+            call fatal_error(error, 'output '//target//' is a folder: remove or rename it', status_io)
             return
          end if
          do i = 1, size(set%inputs)
             if (len_trim(set%inputs(i)) == 0) cycle
             if (same_file(target, trim(set%inputs(i)))) then
                call fatal_error(error, 'output '//target//' would replace the input file '// &
-                                trim(set%inputs(i))//': choose another output folder (-o) or rename the deck')
+                                trim(set%inputs(i))//': choose another output folder (-o) or rename the deck', status_input)
                return
             end if
          end do
@@ -259,9 +255,9 @@ contains
       if (ios /= 0) then
          inquire (file=path, exist=there)
          if (there) then
-            call fatal_error(error, 'cannot create '//path//': it exists')
+            call fatal_error(error, 'cannot create '//path//': it exists', status_exists)
          else
-            call fatal_error(error, 'cannot write in the output folder '//directory_of(path)//': '//trim(msg))
+            call fatal_error(error, 'cannot write in the output folder '//directory_of(path)//': '//trim(msg), status_io)
          end if
          return
       end if
@@ -363,7 +359,7 @@ contains
       integer :: i, e
 
       if (len(path) == 0) then
-         call fatal_error(error, 'the output folder name is empty')
+         call fatal_error(error, 'the output folder name is empty', status_input)
          return
       end if
       do i = 2, len(path) + 1
@@ -377,10 +373,10 @@ contains
          if (e == errno_eexist) then
             if (posix_is_directory(path(:i - 1))) cycle
             call fatal_error(error, 'cannot create the output folder '//path//': '//path(:i - 1)// &
-                             ' exists and is not a folder')
+                             ' exists and is not a folder', status_exists)
          else
             call fatal_error(error, 'cannot create the output folder '//path//': '//path(:i - 1)// &
-                             ': '//posix_strerror(e))
+                             ': '//posix_strerror(e), status_io)
          end if
          return
       end do

@@ -58,7 +58,7 @@ module pound_h5
                    H5T_IEEE_F64LE, H5P_DATASET_CREATE_F, h5pset_chunk_f, h5pset_shuffle_f, h5pset_deflate_f, &
                    H5P_DATASET_XFER_F, h5pset_buffer_f
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_io
    use pound_posix, only: posix_set_errno, posix_unlink, posix_is_empty_file
    implicit none
    private
@@ -301,7 +301,7 @@ contains
       call h5pclose_f(fapl, ignore)
       if (hdferr /= 0) then
          file%id = -1_hid_t
-         call fatal_error(error, "cannot create HDF5 file '"//path//"': h5fcreate_f failed"//create_reason())
+         call fatal_error(error, "cannot create HDF5 file '"//path//"': h5fcreate_f failed"//create_reason(), status_io)
          return
       end if
       file%name = path
@@ -326,7 +326,7 @@ contains
       if (allocated(error)) return
       inquire (file=path, exist=there)
       if (.not. there) then
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': no such file")
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': no such file", status_io)
          return
       end if
       call file_access_list(path, fapl, error)
@@ -340,7 +340,7 @@ contains
       if (hdferr /= 0) then
          file%id = -1_hid_t
          call fatal_error(error, "cannot open HDF5 file '"//path// &
-                          "': h5fopen_f failed (not an HDF5 file, or unreadable)")
+                          "': h5fopen_f failed (not an HDF5 file, or unreadable)", status_io)
          return
       end if
       file%name = path
@@ -362,7 +362,7 @@ contains
       file%writable = .false.
       if (hdferr /= 0) then
          call fatal_error(error, "cannot close HDF5 file '"//h5_file_name(file)//"': h5fclose_f failed"// &
-                          system_reason())
+                          system_reason(), status_io)
       end if
    end subroutine h5_close
 

@@ -9,17 +9,7 @@ submodule(pound_h5) pound_h5_attributes
 contains
 
    !> String attribute (variable-length UTF-8, stored exactly as given).
-   module subroutine write_attr_string(file, path, name, value, error)
-      !> File open for writing.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Text; may be long and contain newlines.
-      character(len=*), intent(in) :: value
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
+   module procedure write_attr_string
       type(h5_ids) :: ids
       character(len=:), allocatable :: what
       integer(hsize_t) :: dims(0)
@@ -34,23 +24,11 @@ contains
       end if
       if (.not. allocated(error)) call put_string(ids, file, what, path, value, error)
       call release(ids, file, 'write', what, path, error)
-   end subroutine write_attr_string
+   end procedure write_attr_string
 
    !> String attribute `name` (variable-length UTF-8) of the open object `obj` at `p`, which
    !> has none of that name (a dataset just created): no path walk.
-   module subroutine string_attribute_on(obj, file, p, name, value, error)
-      !> The open object.
-      integer(hid_t), intent(in) :: obj
-      !> File open for writing.
-      type(h5_file), intent(in) :: file
-      !> Its path (named in messages).
-      character(len=*), intent(in) :: p
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Text.
-      character(len=*), intent(in) :: value
-      !> Error state (kept when set).
-      type(error_type), allocatable, intent(inout) :: error
+   module procedure string_attribute_on
       type(h5_ids) :: ids
       character(len=:), allocatable :: what
       integer(hsize_t) :: dims(0)
@@ -66,7 +44,7 @@ contains
       end if
       if (.not. allocated(error)) call put_string(ids, file, what, p, value, error)
       call release(ids, file, 'write', what, p, error)
-   end subroutine string_attribute_on
+   end procedure string_attribute_on
 
    !> Write `value` into the open variable-length string attribute of `ids`.
    subroutine put_string(ids, file, what, path, value, error)
@@ -84,79 +62,51 @@ contains
    end subroutine put_string
 
    !> Real scalar attribute.
-   module subroutine write_attr_real_0d(file, path, name, value, error)
-      !> File open for writing.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Value.
-      real(dp), intent(in) :: value
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
+   module procedure write_attr_real_0d
+      real(dp), target :: v(1)
       integer(hsize_t) :: dims(0)
-      integer :: hdferr
 
-      call new_attribute(file, path, name, H5T_IEEE_F64LE, dims, ids, error)
-      if (.not. allocated(error)) then
-         call h5awrite_f(ids%attr, H5T_NATIVE_DOUBLE, value, [1_hsize_t], hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, &
-                                    'h5awrite_f failed')
-      end if
-      call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
-   end subroutine write_attr_real_0d
+      v(1) = value
+      call numeric_attribute(file, path, name, H5T_IEEE_F64LE, H5T_NATIVE_DOUBLE, dims, c_loc(v), error)
+   end procedure write_attr_real_0d
 
    !> Real 1-D attribute (native doubles).
-   module subroutine write_attr_real_1d(file, path, name, value, error)
-      !> File open for writing.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Values.
-      real(dp), intent(in) :: value(:)
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
+   module procedure write_attr_real_1d
       real(dp), allocatable, target :: packed(:)
-      integer :: hdferr
 
       packed = value
-      call new_attribute(file, path, name, H5T_NATIVE_DOUBLE, shape(value, kind=hsize_t), ids, error)
+      call numeric_attribute(file, path, name, H5T_NATIVE_DOUBLE, H5T_NATIVE_DOUBLE, shape(value, kind=hsize_t), &
+                             c_loc(packed), error)
+   end procedure write_attr_real_1d
+
+   !> Integer scalar attribute (stored as 32-bit signed).
+   module procedure write_attr_int_0d
+      integer, target :: v(1)
+      integer(hsize_t) :: dims(0)
+
+      v(1) = value
+      call numeric_attribute(file, path, name, H5T_STD_I32LE, H5T_NATIVE_INTEGER, dims, c_loc(v), error)
+   end procedure write_attr_int_0d
+
+   !> Numeric attribute `name` of file type `ftype` and shape `dims` (none: a scalar) on the
+   !> object at `path`, written from `buffer` of memory type `mtype`.
+   subroutine numeric_attribute(file, path, name, ftype, mtype, dims, buffer, error)
+      type(h5_file), intent(in) :: file
+      character(len=*), intent(in) :: path, name
+      integer(hid_t), intent(in) :: ftype, mtype
+      integer(hsize_t), intent(in) :: dims(:)
+      type(c_ptr), intent(in) :: buffer
+      type(error_type), allocatable, intent(out) :: error
+      type(h5_ids) :: ids
+      integer :: hdferr
+
+      call new_attribute(file, path, name, ftype, dims, ids, error)
       if (.not. allocated(error)) then
-         call h5awrite_f(ids%attr, H5T_NATIVE_DOUBLE, c_loc(packed), hdferr)
+         call h5awrite_f(ids%attr, mtype, buffer, hdferr)
          if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, 'h5awrite_f failed')
       end if
       call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
-   end subroutine write_attr_real_1d
-
-   !> Integer scalar attribute (stored as 32-bit signed).
-   module subroutine write_attr_int_0d(file, path, name, value, error)
-      !> File open for writing.
-      type(h5_file), intent(in) :: file
-      !> Path of the object carrying the attribute ('/' for the root).
-      character(len=*), intent(in) :: path
-      !> Attribute name.
-      character(len=*), intent(in) :: name
-      !> Value.
-      integer, intent(in) :: value
-      !> Error state.
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_ids) :: ids
-      integer(hsize_t) :: dims(0)
-      integer :: hdferr
-
-      call new_attribute(file, path, name, H5T_STD_I32LE, dims, ids, error)
-      if (.not. allocated(error)) then
-         call h5awrite_f(ids%attr, H5T_NATIVE_INTEGER, value, [1_hsize_t], hdferr)
-         if (hdferr /= 0) call fail(error, file, 'write', "attribute '"//name//"' of", path, &
-                                    'h5awrite_f failed')
-      end if
-      call release(ids, file, 'write', "attribute '"//name//"' of", path, error)
-   end subroutine write_attr_int_0d
+   end subroutine numeric_attribute
 
    !> Open the object at `path`; delete attribute `name` if present; create it anew.
    subroutine new_attribute(file, path, name, ftype, dims, ids, error)

@@ -25,10 +25,7 @@ submodule(pound_h5) pound_h5_support
 contains
 
    !> Initialise HDF5 once and check that the handle is free.
-   module subroutine start(file, path, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path
-      type(error_type), allocatable, intent(out) :: error
+   module procedure start
       type(ieee_status_type) :: fp_status
       integer :: hdferr
 
@@ -46,45 +43,35 @@ contains
       call h5open_f(hdferr)
       call ieee_set_status(fp_status)
       if (hdferr /= 0) then
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5open_f failed (HDF5 library)")
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5open_f failed (HDF5 library)", status_io)
          return
       end if
       call h5eset_auto_f(0, hdferr)
       if (hdferr /= 0) then
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5eset_auto_f failed (HDF5 library)")
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5eset_auto_f failed (HDF5 library)", status_io)
          return
       end if
       library_ready = .true.
-   end subroutine start
+   end procedure start
 
    !> File access list that closes every object with the file.
-   module subroutine file_access_list(path, fapl, error)
-      character(len=*), intent(in) :: path
-      integer(hid_t), intent(out) :: fapl
-      type(error_type), allocatable, intent(out) :: error
+   module procedure file_access_list
       integer :: hdferr, ignore
 
       call h5pcreate_f(H5P_FILE_ACCESS_F, fapl, hdferr)
       if (hdferr /= 0) then
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5pcreate_f failed")
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5pcreate_f failed", status_io)
          return
       end if
       call h5pset_fclose_degree_f(fapl, H5F_CLOSE_STRONG_F, hdferr)
       if (hdferr /= 0) then
          call h5pclose_f(fapl, ignore)
-         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5pset_fclose_degree_f failed")
+         call fatal_error(error, "cannot open HDF5 file '"//path//"': h5pset_fclose_degree_f failed", status_io)
       end if
-   end subroutine file_access_list
+   end procedure file_access_list
 
    !> Check the handle (open; writable if `write`) and normalise `path` to '/a/b'.
-   module subroutine check_path(file, path, write, action, p, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path
-      logical, intent(in) :: write
-      character(len=*), intent(in) :: action
-      character(len=:), allocatable, intent(out) :: p
-      type(error_type), allocatable, intent(out) :: error
-
+   module procedure check_path
       p = trim(adjustl(path))
       if (len(p) == 0) p = '/'
       if (p(1:1) /= '/') p = '/'//p
@@ -99,7 +86,7 @@ contains
       else if (index(p, '//') > 0) then
          call fail(error, file, action, 'object', p, 'invalid path (empty name)')
       end if
-   end subroutine check_path
+   end procedure check_path
 
    !> State of the link `prefix` (an absolute path other than '/'), whose parent is a group;
    !> with `any_parent`, of any path: missing when a group above it is missing (h5lexists_f
@@ -139,11 +126,7 @@ contains
    end subroutine link_state
 
    !> Whether every component of the normalised path `p` exists (all but the last as groups).
-   module subroutine path_exists(file, p, exists, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: p
-      logical, intent(out) :: exists
-      type(error_type), allocatable, intent(out) :: error
+   module procedure path_exists
       integer :: i, state
 
       exists = .true.
@@ -160,14 +143,10 @@ contains
             return
          end if
       end do
-   end subroutine path_exists
+   end procedure path_exists
 
    !> Create the missing groups of the normalised path `p` (the last component too if `whole`).
-   module subroutine make_groups(file, p, whole, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: p
-      logical, intent(in) :: whole
-      type(error_type), allocatable, intent(out) :: error
+   module procedure make_groups
       integer(hid_t) :: gid
       integer :: i, last, state, hdferr
 
@@ -220,18 +199,13 @@ contains
          known_group = g
       end subroutine remember
 
-   end subroutine make_groups
+   end procedure make_groups
 
    !> Check the handle and `path` for a new dataset and create the groups above it; `p` is
    !> the normalised path. An object already at `p` is not looked for here (one look-up per
    !> dataset saved): h5dcreate_f refuses it before creating anything, and `create_failed`
    !> then names it.
-   module subroutine dataset_path(file, path, p, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: path
-      character(len=:), allocatable, intent(out) :: p
-      type(error_type), allocatable, intent(out) :: error
-
+   module procedure dataset_path
       call check_path(file, path, .true., 'write', p, error)
       if (allocated(error)) return
       if (p == '/') then
@@ -239,13 +213,10 @@ contains
          return
       end if
       call make_groups(file, p, .false., error)
-   end subroutine dataset_path
+   end procedure dataset_path
 
    !> The error of a failed h5dcreate_f at `p`: an object already there, else the call's failure.
-   module subroutine create_failed(file, p, error)
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: p
-      type(error_type), allocatable, intent(out) :: error
+   module procedure create_failed
       integer :: state
 
       call link_state(file, p, state, error)
@@ -255,15 +226,10 @@ contains
       else
          call fail(error, file, 'write', 'dataset', p, 'h5dcreate_f failed')
       end if
-   end subroutine create_failed
+   end procedure create_failed
 
    !> Scalar (empty `dims`) or simple dataspace.
-   module subroutine new_space(dims, ids, file, action, what, path, error)
-      integer(hsize_t), intent(in) :: dims(:)
-      type(h5_ids), intent(inout) :: ids
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: action, what, path
-      type(error_type), allocatable, intent(out) :: error
+   module procedure new_space
       integer :: hdferr
 
       if (size(dims) == 0) then
@@ -274,12 +240,10 @@ contains
          if (hdferr /= 0) call fail(error, file, action, what, path, 'h5screate_simple_f failed')
       end if
       if (hdferr /= 0) ids%space = -1_hid_t
-   end subroutine new_space
+   end procedure new_space
 
    !> New variable-length UTF-8 C string datatype.
-   module subroutine string_type(type_id, hdferr)
-      integer(hid_t), intent(out) :: type_id
-      integer, intent(out) :: hdferr
+   module procedure string_type
       integer :: ignore
 
       call h5tcopy_f(H5T_C_S1, type_id, hdferr)
@@ -293,14 +257,10 @@ contains
          call h5tclose_f(type_id, ignore)
          type_id = -1_hid_t
       end if
-   end subroutine string_type
+   end procedure string_type
 
    !> NUL-terminated copies of `values(i)(1:lengths(i))` in `chars`, addressed by `ptrs`.
-   module subroutine pack_strings(lengths, values, chars, ptrs)
-      integer, intent(in) :: lengths(:)
-      character(len=*), intent(in) :: values(:)
-      character(kind=c_char), allocatable, target, intent(out) :: chars(:)
-      type(c_ptr), allocatable, intent(out) :: ptrs(:)
+   module procedure pack_strings
       integer :: i, j, pos
 
       allocate (chars(sum(lengths) + size(lengths)), ptrs(size(values)))
@@ -313,14 +273,10 @@ contains
          ptrs(i) = c_loc(chars(pos))
          pos = pos + lengths(i) + 1
       end do
-   end subroutine pack_strings
+   end procedure pack_strings
 
    !> Close every identifier held; report the first failure unless an error is already set.
-   module subroutine release(ids, file, action, what, path, error)
-      type(h5_ids), intent(inout) :: ids
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: action, what, path
-      type(error_type), allocatable, intent(inout) :: error
+   module procedure release
       character(len=:), allocatable :: failed
       integer :: hdferr
 
@@ -348,33 +304,25 @@ contains
       if (allocated(failed) .and. .not. allocated(error)) then
          call fail(error, file, action, what, path, failed//' failed')
       end if
-   end subroutine release
+   end procedure release
 
    !> Error "HDF5 file '<file>': cannot <action> <what> '<path>': <detail>".
-   module subroutine fail(error, file, action, what, path, detail)
-      type(error_type), allocatable, intent(out) :: error
-      type(h5_file), intent(in) :: file
-      character(len=*), intent(in) :: action, what, path, detail
-
+   module procedure fail
       call fatal_error(error, "HDF5 file '"//h5_file_name(file)//"': cannot "//action//" "//what// &
-                       " '"//path//"': "//detail//system_reason())
-   end subroutine fail
+                       " '"//path//"': "//detail//system_reason(), status_io)
+   end procedure fail
 
    !> ': <strerror>' for any errno left by a failed create (errno is cleared before it).
-   module function create_reason() result(text)
-      character(len=:), allocatable :: text
-
+   module procedure create_reason
       text = ''
       if (posix_errno() /= 0) text = ': '//posix_strerror(posix_errno())
-   end function create_reason
+   end procedure create_reason
 
    !> ': <strerror>' when errno holds a storage or permission failure, '' otherwise: HDF5
    !> reports a failed write only as a failed call, the system's reason is in errno.
-   module function system_reason() result(text)
-      character(len=:), allocatable :: text
-
+   module procedure system_reason
       text = posix_storage_error()
       if (len(text) > 0) text = ': '//text
-   end function system_reason
+   end procedure system_reason
 
 end submodule pound_h5_support

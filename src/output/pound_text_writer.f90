@@ -8,7 +8,7 @@
 !> byte reached the file. Messages: 'cannot write the <what> <path>: <reason>'.
 module pound_text_writer
    use, intrinsic :: iso_fortran_env, only: int64
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_io
    use pound_posix, only: posix_set_errno, posix_storage_error
    implicit none
    private
@@ -71,7 +71,7 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
 
-      if (w%first_ios /= 0) call fatal_error(error, failure_text(w, trim(w%first_msg)))
+      if (w%first_ios /= 0) call fatal_error(error, failure_text(w, trim(w%first_msg)), status_io)
    end subroutine writer_io_error
 
    !> Open `path` (created, or emptied), as a formatted stream so that `close_text` can check
@@ -98,7 +98,7 @@ contains
       call posix_set_errno(0)
       open (newunit=w%unit, file=path, status=status, action='write', access='stream', form='formatted', &
             iostat=w%ios, iomsg=w%msg)
-      if (w%ios /= 0) call fatal_error(error, failure_text(w, trim(w%msg)))
+      if (w%ios /= 0) call fatal_error(error, failure_text(w, trim(w%msg)), status_io)
    end subroutine open_text
 
    !> Close the file and check it: a failed write, or a file shorter than what was written
@@ -120,7 +120,7 @@ contains
       close (w%unit, iostat=w%ios, iomsg=w%msg)
       if (allocated(error)) return
       if (w%ios /= 0) then
-         call fatal_error(error, failure_text(w, trim(w%msg)))
+         call fatal_error(error, failure_text(w, trim(w%msg)), status_io)
          return
       end if
       inquire (file=w%path, size=size_on_disk, iostat=stat)
@@ -128,7 +128,7 @@ contains
          reason = posix_storage_error()
          if (len(reason) == 0) reason = 'the file system did not take every byte'
          write (counts, '(a,i0,a,i0,a)') ' (the file holds ', size_on_disk, ' of ', written - 1, ' bytes)'
-         call fatal_error(error, failure_text(w, reason//trim(counts)))
+         call fatal_error(error, failure_text(w, reason//trim(counts)), status_io)
       end if
    end subroutine close_text
 
