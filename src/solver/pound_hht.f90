@@ -73,6 +73,7 @@ module pound_hht
       procedure :: predict => hht_predict
       procedure :: predict_exact => hht_predict_exact
       procedure :: drop_exact => hht_drop_exact
+      procedure :: hold => hht_hold
       procedure :: commit => hht_commit
       procedure :: advance => hht_advance
       procedure :: solve => hht_solve
@@ -240,6 +241,15 @@ contains
 
       if (st%n < 0) st%n = 0
    end subroutine hht_drop_exact
+
+   !> Hold the model still over the step: du = 0, no load increment (a frozen building).
+   pure subroutine hht_hold(st)
+      !> Integrator.
+      class(hht_state), intent(inout) :: st
+
+      st%du = 0.0_dp
+      st%df = 0.0_dp
+   end subroutine hht_hold
 
    !> Complete the step with du: the state at t_{n+1}, the contact loads, the unbalanced force
    !> and the step's energies (with `w_in`, `e_out`: add the input work and kinetic + strain

@@ -70,6 +70,9 @@ module pound_integrator
       procedure(add_load_i), deferred :: add_load
       !> du = du + s x for a load increment s along the weights w of the DOFs dof.
       procedure(add_load_rows_i), deferred :: add_load_rows
+      !> Hold the model still over the step: du = 0 and no load of the step (a collapsed,
+      !> frozen building: its end-of-step displacements are u).
+      procedure(drop_exact_i), deferred :: hold
       !> Exchange the step data (dt, constants, factors) with an integrator of the same model
       !> and kind set up for another dt.
       procedure(swap_step_i), deferred :: swap_step

@@ -148,6 +148,7 @@ module pound_newmark
       procedure :: predict => newmark_predict
       procedure :: predict_exact => newmark_predict_exact
       procedure :: drop_exact => newmark_drop_exact
+      procedure :: hold => newmark_hold
       procedure :: commit => newmark_commit
       procedure :: advance => newmark_advance
       procedure :: solve => newmark_solve
@@ -472,6 +473,14 @@ contains
       st%pending = .false.
       st%modal_valid = .false.
    end subroutine newmark_drop_exact
+
+   !> Hold the model still over the step: du = 0 (a frozen building; it is not committed).
+   pure subroutine newmark_hold(st)
+      !> Integrator state.
+      class(newmark_state), intent(inout) :: st
+
+      st%du = 0.0_dp
+   end subroutine newmark_hold
 
    !> Overwrite the state (tests: initial conditions other than rest; an exact step's end).
    !> Each of u, v, a defaults to unchanged; C v, (K+G) u and v and the kinetic and strain
