@@ -123,6 +123,7 @@ contains
       integer :: method_steps
       type(storey_yield_set), allocatable :: ys(:)
       type(step_retry) :: rt
+      type(integrator_properties) :: props
 
       nb = size(models)
       n_steps = size(ag) - 1
@@ -130,7 +131,9 @@ contains
       call yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen)
       coupled = cs%m > 0
       impact = present(sub)
-      exact = cfg%free_steps == free_exact .and. .not. inelastic
+      props = st(1)%properties()
+      res%integrator = trim(props%name)
+      exact = cfg%free_steps == free_exact .and. .not. inelastic .and. props%exact_steps
       batched = present(lanes)
       plain = .not. (coupled .or. impact .or. exact .or. batched .or. inelastic)
       track = (impact .or. exact) .and. allocated(cs%closing_max)

@@ -39,7 +39,7 @@ module pound_hht
    use pound_band_lapack, only: dpbtrf, dpbtrs
    use pound_swap, only: swap
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
-   use pound_integrator, only: integrator, trapezoid_rate, n_integrator_energies
+   use pound_integrator, only: integrator, integrator_properties, trapezoid_rate, n_integrator_energies
    implicit none
    private
 
@@ -69,6 +69,7 @@ module pound_hht
       real(dp) :: input_work = 0.0_dp, kinetic = 0.0_dp, strain = 0.0_dp, damping_energy = 0.0_dp
       real(dp) :: numerical = 0.0_dp
    contains
+      procedure :: properties => hht_properties
       procedure :: init => hht_init
       procedure :: predict => hht_predict
       procedure :: predict_exact => hht_predict_exact
@@ -110,6 +111,16 @@ contains
 
       st%alpha = alpha
    end function hht_new
+
+   !> HHT-alpha: no exact free steps, no lanes; it dissipates when alpha < 0.
+   pure function hht_properties(st) result(p)
+      !> Integrator.
+      class(hht_state), intent(in) :: st
+      type(integrator_properties) :: p
+
+      p = integrator_properties(name='HHT-alpha', average_acceleration=st%alpha == 0.0_dp, exact_steps=.false., &
+                                lanes=.false., dissipates=st%alpha /= 0.0_dp)
+   end function hht_properties
 
    !> Factor Khat for dt and start at rest relative to the ground, a = -r a_g(0) (e_0 = 0).
    subroutine hht_init(st, b, dt, ag0, error, general, refresh, exact)

@@ -33,7 +33,7 @@ module pound_integrator
    implicit none
    private
 
-   public :: integrator, trapezoid_rate, max_lanes
+   public :: integrator, integrator_properties, trapezoid_rate, max_lanes
    public :: en_input, en_kinetic, en_strain, en_damping, en_numerical, n_integrator_energies
 
    !> Indices of `energies`: input work, kinetic, strain and viscous damping energy, and the
@@ -45,9 +45,26 @@ module pound_integrator
    !> doubles); arrays per lane have this size, lanes without a motion are driven by zero.
    integer, parameter :: max_lanes = 8
 
+   !> What an integrator is and can do (`properties`): the one place the loop, the batch and the
+   !> writers ask, in place of tests of the method's kind.
+   type :: integrator_properties
+      !> The method's name, as the outputs print it ('Newmark', 'HHT-alpha').
+      character(len=16) :: name = ''
+      !> Average acceleration (no numerical dissipation; alpha = 0 of HHT-alpha).
+      logical :: average_acceleration = .false.
+      !> It can take exact free steps (`init(..., exact=.true.)`, `predict_exact`).
+      logical :: exact_steps = .false.
+      !> It can advance lanes (several motions; `lanes_for` says for which models).
+      logical :: lanes = .false.
+      !> Its numerical dissipation (`en_numerical`) may be non-zero.
+      logical :: dissipates = .false.
+   end type integrator_properties
+
    !> The time integration of one structural model (state private to each extension).
    type, abstract :: integrator
    contains
+      !> The method's name and capabilities.
+      procedure(properties_i), deferred :: properties
       !> Factor Khat for dt, start at rest in equilibrium with the ground acceleration ag0.
       procedure(init_i), deferred :: init
       !> The step's increment du for the ground acceleration increment alone.
@@ -111,6 +128,12 @@ module pound_integrator
    end type integrator
 
    abstract interface
+      !> Interface of the binding(s) declared with `properties_i` (see the type).
+      pure function properties_i(st) result(p)
+         import :: integrator, integrator_properties
+         class(integrator), intent(in) :: st
+         type(integrator_properties) :: p
+      end function properties_i
       !> Interface of the binding(s) declared with `init_i` (see the type).
       subroutine init_i(st, b, dt, ag0, error, general, refresh, exact)
          import :: integrator, structure_model, dp, error_type

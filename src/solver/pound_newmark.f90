@@ -42,7 +42,8 @@ module pound_newmark
    use pound_swap, only: swap
    use pound_band_lapack, only: dpbtrf, dpbtrs
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
-   use pound_integrator, only: integrator, max_lanes, en_input, en_kinetic, en_strain, en_damping, en_numerical, &
+   use pound_integrator, only: integrator, integrator_properties, max_lanes, en_input, en_kinetic, en_strain, en_damping, &
+                               en_numerical, &
                                n_integrator_energies
    implicit none
    private
@@ -144,6 +145,7 @@ module pound_newmark
       !> Lanes (`start_lanes`; unallocated otherwise).
       type(newmark_lanes), allocatable :: lanes
    contains
+      procedure :: properties => newmark_properties
       procedure :: init => init_binding
       procedure :: predict => newmark_predict
       procedure :: predict_exact => newmark_predict_exact
@@ -473,6 +475,17 @@ contains
       st%pending = .false.
       st%modal_valid = .false.
    end subroutine newmark_drop_exact
+
+   !> Newmark average acceleration: exact free steps, lanes (on the fused tridiagonal path), no
+   !> numerical dissipation.
+   pure function newmark_properties(st) result(p)
+      !> Integrator state.
+      class(newmark_state), intent(in) :: st
+      type(integrator_properties) :: p
+
+      p = integrator_properties(name='Newmark', average_acceleration=.true., exact_steps=.true., &
+                                lanes=st%tridiagonal, dissipates=.false.)
+   end function newmark_properties
 
    !> Hold the model still over the step: du = 0 (a frozen building; it is not committed).
    pure subroutine newmark_hold(st)
