@@ -10,7 +10,13 @@
 !> (a run without constraints). Contact reads the predicted end displacements
 !> (`predicted`), the motion inside the step (`path`, over `path_span`) and the velocity per
 !> displacement increment (`velocity_rate`: v_{n+1} = velocity_rate du + terms of the state
-!> at t_n) and never a constant of a particular method.
+!> at t_n) and never a constant of a particular method. Every load of a step (the joints',
+!> the bilinear storeys' and hinges' plastic loads) enters through `add_load`/`add_load_rows`,
+!> which keep it where the method needs it (HHT-alpha's F_{n+1}); the views (`u_view` ...
+!> `du_view`) are read only outside `src/solver/`; an element that forms a tangent system on
+!> the step's matrix takes it from `solve_matrix` (the matrix `solve` inverts), and a frozen
+!> building's step is `hold`. `properties` says what the method is (its name, which the
+!> writers print) and can do (exact steps, lanes, dissipation).
 !>
 !> **Lanes.** An integrator may also advance up to `max_lanes` right-hand sides at once: the
 !> same model under several ground motions (the uncoupled runs of a suite's motions), sharing

@@ -40,7 +40,7 @@ module pound_newmark
    use pound_strings, only: str
    use pound_band, only: band_symv
    use pound_swap, only: swap
-   use pound_band_lapack, only: dpbtrf, dpbtrs
+   use pound_band_lapack, only: dpbtrf, dpbtrs, dpttrf, dpttrs
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
    use pound_integrator, only: integrator, integrator_properties, max_lanes, en_input, en_kinetic, en_strain, en_damping, &
                                en_numerical, &
@@ -276,22 +276,6 @@ module pound_newmark
          class(newmark_state), intent(inout) :: st
          integer, intent(in) :: l
       end subroutine newmark_drop_lane
-   end interface
-
-   interface
-      subroutine dpttrf(n, d, e, info)
-         import :: dp
-         integer, intent(in) :: n
-         real(dp), intent(inout) :: d(*), e(*)
-         integer, intent(out) :: info
-      end subroutine dpttrf
-      subroutine dpttrs(n, nrhs, d, e, b, ldb, info)
-         import :: dp
-         integer, intent(in) :: n, nrhs, ldb
-         real(dp), intent(in) :: d(*), e(*)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpttrs
    end interface
 
 contains
