@@ -29,7 +29,8 @@ module pound_analysis
    use pound_structure, only: structure_model
    use pound_ground_motion, only: check_ground_samples, ground_motion_t
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
-   use pound_integrator, only: integrator, max_lanes, en_input, en_damping, en_numerical, n_integrator_energies
+   use pound_integrator, only: integrator, integrator_properties, max_lanes, en_input, en_damping, en_numerical, &
+                               n_integrator_energies
    use pound_integrators, only: integrators_for
    use pound_response, only: response_record, response_init, response_sample, response_finish, history_sink, &
                              response_store, &
@@ -107,6 +108,9 @@ module pound_analysis
       !> (kJ; allocated when the integrator dissipates: HHT-alpha with alpha < 0). The energy audit
       !> counts it among the terms that balance the input.
       real(dp), allocatable :: numerical(:)
+      !> The integrator's name (its `properties()%name`, set by `integrate`), as the writers
+      !> print it.
+      character(len=:), allocatable :: integrator
       !> Audit: max over all steps of |W_in - sum of the other terms| / max energy scale.
       real(dp) :: energy_error = 0.0_dp
       !> Warnings for the user (e.g. a large audit residual and its likely cause), one per

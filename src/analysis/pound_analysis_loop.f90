@@ -113,8 +113,11 @@ contains
       logical :: out, coupled, inelastic, collapsed, finite
       logical, target :: frozen(size(models))
       type(storey_yield_set), allocatable, target :: ys(:)
+      type(integrator_properties) :: props
 
       n_steps = size(ag) - 1
+      props = st(1)%properties()
+      res%integrator = trim(props%name)
       call yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen)
       coupled = cs%m > 0
       call step_state_point(s, st, models, cs, ag, ys, frozen, res%building)

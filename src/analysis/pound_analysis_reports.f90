@@ -30,6 +30,7 @@ contains
       dst%building = src%building
       dst%energy = src%energy
       if (allocated(src%numerical)) dst%numerical = src%numerical
+      if (allocated(src%integrator)) dst%integrator = src%integrator
       dst%energy_error = src%energy_error
       dst%joints = src%joints
       dst%seconds = src%seconds

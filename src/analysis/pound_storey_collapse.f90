@@ -44,7 +44,7 @@ contains
          if (ys(ib)%collapse_storey == 0 .or. ys(ib)%frozen) cycle
          ys(ib)%frozen = .true.
          frozen(ib) = .true.
-         call hold_still(st(ib))
+         call st(ib)%hold()
          ys(ib)%na = 0
          ys(ib)%loaded = .false.
          ys(ib)%dpl = 0.0_dp
@@ -76,7 +76,7 @@ contains
       real(dp) :: w, ek, es, ed, en
       integer :: last
 
-      call hold_still(st)
+      call st%hold()
       w = 0.0_dp
       ek = 0.0_dp
       es = 0.0_dp
@@ -130,16 +130,6 @@ contains
          end associate
       end do
    end subroutine yield_hold
-
-   !> A frozen building's step increment du to zero: the joints read its end-of-step
-   !> displacements (`integrator%predicted`) as u, not u plus a stale increment.
-   subroutine hold_still(st)
-      class(integrator), intent(inout), target :: st
-      real(dp), pointer :: du(:)
-
-      du => st%du_view()
-      du = 0.0_dp
-   end subroutine hold_still
 
    !> Column `from` of every stored history into column `to` (no copy when the same).
    pure subroutine hold_column(r, from, to)

@@ -1,14 +1,30 @@
 !> Explicit interfaces to the LAPACK routines used by the frame models: band Cholesky and
-!> LU, and the small dense generalized eigenproblem of a Rayleigh-Ritz step
+!> LU, the tridiagonal L D L^T factorization and solve (the integrators' tridiagonal kernels),
+!> and the small dense generalized eigenproblem of a Rayleigh-Ritz step
 !> (pound is compiled with -Wimplicit-interface).
 module pound_band_lapack
    use pound_kinds, only: dp
    implicit none
    private
 
-   public :: dpbtrf, dpbtrs, dsygv, dgbtrf, dgbtrs
+   public :: dpbtrf, dpbtrs, dpttrf, dpttrs, dsygv, dgbtrf, dgbtrs
 
    interface
+      !> L D L^T factorization of a symmetric positive definite tridiagonal matrix.
+      subroutine dpttrf(n, d, e, info)
+         import :: dp
+         integer, intent(in) :: n
+         real(dp), intent(inout) :: d(*), e(*)
+         integer, intent(out) :: info
+      end subroutine dpttrf
+      !> Solve with the factors of `dpttrf`.
+      subroutine dpttrs(n, nrhs, d, e, b, ldb, info)
+         import :: dp
+         integer, intent(in) :: n, nrhs, ldb
+         real(dp), intent(in) :: d(*), e(*)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dpttrs
       !> Cholesky factorization of a symmetric positive definite band matrix.
       subroutine dpbtrf(uplo, n, kd, ab, ldab, info)
          import :: dp

@@ -245,7 +245,7 @@ contains
       call lst%note()
       if (allocated(res%numerical)) then
          write (lst%unit, '(a,es12.4)', iostat=lst%ios, iomsg=lst%msg) &
-            '  numerical dissipation of the integrator (HHT-alpha) [kJ], in the audit beside the above:', &
+            '  numerical dissipation of the integrator ('//res%integrator//') [kJ], in the audit beside the above:', &
             res%numerical(j)
          call lst%note()
       end if

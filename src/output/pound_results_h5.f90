@@ -603,7 +603,7 @@ contains
          call h5_write(h5, g//'/energy_numerical', res%numerical, error, units='kJ')
          if (allocated(error)) return
          call h5_write_attr(h5, g//'/energy_numerical', 'description', 'numerical dissipation of the '// &
-                            'integrator (HHT-alpha), summed over the buildings; the energy audit balances '// &
+                            'integrator ('//res%integrator//'), summed over the buildings; the energy audit balances '// &
                             'input = kinetic + strain + damping + contact + plastic + numerical', error)
          if (allocated(error)) return
       end if

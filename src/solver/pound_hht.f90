@@ -36,10 +36,10 @@ module pound_hht
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_band, only: band_symv
-   use pound_band_lapack, only: dpbtrf, dpbtrs
+   use pound_band_lapack, only: dpbtrf, dpbtrs, dpttrf, dpttrs
    use pound_swap, only: swap
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
-   use pound_integrator, only: integrator, trapezoid_rate, n_integrator_energies
+   use pound_integrator, only: integrator, integrator_properties, trapezoid_rate, n_integrator_energies
    implicit none
    private
 
@@ -58,8 +58,10 @@ module pound_hht
       real(dp) :: ca = 0.0_dp, cb = 0.0_dp, cc = 0.0_dp, cd = 0.0_dp
       !> Number of DOFs and half-bandwidth.
       integer :: n = 0, kd = 0
-      !> Cholesky factor of Khat (kd+1, n).
-      real(dp), allocatable :: chol(:, :)
+      !> Cholesky factor of Khat (kd+1, n); half-bandwidth 1 (`tri`): its L D L^T factors
+      !> (dpttrf: diagonal td, sub-diagonal te) and the fused one-pass kernels instead.
+      real(dp), allocatable :: chol(:, :), td(:), te(:)
+      logical :: tri = .false.
       !> State at t_n: u, v, a; (K+G) u, (K+G) v, C v; the contact loads f_n; the unbalanced
       !> force e_n; the step's increment du and load increment df; work vectors.
       real(dp), allocatable :: u(:), v(:), a(:), ku(:), kv(:), cv(:), f(:), e(:), du(:), df(:), w1(:), w2(:)
@@ -69,10 +71,12 @@ module pound_hht
       real(dp) :: input_work = 0.0_dp, kinetic = 0.0_dp, strain = 0.0_dp, damping_energy = 0.0_dp
       real(dp) :: numerical = 0.0_dp
    contains
+      procedure :: properties => hht_properties
       procedure :: init => hht_init
       procedure :: predict => hht_predict
       procedure :: predict_exact => hht_predict_exact
       procedure :: drop_exact => hht_drop_exact
+      procedure :: hold => hht_hold
       procedure :: commit => hht_commit
       procedure :: advance => hht_advance
       procedure :: solve => hht_solve
@@ -109,6 +113,16 @@ contains
 
       st%alpha = alpha
    end function hht_new
+
+   !> HHT-alpha: no exact free steps, no lanes; it dissipates when alpha < 0.
+   pure function hht_properties(st) result(p)
+      !> Integrator.
+      class(hht_state), intent(in) :: st
+      type(integrator_properties) :: p
+
+      p = integrator_properties(name='HHT-alpha', average_acceleration=st%alpha == 0.0_dp, exact_steps=.false., &
+                                lanes=.false., dissipates=st%alpha /= 0.0_dp)
+   end function hht_properties
 
    !> Factor Khat for dt and start at rest relative to the ground, a = -r a_g(0) (e_0 = 0).
    subroutine hht_init(st, b, dt, ag0, error, general, refresh, exact)
@@ -160,7 +174,17 @@ contains
                           ' s is not finite')
          return
       end if
-      call dpbtrf('U', n, kd, st%chol, kd + 1, info)
+      st%tri = kd == 1
+      if (st%tri) then
+         st%td = st%chol(2, :)
+         allocate (st%te(max(n - 1, 1)), source=0.0_dp)
+         if (n > 1) st%te = st%chol(1, 2:n)
+         call dpttrf(n, st%td, st%te, info)
+         ! (The pivots' check below reads the diagonal of a Cholesky factor.)
+         if (info == 0) st%chol(2, :) = sqrt(st%td)
+      else
+         call dpbtrf('U', n, kd, st%chol, kd + 1, info)
+      end if
       if (info /= 0) then
          call fatal_error(error, structure_label(b)//': HHT-alpha effective stiffness not positive definite '// &
                           '(dpbtrf info = '//str(info)//')')
@@ -195,6 +219,10 @@ contains
       real(dp) :: ap, vp, alpha
       integer :: i
 
+      if (st%tri) then
+         call predict_tri(st, b, dag)
+         return
+      end if
       alpha = st%alpha
       ! w1 = v*, then C v* = a0 M v* + a1 (K+G) v* (w2 = (K+G) v*).
       do i = 1, st%n
@@ -241,6 +269,15 @@ contains
       if (st%n < 0) st%n = 0
    end subroutine hht_drop_exact
 
+   !> Hold the model still over the step: du = 0, no load increment (a frozen building).
+   pure subroutine hht_hold(st)
+      !> Integrator.
+      class(hht_state), intent(inout) :: st
+
+      st%du = 0.0_dp
+      st%df = 0.0_dp
+   end subroutine hht_hold
+
    !> Complete the step with du: the state at t_{n+1}, the contact loads, the unbalanced force
    !> and the step's energies (with `w_in`, `e_out`: add the input work and kinetic + strain
    !> + damping + numerical energy to them).
@@ -256,6 +293,12 @@ contains
       real(dp) :: win, dd, ddamp, ekin, a1, v1, ep, aa, da, va
       integer :: i
 
+      if (st%tri) then
+         call commit_tri(st, b, ag_old, ag_new)
+         if (present(w_in)) w_in = w_in + st%input_work
+         if (present(e_out)) e_out = e_out + (st%kinetic + st%strain + st%damping_energy + st%numerical)
+         return
+      end if
       ! u, v, a at t_{n+1} (w1 keeps a_n, w2 keeps v_n for the energies).
       st%w1 = st%a
       st%w2 = st%v
@@ -324,8 +367,107 @@ contains
       real(dp), intent(inout) :: x(:)
       integer :: info
 
-      call dpbtrs('U', st%n, st%kd, 1, st%chol, st%kd + 1, x, st%n, info)
+      if (st%tri) then
+         call dpttrs(st%n, 1, st%td, st%te, x, st%n, info)
+      else
+         call dpbtrs('U', st%n, st%kd, 1, st%chol, st%kd + 1, x, st%n, info)
+      end if
    end subroutine dpbtrs_vec
+
+   !> `hht_predict` on a tridiagonal model in two passes: v* (w1, one DOF ahead), (K+G) v* by
+   !> the three-term stencil, the right-hand side and the forward sweep of the L D L^T solve
+   !> in one; then the backward sweep (the sweeps as dpttrs takes them).
+   subroutine predict_tri(st, b, dag)
+      type(hht_state), intent(inout) :: st
+      type(structure_model), intent(in) :: b
+      real(dp), intent(in) :: dag
+      real(dp) :: ap, kw, alpha, rhs, prev
+      integer :: i, n
+
+      alpha = st%alpha
+      n = st%n
+      st%w1(1) = st%cc*st%v(1) + st%cd*st%a(1)
+      prev = 0.0_dp
+      do i = 1, n
+         if (i < n) st%w1(i + 1) = st%cc*st%v(i + 1) + st%cd*st%a(i + 1)
+         kw = b%kt(2, i)*st%w1(i)
+         if (i > 1) kw = kw + b%kt(1, i)*st%w1(i - 1)
+         if (i < n) kw = kw + b%kt(1, i + 1)*st%w1(i + 1)
+         ap = -st%ca*st%v(i) - st%cb*st%a(i)
+         rhs = -b%mass(i)*b%ground(i)*(st%ag + (1.0_dp + alpha)*dag) + st%f(i) - b%mass(i)*ap - &
+               (1.0_dp + alpha)*(b%a0*b%mass(i)*st%w1(i) + b%a1*kw) - st%ku(i) + alpha*st%cv(i)
+         if (i > 1) rhs = rhs - prev*st%te(i - 1)
+         st%du(i) = rhs
+         prev = rhs
+         st%df(i) = 0.0_dp
+      end do
+      st%du(n) = st%du(n)/st%td(n)
+      do i = n - 1, 1, -1
+         st%du(i) = st%du(i)/st%td(i) - st%du(i + 1)*st%te(i)
+      end do
+   end subroutine predict_tri
+
+   !> `hht_commit` on a tridiagonal model in two passes: the state at t_{n+1}, the loads and the
+   !> first half of the damping energy (w1, w2 keep a_n, v_n); then (K+G) u, (K+G) v by the
+   !> three-term stencil, C v, the unbalanced force, the numerical dissipation and the
+   !> kinetic and strain energy.
+   subroutine commit_tri(st, b, ag_old, ag_new)
+      type(hht_state), intent(inout) :: st
+      type(structure_model), intent(in) :: b
+      real(dp), intent(in) :: ag_old, ag_new
+      real(dp) :: win, dd, ddamp, ekin, estr, ep, aa, da, va, hg, ku, kv
+      integer :: i, n
+
+      n = st%n
+      win = 0.0_dp
+      ddamp = 0.0_dp
+      hg = 0.5_dp*(ag_old + ag_new)
+      do i = 1, n
+         st%w1(i) = st%a(i)
+         st%w2(i) = st%v(i)
+         st%a(i) = st%c0*st%du(i) - st%ca*st%w2(i) - st%cb*st%w1(i)
+         st%v(i) = st%c1*st%du(i) + st%cc*st%w2(i) + st%cd*st%w1(i)
+         st%u(i) = st%u(i) + st%du(i)
+         st%f(i) = st%f(i) + st%df(i)
+         st%df(i) = 0.0_dp
+         ddamp = ddamp + st%du(i)*st%cv(i)
+         win = win - st%du(i)*b%mass(i)*b%ground(i)*hg
+      end do
+      dd = 0.0_dp
+      ekin = 0.0_dp
+      estr = 0.0_dp
+      do i = 1, n
+         ku = b%kt(2, i)*st%u(i)
+         kv = b%kt(2, i)*st%v(i)
+         if (i > 1) then
+            ku = ku + b%kt(1, i)*st%u(i - 1)
+            kv = kv + b%kt(1, i)*st%v(i - 1)
+         end if
+         if (i < n) then
+            ku = ku + b%kt(1, i + 1)*st%u(i + 1)
+            kv = kv + b%kt(1, i + 1)*st%v(i + 1)
+         end if
+         st%ku(i) = ku
+         st%kv(i) = kv
+         st%cv(i) = b%a0*b%mass(i)*st%v(i) + b%a1*kv
+         ddamp = ddamp + st%du(i)*st%cv(i)
+         ep = st%e(i)
+         st%e(i) = b%mass(i)*st%a(i) + st%cv(i) + ku - (-b%mass(i)*b%ground(i)*ag_new + st%f(i))
+         aa = 0.5_dp*(st%w1(i) + st%a(i))
+         da = st%a(i) - st%w1(i)
+         va = 0.5_dp*(st%w2(i) + st%v(i))
+         dd = dd - st%du(i)*0.5_dp*(ep + st%e(i)) - st%dt*(st%gamma - 0.5_dp)*va*b%mass(i)*da + &
+              st%dt**2*(st%beta - 0.5_dp*st%gamma)*da*b%mass(i)*aa
+         ekin = ekin + b%mass(i)*st%v(i)**2
+         estr = estr + st%u(i)*ku
+      end do
+      st%damping_energy = st%damping_energy + 0.5_dp*ddamp
+      st%input_work = st%input_work + win
+      st%numerical = st%numerical + dd
+      st%kinetic = 0.5_dp*ekin
+      st%strain = 0.5_dp*estr
+      st%ag = ag_new
+   end subroutine commit_tri
 
    !> x = (1+alpha) Khat^{-1} x: the response of du to a load x at t_{n+1}.
    subroutine hht_solve(st, x)
@@ -404,6 +546,10 @@ contains
          call swap(st%cc, other%cc)
          call swap(st%cd, other%cd)
          call swap(st%chol, other%chol)
+         if (st%tri) then
+            call swap(st%td, other%td)
+            call swap(st%te, other%te)
+         end if
       end select
    end subroutine hht_swap_step
 

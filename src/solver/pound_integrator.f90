@@ -10,7 +10,13 @@
 !> (a run without constraints). Contact reads the predicted end displacements
 !> (`predicted`), the motion inside the step (`path`, over `path_span`) and the velocity per
 !> displacement increment (`velocity_rate`: v_{n+1} = velocity_rate du + terms of the state
-!> at t_n) and never a constant of a particular method.
+!> at t_n) and never a constant of a particular method. Every load of a step (the joints',
+!> the bilinear storeys' and hinges' plastic loads) enters through `add_load`/`add_load_rows`,
+!> which keep it where the method needs it (HHT-alpha's F_{n+1}); the views (`u_view` ...
+!> `du_view`) are read only outside `src/solver/`; an element that forms a tangent system on
+!> the step's matrix takes it from `solve_matrix` (the matrix `solve` inverts), and a frozen
+!> building's step is `hold`. `properties` says what the method is (its name, which the
+!> writers print) and can do (exact steps, lanes, dissipation).
 !>
 !> **Lanes.** An integrator may also advance up to `max_lanes` right-hand sides at once: the
 !> same model under several ground motions (the uncoupled runs of a suite's motions), sharing
@@ -33,7 +39,7 @@ module pound_integrator
    implicit none
    private
 
-   public :: integrator, trapezoid_rate, max_lanes
+   public :: integrator, integrator_properties, trapezoid_rate, max_lanes
    public :: en_input, en_kinetic, en_strain, en_damping, en_numerical, n_integrator_energies
 
    !> Indices of `energies`: input work, kinetic, strain and viscous damping energy, and the
@@ -45,9 +51,26 @@ module pound_integrator
    !> doubles); arrays per lane have this size, lanes without a motion are driven by zero.
    integer, parameter :: max_lanes = 8
 
+   !> What an integrator is and can do (`properties`): the one place the loop, the batch and the
+   !> writers ask, in place of tests of the method's kind.
+   type :: integrator_properties
+      !> The method's name, as the outputs print it ('Newmark', 'HHT-alpha').
+      character(len=16) :: name = ''
+      !> Average acceleration (no numerical dissipation; alpha = 0 of HHT-alpha).
+      logical :: average_acceleration = .false.
+      !> It can take exact free steps (`init(..., exact=.true.)`, `predict_exact`).
+      logical :: exact_steps = .false.
+      !> It can advance lanes (several motions; `lanes_for` says for which models).
+      logical :: lanes = .false.
+      !> Its numerical dissipation (`en_numerical`) may be non-zero.
+      logical :: dissipates = .false.
+   end type integrator_properties
+
    !> The time integration of one structural model (state private to each extension).
    type, abstract :: integrator
    contains
+      !> The method's name and capabilities.
+      procedure(properties_i), deferred :: properties
       !> Factor Khat for dt, start at rest in equilibrium with the ground acceleration ag0.
       procedure(init_i), deferred :: init
       !> The step's increment du for the ground acceleration increment alone.
@@ -70,6 +93,9 @@ module pound_integrator
       procedure(add_load_i), deferred :: add_load
       !> du = du + s x for a load increment s along the weights w of the DOFs dof.
       procedure(add_load_rows_i), deferred :: add_load_rows
+      !> Hold the model still over the step: du = 0 and no load of the step (a collapsed,
+      !> frozen building: its end-of-step displacements are u).
+      procedure(drop_exact_i), deferred :: hold
       !> Exchange the step data (dt, constants, factors) with an integrator of the same model
       !> and kind set up for another dt.
       procedure(swap_step_i), deferred :: swap_step
@@ -115,6 +141,12 @@ module pound_integrator
    end type integrator
 
    abstract interface
+      !> Interface of the binding(s) declared with `properties_i` (see the type).
+      pure function properties_i(st) result(p)
+         import :: integrator, integrator_properties
+         class(integrator), intent(in) :: st
+         type(integrator_properties) :: p
+      end function properties_i
       !> Interface of the binding(s) declared with `init_i` (see the type).
       subroutine init_i(st, b, dt, ag0, error, general, refresh, exact)
          import :: integrator, structure_model, dp, error_type

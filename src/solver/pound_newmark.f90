@@ -40,9 +40,10 @@ module pound_newmark
    use pound_strings, only: str
    use pound_band, only: band_symv
    use pound_swap, only: swap
-   use pound_band_lapack, only: dpbtrf, dpbtrs
+   use pound_band_lapack, only: dpbtrf, dpbtrs, dpttrf, dpttrs
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
-   use pound_integrator, only: integrator, max_lanes, en_input, en_kinetic, en_strain, en_damping, en_numerical, &
+   use pound_integrator, only: integrator, integrator_properties, max_lanes, en_input, en_kinetic, en_strain, en_damping, &
+                               en_numerical, &
                                n_integrator_energies
    implicit none
    private
@@ -144,10 +145,12 @@ module pound_newmark
       !> Lanes (`start_lanes`; unallocated otherwise).
       type(newmark_lanes), allocatable :: lanes
    contains
+      procedure :: properties => newmark_properties
       procedure :: init => init_binding
       procedure :: predict => newmark_predict
       procedure :: predict_exact => newmark_predict_exact
       procedure :: drop_exact => newmark_drop_exact
+      procedure :: hold => newmark_hold
       procedure :: commit => newmark_commit
       procedure :: advance => newmark_advance
       procedure :: solve => newmark_solve
@@ -275,22 +278,6 @@ module pound_newmark
          class(newmark_state), intent(inout) :: st
          integer, intent(in) :: l
       end subroutine newmark_drop_lane
-   end interface
-
-   interface
-      subroutine dpttrf(n, d, e, info)
-         import :: dp
-         integer, intent(in) :: n
-         real(dp), intent(inout) :: d(*), e(*)
-         integer, intent(out) :: info
-      end subroutine dpttrf
-      subroutine dpttrs(n, nrhs, d, e, b, ldb, info)
-         import :: dp
-         integer, intent(in) :: n, nrhs, ldb
-         real(dp), intent(in) :: d(*), e(*)
-         real(dp), intent(inout) :: b(ldb, *)
-         integer, intent(out) :: info
-      end subroutine dpttrs
    end interface
 
 contains
@@ -474,6 +461,25 @@ contains
       st%pending = .false.
       st%modal_valid = .false.
    end subroutine newmark_drop_exact
+
+   !> Newmark average acceleration: exact free steps, lanes (on the fused tridiagonal path), no
+   !> numerical dissipation.
+   pure function newmark_properties(st) result(p)
+      !> Integrator state.
+      class(newmark_state), intent(in) :: st
+      type(integrator_properties) :: p
+
+      p = integrator_properties(name='Newmark', average_acceleration=.true., exact_steps=.true., &
+                                lanes=st%tridiagonal, dissipates=.false.)
+   end function newmark_properties
+
+   !> Hold the model still over the step: du = 0 (a frozen building; it is not committed).
+   pure subroutine newmark_hold(st)
+      !> Integrator state.
+      class(newmark_state), intent(inout) :: st
+
+      st%du = 0.0_dp
+   end subroutine newmark_hold
 
    !> Overwrite the state (tests: initial conditions other than rest; an exact step's end).
    !> Each of u, v, a defaults to unchanged; C v, (K+G) u and v and the kinetic and strain

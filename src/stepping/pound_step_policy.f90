@@ -28,7 +28,7 @@ module pound_step_policy
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_structure, only: structure_model
-   use pound_integrator, only: integrator
+   use pound_integrator, only: integrator, integrator_properties
    use pound_contact, only: contact_system, contact_step, contact_commit, contact_carries_force, contact_track_paths
    use pound_response, only: response_record
    use pound_storey_yield, only: storey_yield_set, yield_steps
@@ -167,10 +167,12 @@ contains
       type(step_state), intent(inout) :: s
       !> Some building yields (`yield_sets_init`).
       logical, intent(in) :: inelastic
+      type(integrator_properties) :: props
 
+      props = s%st(1)%properties()
       pol%coupled = s%cs%m > 0
       pol%inelastic = inelastic
-      pol%n%exact = pol%exact_free .and. .not. inelastic
+      pol%n%exact = pol%exact_free .and. .not. inelastic .and. props%exact_steps
       pol%track = allocated(s%cs%closing_max) .and. (pol%n%exact .or. pol%track_free)
    end subroutine policy_start
 
