@@ -44,6 +44,9 @@ set(POUND_SOURCES
   # complementary bases), their tallies, and a dense LCP with its storage
   lcp/pound_lemke.f90 lcp/pound_lcp_statistics.f90 lcp/pound_lcp_enumerate.f90 lcp/pound_lcp_active_set.f90
   lcp/pound_lcp_dense.f90
+  # lcp: the element set of the complementarity core (rows over the model's DOFs, LCP block,
+  # check, commit, energy terms)
+  lcp/pound_complementarity_set.f90
   # contact: joint laws, condensation and the per-step LCP
   contact/pound_joint_law.f90 contact/pound_contact_law.f90 contact/pound_law_elastic.f90
   contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90
@@ -55,7 +58,14 @@ set(POUND_SOURCES
   # contact: the contact half-period of a joint (substep count), ends without mass condensed
   contact/pound_contact_period.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
-  analysis/pound_response.f90 analysis/pound_storey_yield.f90 analysis/pound_storey_yield_stick.f90 analysis/pound_storey_yield_coupled.f90 analysis/pound_storey_yield_hinges.f90 analysis/pound_storey_yield_energy.f90 analysis/pound_storey_collapse.f90 analysis/pound_residual_settle.f90 analysis/pound_step_retry.f90 analysis/pound_closed_kernels.f90 analysis/pound_closed_steps.f90 analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_analysis_loop.f90 analysis/pound_influence.f90
+  analysis/pound_response.f90
+  # elements: the bilinear storeys and the frames' plastic hinges, element sets of the
+  # complementarity core (their rows, LCP block and check; the stick's active set; the
+  # coupled LCP with the joints; energy terms)
+  elements/pound_storey_yield.f90 elements/pound_storey_yield_rows.f90 elements/pound_storey_yield_stick.f90
+  elements/pound_storey_yield_coupled.f90 elements/pound_storey_yield_hinges.f90 elements/pound_storey_yield_energy.f90
+  # analyses: collapse, residual settling, retry, closed steps, the loop, influence
+  analysis/pound_storey_collapse.f90 analysis/pound_residual_settle.f90 analysis/pound_step_retry.f90 analysis/pound_closed_kernels.f90 analysis/pound_closed_steps.f90 analysis/pound_analysis.f90 analysis/pound_analysis_reports.f90 analysis/pound_analysis_loop.f90 analysis/pound_influence.f90
   analysis/pound_sweep.f90 analysis/pound_sweep_joints.f90 analysis/pound_joint_study.f90
   # analyses: the uncoupled runs of several motions at once
   analysis/pound_analysis_batch.f90
