@@ -45,6 +45,9 @@ set(POUND_SOURCES
   # complementary bases), their tallies, and a dense LCP with its storage
   lcp/pound_lemke.f90 lcp/pound_lcp_statistics.f90 lcp/pound_lcp_enumerate.f90 lcp/pound_lcp_active_set.f90
   lcp/pound_lcp_dense.f90
+  # lcp: the element set of the complementarity core (rows over the model's DOFs, LCP block,
+  # check, commit, energy terms)
+  lcp/pound_complementarity_set.f90
   # contact: joint laws, condensation and the per-step LCP
   contact/pound_joint_law.f90 contact/pound_contact_law.f90 contact/pound_law_elastic.f90
   contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90
@@ -56,7 +59,13 @@ set(POUND_SOURCES
   # contact: the contact half-period of a joint (substep count), ends without mass condensed
   contact/pound_contact_period.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep
-  analysis/pound_response.f90 analysis/pound_storey_yield.f90 analysis/pound_storey_yield_stick.f90 analysis/pound_storey_yield_coupled.f90 analysis/pound_storey_yield_hinges.f90 analysis/pound_storey_yield_energy.f90 analysis/pound_storey_collapse.f90 analysis/pound_residual_settle.f90
+  analysis/pound_response.f90
+  # elements: the bilinear storeys and the frames' plastic hinges, element sets of the
+  # complementarity core (their rows, LCP block and check; the stick's active set; the
+  # coupled LCP with the joints; energy terms)
+  elements/pound_storey_yield.f90 elements/pound_storey_yield_rows.f90 elements/pound_storey_yield_stick.f90
+  elements/pound_storey_yield_coupled.f90 elements/pound_storey_yield_hinges.f90 elements/pound_storey_yield_energy.f90
+  analysis/pound_storey_collapse.f90 analysis/pound_residual_settle.f90
   # stepping: the step policies (how the time loop takes a step: uniform, exact free steps,
   # impact substeps, closed steps and their kernels, the retry around any of them)
   stepping/pound_step_policy.f90 stepping/pound_step_retry.f90 stepping/pound_step_exact.f90 stepping/pound_step_impact.f90

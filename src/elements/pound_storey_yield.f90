@@ -35,6 +35,7 @@ module pound_storey_yield
    use pound_response, only: response_record, q_shear, history_sink, response_flush
    use pound_lemke, only: lemke_report, lemke_status_name
    use pound_lcp_dense, only: dense_lcp, dense_lcp_init, dense_lcp_reserve, dense_lcp_solve
+   use pound_complementarity_set, only: complementarity_set
    implicit none
    private
 
@@ -43,7 +44,7 @@ module pound_storey_yield
    public :: stick_khat, stick_active_set
    public :: yield_residual_limit, yield_sets_init, yield_sample, yield_results, yield_energy_step
    ! (Used by the submodules: gfortran drops private procedures a submodule calls.)
-   public :: drifts, step_drifts, column_of, check_step, solve_lcp, plastic_loads
+   public :: drifts, step_drifts, solve_rows, hinge_block, finish_tallies, plastic_loads
 
    !> Largest natural residual of a step's storey LCP (relative to the storey's yield shear).
    real(dp), parameter :: yield_residual_limit = 1.0e-8_dp
@@ -58,8 +59,10 @@ module pound_storey_yield
    !> Largest n_dofs x n_storeys for which the columns Khat^{-1} b_j are kept between steps.
    integer, parameter :: cache_limit = 4000000
 
-   !> The bilinear storeys of one building (n = 0: elastic storeys, nothing to do).
-   type :: storey_yield_set
+   !> The bilinear storeys of one building (n = 0: elastic storeys, nothing to do): an
+   !> element set of the complementarity core (its rows the storeys' drift rows, or the
+   !> hinges' rotation rows; its dense LCP `lcp` the base's).
+   type, extends(complementarity_set) :: storey_yield_set
       !> Storeys and DOFs.
       integer :: n = 0, nd = 0
       !> The rows are a stick's chain: storey j joins DOFs j-1 and j with coefficients -1, 1.
@@ -83,8 +86,6 @@ module pound_storey_yield
       integer, allocatable :: slot(:)
       integer :: n_slots = 0
       real(dp) :: col_dt = -1.0_dp
-      !> The LCP of the set's rows (`pound_lcp_dense`).
-      type(dense_lcp) :: lcp
       !> Collapse: drift limit of each storey (collapse_drift x height; m), the storey that
       !> passed it first (0: none) and when (s).
       real(dp), allocatable :: limit(:)
@@ -134,6 +135,15 @@ module pound_storey_yield
       !> integrator's `add_load_rows`: sum_j k_j dp_j b_j (storeys), sum_j dp_j a_j (hinges).
       real(dp), allocatable :: fload(:)
       integer, allocatable :: alldof(:)
+   contains
+      procedure :: set_rows => storey_rows
+      procedure :: row_value => storey_row_value
+      procedure :: row_scatter => storey_row_scatter
+      procedure :: set_column => storey_column
+      procedure :: lcp_block => storey_block
+      procedure :: check => storey_check
+      procedure :: commit => storey_commit
+      procedure :: energy => storey_energy
    end type storey_yield_set
 
    !> What a run reports of a building's bilinear storeys (n = 0: elastic storeys).
@@ -216,9 +226,20 @@ module pound_storey_yield
          real(dp), intent(in), optional :: collapse_drift
       end subroutine hinge_set_init
 
-      !> `solve_rows` of a frame's hinges: M = S_a (S - A) S_a over the active rows, A_ij =
-      !> a_i^T Khat^{-1} a_j with a_j = k_j b_j + kc_j b_mate(j) (the moment row), q = My - s f_tr.
-      module subroutine hinge_solve_rows(ys, st, u, du, t, step, label, error)
+      !> `storey_block` of a frame's hinges: M = S_a (S + diag H - A) S_a over the rows in the
+      !> LCP, A_ij = a_i^T Khat^{-1} a_j with a_j = k_j b_j + kc_j b_mate(j) (the moment row),
+      !> q = My - s (m_tr - H p).
+      module subroutine hinge_block(ys, st, m)
+         type(storey_yield_set), intent(inout) :: ys
+         class(integrator), intent(in) :: st
+         integer, intent(in) :: m
+      end subroutine hinge_block
+
+
+      !> One LCP over the rows `act(1:na)` (each on its side; the block from `lcp_block`):
+      !> the plastic increments `dpl`, their response `xdp` and the end-of-step values `dnew`
+      !> of every row (pound_storey_yield_rows).
+      module subroutine solve_rows(ys, st, u, du, t, step, label, error)
          type(storey_yield_set), intent(inout) :: ys
          class(integrator), intent(in) :: st
          real(dp), intent(in) :: u(:), du(:)
@@ -226,7 +247,52 @@ module pound_storey_yield
          integer, intent(in) :: step
          character(len=*), intent(in) :: label
          type(error_type), allocatable, intent(out) :: error
-      end subroutine hinge_solve_rows
+      end subroutine solve_rows
+
+      !> The set's bindings of `complementarity_set` (pound_storey_yield_rows).
+      pure module integer function storey_rows(set)
+         class(storey_yield_set), intent(in) :: set
+      end function storey_rows
+      pure module real(dp) function storey_row_value(set, i, x)
+         class(storey_yield_set), intent(in) :: set
+         integer, intent(in) :: i
+         real(dp), intent(in) :: x(:)
+      end function storey_row_value
+      pure module subroutine storey_row_scatter(set, i, s, x)
+         class(storey_yield_set), intent(in) :: set
+         integer, intent(in) :: i
+         real(dp), intent(in) :: s
+         real(dp), intent(inout) :: x(:)
+      end subroutine storey_row_scatter
+      module subroutine storey_column(set, st, i, x)
+         class(storey_yield_set), intent(inout) :: set
+         class(integrator), intent(in) :: st
+         integer, intent(in) :: i
+         real(dp), intent(out) :: x(:)
+      end subroutine storey_column
+      module subroutine storey_block(set, st, m)
+         class(storey_yield_set), intent(inout) :: set
+         class(integrator), intent(in) :: st
+         integer, intent(in) :: m
+      end subroutine storey_block
+      module subroutine storey_check(set, t, step, label, error)
+         class(storey_yield_set), intent(inout) :: set
+         real(dp), intent(in) :: t
+         integer, intent(in) :: step
+         character(len=*), intent(in) :: label
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine storey_check
+      pure module subroutine storey_commit(set, u, t, shear)
+         class(storey_yield_set), intent(inout) :: set
+         real(dp), intent(in) :: u(:)
+         real(dp), intent(in) :: t
+         real(dp), intent(inout), optional :: shear(:)
+      end subroutine storey_commit
+      !> (pound_storey_yield_energy.)
+      pure module subroutine storey_energy(set, strain, dissipated)
+         class(storey_yield_set), intent(in) :: set
+         real(dp), intent(inout) :: strain, dissipated
+      end subroutine storey_energy
 
       !> The end moment of hinge row j less its back moment, m - H p, for the rotations `d`
       !> (plastic increments `dpl` included): the argument of its yield function.
@@ -236,13 +302,6 @@ module pound_storey_yield
          real(dp), intent(in) :: d(:)
       end function hinge_force
 
-      !> Khat^{-1} a_j of hinge j (a_j = k_j b_j + kc_j b_mate(j), its load per unit dp) into x.
-      module subroutine hinge_column(ys, st, j, x)
-         type(storey_yield_set), intent(inout) :: ys
-         class(integrator), intent(in) :: st
-         integer, intent(in) :: j
-         real(dp), intent(out) :: x(:)
-      end subroutine hinge_column
 
       !> The plastic loads of the hinges' increments `dpl`: `fload` = sum_j dp_j a_j and its
       !> response `xdp` = Khat^{-1} fload.
@@ -437,9 +496,9 @@ contains
       logical, intent(inout) :: collapsed
 
       if (output .and. rec%store(q_shear)) then
-         call yield_commit(ys, u, t, rec%shear(:, rec%n_out))
+         call ys%commit(u, t, rec%shear(:, rec%n_out))
       else
-         call yield_commit(ys, u, t)
+         call ys%commit(u, t)
       end if
       if (ys%collapse_storey > 0) collapsed = .true.
    end subroutine yield_sample
@@ -527,11 +586,7 @@ contains
       end if
       do round = 1, ys%n + 1
          if (solved) exit
-         if (ys%hinges) then
-            call hinge_solve_rows(ys, st, u, du, t, step, label, error)
-         else
-            call solve_rows(ys, st, u, du, t, step, label, error)
-         end if
+         call solve_rows(ys, st, u, du, t, step, label, error)
          if (allocated(error)) return
          ! Every storey outside its range enters (on its side); the others are met.
          added = .false.
@@ -543,7 +598,7 @@ contains
          if (ys%hinges) call hinge_turns(ys, added)
          if (.not. added) exit
       end do
-      call check_step(ys, t, step, label, error)
+      call ys%check(t, step, label, error)
       if (allocated(error)) return
       call plastic_loads(ys, st, 1.0_dp)
       ys%loaded = .true.
@@ -674,143 +729,6 @@ contains
       call st%add_load_rows(s, ys%alldof, ys%fload, ys%xdp)
    end subroutine plastic_loads
 
-   !> Column Khat^{-1} b_j of storey j (solved once per dt, kept when the building is small).
-   subroutine column_of(ys, st, j, x)
-      type(storey_yield_set), intent(inout) :: ys
-      class(integrator), intent(in) :: st
-      integer, intent(in) :: j
-      real(dp), intent(out) :: x(:)
-      integer :: e
-
-      if (size(ys%col, 2) >= ys%n) then
-         if (ys%slot(j) > 0) then
-            x = ys%col(:, ys%slot(j))
-            return
-         end if
-      end if
-      x = 0.0_dp
-      do e = ys%rows%start(j), ys%rows%start(j + 1) - 1
-         x(ys%rows%dof(e)) = x(ys%rows%dof(e)) + ys%rows%coef(e)
-      end do
-      call st%solve(x)
-      if (size(ys%col, 2) >= ys%n) then
-         ys%n_slots = ys%n_slots + 1
-         ys%slot(j) = ys%n_slots
-         ys%col(:, ys%n_slots) = x
-      end if
-   end subroutine column_of
-
-
-   !> One LCP over the storeys `act(1:na)` (each on its side): the plastic increments `dpl`,
-   !> their response `xdp` and the drifts `dnew` of every storey at the end of the step.
-   subroutine solve_rows(ys, st, u, du, t, step, label, error)
-      type(storey_yield_set), intent(inout) :: ys
-      class(integrator), intent(in) :: st
-      real(dp), intent(in) :: u(:), du(:)
-      real(dp), intent(in) :: t
-      integer, intent(in) :: step
-      character(len=*), intent(in) :: label
-      type(error_type), allocatable, intent(out) :: error
-      real(dp) :: h, ftr
-      integer :: a, b, i, j, m
-
-      m = ys%na
-      call dense_lcp_reserve(ys%lcp, m, m)
-      ys%xdp = 0.0_dp
-      ys%dpl = 0.0_dp
-      ! mat = S (K - D A) S with A_ij = k_j b_i^T Khat^{-1} b_j, D = diag((1-r) k), S the sides.
-      do b = 1, m
-         j = ys%act(b)
-         call column_of(ys, st, j, ys%work)
-         do a = 1, m
-            i = ys%act(a)
-            ys%lcp%mat(a, b) = -real(ys%side(i)*ys%side(j), dp)*(1.0_dp - ys%r(i))*ys%k(i)*ys%k(j)*recover(ys%rows, i, ys%work)
-         end do
-         ys%lcp%mat(b, b) = ys%lcp%mat(b, b) + ys%k(j)
-         h = (1.0_dp - ys%r(j))*ys%fy(j)
-         ftr = ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j))
-         ys%lcp%q(b) = h - real(ys%side(j), dp)*(ftr - ys%r(j)*ys%k(j)*ys%dtr(j))
-      end do
-      call solve_lcp(ys, m, t, step, label, error)
-      if (allocated(error)) return
-      do b = 1, m
-         j = ys%act(b)
-         ys%dpl(j) = real(ys%side(j), dp)*ys%lcp%z(b)
-         if (ys%dpl(j) == 0.0_dp) cycle
-         call column_of(ys, st, j, ys%work)
-         ys%xdp = ys%xdp + (ys%k(j)*ys%dpl(j))*ys%work
-      end do
-      call step_drifts(ys, u, du)
-   end subroutine solve_rows
-
-   !> Lemke's method on the assembled LCP (`mat`, `q`) of m rows (storeys or hinges): `z`,
-   !> the tallies, an error naming the building, time and step when it is not solved.
-   subroutine solve_lcp(ys, m, t, step, label, error)
-      type(storey_yield_set), intent(inout) :: ys
-      integer, intent(in) :: m
-      real(dp), intent(in) :: t
-      integer, intent(in) :: step
-      character(len=*), intent(in) :: label
-      type(error_type), allocatable, intent(out) :: error
-      type(lemke_report) :: rep
-
-      ys%lcp%guess(1:m) = .true.
-      call dense_lcp_solve(ys%lcp, m, rep)
-      ys%solves = ys%solves + 1
-      ys%lcp_rows = ys%lcp_rows + m
-      ys%max_rows = max(ys%max_rows, m)
-      if (rep%ok) return
-      call fatal_error(error, 'building '//label//': '//trim(merge('the plastic hinges''  ', 'the yielding storeys''', &
-                       ys%hinges))//' LCP ('//str(m)//' '//trim(merge('hinges ', 'storeys', ys%hinges))//') at t = '// &
-                       str(t)//' s (step '//str(step)//') was not solved: '//lemke_status_name(rep%status)// &
-                       ', natural residual '//str(rep%residual)//' (reduce dt)')
-   end subroutine solve_lcp
-
-   !> The natural residual of the step over every storey (relative to its yield shear): both
-   !> yield functions >= 0, the plastic increment on the side whose function is 0.
-   subroutine check_step(ys, t, step, label, error)
-      type(storey_yield_set), intent(inout) :: ys
-      real(dp), intent(in) :: t
-      integer, intent(in) :: step
-      character(len=*), intent(in) :: label
-      type(error_type), allocatable, intent(out) :: error
-      real(dp) :: f, c, h, up, lo, res, worst
-      integer :: j, at
-
-      worst = 0.0_dp
-      at = 0
-      do j = 1, ys%n
-         f = ys%f(j) + ys%k(j)*(ys%dnew(j) - ys%d(j)) - ys%k(j)*ys%dpl(j)
-         if (ys%hinges) f = hinge_force(ys, j, ys%dnew)
-         c = ys%r(j)*ys%k(j)*ys%dnew(j)
-         h = (1.0_dp - ys%r(j))*ys%fy(j)
-         up = c + h - f
-         lo = f - c + h
-         res = max(0.0_dp, -up, -lo)
-         if (ys%dpl(j) > 0.0_dp) res = max(res, abs(min(ys%k(j)*ys%dpl(j), up)))
-         if (ys%dpl(j) < 0.0_dp) res = max(res, abs(min(-ys%k(j)*ys%dpl(j), lo)))
-         if (ys%hinges) then
-            ! (Relative to the largest of My, the trial moment and S |theta|: the round-off of
-            ! m = S (theta - p).)
-            res = res/max(ys%fy(j), abs(ys%f(j) + ys%k(j)*(ys%dtr(j) - ys%d(j)) + &
-                                       ys%kc(j)*(ys%dtr(ys%mate(j)) - ys%d(ys%mate(j)))), &
-                          ys%k(j)*abs(ys%dnew(j)) + ys%kc(j)*abs(ys%dnew(ys%mate(j))))
-         else
-            res = res/ys%fy(j)
-         end if
-         if (res > worst) then
-            worst = res
-            at = j
-         end if
-      end do
-      ys%residual = max(ys%residual, worst)
-      if (worst <= yield_residual_limit) return
-      call fatal_error(error, 'building '//label//', '//trim(merge('hinge ', 'storey', ys%hinges))//' '//str(at)//': '// &
-                       trim(merge('the plastic hinges''  ', 'the yielding storeys''', ys%hinges))//' step at t = '// &
-                       str(t)//' s (step '//str(step)//') has the natural residual '//str(worst)// &
-                       ' (limit '//str(yield_residual_limit)//'; reduce dt)')
-   end subroutine check_step
-
    !> Commit the step: drift, force (`bilinear_force`), plastic drift, energies and peaks of
    !> every storey from the committed displacements u; the storey shears of an output sample
    !> (`shear`, the response's history column) become the spring forces.
@@ -872,6 +790,19 @@ contains
       res%ductility = ys%dmax/(ys%fy/ys%k)
       res%residual_drift = ys%d
       res%peak_force = ys%fmax
+      call finish_tallies(ys, res)
+      peak = ys%fmax
+      peak_time = ys%tmax
+   end subroutine yield_finish
+
+   !> The energy, collapse and LCP tallies of a set into its result (`yield_finish`,
+   !> `hinge_finish`).
+   pure subroutine finish_tallies(ys, res)
+      !> The building's set at the end of the run.
+      type(storey_yield_set), intent(in) :: ys
+      !> The building's result.
+      type(storey_yield_result), intent(inout) :: res
+
       res%hysteretic = ys%hysteretic
       res%collapse_storey = ys%collapse_storey
       res%collapse_time = ys%collapse_time
@@ -881,8 +812,6 @@ contains
       res%joint_steps = ys%joint_steps
       res%alternations = ys%alternations
       res%residual = ys%residual
-      peak = ys%fmax
-      peak_time = ys%tmax
-   end subroutine yield_finish
+   end subroutine finish_tallies
 
 end module pound_storey_yield

@@ -196,7 +196,7 @@ contains
       call contact_apply(cs, st)
       do ib = 1, size(ys)
          if (ys(ib)%n == 0 .or. ys(ib)%frozen) cycle
-         call check_step(ys(ib), t, step, models(ib)%name, error)
+         call ys(ib)%check(t, step, models(ib)%name, error)
          if (allocated(error)) return
          call plastic_loads(ys(ib), st(ib), 1.0_dp)
          ys(ib)%loaded = ys(ib)%na > 0
@@ -335,11 +335,7 @@ contains
          do s = nj + 1, n
             ib = ys(1)%cb(s)
             j = ys(1)%cj(s)
-            if (ys(ib)%hinges) then
-               call hinge_column(ys(ib), st(ib), j, ys(ib)%work)
-            else
-               call column_of(ys(ib), st(ib), j, ys(ib)%work)
-            end if
+            call ys(ib)%set_column(st(ib), j, ys(ib)%work)
             sg = ys(ib)%side(j)
             ! The joints' coupling G(k, s) = B_k^T Khat^{-1} b_j.
             shift = 0.0_dp
@@ -432,7 +428,7 @@ contains
          do j = 1, ys(ib)%n
             if (ys(ib)%hinges) exit
             if (ys(ib)%dpl(j) == 0.0_dp) cycle
-            call column_of(ys(ib), st(ib), j, ys(ib)%work)
+            call ys(ib)%set_column(st(ib), j, ys(ib)%work)
             ys(ib)%xdp = ys(ib)%xdp + (ys(ib)%k(j)*ys(ib)%dpl(j))*ys(ib)%work
          end do
          du => st(ib)%du_view()

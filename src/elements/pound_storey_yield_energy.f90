@@ -10,18 +10,7 @@ contains
    !> energies): an output sample `stored` (and `sample`, its copy) or the coupled step's
    !> `sample` gets the storeys' strain and hysteretic energies (`yield_energy_terms`, at the
    !> positions `i_strain`, `i_plastic`); an uncoupled step's integrator sum `e_out` loses W_L.
-   pure module subroutine yield_energy_step(ys, output, coupled, i_strain, i_plastic, stored, sample, e_out)
-      !> The buildings' storeys after the step's commit.
-      type(storey_yield_set), intent(in) :: ys(:)
-      !> An output step; a coupled analysis.
-      logical, intent(in) :: output, coupled
-      !> Positions of the strain energy and of the plastic work in a sample.
-      integer, intent(in) :: i_strain, i_plastic
-      !> The stored output sample, the step's sample (kJ; at least as long).
-      real(dp), intent(inout) :: stored(:), sample(:)
-      !> The integrators' sum kinetic + strain + damping of an uncoupled step (kJ).
-      real(dp), intent(inout) :: e_out
-
+   module procedure yield_energy_step
       if (output) then
          call yield_energy_terms(ys, stored(i_strain), stored(i_plastic))
          ! (The sample may hold more terms than the stored history: HHT's numerical dissipation.)
@@ -31,7 +20,7 @@ contains
       else
          e_out = e_out - yield_load_work(ys)
       end if
-   end subroutine yield_energy_step
+   end procedure yield_energy_step
 
    !> Total work W_L of the plastic loads of every building (kJ): what the integrators'
    !> balance counts beyond the elastic structure.
@@ -54,19 +43,29 @@ contains
       type(storey_yield_set), intent(in) :: ys(:)
       !> The sample's strain energy and plastic work (kJ).
       real(dp), intent(inout) :: strain, plastic
-      integer :: ib, j
+      integer :: ib
 
       do ib = 1, size(ys)
-         do j = 1, ys(ib)%n
-            associate (k => ys(ib)%k(j), d => ys(ib)%d(j), p => ys(ib)%p(j))
-               strain = strain + 0.5_dp*k*((d - p)**2 - d**2)
-               if (ys(ib)%hinges) strain = strain + 0.5_dp*ys(ib)%kc(j)* &
-                                           ((d - p)*(ys(ib)%d(ys(ib)%mate(j)) - ys(ib)%p(ys(ib)%mate(j))) - &
-                                            d*ys(ib)%d(ys(ib)%mate(j)))
-            end associate
-         end do
-         plastic = plastic + ys(ib)%hysteretic
+         call ys(ib)%energy(strain, plastic)
       end do
    end subroutine yield_energy_terms
+
+   !> The set's energy terms (`complementarity_set%energy`): strain energy sum k (d - p)^2 / 2
+   !> in place of sum k d^2 / 2 (hinges: with the coupling kc to the element's other end),
+   !> hysteretic energy added to the dissipated energy.
+   pure module subroutine storey_energy(set, strain, dissipated)
+      class(storey_yield_set), intent(in) :: set
+      real(dp), intent(inout) :: strain, dissipated
+      integer :: j
+
+      do j = 1, set%n
+         associate (k => set%k(j), d => set%d(j), p => set%p(j))
+            strain = strain + 0.5_dp*k*((d - p)**2 - d**2)
+            if (set%hinges) strain = strain + 0.5_dp*set%kc(j)*((d - p)*(set%d(set%mate(j)) - set%p(set%mate(j))) - &
+                                                               d*set%d(set%mate(j)))
+         end associate
+      end do
+      dissipated = dissipated + set%hysteretic
+   end subroutine storey_energy
 
 end submodule pound_storey_yield_energy

@@ -72,24 +72,16 @@ contains
           ys%hk(j)*(ys%p(j) + ys%dpl(j))
    end function hinge_force
 
-   module subroutine hinge_solve_rows(ys, st, u, du, t, step, label, error)
+   module subroutine hinge_block(ys, st, m)
       type(storey_yield_set), intent(inout) :: ys
       class(integrator), intent(in) :: st
-      real(dp), intent(in) :: u(:), du(:)
-      real(dp), intent(in) :: t
-      integer, intent(in) :: step
-      character(len=*), intent(in) :: label
-      type(error_type), allocatable, intent(out) :: error
+      integer, intent(in) :: m
       real(dp) :: s
-      integer :: a, b, i, j, m
+      integer :: a, b, i, j
 
-      m = ys%na
-      call dense_lcp_reserve(ys%lcp, m, m)
-      ! The trial moments (no plastic increment of this step).
-      ys%dpl = 0.0_dp
       do b = 1, m
          j = ys%act(b)
-         call hinge_column(ys, st, j, ys%work)
+         call ys%set_column(st, j, ys%work)
          do a = 1, m
             i = ys%act(a)
             s = real(ys%side(i)*ys%side(j), dp)
@@ -99,16 +91,7 @@ contains
          end do
          ys%lcp%q(b) = ys%fy(j) - real(ys%side(j), dp)*hinge_force(ys, j, ys%dtr)
       end do
-      call solve_lcp(ys, m, t, step, label, error)
-      if (allocated(error)) return
-      do b = 1, m
-         j = ys%act(b)
-         ys%dpl(j) = real(ys%side(j), dp)*ys%lcp%z(b)
-      end do
-      call hinge_loads(ys, st)
-      call step_drifts(ys, u, du)
-
-   end subroutine hinge_solve_rows
+   end subroutine hinge_block
 
    module subroutine hinge_loads(ys, st)
       type(storey_yield_set), intent(inout) :: ys
@@ -119,25 +102,12 @@ contains
       ys%fload = 0.0_dp
       do j = 1, ys%n
          if (ys%dpl(j) == 0.0_dp) cycle
-         call hinge_column(ys, st, j, ys%work)
+         call ys%set_column(st, j, ys%work)
          ys%xdp = ys%xdp + ys%dpl(j)*ys%work
          ! The load dp_j a_j = dp_j (k_j b_j + kc_j b_mate(j)).
-         call scatter(j, ys%dpl(j)*ys%k(j))
-         call scatter(ys%mate(j), ys%dpl(j)*ys%kc(j))
+         call ys%row_scatter(j, ys%dpl(j)*ys%k(j), ys%fload)
+         call ys%row_scatter(ys%mate(j), ys%dpl(j)*ys%kc(j), ys%fload)
       end do
-
-   contains
-
-      !> fload += s b_i.
-      subroutine scatter(i, s)
-         integer, intent(in) :: i
-         real(dp), intent(in) :: s
-         integer :: e
-
-         do e = ys%rows%start(i), ys%rows%start(i + 1) - 1
-            ys%fload(ys%rows%dof(e)) = ys%fload(ys%rows%dof(e)) + s*ys%rows%coef(e)
-         end do
-      end subroutine scatter
    end subroutine hinge_loads
 
    module subroutine hinge_turns(ys, added)
@@ -161,22 +131,7 @@ contains
       end do
    end subroutine hinge_turns
 
-   module subroutine hinge_column(ys, st, j, x)
-      type(storey_yield_set), intent(inout) :: ys
-      class(integrator), intent(in) :: st
-      integer, intent(in) :: j
-      real(dp), intent(out) :: x(:)
-
-      call column_of(ys, st, j, x)
-      call column_of(ys, st, ys%mate(j), ys%tmp)
-      x = ys%k(j)*x + ys%kc(j)*ys%tmp
-   end subroutine hinge_column
-
-   pure module subroutine hinge_commit(ys, u, t, shear)
-      type(storey_yield_set), intent(inout) :: ys
-      real(dp), intent(in) :: u(:)
-      real(dp), intent(in) :: t
-      real(dp), intent(inout), optional :: shear(:)
+   module procedure hinge_commit
       real(dp) :: x
       integer :: j, m
 
@@ -227,7 +182,7 @@ contains
       ys%xdp = 0.0_dp
       ys%fload = 0.0_dp
       ys%loaded = .false.
-   end subroutine hinge_commit
+   end procedure hinge_commit
 
    pure module subroutine hinge_finish(ys, rec, res)
       type(storey_yield_set), intent(in) :: ys
@@ -242,15 +197,7 @@ contains
       res%residual_drift = ys%cdrift
       res%peak_force = ys%speak
       allocate (res%ductility(res%n), source=0.0_dp)
-      res%hysteretic = ys%hysteretic
-      res%collapse_storey = ys%collapse_storey
-      res%collapse_time = ys%collapse_time
-      res%solves = ys%solves
-      res%lcp_rows = ys%lcp_rows
-      res%max_rows = ys%max_rows
-      res%joint_steps = ys%joint_steps
-      res%alternations = ys%alternations
-      res%residual = ys%residual
+      call finish_tallies(ys, res)
       rec%peak(:, q_shear) = ys%speak
       rec%peak_time(:, q_shear) = ys%stime
       if (allocated(rec%member_peak)) then
