@@ -42,8 +42,6 @@ module pound_analysis
    use pound_storey_collapse, only: yield_hold, yield_freeze, yield_frozen_step
    use pound_contact_period, only: joint_half_period, substep_impact_speed
    use pound_step_retry, only: step_retry, retry_step, swap_step_data
-   use pound_law_smooth, only: is_smooth
-   use pound_law_impact, only: law_impact, impact_result
    use pound_closed_steps, only: closed_stepper, closed_init, closed_step
    implicit none
    private
@@ -453,14 +451,12 @@ contains
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
       real(dp), parameter :: pi = acos(-1.0_dp)
-      type(impact_result) :: imp
 
       half = pi*sqrt(effective_mass(p, models)/p%law%stiffness)
       ! A smooth law (issue 26): its contact duration at `substep_impact_speed`.
       if (.not. allocated(p%law%given)) return
-      if (.not. is_smooth(p%law%given)) return
-      imp = law_impact(p%law%given, effective_mass(p, models), 0.0_dp, substep_impact_speed)
-      half = imp%duration
+      if (.not. p%law%given%has_force()) return
+      half = p%law%given%contact_duration(effective_mass(p, models), 0.0_dp, substep_impact_speed)
    end function contact_half_period
 
    !> Whether every gap is beyond its joint's largest closing displacement (`probe_gap`)
