@@ -18,6 +18,8 @@ set(POUND_SOURCES
   core/pound_expm.f90 core/pound_sdof.f90
   # core: the rules of a joint envelope (shared by the deck reader and the contact law)
   core/pound_envelope_rules.f90
+  # core: checks of input values that know no configuration (where a value comes from, required, rules, plausible ranges)
+  core/pound_input_checks.f90
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
   deck/pound_config.f90 deck/pound_deck_variables.f90 deck/pound_deck_values.f90 deck/pound_deck_lexer.f90 deck/pound_deck_checks.f90
   deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_hinge_law.f90 deck/pound_deck_building.f90

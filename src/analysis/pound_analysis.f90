@@ -48,8 +48,6 @@ module pound_analysis
    use pound_step_impact, only: impact_policy, impact_setup
    use pound_step_closed, only: closed_policy, closed_setup
    use pound_step_retry, only: retry_policy
-   use pound_law_smooth, only: is_smooth
-   use pound_law_impact, only: law_impact, impact_result
    implicit none
    private
 
@@ -447,14 +445,12 @@ contains
       type(contact_pair), intent(in) :: p
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
-      type(impact_result) :: imp
 
       half = pi*sqrt(effective_mass(p, models)/p%law%stiffness)
       ! A smooth law (issue 26): its contact duration at `substep_impact_speed`.
       if (.not. allocated(p%law%given)) return
-      if (.not. is_smooth(p%law%given)) return
-      imp = law_impact(p%law%given, effective_mass(p, models), 0.0_dp, substep_impact_speed)
-      half = imp%duration
+      if (.not. p%law%given%has_force()) return
+      half = p%law%given%contact_duration(effective_mass(p, models), 0.0_dp, substep_impact_speed)
    end function contact_half_period
 
    !> Whether every gap is beyond its joint's largest closing displacement (`probe_gap`)

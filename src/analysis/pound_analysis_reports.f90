@@ -159,7 +159,7 @@ contains
             if (half >= resolved_steps*dt) cycle
             found = found + 1
             if (allocated(p%law%given)) then
-               if (is_smooth(p%law%given)) then
+               if (p%law%given%has_force()) then
                   ! A smooth law (issue 26): its contact duration (`contact_half_period`).
                   call add_warning(res%warnings, head//': joint '//p%label//' (law '''//p%law%title()// &
                                    ''', m_eff = '//str(meff)//' t of the facing floors) has a contact duration '// &

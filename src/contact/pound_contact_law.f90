@@ -30,7 +30,7 @@ module pound_contact_law
 
    public :: contact_law, compile_envelope, rate_trapezoidal, rate_backward_euler, rate_name
    public :: envelope_force, yield_force, yield_segment, is_plastic, plastic_modulus, max_law_points
-   public :: restitution_of_ratio, ratio_of_restitution, dashpot_of_restitution
+   public :: restitution_of_ratio, ratio_of_restitution, dashpot_of_restitution, stiffness_units
 
    !> Dashpot rate by the trapezoidal rule (Newmark's own): d'_{n+1} = (2/dt) (d_{n+1} - d_n) - d'_n.
    integer, parameter :: rate_trapezoidal = 1
@@ -74,6 +74,14 @@ module pound_contact_law
       !> Set the dashpot from the coefficient of restitution (when one is given) and the
       !> masses of the two ends (`dashpot_of_restitution`).
       procedure :: calibrate => law_calibrate
+      !> A step's iterate: the law's trial state takes the row slope `k` (kN/m), and the rows
+      !> follow it (`stiffness`, what the LCP reads; `joint_law%set_trial`).
+      procedure :: set_trial => law_set_trial
+      !> The step is committed: the law drops its trial state and the rows take its committed
+      !> slope (`joint_law%commit`).
+      procedure :: commit => law_commit
+      !> The unit of the stiffness shown for these rows (the law's `stiffness_unit`; kN/m).
+      procedure :: stiffness_unit => law_rows_unit
    end type contact_law
 
 contains
@@ -278,6 +286,58 @@ contains
       end if
       if (law%restitution > 0.0_dp) law%dashpot = dashpot_of_restitution(law%restitution, law%stiffness, m1, m2)
    end subroutine law_calibrate
+
+   !> The law's trial row slope k (kN/m), which the rows take.
+   pure subroutine law_set_trial(law, k)
+      !> The rows (their law allocated).
+      class(contact_law), intent(inout) :: law
+      !> Slope of the row at the iterate (kN/m).
+      real(dp), intent(in) :: k
+
+      call law%given%set_trial(k)
+      law%stiffness = law%given%row_stiffness(law%stiffness)
+   end subroutine law_set_trial
+
+   !> Commit the law's state; the rows take its committed slope.
+   pure subroutine law_commit(law)
+      !> The rows (their law allocated).
+      class(contact_law), intent(inout) :: law
+
+      call law%given%commit()
+      law%stiffness = law%given%row_stiffness(law%stiffness)
+   end subroutine law_commit
+
+   !> The unit of the rows' shown stiffness: the law's (kN/m without a law).
+   pure function law_rows_unit(law) result(u)
+      !> The rows.
+      class(contact_law), intent(in) :: law
+      character(len=:), allocatable :: u
+
+      if (allocated(law%given)) then
+         u = law%given%stiffness_unit()
+      else
+         u = 'kN/m'
+      end if
+   end function law_rows_unit
+
+   !> The units of the stiffnesses of the joints `laws` (one dataset): their common unit
+   !> (`stiffness_unit`), or each distinct one in joint order, ' or ' separated (joints of
+   !> laws of different families); kN/m for none.
+   pure function stiffness_units(laws) result(u)
+      !> The joints' rows.
+      type(contact_law), intent(in) :: laws(:)
+      character(len=:), allocatable :: u, w
+      integer :: k
+
+      u = ''
+      do k = 1, size(laws)
+         w = laws(k)%stiffness_unit()
+         if (index(' or '//u//' or ', ' or '//w//' or ') > 0) cycle
+         if (len(u) > 0) u = u//' or '
+         u = u//w
+      end do
+      if (len(u) == 0) u = 'kN/m'
+   end function stiffness_units
 
    !> The envelope as used, (2, n+1) points (d, r) from the origin; (2, 0) without nodes.
    pure function law_envelope_points(law) result(pts)

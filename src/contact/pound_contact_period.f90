@@ -17,8 +17,6 @@ module pound_contact_period
    use pound_constants, only: pi
    use pound_structure, only: structure_model
    use pound_contact_pair, only: contact_pair
-   use pound_law_smooth, only: is_smooth
-   use pound_law_impact, only: law_impact, impact_result
    use pound_band, only: band_symv
    use pound_band_lapack, only: dpbtrf, dpbtrs
    implicit none
@@ -86,13 +84,11 @@ contains
       logical function smooth_duration(m1, m2, t) result(smooth)
          real(dp), intent(in) :: m1, m2
          real(dp), intent(inout) :: t
-         type(impact_result) :: imp
 
          smooth = .false.
          if (.not. allocated(p%law%given)) return
-         if (.not. is_smooth(p%law%given)) return
-         imp = law_impact(p%law%given, m1, m2, substep_impact_speed)
-         t = imp%duration
+         if (.not. p%law%given%has_force()) return
+         t = p%law%given%contact_duration(m1, m2, substep_impact_speed)
          smooth = .true.
       end function smooth_duration
    end function joint_half_period

@@ -32,15 +32,15 @@
 !> force the round-off of v makes (64 eps (|v| + gap) times the tangent); after
 !> `max_law_iterations` solves the step fails (`smooth_unsettled` names the joints).
 !> After the solve the row takes the secant r/d, so that the joint's update
-!> (`joint_advance`, pound_joint_state) gives d; after the commit it shows the law's stiffness
-!> (`joint_law%shown_stiffness`).
+!> (`joint_advance`, pound_joint_state) gives d. Every row of an iterate is the law's trial
+!> state (`contact_law%set_trial`, `joint_law%set_trial`: the LCP reads the rows' slope);
+!> the commit drops it (`contact_law%commit`: the row is back at the law's stiffness).
 module pound_contact_smooth
    use pound_kinds, only: dp
    use pound_strings, only: str
    use pound_integrator, only: integrator
    use pound_contact_pair, only: end_sign
    use pound_contact_system, only: contact_system, joint_constants
-   use pound_law_smooth, only: is_smooth
    use pound_lcp_active_set, only: active_set_forget
    implicit none
    private
@@ -64,12 +64,12 @@ module pound_contact_smooth
 
 contains
 
-   !> The law of joint k has a force of its own (a smooth law: a type test, no evaluation).
+   !> The law of joint k has a force of its own (a smooth law; no evaluation).
    pure logical function has_force(cs, k)
       type(contact_system), intent(in) :: cs
       integer, intent(in) :: k
 
-      has_force = is_smooth(cs%pair(k)%law%given)
+      has_force = cs%pair(k)%law%given%has_force()
    end function has_force
 
    !> Before the step's first LCP: the constants of every iterating joint, a smooth joint's
@@ -175,7 +175,7 @@ contains
             if (f > 0.0_dp) kt = rigid_stiffness
             shift = 0.0_dp
          end if
-         law%stiffness = kt
+         call law%set_trial(kt)
          j%shift = shift
       end associate
       call joint_constants(cs, k)
@@ -307,7 +307,7 @@ contains
          if (.not. has_force(cs, k)) cycle
          d = v_pred(k) - dot_product(cs%f(:, k), cs%r_new) - cs%pair(k)%gap
          if (cs%r_new(k) > 0.0_dp .and. d > 0.0_dp) then
-            cs%pair(k)%law%stiffness = cs%r_new(k)/d
+            call cs%pair(k)%law%set_trial(cs%r_new(k)/d)
             call joint_constants(cs, k)
          end if
          cs%joint(k)%shift = 0.0_dp
@@ -372,10 +372,8 @@ contains
       real(dp), intent(in) :: v
 
       if (v - cs%pair(k)%gap <= 0.0_dp) cs%joint(k)%v0 = 0.0_dp
-      if (cs%pair(k)%law%given%shown_stiffness() > 0.0_dp) then
-         cs%pair(k)%law%stiffness = cs%pair(k)%law%given%shown_stiffness()
-         call joint_constants(cs, k)
-      end if
+      call cs%pair(k)%law%commit()
+      call joint_constants(cs, k)
    end subroutine smooth_joint_commit
 
 end module pound_contact_smooth

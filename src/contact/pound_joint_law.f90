@@ -35,10 +35,12 @@
 !> and costs nothing; `contact_solve` has no branch on a law.
 module pound_joint_law
    use pound_kinds, only: dp
+   use pound_input_checks, only: is_set, given_count, unset_int
    implicit none
    private
 
-   public :: joint_law, law_text, law_input, add_line, max_law_iterations, law_iteration_limit
+   public :: joint_law, law_text, law_input, add_line, max_law_iterations, law_iteration_limit, law_variable, &
+             dashpot_variables
 
    !> Largest number of LCP solves of one step while iterating laws ask for another.
    integer, parameter :: max_law_iterations = 50
@@ -52,8 +54,29 @@ module pound_joint_law
       character(len=:), allocatable :: line
    end type law_text
 
+   !> A `&contact` variable a law reads: what the deck's variable table (pound_deck_variables,
+   !> generated from pound_law_registry) and its refusals know of it.
+   type :: law_variable
+      !> Name (lower case).
+      character(len=20) :: name = ''
+      !> Type: 'r' real, 'i' integer, 'c' character.
+      character :: vtype = 'r'
+      !> Number of elements, 0 for a scalar.
+      integer :: vsize = 0
+      !> Unit, for the documentation of the table ('' for a number or a word).
+      character(len=12) :: unit = ''
+      !> Given to a law that does not read it: refused by the deck ("... is not used by law =
+      !> ..."); false for a variable whose refusal is the laws' own (`dashpot` of a smooth
+      !> law) or that is not refused (`dashpot_rate`).
+      logical :: refused = .true.
+   end type law_variable
+
+   !> The variables of the joint's dashpot in parallel, which every piecewise-linear law reads.
+   type(law_variable), parameter :: dashpot_variables(2) = [law_variable('dashpot', 'r', 0, 'kN s/m', .false.), &
+                                                            law_variable('dashpot_rate', 'c', 0, '', .false.)]
+
    !> The `&contact` variables of the laws as the deck read them (unset values: the deck's
-   !> sentinels, pound_deck_checks `is_set`), handed to the law's deck reader
+   !> sentinels, pound_input_checks `is_set`), handed to the law's deck reader
    !> (`pound_law_registry`: `law_take_deck`), which checks those it reads.
    type :: law_input
       !> Scalars: stiffness k0 (kN/m), yield force (kN), second slope (kN/m), peak force rB
@@ -67,6 +90,10 @@ module pound_joint_law
       !> The common `dashpot` (kN s/m) and `restitution` as read (a smooth law refuses a
       !> dashpot and may require a restitution; the deck's own checks of them follow).
       real(dp) :: dashpot = 0.0_dp, restitution = 0.0_dp
+   contains
+      !> The deck gave the law variable `name` (a value, or an array's value); false for a
+      !> name that is not one of them.
+      procedure :: given => law_input_given
    end type law_input
 
    !> A joint law, as described to the listing, the HDF5 writer and the step.
@@ -93,6 +120,28 @@ module pound_joint_law
       !> The stiffness the law shows in the joints' table (kN/m or kN/m^(3/2)); default 0:
       !> the rows' own.
       procedure :: shown_stiffness => law_no_shown_stiffness
+      !> The unit of the stiffness the law shows (`shown_stiffness`, or the rows' k0); default
+      !> 'kN/m'.
+      procedure :: stiffness_unit => law_stiffness_unit
+      !> The law has a force of its own (`force`): a smooth law, solved by Newton around the
+      !> step's LCP (pound_contact_smooth); default false (solved by its rows).
+      procedure :: has_force => law_has_no_force
+      !> Duration (s) of a central impact of masses m1, m2 (t; 0: rigid) at the approach speed
+      !> v (m/s) on the law's own force; default 0: none of its own (the rows' half-period
+      !> pi sqrt(m_eff/k0) applies).
+      procedure :: contact_duration => law_no_contact_duration
+      !> The realised coefficient of restitution of the law's calibration (computed once, when
+      !> the facing masses are set); default 0: not a smooth law.
+      procedure :: realised_restitution => law_no_realised_restitution
+      !> Trial state: the slope (kN/m) of the law's row at the current iterate of the step
+      !> (a smooth law's tangent or secant, pound_contact_smooth); default: nothing kept.
+      procedure :: set_trial => law_no_trial
+      !> Commit the step: the trial state is dropped and the row's slope is the committed one
+      !> (`committed_stiffness`); default: nothing kept.
+      procedure :: commit => law_no_commit
+      !> The slope (kN/m) of the law's row: the trial one during a step, else the committed
+      !> one; `k_rows` (the rows' own k0) for a law without trial state.
+      procedure :: row_stiffness => law_rows_stiffness
    end type joint_law
 
    abstract interface
@@ -207,5 +256,121 @@ contains
       end associate
       k = 0.0_dp
    end function law_no_shown_stiffness
+
+   !> The deck gave the law variable `name` (not the unset marker, pound_input_checks).
+   pure logical function law_input_given(raw, name) result(given)
+      !> The law variables as read.
+      class(law_input), intent(in) :: raw
+      !> Variable name.
+      character(len=*), intent(in) :: name
+
+      select case (name)
+      case ('stiffness')
+         given = is_set(raw%stiffness)
+      case ('yield_force')
+         given = is_set(raw%yield_force)
+      case ('second_slope')
+         given = is_set(raw%second_slope)
+      case ('peak_force')
+         given = is_set(raw%peak_force)
+      case ('peak_penetration')
+         given = is_set(raw%peak_penetration)
+      case ('fracture_penetration')
+         given = is_set(raw%fracture_penetration)
+      case ('n_segments')
+         given = raw%n_segments /= unset_int
+      case ('envelope_d')
+         given = .false.
+         if (allocated(raw%envelope_d)) given = given_count(raw%envelope_d) > 0
+      case ('envelope_r')
+         given = .false.
+         if (allocated(raw%envelope_r)) given = given_count(raw%envelope_r) > 0
+      case ('dashpot')
+         given = is_set(raw%dashpot)
+      case ('restitution')
+         given = is_set(raw%restitution)
+      case default
+         given = .false.
+      end select
+   end function law_input_given
+
+   !> Default `stiffness_unit`: kN/m.
+   pure function law_stiffness_unit(law) result(u)
+      !> The law.
+      class(joint_law), intent(in) :: law
+      character(len=:), allocatable :: u
+
+      associate (unused => law)
+      end associate
+      u = 'kN/m'
+   end function law_stiffness_unit
+
+   !> Default `has_force`: solved by its rows.
+   pure logical function law_has_no_force(law) result(has)
+      !> The law.
+      class(joint_law), intent(in) :: law
+
+      associate (unused => law)
+      end associate
+      has = .false.
+   end function law_has_no_force
+
+   !> Default `contact_duration`: none of its own (0).
+   pure real(dp) function law_no_contact_duration(law, m1, m2, v) result(t)
+      !> The law.
+      class(joint_law), intent(in) :: law
+      !> Masses of the two ends (t; 0: rigid) and the approach speed (m/s).
+      real(dp), intent(in) :: m1, m2, v
+
+      associate (unused => [m1, m2, v])
+      end associate
+      associate (unused => law)
+      end associate
+      t = 0.0_dp
+   end function law_no_contact_duration
+
+   !> Default `realised_restitution`: not a smooth law (0).
+   pure real(dp) function law_no_realised_restitution(law) result(e_r)
+      !> The law.
+      class(joint_law), intent(in) :: law
+
+      associate (unused => law)
+      end associate
+      e_r = 0.0_dp
+   end function law_no_realised_restitution
+
+   !> Default `set_trial`: no trial state.
+   pure subroutine law_no_trial(law, k)
+      !> The law.
+      class(joint_law), intent(inout) :: law
+      !> Slope of the row at the iterate (kN/m).
+      real(dp), intent(in) :: k
+
+      associate (unused => k)
+      end associate
+      associate (unused => law)
+      end associate
+   end subroutine law_no_trial
+
+   !> Default `commit`: no trial state.
+   pure subroutine law_no_commit(law)
+      !> The law.
+      class(joint_law), intent(inout) :: law
+
+      associate (unused => law)
+      end associate
+   end subroutine law_no_commit
+
+   !> Default `row_stiffness`: the rows' own k0.
+   pure real(dp) function law_rows_stiffness(law, k_rows) result(k)
+      !> The law.
+      class(joint_law), intent(in) :: law
+      !> The rows' k0 (kN/m).
+      real(dp), intent(in) :: k_rows
+
+      associate (unused => law)
+      end associate
+      k = k_rows
+   end function law_rows_stiffness
 
 end module pound_joint_law

@@ -7,16 +7,25 @@ module pound_law_bilinear
    use pound_strings, only: str
    use pound_envelope_rules, only: check_law_constants
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
-   use pound_joint_law, only: joint_law, law_text, law_input, add_line
+   use pound_joint_law, only: joint_law, law_text, law_input, add_line, law_variable, dashpot_variables
    use pound_contact_law, only: contact_law, compile_envelope
    use pound_contact_settings, only: contact_config
-   use pound_deck_checks, only: site, require_real, check_real, check_plausible, fail
+   use pound_input_checks, only: input_site, require_real, check_real, check_plausible, fail
    use pound_law_elastic, only: take_stiffness
    implicit none
    private
 
    public :: bilinear_law, make_bilinear, make_elastic_plastic, bilinear_from_config, &
-             elastic_plastic_from_config, bilinear_take, elastic_plastic_take
+             elastic_plastic_from_config, bilinear_take, elastic_plastic_take, &
+             elastic_plastic_variables, bilinear_variables
+
+   !> The `&contact` variables of law = 'elastic_plastic' (the deck's table and refusals: pound_law_registry).
+   type(law_variable), parameter :: elastic_plastic_variables(4) = [law_variable('stiffness', 'r', 0, 'kN/m'), &
+      law_variable('yield_force', 'r', 0, 'kN'), dashpot_variables]
+
+   !> The `&contact` variables of law = 'bilinear' (the deck's table and refusals: pound_law_registry).
+   type(law_variable), parameter :: bilinear_variables(5) = [law_variable('stiffness', 'r', 0, 'kN/m'), &
+      law_variable('yield_force', 'r', 0, 'kN'), law_variable('second_slope', 'r', 0, 'kN/m'), dashpot_variables]
 
    !> Bilinear law: its yield force and second slope as given.
    type, extends(joint_law) :: bilinear_law
@@ -111,7 +120,7 @@ contains
    !> The deck's variables of law = 'elastic_plastic' (`stiffness`, `yield_force` > 0).
    pure subroutine elastic_plastic_take(at, raw, cfg, error)
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.
@@ -132,7 +141,7 @@ contains
    !> `second_slope` < stiffness).
    pure subroutine bilinear_take(at, raw, cfg, error)
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.

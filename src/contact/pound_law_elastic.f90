@@ -4,14 +4,17 @@ module pound_law_elastic
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_envelope_rules, only: check_law_constants
-   use pound_joint_law, only: joint_law, law_text, law_input
+   use pound_joint_law, only: joint_law, law_text, law_input, law_variable, dashpot_variables
    use pound_contact_law, only: contact_law
    use pound_contact_settings, only: contact_config
-   use pound_deck_checks, only: site, require_real, check_real
+   use pound_input_checks, only: input_site, require_real, check_real
    implicit none
    private
 
-   public :: elastic_law, make_elastic, elastic_from_config, elastic_take, take_stiffness
+   public :: elastic_law, make_elastic, elastic_from_config, elastic_take, take_stiffness, elastic_variables
+
+   !> The `&contact` variables of law = 'elastic' (the deck's table and refusals: pound_law_registry).
+   type(law_variable), parameter :: elastic_variables(3) = [law_variable('stiffness', 'r', 0, 'kN/m'), dashpot_variables]
 
    !> The elastic law (k0 alone: nothing of its own to list).
    type, extends(joint_law) :: elastic_law
@@ -63,7 +66,7 @@ contains
    !> The deck's `stiffness` (required, > 0) into the group's configuration.
    pure subroutine take_stiffness(at, raw, cfg, error)
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.
@@ -81,7 +84,7 @@ contains
    !> The deck's variables of law = 'elastic' (`stiffness`).
    pure subroutine elastic_take(at, raw, cfg, error)
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.

@@ -4,15 +4,18 @@
 module pound_law_hertz
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_joint_law, only: law_input
+   use pound_joint_law, only: law_input, law_variable
    use pound_contact_law, only: contact_law
    use pound_contact_settings, only: contact_config
-   use pound_deck_checks, only: site
+   use pound_input_checks, only: input_site
    use pound_law_smooth, only: smooth_law, make_smooth, smooth_take
    implicit none
    private
 
-   public :: hertz_law, hertz_from_config, hertz_take
+   public :: hertz_law, hertz_from_config, hertz_take, hertz_variables
+
+   !> The `&contact` variables of law = 'hertz' (the deck's table and refusals: pound_law_registry).
+   type(law_variable), parameter :: hertz_variables(1) = [law_variable('stiffness', 'r', 0, 'kN/m^(3/2)')]
 
    !> The hertz law.
    type, extends(smooth_law) :: hertz_law
@@ -38,7 +41,7 @@ contains
    !> The deck's variables of law = 'hertz'.
    pure subroutine hertz_take(at, raw, cfg, error)
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.

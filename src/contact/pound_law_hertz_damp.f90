@@ -6,15 +6,18 @@
 module pound_law_hertz_damp
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_joint_law, only: law_input
+   use pound_joint_law, only: law_input, law_variable
    use pound_contact_law, only: contact_law
    use pound_contact_settings, only: contact_config
-   use pound_deck_checks, only: site
+   use pound_input_checks, only: input_site
    use pound_law_smooth, only: smooth_law, make_smooth, smooth_take
    implicit none
    private
 
-   public :: hertz_damp_law, hertz_damp_from_config, hertz_damp_take
+   public :: hertz_damp_law, hertz_damp_from_config, hertz_damp_take, hertz_damp_variables
+
+   !> The `&contact` variables of law = 'hertz_damp' (the deck's table and refusals: pound_law_registry).
+   type(law_variable), parameter :: hertz_damp_variables(1) = [law_variable('stiffness', 'r', 0, 'kN/m^(3/2)')]
 
    !> The hertz_damp law.
    type, extends(smooth_law) :: hertz_damp_law
@@ -40,7 +43,7 @@ contains
    !> The deck's variables of law = 'hertz_damp'.
    pure subroutine hertz_damp_take(at, raw, cfg, error)
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.

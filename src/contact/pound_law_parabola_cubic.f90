@@ -7,17 +7,21 @@ module pound_law_parabola_cubic
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_envelope_rules, only: check_law_constants
-   use pound_joint_law, only: joint_law, law_text, law_input, add_line
+   use pound_envelope_rules, only: check_law_constants, max_segments
+   use pound_joint_law, only: joint_law, law_text, law_input, add_line, law_variable, dashpot_variables
    use pound_contact_law, only: contact_law, compile_envelope
    use pound_contact_settings, only: contact_config
-   use pound_deck_checks, only: site, require_real, check_real, check_plausible, fail, is_set, unset_int
-   use pound_deck_variables, only: max_segments
+   use pound_input_checks, only: input_site, require_real, check_real, check_plausible, fail, is_set, unset_int
    implicit none
    private
 
    public :: parabola_cubic_law, make_parabola_cubic, parabola_cubic_force, parabola_cubic_from_config, &
-             parabola_cubic_take
+             parabola_cubic_take, parabola_cubic_variables
+
+   !> The `&contact` variables of law = 'parabola_cubic' (the deck's table and refusals: pound_law_registry).
+   type(law_variable), parameter :: parabola_cubic_variables(7) = [law_variable('stiffness', 'r', 0, 'kN/m'), &
+      law_variable('peak_force', 'r', 0, 'kN'), law_variable('peak_penetration', 'r', 0, 'm'), &
+      law_variable('fracture_penetration', 'r', 0, 'm'), law_variable('n_segments', 'i', 0, ''), dashpot_variables]
 
    !> The Fig. 1b law: its parameters as given.
    type, extends(joint_law) :: parabola_cubic_law
@@ -123,7 +127,7 @@ contains
    !> chords per branch.
    pure subroutine parabola_cubic_take(at, raw, cfg, error)
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.

@@ -3,17 +3,20 @@
 module pound_law_piecewise
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_envelope_rules, only: check_piecewise_envelope, check_law_constants
+   use pound_envelope_rules, only: check_piecewise_envelope, check_law_constants, max_envelope_points => max_law_points
    use pound_strings, only: str
-   use pound_joint_law, only: joint_law, law_text, law_input, add_line
+   use pound_joint_law, only: joint_law, law_text, law_input, add_line, law_variable, dashpot_variables
    use pound_contact_law, only: contact_law, compile_envelope
    use pound_contact_settings, only: contact_config
-   use pound_deck_checks, only: site, check_real, check_plausible, fail, given_count, is_set, values_text
-   use pound_deck_variables, only: max_envelope_points
+   use pound_input_checks, only: input_site, check_real, check_plausible, fail, given_count, is_set, values_text
    implicit none
    private
 
-   public :: piecewise_law, make_piecewise, piecewise_from_config, piecewise_take
+   public :: piecewise_law, make_piecewise, piecewise_from_config, piecewise_take, piecewise_variables
+
+   !> The `&contact` variables of law = 'piecewise' (the deck's table and refusals: pound_law_registry).
+   type(law_variable), parameter :: piecewise_variables(4) = [law_variable('envelope_d', 'r', max_envelope_points, 'm'), &
+      law_variable('envelope_r', 'r', max_envelope_points, 'kN'), dashpot_variables]
 
    !> Piecewise law: its points as given.
    type, extends(joint_law) :: piecewise_law
@@ -76,7 +79,7 @@ contains
    !> rules (pound_envelope_rules).
    pure subroutine piecewise_take(at, raw, cfg, error)
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.

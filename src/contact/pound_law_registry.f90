@@ -1,28 +1,31 @@
 !> The joint laws pound knows, by deck name: one line per law (name, constructor from the
-!> deck's `&contact` group, the `&contact` variables the law reads, whether it calibrates its
-!> dashpot to a coefficient of restitution). The deck checks the law name and refuses the
-!> variables of other laws from this table; `pairs_from_config` builds each group's law
-!> through it. Adding a law: its module (pound_joint_law explains what it supplies) and one
-!> line in `registered_laws`.
+!> deck's `&contact` group, reader of its variables, the `&contact` variables it declares
+!> (`law_variable`: name, type, size, unit; each law module declares its own), whether it
+!> calibrates its dashpot to a coefficient of restitution). The deck's variable table of
+!> `&contact` is generated from it (`law_variables`, pound_deck_variables), the deck checks
+!> the law name and refuses the variables of other laws from it; `pairs_from_config` builds
+!> each group's law through it. Adding a law: its module (pound_joint_law explains what it
+!> supplies) and one line in `registered_laws`.
 module pound_law_registry
    use pound_error, only: error_type, fatal_error
    use pound_contact_settings, only: contact_config
    use pound_contact_law, only: contact_law
-   use pound_joint_law, only: law_input
-   use pound_deck_checks, only: site
-   use pound_law_elastic, only: elastic_from_config, elastic_take
-   use pound_law_bilinear, only: bilinear_from_config, elastic_plastic_from_config, bilinear_take, elastic_plastic_take
-   use pound_law_piecewise, only: piecewise_from_config, piecewise_take
-   use pound_law_parabola_cubic, only: parabola_cubic_from_config, parabola_cubic_take
-   use pound_law_kelvin, only: kelvin_from_config, kelvin_take
-   use pound_law_hertz, only: hertz_from_config, hertz_take
-   use pound_law_hertz_damp, only: hertz_damp_from_config, hertz_damp_take
-   use pound_law_jankowski, only: jankowski_from_config, jankowski_take
+   use pound_joint_law, only: law_input, law_variable
+   use pound_input_checks, only: input_site
+   use pound_law_elastic, only: elastic_from_config, elastic_take, elastic_variables
+   use pound_law_bilinear, only: bilinear_from_config, elastic_plastic_from_config, bilinear_take, elastic_plastic_take, &
+                                 bilinear_variables, elastic_plastic_variables
+   use pound_law_piecewise, only: piecewise_from_config, piecewise_take, piecewise_variables
+   use pound_law_parabola_cubic, only: parabola_cubic_from_config, parabola_cubic_take, parabola_cubic_variables
+   use pound_law_kelvin, only: kelvin_from_config, kelvin_take, kelvin_variables
+   use pound_law_hertz, only: hertz_from_config, hertz_take, hertz_variables
+   use pound_law_hertz_damp, only: hertz_damp_from_config, hertz_damp_take, hertz_damp_variables
+   use pound_law_jankowski, only: jankowski_from_config, jankowski_take, jankowski_variables
    implicit none
    private
 
    public :: law_entry, registered_laws, law_from_config, law_is_registered, law_reads, law_restitution, &
-             registered_law_names, law_take_deck, restitution_law_names
+             registered_law_names, law_take_deck, restitution_law_names, law_variables
 
    abstract interface
       !> Build the law of a `&contact` group (its parameters already checked by the deck).
@@ -39,9 +42,9 @@ module pound_law_registry
       !> Check the law's own `&contact` variables as read and put them into the group's
       !> configuration (messages name the deck line, group and variable).
       pure subroutine law_deck_reader(at, raw, cfg, error)
-         import :: site, law_input, contact_config, error_type
+         import :: input_site, law_input, contact_config, error_type
          !> Where messages point.
-         type(site), intent(in) :: at
+         class(input_site), intent(in) :: at
          !> The law variables as read.
          type(law_input), intent(in) :: raw
          !> The group's configuration.
@@ -59,9 +62,9 @@ module pound_law_registry
       procedure(law_constructor), pointer, nopass :: make => null()
       !> Its reader of the deck's variables.
       procedure(law_deck_reader), pointer, nopass :: take => null()
-      !> The `&contact` variables of its own (beside the common ones: left, right, floors,
-      !> elevations, gap, law, dashpot, dashpot_rate), blank separated.
-      character(len=120) :: reads = ''
+      !> The `&contact` variables it reads (beside the joint's: left, right, floors,
+      !> elevations, gap, law, restitution, variant), as its module declares them.
+      type(law_variable), allocatable :: variables(:)
       !> It may calibrate its dashpot to `restitution`.
       logical :: restitution = .false.
    end type law_entry
@@ -73,17 +76,17 @@ contains
       !> The table.
       type(law_entry), allocatable, intent(out) :: laws(:)
 
-      laws = [law_entry('elastic', elastic_from_config, elastic_take, 'stiffness', .true.), &
+      laws = [law_entry('elastic', elastic_from_config, elastic_take, elastic_variables, .true.), &
               law_entry('elastic_plastic', elastic_plastic_from_config, elastic_plastic_take, &
-                        'stiffness yield_force', .false.), &
-              law_entry('bilinear', bilinear_from_config, bilinear_take, 'stiffness yield_force second_slope', .false.), &
-              law_entry('piecewise', piecewise_from_config, piecewise_take, 'envelope_d envelope_r', .false.), &
+                        elastic_plastic_variables, .false.), &
+              law_entry('bilinear', bilinear_from_config, bilinear_take, bilinear_variables, .false.), &
+              law_entry('piecewise', piecewise_from_config, piecewise_take, piecewise_variables, .false.), &
               law_entry('parabola_cubic', parabola_cubic_from_config, parabola_cubic_take, &
-                        'stiffness peak_force peak_penetration fracture_penetration n_segments', .false.), &
-              law_entry('kelvin', kelvin_from_config, kelvin_take, 'stiffness', .true.), &
-              law_entry('hertz', hertz_from_config, hertz_take, 'stiffness', .false.), &
-              law_entry('hertz_damp', hertz_damp_from_config, hertz_damp_take, 'stiffness', .true.), &
-              law_entry('jankowski', jankowski_from_config, jankowski_take, 'stiffness', .true.)]
+                        parabola_cubic_variables, .false.), &
+              law_entry('kelvin', kelvin_from_config, kelvin_take, kelvin_variables, .true.), &
+              law_entry('hertz', hertz_from_config, hertz_take, hertz_variables, .false.), &
+              law_entry('hertz_damp', hertz_damp_from_config, hertz_damp_take, hertz_damp_variables, .true.), &
+              law_entry('jankowski', jankowski_from_config, jankowski_take, jankowski_variables, .true.)]
    end subroutine registered_laws
 
    !> The table's entry of law `name` (0: none).
@@ -127,9 +130,35 @@ contains
       character(len=*), intent(in) :: var
       type(law_entry) :: e
 
+      integer :: i
+
+      law_reads = .false.
       e = law_entry_of(name)
-      law_reads = index(' '//trim(e%reads)//' ', ' '//var//' ') > 0 .and. len_trim(e%name) > 0
+      if (len_trim(e%name) == 0) return
+      do i = 1, size(e%variables)
+         if (e%variables(i)%name == var) law_reads = .true.
+      end do
    end function law_reads
+
+   !> Every `&contact` variable of the registered laws, once each, in the order the laws
+   !> declare them (the table's order), then `restitution` (the laws that calibrate their
+   !> dashpot to it; its refusal is the deck's own): what the deck's variable table lists
+   !> for `&contact` beside the joint's variables.
+   pure function law_variables() result(vars)
+      type(law_variable), allocatable :: vars(:)
+      type(law_entry), allocatable :: laws(:)
+      integer :: i, j
+
+      call registered_laws(laws)
+      allocate (vars(0))
+      do i = 1, size(laws)
+         do j = 1, size(laws(i)%variables)
+            if (any(vars%name == laws(i)%variables(j)%name)) cycle
+            vars = [vars, laws(i)%variables(j)]
+         end do
+      end do
+      if (any(laws%restitution)) vars = [vars, law_variable('restitution', 'r', 0, '', .false.)]
+   end function law_variables
 
    !> Registered law `name` may calibrate its dashpot to a coefficient of restitution.
    pure logical function law_restitution(name)
@@ -181,7 +210,7 @@ contains
       !> Deck name of the law.
       character(len=*), intent(in) :: name
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.

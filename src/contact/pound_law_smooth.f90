@@ -16,13 +16,12 @@ module pound_law_smooth
    use pound_joint_law, only: joint_law, law_text, law_input, add_line
    use pound_contact_law, only: contact_law
    use pound_contact_settings, only: contact_config
-   use pound_deck_checks, only: site, require_real, check_real, fail, is_set
+   use pound_input_checks, only: input_site, require_real, check_real, fail, is_set
    use pound_law_impact, only: law_impact, impact_result, typical_impact_speed, pair_mass
    implicit none
    private
 
-   public :: smooth_law, make_smooth, smooth_take, hertz_stiffness_range, realised_restitution, &
-             is_smooth
+   public :: smooth_law, make_smooth, smooth_take, hertz_stiffness_range
 
    !> Plausible range of a Hertz-type stiffness kh, beta (kN/m^(3/2)): outside it the deck
    !> is refused (the literature's values for concrete floors: about 1e6 to 1e9).
@@ -38,6 +37,15 @@ module pound_law_smooth
       real(dp) :: m1 = 0.0_dp, m2 = 0.0_dp, meff = 0.0_dp
       !> Its deck name.
       character(len=16) :: deck_name = ''
+      !> The central impact of its calibration (`law_impact` of the facing masses, unit masses
+      !> where none are known, at `typical_impact_speed`), computed once when the masses are
+      !> set (`set_masses`); `impact_known` false before.
+      type(impact_result) :: impact
+      logical :: impact_known = .false.
+      !> Trial state of a step: the slope of the row at the current iterate (kN/m), while
+      !> `in_trial`; committed, the row's slope is `k`.
+      real(dp) :: k_trial = 0.0_dp
+      logical :: in_trial = .false.
    contains
       !> The deck name.
       procedure :: name => smooth_name
@@ -51,6 +59,18 @@ module pound_law_smooth
       procedure :: describe => smooth_describe
       !> The unit of the stiffness as given.
       procedure :: stiffness_unit => smooth_stiffness_unit
+      !> A force of its own.
+      procedure :: has_force => smooth_has_force
+      !> The contact duration of a central impact (`law_impact`).
+      procedure :: contact_duration => smooth_contact_duration
+      !> The realised restitution of its calibration (stored by `set_masses`).
+      procedure :: realised_restitution => smooth_realised_restitution
+      !> The row's slope at the step's current iterate.
+      procedure :: set_trial => smooth_set_trial
+      !> Back to the committed row (slope k).
+      procedure :: commit => smooth_commit_state
+      !> The trial slope during a step, else k.
+      procedure :: row_stiffness => smooth_row_stiffness
    end type smooth_law
 
 contains
@@ -102,7 +122,7 @@ contains
    !> is the deck's common check), no `dashpot` (the damping follows from the restitution).
    pure subroutine smooth_take(at, raw, cfg, name, hertz_type, with_restitution, error)
       !> Where messages point.
-      type(site), intent(in) :: at
+      class(input_site), intent(in) :: at
       !> The law variables as read.
       type(law_input), intent(in) :: raw
       !> The group's configuration.
@@ -149,40 +169,6 @@ contains
       cfg%stiffness = raw%stiffness
    end subroutine smooth_take
 
-   !> The law is a smooth law (has a force of its own, solved by pound_contact_smooth).
-   pure logical function is_smooth(law)
-      !> The law.
-      class(joint_law), intent(in) :: law
-
-      select type (law)
-      class is (smooth_law)
-         is_smooth = .true.
-      class default
-         is_smooth = .false.
-      end select
-   end function is_smooth
-
-   !> The realised coefficient of restitution of a smooth law's calibration: the central
-   !> impact of its facing masses (unit masses where it was given none: the laws here
-   !> deliver the same e_r at any masses and speed) at `typical_impact_speed`, finely
-   !> integrated (`law_impact`); 0 for a law that is not smooth.
-   pure real(dp) function realised_restitution(law) result(e_r)
-      !> The law.
-      class(joint_law), intent(in) :: law
-      type(impact_result) :: imp
-
-      e_r = 0.0_dp
-      select type (law)
-      class is (smooth_law)
-         if (law%meff > 0.0_dp) then
-            imp = law_impact(law, law%m1, law%m2, typical_impact_speed)
-         else
-            imp = law_impact(law, 1.0_dp, 1.0_dp, typical_impact_speed)
-         end if
-         e_r = imp%restitution
-      end select
-   end function realised_restitution
-
    pure function smooth_name(law) result(name)
       class(smooth_law), intent(in) :: law
       character(len=:), allocatable :: name
@@ -202,10 +188,82 @@ contains
       class(smooth_law), intent(inout) :: law
       real(dp), intent(in) :: m1, m2
 
+      if (law%impact_known .and. m1 == law%m1 .and. m2 == law%m2) return
       law%m1 = m1
       law%m2 = m2
       law%meff = pair_mass(m1, m2)
+      law%impact = calibration_impact(law)
+      law%impact_known = .true.
    end subroutine smooth_set_masses
+
+   !> The central impact of the law's calibration: its facing masses (unit masses where it
+   !> was given none: the laws here deliver the same e_r at any masses and speed) at
+   !> `typical_impact_speed`, finely integrated (`law_impact`).
+   pure function calibration_impact(law) result(imp)
+      class(smooth_law), intent(in) :: law
+      type(impact_result) :: imp
+
+      if (law%meff > 0.0_dp) then
+         imp = law_impact(law, law%m1, law%m2, typical_impact_speed)
+      else
+         imp = law_impact(law, 1.0_dp, 1.0_dp, typical_impact_speed)
+      end if
+   end function calibration_impact
+
+   pure logical function smooth_has_force(law) result(has)
+      class(smooth_law), intent(in) :: law
+
+      associate (unused => law)
+      end associate
+      has = .true.
+   end function smooth_has_force
+
+   pure real(dp) function smooth_contact_duration(law, m1, m2, v) result(t)
+      class(smooth_law), intent(in) :: law
+      real(dp), intent(in) :: m1, m2, v
+      type(impact_result) :: imp
+
+      imp = law_impact(law, m1, m2, v)
+      t = imp%duration
+   end function smooth_contact_duration
+
+   !> The realised coefficient of restitution of the calibration (`calibration_impact`, as
+   !> stored by `set_masses`; computed here only for a law whose masses were never set).
+   pure real(dp) function smooth_realised_restitution(law) result(e_r)
+      class(smooth_law), intent(in) :: law
+      type(impact_result) :: imp
+
+      if (law%impact_known) then
+         e_r = law%impact%restitution
+      else
+         imp = calibration_impact(law)
+         e_r = imp%restitution
+      end if
+   end function smooth_realised_restitution
+
+   pure subroutine smooth_set_trial(law, k)
+      class(smooth_law), intent(inout) :: law
+      real(dp), intent(in) :: k
+
+      law%k_trial = k
+      law%in_trial = .true.
+   end subroutine smooth_set_trial
+
+   pure subroutine smooth_commit_state(law)
+      class(smooth_law), intent(inout) :: law
+
+      law%in_trial = .false.
+   end subroutine smooth_commit_state
+
+   pure real(dp) function smooth_row_stiffness(law, k_rows) result(k)
+      class(smooth_law), intent(in) :: law
+      real(dp), intent(in) :: k_rows
+
+      associate (unused => k_rows)
+      end associate
+      k = law%k
+      if (law%in_trial) k = law%k_trial
+   end function smooth_row_stiffness
 
    pure real(dp) function smooth_shown_stiffness(law) result(k)
       class(smooth_law), intent(in) :: law
@@ -231,7 +289,11 @@ contains
       call add_line(lines, 'stiffness = '//str(law%k)//' '//law%stiffness_unit())
       if (law%e > 0.0_dp) call add_line(lines, 'restitution e = '//str(law%e)//' (calibration)')
       if (law%meff > 0.0_dp) then
-         imp = law_impact(law, law%m1, law%m2, typical_impact_speed)
+         if (law%impact_known) then
+            imp = law%impact
+         else
+            imp = law_impact(law, law%m1, law%m2, typical_impact_speed)
+         end if
          call add_line(lines, 'realised e = '//str(imp%restitution)//' (central impact of the facing masses, '// &
                        'm_eff = '//str(law%meff)//' t, at '//str(typical_impact_speed)//' m/s: max. penetration '// &
                        str(1.0e3_dp*imp%max_penetration)//' mm, duration '//str(imp%duration)//' s, peak force '// &

@@ -9,10 +9,12 @@ module pound_envelope_rules
    implicit none
    private
 
-   public :: max_law_points, check_piecewise_envelope, check_law_constants
+   public :: max_law_points, max_segments, check_piecewise_envelope, check_law_constants
 
    !> Largest number of envelope points of a law.
    integer, parameter :: max_law_points = 1000
+   !> Largest number of chords per curved branch of `parabola_cubic`.
+   integer, parameter :: max_segments = 64
 
 contains
 

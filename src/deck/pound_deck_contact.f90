@@ -6,8 +6,8 @@ module pound_deck_contact
                                 unset_real, values_text
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_law_registry, only: registered_law_names, law_is_registered, law_reads, law_restitution, law_take_deck, &
-                                 restitution_law_names
-   use pound_joint_law, only: law_input
+                                 restitution_law_names, law_variables
+   use pound_joint_law, only: law_input, law_variable
    use pound_deck_variables, only: max_envelope_points, max_pairs, word_len
    use pound_deck_stiffness, only: stiffness_has_default, default_joint_stiffness
    use pound_error, only: error_type
@@ -51,6 +51,7 @@ contains
       character(len=512) :: msg
       type(site) :: at
       type(law_input) :: raw
+      type(law_variable), allocatable :: vars(:)
       integer :: ios, n, k, i
       namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot, &
          dashpot_rate, yield_force, second_slope, envelope_d, envelope_r, peak_force, peak_penetration, &
@@ -167,26 +168,17 @@ contains
          return
       end if
 
-      ! Variables of other laws are an error, not silently ignored.
-      ! Variables of other laws (pound_law_registry: what each law reads) are an error.
-      call unused('stiffness', is_set(stiffness), error)
-      if (allocated(error)) return
-      call unused('yield_force', is_set(yield_force), error)
-      if (allocated(error)) return
-      call unused('second_slope', is_set(second_slope), error)
-      if (allocated(error)) return
-      call unused('envelope_d', given_count(envelope_d) > 0, error)
-      if (allocated(error)) return
-      call unused('envelope_r', given_count(envelope_r) > 0, error)
-      if (allocated(error)) return
-      call unused('peak_force', is_set(peak_force), error)
-      if (allocated(error)) return
-      call unused('peak_penetration', is_set(peak_penetration), error)
-      if (allocated(error)) return
-      call unused('fracture_penetration', is_set(fracture_penetration), error)
-      if (allocated(error)) return
-      call unused('n_segments', n_segments /= unset_int, error)
-      if (allocated(error)) return
+      ! Variables of other laws (pound_law_registry: what each law declares) are an error.
+      raw = law_input(stiffness=stiffness, yield_force=yield_force, second_slope=second_slope, &
+                      peak_force=peak_force, peak_penetration=peak_penetration, &
+                      fracture_penetration=fracture_penetration, n_segments=n_segments, &
+                      envelope_d=envelope_d, envelope_r=envelope_r, dashpot=dashpot, restitution=restitution)
+      vars = law_variables()
+      do i = 1, size(vars)
+         if (.not. vars(i)%refused) cycle
+         call unused(trim(vars(i)%name), raw%given(trim(vars(i)%name)), error)
+         if (allocated(error)) return
+      end do
 
       ! No stiffness: the default of the facing floors (pound_deck_stiffness), as if given.
       if (.not. is_set(stiffness) .and. stiffness_has_default(cfg%law) .and. law_reads(cfg%law, 'stiffness')) then
@@ -200,10 +192,7 @@ contains
       cfg%variant = trim(adjustl(variant))
 
       ! The law's own variables, checked by the law's module (pound_law_registry).
-      raw = law_input(stiffness=stiffness, yield_force=yield_force, second_slope=second_slope, &
-                      peak_force=peak_force, peak_penetration=peak_penetration, &
-                      fracture_penetration=fracture_penetration, n_segments=n_segments, &
-                      envelope_d=envelope_d, envelope_r=envelope_r, dashpot=dashpot, restitution=restitution)
+      raw%stiffness = stiffness
       call law_take_deck(cfg%law, at, raw, cfg, error)
       if (allocated(error)) return
 

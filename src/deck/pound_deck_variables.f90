@@ -1,11 +1,14 @@
 !> The deck's groups and variables, in ONE table: name, type and size of every variable of
-!> every group, and the limits they are checked against. The lexer checks every assignment
+!> every group (the joint laws' `&contact` variables generated from the law registry, where
+!> each law declares its own), and the limits they are checked against. The lexer checks every assignment
 !> against it (known variable, type, subscript range, duplicates), messages list a group's
 !> variables from it, and each group's reader declares its `namelist` with these names (the
 !> test `test_deck_cases: test_namelists_match_the_table` reads every group with every
 !> variable of the table, so a name missing from a `namelist` statement fails there).
 module pound_deck_variables
-   use pound_envelope_rules, only: max_law_points
+   use pound_envelope_rules, only: max_law_points, max_segments
+   use pound_joint_law, only: law_variable
+   use pound_law_registry, only: law_variables
    implicit none
    private
 
@@ -41,8 +44,6 @@ module pound_deck_variables
    integer, parameter :: max_envelope_points = max_law_points
    !> Largest number of stripe levels of `&stripes` and of points of the `&hazard` curve.
    integer, parameter :: max_risk_points = 1000
-   !> Largest number of chords per curved branch of `parabola_cubic`.
-   integer, parameter :: max_segments = 64
 
    !> The groups a deck may hold.
    character(len=*), parameter :: known_groups(7) = &
@@ -60,8 +61,13 @@ module pound_deck_variables
       integer :: vsize
    end type var_spec
 
-   !> Every variable of every group, in the order the messages list them.
-   type(var_spec), parameter :: variables(128) = [ &
+   !> Where the table holds the variables of the joint laws (`&contact`), generated from the
+   !> law registry (`law_variables`, pound_law_registry: each law declares its own).
+   character(len=*), parameter :: laws_marker = '*laws*'
+
+   !> Every variable of every group that is not a joint law's, in the order the messages list
+   !> them (`variables` inserts the laws' at `laws_marker`).
+   type(var_spec), parameter :: fixed_variables(117) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 't_free', 'r', 0), &
       var_spec('analysis', 'output_every', 'i', 0), &
@@ -99,12 +105,7 @@ module pound_deck_variables
       var_spec('contact', 'left', 'c', 0), var_spec('contact', 'right', 'c', 0), &
       var_spec('contact', 'floors_left', 'i', max_pairs), var_spec('contact', 'floors_right', 'i', max_pairs), &
       var_spec('contact', 'gap', 'r', max_pairs), var_spec('contact', 'law', 'c', 0), &
-      var_spec('contact', 'stiffness', 'r', 0), var_spec('contact', 'dashpot', 'r', 0), &
-      var_spec('contact', 'dashpot_rate', 'c', 0), var_spec('contact', 'yield_force', 'r', 0), &
-      var_spec('contact', 'second_slope', 'r', 0), var_spec('contact', 'envelope_d', 'r', max_envelope_points), &
-      var_spec('contact', 'envelope_r', 'r', max_envelope_points), var_spec('contact', 'peak_force', 'r', 0), &
-      var_spec('contact', 'peak_penetration', 'r', 0), var_spec('contact', 'fracture_penetration', 'r', 0), &
-      var_spec('contact', 'n_segments', 'i', 0), var_spec('contact', 'restitution', 'r', 0), &
+      var_spec('contact', laws_marker, ' ', 0), &
       var_spec('sweep', 'gap_from', 'r', 0), var_spec('sweep', 'gap_to', 'r', 0), &
       var_spec('sweep', 'n_gaps', 'i', 0), var_spec('sweep', 'target_lambda', 'r', 0), &
       var_spec('sweep', 'target_quantities', 'c', 0), &
@@ -137,25 +138,86 @@ module pound_deck_variables
 
 contains
 
-   !> Whether `name` is a variable of group `group`.
+   !> Every variable of every group, in the order the messages list them: `fixed_variables`
+   !> with the joint laws' `&contact` variables (pound_law_registry) in place of `laws_marker`.
+   pure function variables() result(table)
+      type(var_spec), allocatable :: table(:)
+      type(law_variable), allocatable :: laws(:)
+      integer :: i, k, m
+
+      laws = law_variables()
+      allocate (table(size(fixed_variables) - 1 + size(laws)))
+      k = 0
+      do i = 1, size(fixed_variables)
+         if (fixed_variables(i)%name == laws_marker) then
+            do m = 1, size(laws)
+               table(k + m) = var_spec('contact', laws(m)%name, laws(m)%vtype, laws(m)%vsize)
+            end do
+            k = k + size(laws)
+         else
+            k = k + 1
+            table(k) = fixed_variables(i)
+         end if
+      end do
+   end function variables
+
+   !> Whether `name` is a variable of group `group` (the fixed table first: the lexer asks
+   !> this of every assignment; the laws' variables only for `&contact`).
    pure logical function known_variable(group, name)
       !> Group name and variable name, lower case.
       character(len=*), intent(in) :: group, name
+      character :: vtype
+      integer :: vsize
 
-      known_variable = variable_index(group, name) > 0
+      call lookup(group, name, vtype, vsize, known_variable)
    end function known_variable
+
+   !> Type and size of variable `name` of `group`, and whether it is one: the fixed table,
+   !> then for `&contact` the joint laws' variables (pound_law_registry).
+   pure subroutine lookup(group, name, vtype, vsize, found)
+      character(len=*), intent(in) :: group, name
+      character, intent(out) :: vtype
+      integer, intent(out) :: vsize
+      logical, intent(out) :: found
+      type(law_variable), allocatable :: laws(:)
+      integer :: i
+
+      vtype = 'r'
+      vsize = 0
+      found = .false.
+      do i = 1, size(fixed_variables)
+         if (fixed_variables(i)%group == group .and. fixed_variables(i)%name == name) then
+            vtype = fixed_variables(i)%vtype
+            vsize = fixed_variables(i)%vsize
+            found = name /= laws_marker
+            return
+         end if
+      end do
+      if (group /= 'contact') return
+      laws = law_variables()
+      do i = 1, size(laws)
+         if (laws(i)%name == name) then
+            vtype = laws(i)%vtype
+            vsize = laws(i)%vsize
+            found = .true.
+            return
+         end if
+      end do
+   end subroutine lookup
 
    !> Position of variable `name` among the variables of group `group` (0: not one of them).
    pure integer function variable_index(group, name) result(k)
       !> Group name and variable name, lower case.
       character(len=*), intent(in) :: group, name
+      type(var_spec), allocatable :: table(:)
       integer :: i
 
+      table = variables()
       k = 0
-      do i = 1, size(variables)
-         if (variables(i)%group /= group) cycle
+      do i = 1, size(table)
+         if (table(i)%group /= group) cycle
          k = k + 1
-         if (variables(i)%name == name) return
+         if (table(i)%name == name) return
       end do
       k = 0
    end function variable_index
@@ -169,17 +231,9 @@ contains
       character, intent(out) :: vtype
       !> Number of elements, 0 for a scalar.
       integer, intent(out) :: vsize
-      integer :: i
+      logical :: found
 
-      vtype = 'r'
-      vsize = 0
-      do i = 1, size(variables)
-         if (variables(i)%group == group .and. variables(i)%name == name) then
-            vtype = variables(i)%vtype
-            vsize = variables(i)%vsize
-            return
-         end if
-      end do
+      call lookup(group, name, vtype, vsize, found)
    end subroutine variable_type
 
    !> The variables of `group`, comma separated.
@@ -187,11 +241,13 @@ contains
       !> Group name, lower case.
       character(len=*), intent(in) :: group
       character(len=:), allocatable :: list
+      type(var_spec), allocatable :: table(:)
 
-      if (group_variable_count(group) == 0) then
+      table = variables()
+      if (count(table%group == group) == 0) then
          list = ''
       else
-         list = join(pack(variables%name, variables%group == group))
+         list = join(pack(table%name, table%group == group))
       end if
    end function variable_list
 
@@ -200,7 +256,10 @@ contains
       !> Group name, lower case.
       character(len=*), intent(in) :: group
 
-      n = count(variables%group == group)
+      type(var_spec), allocatable :: table(:)
+
+      table = variables()
+      n = count(table%group == group)
    end function group_variable_count
 
    !> Position of `word` in `names` (0 if absent).

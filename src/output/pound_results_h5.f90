@@ -72,6 +72,7 @@ module pound_results_h5
    use pound_analysis, only: analysis_result, history_sink
    use pound_analysis_plan, only: output_steps, steps_of
    use pound_contact, only: contact_system
+   use pound_contact_law, only: stiffness_units
    use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
    use pound_influence_output, only: write_lambda_h5
@@ -83,7 +84,6 @@ module pound_results_h5
    use pound_yield_output, only: write_yield_h5, write_yield_influence_h5, write_yield_model_h5
    use pound_config, only: sweep_config
    use pound_constants, only: g_accel
-   use pound_law_smooth, only: is_smooth, realised_restitution
    implicit none
    private
 
@@ -469,7 +469,8 @@ contains
          rv = cs%pair(:)%gap
          call h5_write(h5, c//'/gap', rv, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, c//'/stiffness', [(cs%pair(k)%law%stiffness, k=1, cs%m)], error, units='kN/m')
+         call h5_write(h5, c//'/stiffness', [(cs%pair(k)%law%stiffness, k=1, cs%m)], error, &
+                       units=stiffness_units(cs%pair%law))
          if (allocated(error)) return
          allocate (laws(cs%m))
          do k = 1, cs%m
@@ -493,9 +494,9 @@ contains
          smooth = .false.
          do k = 1, cs%m
             if (.not. allocated(cs%pair(k)%law%given)) cycle
-            if (.not. is_smooth(cs%pair(k)%law%given)) cycle
+            if (.not. cs%pair(k)%law%given%has_force()) cycle
             smooth = .true.
-            rv(k) = realised_restitution(cs%pair(k)%law%given)
+            rv(k) = cs%pair(k)%law%given%realised_restitution()
          end do
          if (smooth) then
             call h5_write(h5, c//'/realised_restitution', rv, error, units='1')

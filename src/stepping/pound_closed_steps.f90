@@ -57,7 +57,6 @@ module pound_closed_steps
    use pound_integrator, only: integrator
    use pound_contact, only: contact_system
    use pound_contact_pair, only: end_sign
-   use pound_law_smooth, only: is_smooth
    use pound_response, only: response_record, response_peaks_inside
    use pound_closed_kernels, only: closing, substep, modal_acceleration, mv2, mv, mvk, mv3, hermite_extreme, dot8
    implicit none
@@ -396,7 +395,7 @@ contains
          if (cs%joint(k)%r > 0.0_dp) then
             if (.not. (cs%plain(k) .and. cl%joint_ok(k))) return
             if (allocated(cs%pair(k)%law%given)) then
-               if (is_smooth(cs%pair(k)%law%given)) return
+               if (cs%pair(k)%law%given%has_force()) return
             end if
             key = ibset(key, k - 1)
          else if (.not. (cs%plain(k) .and. cs%joint(k)%d == 0.0_dp)) then
