@@ -10,13 +10,14 @@ module pound_building
    use pound_structure, only: structure_model
    use pound_shear_building, only: shear_building, build_shear_building
    use pound_frame_building, only: build_frame_building
+   use pound_frame, only: frame_model
    use pound_building_kind, only: building_kind
    use pound_shear_kind, only: shear_kind
    use pound_frame_kind, only: frame_kind
    implicit none
    private
 
-   public :: building_model, build_building
+   public :: building_model, build_building, frame_of
 
    !> What the writers need of a building besides its structural model: its kind.
    type :: building_model
@@ -90,5 +91,18 @@ contains
       end subroutine set_common
 
    end subroutine build_building
+
+   !> The frame model (nodes, elements, DOF map) of a frame building, for checks that look
+   !> inside the frame (a copy; empty for another kind).
+   function frame_of(b) result(f)
+      !> The building.
+      type(building_model), intent(in) :: b
+      type(frame_model) :: f
+
+      select type (k => b%kind)
+      type is (frame_kind)
+         f = k%frame%frame
+      end select
+   end function frame_of
 
 end module pound_building
