@@ -29,6 +29,8 @@ set(POUND_SOURCES
   model/pound_plausibility.f90
   # models: synthetic ground motions (filtered white noise)
   model/pound_synthetic_motion.f90
+  # models: what a building is made of, as the builders take it (the deck fills it)
+  model/pound_building_spec.f90
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)
   model/pound_band_lapack.f90 model/pound_band_solve.f90 model/pound_band_eigen.f90 model/pound_frame_element.f90
   model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_hinges.f90 model/pound_frame_building.f90 model/pound_building_kind.f90

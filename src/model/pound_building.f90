@@ -6,7 +6,7 @@
 module pound_building
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_config, only: building_config, is_frame
+   use pound_building_spec, only: building_spec, is_frame
    use pound_structure, only: structure_model
    use pound_shear_building, only: shear_building, build_shear_building
    use pound_frame_building, only: build_frame_building
@@ -30,7 +30,7 @@ contains
    !> Build the model of a deck entry: a shear building or a frame (`model`).
    subroutine build_building(deck_entry, m, b, error, number)
       !> Validated deck entry.
-      type(building_config), intent(in) :: deck_entry
+      type(building_spec), intent(in) :: deck_entry
       !> The structural model.
       type(structure_model), intent(out) :: m
       !> The per-kind data.
