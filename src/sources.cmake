@@ -31,6 +31,8 @@ set(POUND_SOURCES
   model/pound_plausibility.f90
   # models: synthetic ground motions (filtered white noise)
   model/pound_synthetic_motion.f90
+  # models: what a building is made of, as the builders take it (the deck fills it)
+  model/pound_building_spec.f90
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)
   model/pound_band_lapack.f90 model/pound_band_solve.f90 model/pound_band_eigen.f90 model/pound_frame_element.f90
   model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_hinges.f90 model/pound_frame_building.f90 model/pound_building_kind.f90
@@ -79,13 +81,17 @@ set(POUND_SOURCES
   analysis/pound_analysis_batch.f90
   # analyses: response spectra and scaling, code separation rules
   analysis/pound_spectrum.f90 analysis/pound_separation.f90
+  # results: what a case, a suite and the multiple-stripe analysis compute, as the writers read it
+  # (the suite's statistics and outcomes are reductions of results)
+  results/pound_case_result.f90 results/pound_suite_columns.f90 results/pound_suite_outcome.f90
+  results/pound_suite_statistics.f90 results/pound_stripes_result.f90
   # driver: one case from a validated configuration to all results (program, tests, suites)
   driver/pound_case_studies.f90 driver/pound_run_case.f90
   # driver: the memory a deck's run needs (estimated from the deck) and what the machine gives
   driver/pound_memory.f90
   # driver: a suite of ground motions (scaling, one case per motion, suite statistics, rules)
-  driver/pound_suite_columns.f90 driver/pound_suite_outcome.f90 driver/pound_suite_context.f90
-  driver/pound_suite_motions.f90 driver/pound_suite_statistics.f90 driver/pound_suite_refine.f90 driver/pound_suite_joints.f90 driver/pound_planned_runs.f90
+  driver/pound_suite_context.f90
+  driver/pound_suite_motions.f90 driver/pound_suite_refine.f90 driver/pound_suite_joints.f90 driver/pound_planned_runs.f90
   driver/pound_suite.f90
   # risk: the normal distribution's tails, lognormal fragility fits (binomial maximum
   # likelihood over stripes), the hazard curve and the risk integral

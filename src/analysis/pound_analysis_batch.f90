@@ -45,7 +45,7 @@ contains
          if (models(ib)%kd /= 1 .or. .not. models(ib)%stick .or. models(ib)%n < 2) batch_eligible = .false.
          ! Bilinear storeys and plastic hinges (pound_storey_yield) are stepped by `integrate` only.
          if (structure_yields(models(ib))) batch_eligible = .false.
-         if (batch_eligible) batch_eligible = all(models(ib)%ground == 1.0_dp)
+         if (batch_eligible) batch_eligible = models(ib)%uniform_ground
       end do
    end function batch_eligible
 

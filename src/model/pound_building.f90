@@ -6,17 +6,18 @@
 module pound_building
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_config, only: building_config, is_frame
+   use pound_building_spec, only: building_spec, is_frame
    use pound_structure, only: structure_model
    use pound_shear_building, only: shear_building, build_shear_building
    use pound_frame_building, only: build_frame_building
+   use pound_frame, only: frame_model
    use pound_building_kind, only: building_kind
    use pound_shear_kind, only: shear_kind
    use pound_frame_kind, only: frame_kind
    implicit none
    private
 
-   public :: building_model, build_building
+   public :: building_model, build_building, frame_of
 
    !> What the writers need of a building besides its structural model: its kind.
    type :: building_model
@@ -29,7 +30,7 @@ contains
    !> Build the model of a deck entry: a shear building or a frame (`model`).
    subroutine build_building(deck_entry, m, b, error, number)
       !> Validated deck entry.
-      type(building_config), intent(in) :: deck_entry
+      type(building_spec), intent(in) :: deck_entry
       !> The structural model.
       type(structure_model), intent(out) :: m
       !> The per-kind data.
@@ -90,5 +91,18 @@ contains
       end subroutine set_common
 
    end subroutine build_building
+
+   !> The frame model (nodes, elements, DOF map) of a frame building, for checks that look
+   !> inside the frame (a copy; empty for another kind).
+   function frame_of(b) result(f)
+      !> The building.
+      type(building_model), intent(in) :: b
+      type(frame_model) :: f
+
+      select type (k => b%kind)
+      type is (frame_kind)
+         f = k%frame%frame
+      end select
+   end function frame_of
 
 end module pound_building

@@ -36,7 +36,7 @@ module pound_frame_building
    use pound_constants, only: pi
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
-   use pound_config, only: building_config
+   use pound_building_spec, only: building_spec
    use pound_storey_properties, only: storey_properties
    use pound_structure, only: structure_model, recovery_rows, group_rows, chain_rows, structure_finish, structure_label, &
                               modes_listed
@@ -80,9 +80,9 @@ contains
    !> The frame description of a deck entry (masses and gravity loads derived as for a shear building).
    pure function frame_spec_of(deck_entry) result(spec)
       !> Validated deck entry with model = 'frame'.
-      type(building_config), intent(in) :: deck_entry
+      type(building_spec), intent(in) :: deck_entry
       type(frame_spec) :: spec
-      type(building_config) :: cfg
+      type(building_spec) :: cfg
 
       cfg = storey_properties(deck_entry)
       spec%name = cfg%name
@@ -109,7 +109,7 @@ contains
    !> Build the structural model of a frame deck entry.
    subroutine build_frame_building(deck_entry, m, fd, error, number)
       !> Validated deck entry with model = 'frame'.
-      type(building_config), intent(in) :: deck_entry
+      type(building_spec), intent(in) :: deck_entry
       !> The structural model.
       type(structure_model), intent(out) :: m
       !> The frame data for the writers.

@@ -14,7 +14,7 @@
 !> huge factor), and a factor of `scale_to` outside `factor_low`..`factor_high` (0.1..10).
 module pound_plausibility
    use pound_kinds, only: dp
-   use pound_config, only: building_config
+   use pound_building_spec, only: building_spec
    use pound_strings, only: plain_real, plain_significant
    use pound_constants, only: g_accel
    implicit none
@@ -116,7 +116,7 @@ contains
    !> of kN/m^2); empty when none does.
    pure function unit_suspects(cfg) result(text)
       !> A building of the deck.
-      type(building_config), intent(in) :: cfg
+      type(building_spec), intent(in) :: cfg
       character(len=:), allocatable :: text
       real(dp) :: e_min
 

@@ -14,7 +14,7 @@ module pound_shear_building
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_plausibility, only: buckling_hint
-   use pound_config, only: building_config
+   use pound_building_spec, only: building_spec
    use pound_storey_properties, only: storey_properties
    use pound_band, only: band_add_storey
    use pound_sort, only: sort_ascending
@@ -80,7 +80,7 @@ contains
    !> any solver sees it.
    subroutine build_shear_building(deck_entry, b, error, number)
       !> Validated deck entry (values as given; masses, stiffnesses and loads derived here).
-      type(building_config), intent(in) :: deck_entry
+      type(building_spec), intent(in) :: deck_entry
       !> The model.
       type(shear_building), intent(out) :: b
       !> Error state.
@@ -89,7 +89,7 @@ contains
       integer, intent(in), optional :: number
       integer :: n, j, jmax
       real(dp) :: theta, theta_max
-      type(building_config) :: cfg
+      type(building_spec) :: cfg
 
       cfg = storey_properties(deck_entry)
       n = cfg%n_storeys
@@ -180,7 +180,7 @@ contains
    !> The deck variables the storey stiffnesses (`what` = 'stiffness') or the floor masses
    !> (`what` = 'mass') come from, as recorded by the reader.
    pure function origin(cfg, what) result(s)
-      type(building_config), intent(in) :: cfg
+      type(building_spec), intent(in) :: cfg
       character(len=*), intent(in) :: what
       character(len=:), allocatable :: s
 
@@ -205,7 +205,7 @@ contains
    !> The storey and floor data as derived by the reader: masses positive and finite,
    !> stiffnesses positive and finite, gravity loads finite.
    pure subroutine check_inputs(cfg, b, error)
-      type(building_config), intent(in) :: cfg
+      type(building_spec), intent(in) :: cfg
       type(shear_building), intent(in) :: b
       type(error_type), allocatable, intent(out) :: error
       integer :: j
@@ -249,7 +249,7 @@ contains
    !> the message names the masses and stiffnesses instead of the solver.
    subroutine natural_frequencies(b, cfg, error)
       type(shear_building), intent(inout) :: b
-      type(building_config), intent(in) :: cfg
+      type(building_spec), intent(in) :: cfg
       type(error_type), allocatable, intent(out) :: error
       real(dp), allocatable :: ab(:, :), bb(:, :), w(:), work(:)
       integer, allocatable :: iwork(:), ifail(:)

@@ -11,7 +11,7 @@
 !> naming the deck variables it came from (`mass_source`, `stiffness_source`).
 module pound_storey_properties
    use pound_kinds, only: dp
-   use pound_config, only: building_config
+   use pound_building_spec, only: building_spec
    use pound_constants, only: g_accel
    implicit none
    private
@@ -24,8 +24,8 @@ contains
    !> deck gave are kept, the others derived (see the module notes).
    pure function storey_properties(cfg) result(full)
       !> Validated deck entry, values as given.
-      type(building_config), intent(in) :: cfg
-      type(building_config) :: full
+      type(building_spec), intent(in) :: cfg
+      type(building_spec) :: full
       real(dp), allocatable :: weight(:)
 
       full = cfg

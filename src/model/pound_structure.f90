@@ -9,6 +9,15 @@
 !> the named response points (the DOF of each floor's lateral displacement) and the storey
 !> quantities as linear recovery operators over the DOFs (`recovery_row`).
 !>
+!> **Dimension-free.** Each DOF has a mass and a direction (`dof_direction`: `direction_x`
+!> along the row of buildings, `direction_z` up, `direction_rotation` in the x-z plane;
+!> `direction_y` and `direction_torsion` for buildings in plan), and the ground is a set of
+!> components, each with its direction (`ground_direction`) and its influence vector
+!> (`ground_set(:, c)`, r_c(i) = 1 where component c moves DOF i). Today every deck has one
+!> component along x; `ground` is its vector, which the integrators read. `uniform_ground`
+!> (one component moving every DOF by 1: a shear building) is the property the fused
+!> tridiagonal kernels and the batched suites need.
+!>
 !> **Strain energy.** When the builder can write K+G = sum_j w_j d_j d_j^T with d_j the
 !> storey-drift rows (a shear building: w_j = k_j - P_j/h_j), it stores the weights
 !> `strain_weight` and the strain energy is sum_j w_j (d_j . u)^2 / 2, storey by storey;
@@ -19,8 +28,8 @@
 !> arrays would add nothing but calls inside the time-step kernels. The invariants (sizes
 !> n, kd+1; one drift and one shear row per storey; `floor_dof` within 1..n) are the
 !> builder's to keep. Builder-specific data (e.g. the
-!> shear building's storey table of heights, storey stiffnesses and axial loads) lives in
-!> an extension of this type (`shear_building` extends it), so writers can still reach it.
+!> shear building's storey table, a frame's nodes and elements) lives in its building kind
+!> (`pound_building_kind`), which answers the writers.
 module pound_structure
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
@@ -32,8 +41,15 @@ module pound_structure
    public :: structure_model, recovery_rows, recover, recover_all, recover_peaks, group_rows, structure_label
    public :: structure_names
    public :: structure_strain_energy
+   public :: direction_x, direction_z, direction_rotation, direction_y, direction_torsion
    public :: chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
              structure_end_row, single_row, structure_yields
+
+   !> Directions of a DOF and of a ground component: translation along site x (the row of
+   !> buildings), along z (up), rotation in the x-z plane (a frame's node); for buildings in
+   !> plan, translation along y and rotation about z.
+   integer, parameter :: direction_x = 1, direction_z = 2, direction_rotation = 3, direction_y = 4, &
+                         direction_torsion = 5
 
    !> Natural modes a builder computes besides the two Rayleigh modes: the periods the listing
    !> shows (the lowest `modes_listed`; fewer when the model has fewer modes).
@@ -84,8 +100,17 @@ module pound_structure
       real(dp), allocatable :: kt(:, :)
       !> Lumped masses (t or t m^2), >= 0.
       real(dp), allocatable :: mass(:)
-      !> Ground-influence vector r (n): 1 where the ground moves the DOF, 0 where not.
+      !> Ground-influence vector r (n) of ground component 1: 1 where the ground moves the
+      !> DOF, 0 where not (what the integrators read).
       real(dp), allocatable :: ground(:)
+      !> The ground components: the direction of each (n_ground) and their influence vectors
+      !> (n, n_ground), column 1 = `ground`; set by `structure_finish` from `ground` (one
+      !> component along x) where the builder leaves them unset.
+      integer, allocatable :: ground_direction(:)
+      real(dp), allocatable :: ground_set(:, :)
+      !> One ground component moving every DOF by 1 (r = 1): the shear building's property
+      !> the fused tridiagonal kernels and the batched suites need; set by `structure_finish`.
+      logical :: uniform_ground = .false.
       !> Rayleigh coefficients: C = a0 M + a1 (K+G).
       real(dp) :: a0 = 0.0_dp, a1 = 0.0_dp
       !> Damping ratio and the modes it is fitted at.
@@ -117,9 +142,13 @@ module pound_structure
       !> vectors (same numbers as through the rows, fewer operations).
       logical :: stick = .false.
       !> DOF layout, when the builder has nodes (a frame): the node (1-based, as in the builder's
-      !> node list) and the direction (1 horizontal, 2 vertical, 3 rotation) each DOF was
-      !> created at (n each); unallocated: the DOFs are the floors' lateral displacements.
-      integer, allocatable :: dof_node(:), dof_direction(:)
+      !> node list) each DOF was created at (n); unallocated: the DOFs are the floors'
+      !> lateral displacements.
+      integer, allocatable :: dof_node(:)
+      !> The direction of each DOF (n; `direction_x`, ...: for a frame 1 horizontal,
+      !> 2 vertical, 3 rotation); set by `structure_finish` to `direction_x` everywhere
+      !> where the builder leaves it unset (the floors' lateral displacements).
+      integer, allocatable :: dof_direction(:)
       !> Member recovery rows (a frame's column end forces; none: `member%n` = 0, a shear
       !> building): rows in groups of size(member_names), row (s-1)*size(member_names) + q is
       !> quantity q of member s. The response samples their absolute maxima at every step (and
@@ -407,12 +436,24 @@ contains
    end subroutine rows_kernel
 
    !> Finish a model built by a builder: records the properties that consumers read
-   !> (`stick`). Every builder calls it last.
+   !> (`stick`, `uniform_ground`) and, where the builder left them unset, the DOFs'
+   !> directions (all along x) and the ground set (one component along x, vector `ground`).
+   !> Every builder calls it last.
    pure subroutine structure_finish(m)
       !> The model.
       class(structure_model), intent(inout) :: m
 
       m%stick = structure_is_stick(m)
+      if (.not. allocated(m%dof_direction)) then
+         allocate (m%dof_direction(m%n))
+         m%dof_direction = direction_x
+      end if
+      if (.not. allocated(m%ground_set) .and. allocated(m%ground)) then
+         m%ground_set = reshape(m%ground, [m%n, 1])
+         m%ground_direction = [direction_x]
+      end if
+      m%uniform_ground = .false.
+      if (allocated(m%ground_set)) m%uniform_ground = size(m%ground_set, 2) == 1 .and. all(m%ground_set == 1.0_dp)
    end subroutine structure_finish
 
    !> sum_j w_j drift_j^2 / 2 of a stick (drift_1 = u_1, drift_j = u_j - u_{j-1}): the same

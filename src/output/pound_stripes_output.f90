@@ -28,7 +28,7 @@ module pound_stripes_output
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    use pound_text_writer, only: text_writer, open_text, close_text
    use pound_summary, only: summary_item, summary_text_len
-   use pound_stripes, only: stripes_result, outcome_names, n_outcomes, o_contact, o_lambda, o_due
+   use pound_stripes_result, only: stripes_result, outcome_names, n_outcomes, o_contact, o_lambda, o_due
    implicit none
    private
 

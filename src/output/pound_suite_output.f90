@@ -55,7 +55,7 @@ module pound_suite_output
    use pound_text_writer, only: text_writer
    use pound_listing, only: write_section, write_influence_tables, gap_cell, mm
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
-   use pound_suite, only: suite_result
+   use pound_suite_statistics, only: suite_result
    use pound_results_h5, only: write_analysis_h5, write_failed_cases, pair_list
    use pound_cases, only: case_message_len
    use pound_suite_columns_output, only: write_suite_columns_listing, write_suite_columns_h5

@@ -20,7 +20,7 @@ module pound_suite_yield_output
    use pound_structure, only: structure_model, structure_yields
    use pound_text_writer, only: text_writer
    use pound_h5, only: h5_file, h5_write
-   use pound_suite, only: suite_result
+   use pound_suite_statistics, only: suite_result
    implicit none
    private
 

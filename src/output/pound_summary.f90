@@ -38,9 +38,9 @@ module pound_summary
    use pound_error, only: error_type
    use pound_strings, only: counted, plain_real, str
    use pound_response, only: q_u, q_drift, q_shear
-   use pound_run_case, only: case_result
+   use pound_case_result, only: case_result
    use pound_sweep_joints, only: failed_joint_gaps
-   use pound_suite, only: suite_result
+   use pound_suite_statistics, only: suite_result
    use pound_separation, only: separation_t, no_contact_gap, peaks_label, building_setbacks
    use pound_structure, only: structure_yields
    use pound_summary_item, only: summary_item, summary_text_len, item, append, largest

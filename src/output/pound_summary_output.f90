@@ -33,7 +33,7 @@ module pound_summary_output
    use pound_error, only: error_type
    use pound_text_writer, only: text_writer, open_text, close_text
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write_attr
-   use pound_suite, only: suite_result
+   use pound_suite_statistics, only: suite_result
    use pound_summary, only: summary_item, motion_heading, suite_answer_line
    implicit none
    private

@@ -20,8 +20,8 @@ module pound_summary_yield
    use pound_influence, only: influences, largest_meaningful
    use pound_storey_yield, only: storey_yield_result
    use pound_structure, only: structure_model, structure_yields
-   use pound_run_case, only: case_result
-   use pound_suite, only: suite_result
+   use pound_case_result, only: case_result
+   use pound_suite_statistics, only: suite_result
    use pound_suite_yield_output, only: suite_ductility_statistics
    use pound_summary_item, only: summary_item, item, append, largest, fixed2, lambda_word
    implicit none
