@@ -7,7 +7,7 @@ module pound_building
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_building_spec, only: building_spec, is_frame
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, structure_check
    use pound_shear_building, only: shear_building, build_shear_building
    use pound_frame_building, only: build_frame_building
    use pound_frame, only: frame_model
@@ -78,6 +78,8 @@ contains
          end if
          call move_alloc(shear, b%kind)
       end if
+      ! The builders' invariants (sizes, index ranges, ground components), once per building.
+      call structure_check(m, error)
 
    contains
 

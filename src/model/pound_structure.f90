@@ -34,6 +34,7 @@ module pound_structure
    use, intrinsic :: iso_fortran_env, only: int64
    use pound_kinds, only: dp
    use pound_strings, only: str
+   use pound_error, only: error_type, fatal_error
    use pound_band, only: band_symv
    implicit none
    private
@@ -42,7 +43,7 @@ module pound_structure
    public :: structure_names
    public :: structure_strain_energy
    public :: direction_x, direction_z, direction_rotation, direction_y, direction_torsion
-   public :: chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
+   public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
              structure_end_row, single_row, structure_yields
 
    !> Directions of a DOF and of a ground component: translation along site x (the row of
@@ -690,4 +691,53 @@ contains
       shear%scale = k
    end subroutine chain_rows
 
+   !> Check the sizes and index ranges of a model (a builder's invariants).
+   pure subroutine structure_check(m, error)
+      !> The model.
+      class(structure_model), intent(in) :: m
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      if (.not. (allocated(m%kt) .and. allocated(m%mass) .and. allocated(m%ground) .and. &
+                 allocated(m%floor_dof) .and. allocated(m%drift%start) .and. allocated(m%shear%start))) then
+         call fatal_error(error, structure_label(m)//': incomplete structural model')
+         return
+      end if
+      if (size(m%kt, 1) /= m%kd + 1 .or. size(m%kt, 2) /= m%n .or. size(m%mass) /= m%n .or. &
+          size(m%ground) /= m%n .or. m%kd < 1) then
+         call fatal_error(error, structure_label(m)//': structural model of '//str(m%n)//' DOFs and '// &
+                          'half-bandwidth '//str(m%kd)//' has arrays of the wrong size')
+         return
+      end if
+      if (any(m%floor_dof < 1) .or. any(m%floor_dof > m%n) .or. m%drift%n /= m%shear%n .or. &
+          any(m%drift%dof < 1) .or. any(m%drift%dof > m%n) .or. any(m%shear%dof < 1) .or. &
+          any(m%shear%dof > m%n)) then
+         call fatal_error(error, structure_label(m)//': response points or storey rows out of range')
+         return
+      end if
+      if (allocated(m%ground_set)) then
+         if (size(m%ground_set, 1) /= m%n .or. .not. allocated(m%ground_direction)) then
+            call fatal_error(error, structure_label(m)//': ground components of the wrong size')
+            return
+         else if (size(m%ground_direction) /= size(m%ground_set, 2) .or. &
+                  any(m%ground_set(:, 1) /= m%ground)) then
+            call fatal_error(error, structure_label(m)//': ground component 1 differs from the ground vector')
+            return
+         end if
+      end if
+      if (allocated(m%dof_direction)) then
+         if (size(m%dof_direction) /= m%n .or. any(m%dof_direction < direction_x) .or. &
+             any(m%dof_direction > direction_torsion)) then
+            call fatal_error(error, structure_label(m)//': DOF directions of the wrong size or unknown')
+            return
+         end if
+      end if
+      if (m%member%n > 0) then
+         if (.not. allocated(m%member_names) .or. .not. allocated(m%member_group)) then
+            call fatal_error(error, structure_label(m)//': member rows without names')
+         else if (mod(m%member%n, max(1, size(m%member_names))) /= 0 .or. any(m%member%dof < 1) .or. &
+                  any(m%member%dof > m%n)) then
+            call fatal_error(error, structure_label(m)//': member rows out of range')
+         end if
+      end if
+   end subroutine structure_check
 end module pound_structure
