@@ -495,10 +495,11 @@ contains
       !> Set when the building has collapsed (`yield_freeze` at the end of the step).
       logical, intent(inout) :: collapsed
 
+      ! (`yield_commit` is the set's `commit`, called directly on the step's path.)
       if (output .and. rec%store(q_shear)) then
-         call ys%commit(u, t, rec%shear(:, rec%n_out))
+         call yield_commit(ys, u, t, rec%shear(:, rec%n_out))
       else
-         call ys%commit(u, t)
+         call yield_commit(ys, u, t)
       end if
       if (ys%collapse_storey > 0) collapsed = .true.
    end subroutine yield_sample

@@ -46,7 +46,7 @@ contains
       integer :: ib
 
       do ib = 1, size(ys)
-         call ys(ib)%energy(strain, plastic)
+         call storey_energy(ys(ib), strain, plastic)
       end do
    end subroutine yield_energy_terms
 
