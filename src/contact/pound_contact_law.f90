@@ -30,7 +30,7 @@ module pound_contact_law
 
    public :: contact_law, compile_envelope, rate_trapezoidal, rate_backward_euler, rate_name
    public :: envelope_force, yield_force, yield_segment, is_plastic, plastic_modulus, max_law_points
-   public :: restitution_of_ratio, ratio_of_restitution, dashpot_of_restitution, stiffness_units
+   public :: restitution_of_ratio, ratio_of_restitution, dashpot_of_restitution, stiffness_units, add_stiffness_unit
 
    !> Dashpot rate by the trapezoidal rule (Newmark's own): d'_{n+1} = (2/dt) (d_{n+1} - d_n) - d'_n.
    integer, parameter :: rate_trapezoidal = 1
@@ -326,18 +326,28 @@ contains
    pure function stiffness_units(laws) result(u)
       !> The joints' rows.
       type(contact_law), intent(in) :: laws(:)
-      character(len=:), allocatable :: u, w
+      character(len=:), allocatable :: u
       integer :: k
 
       u = ''
       do k = 1, size(laws)
-         w = laws(k)%stiffness_unit()
-         if (index(' or '//u//' or ', ' or '//w//' or ') > 0) cycle
-         if (len(u) > 0) u = u//' or '
-         u = u//w
+         call add_stiffness_unit(u, laws(k))
       end do
-      if (len(u) == 0) u = 'kN/m'
    end function stiffness_units
+
+   !> Add the unit of `law`'s stiffness to the list `u` ('kN/m or kN/m^(3/2)'), once.
+   pure subroutine add_stiffness_unit(u, law)
+      !> The units so far ('' for none).
+      character(len=:), allocatable, intent(inout) :: u
+      !> A joint's rows.
+      type(contact_law), intent(in) :: law
+      character(len=:), allocatable :: w
+
+      w = law%stiffness_unit()
+      if (index(' or '//u//' or ', ' or '//w//' or ') > 0) return
+      if (len(u) > 0) u = u//' or '
+      u = u//w
+   end subroutine add_stiffness_unit
 
    !> The envelope as used, (2, n+1) points (d, r) from the origin; (2, 0) without nodes.
    pure function law_envelope_points(law) result(pts)

@@ -299,7 +299,9 @@ contains
       logical :: grew
 
       call dense_lcp_reserve(w%clcp, n, 16, grew)
-      if (.not. grew .and. size(w%cg, 1) >= m) return
+      if (.not. grew .and. allocated(w%cg)) then
+         if (size(w%cg, 1) >= m) return
+      end if
       if (allocated(w%cg)) deallocate (w%cg, w%cb, w%cj)
       associate (nmax => w%clcp%ws%m_max)
          allocate (w%cg(max(m, 1), nmax), w%cb(nmax), w%cj(nmax))

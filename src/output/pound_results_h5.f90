@@ -72,7 +72,7 @@ module pound_results_h5
    use pound_analysis, only: analysis_result, history_sink
    use pound_analysis_plan, only: output_steps, steps_of
    use pound_contact, only: contact_system
-   use pound_contact_law, only: stiffness_units
+   use pound_contact_law, only: add_stiffness_unit
    use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
    use pound_influence_output, only: write_lambda_h5
@@ -435,6 +435,7 @@ contains
       subroutine write_contact()
          character(len=*), parameter :: c = '/coupled/contact'
          character(len=16), allocatable :: laws(:)
+         character(len=:), allocatable :: kunits
          integer :: k, ne
          logical :: smooth
          ! Contiguous copies of component sections (no array temporaries at the calls).
@@ -469,8 +470,11 @@ contains
          rv = cs%pair(:)%gap
          call h5_write(h5, c//'/gap', rv, error, units='m')
          if (allocated(error)) return
-         call h5_write(h5, c//'/stiffness', [(cs%pair(k)%law%stiffness, k=1, cs%m)], error, &
-                       units=stiffness_units(cs%pair%law))
+         kunits = ''
+         do k = 1, cs%m
+            call add_stiffness_unit(kunits, cs%pair(k)%law)
+         end do
+         call h5_write(h5, c//'/stiffness', [(cs%pair(k)%law%stiffness, k=1, cs%m)], error, units=kunits)
          if (allocated(error)) return
          allocate (laws(cs%m))
          do k = 1, cs%m
