@@ -36,6 +36,7 @@ module pound_structure
    use pound_strings, only: str
    use pound_error, only: error_type, fatal_error
    use pound_band, only: band_symv
+   use pound_plan_geometry, only: plan_geometry, plan_dof, plane_x, plan_ux, plan_uy, plan_theta
    implicit none
    private
 
@@ -44,7 +45,7 @@ module pound_structure
    public :: structure_strain_energy
    public :: direction_x, direction_z, direction_rotation, direction_y, direction_torsion
    public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
-             structure_end_row, single_row, structure_yields
+             structure_end_row, single_row, structure_yields, plan_point_row
 
    !> Directions of a DOF and of a ground component: translation along site x (the row of
    !> buildings), along z (up), rotation in the x-z plane (a frame's node); for buildings in
@@ -175,6 +176,9 @@ module pound_structure
       !> Each hinge's kinematic hardening modulus H (kN m/rad): |m - H p| <= My (0: none).
       real(dp), allocatable :: hinge_hardening(:)
       integer, allocatable :: hinge_mate(:)
+      !> A building in plan (`&building model = 'plan'`): outline, centre of mass, planes and
+      !> DOF layout (pound_plan_geometry); unallocated: a planar building.
+      type(plan_geometry), allocatable :: plan
       !> Each hinge's element kind (1 column, 2 beam), storey (column) or floor (beam), column
       !> line of the element's first node, end (1: bottom or left, 2: top or right), element.
       integer, allocatable :: hinge_kind(:), hinge_level(:), hinge_line(:), hinge_end(:), hinge_element(:)
@@ -590,6 +594,40 @@ contains
       if (dof == 0) return
       row = single_row(dof)
    end function structure_end_row
+
+   !> One row: the displacement along `direction` (`plane_x`: u_x(P), `plane_y`: u_y(P)) of
+   !> the point P = (px, py) (outline coordinates) of floor j: u_x - theta (py - ym) or
+   !> u_y + theta (px - xm). A point on the line through the centre of mass has its
+   !> rotation entry left out (the row is the one DOF with coefficient 1).
+   pure function plan_point_row(m, j, px, py, direction) result(row)
+      !> The model (a building in plan: `m%plan` allocated).
+      class(structure_model), intent(in) :: m
+      !> Floor (1 = lowest).
+      integer, intent(in) :: j
+      !> The point (m, outline coordinates).
+      real(dp), intent(in) :: px, py
+      !> `plane_x` or `plane_y`.
+      integer, intent(in) :: direction
+      type(recovery_rows) :: row
+      real(dp) :: arm
+
+      if (direction == plane_x) then
+         arm = -(py - m%plan%ym)
+      else
+         arm = px - m%plan%xm
+      end if
+      row%n = 1
+      row%scale = [1.0_dp]
+      if (arm == 0.0_dp) then
+         row%start = [1, 2]
+         row%dof = [plan_dof(j, merge(plan_ux, plan_uy, direction == plane_x))]
+         row%coef = [1.0_dp]
+      else
+         row%start = [1, 3]
+         row%dof = [plan_dof(j, merge(plan_ux, plan_uy, direction == plane_x)), plan_dof(j, plan_theta)]
+         row%coef = [1.0_dp, arm]
+      end if
+   end function plan_point_row
 
    !> One row of one DOF with coefficient 1 (the value is u(dof)).
    pure function single_row(dof) result(row)
