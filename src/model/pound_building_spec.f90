@@ -11,7 +11,23 @@ module pound_building_spec
    implicit none
    private
 
-   public :: building_spec, is_frame
+   public :: building_spec, plane_spec, is_frame, is_plan
+
+   !> `&plane`: one lateral load-resisting plane (a frame or wall line) of a building in plan.
+   type :: plane_spec
+      !> The direction the plane resists: 'x' or 'y'.
+      character(len=1) :: direction = 'x'
+      !> Position (m, outline coordinates): y of an 'x' plane, x of a 'y' plane.
+      real(dp) :: position = 0.0_dp
+      !> The plane's storey stiffness (kN/m), n_storeys values.
+      real(dp), allocatable :: stiffness(:)
+      !> Storey law: 'elastic' (default) or 'bilinear'; for 'bilinear' the yield shear (kN) and
+      !> hardening ratio of each storey (unallocated for elastic planes).
+      character(len=8) :: storey_law = 'elastic'
+      real(dp), allocatable :: yield_shear(:), hardening_ratio(:)
+      !> Line of the `&plane` group in the deck (0: not known), for messages.
+      integer :: line = 0
+   end type plane_spec
 
    !> `&building`: one building (a shear building, or a planar frame with `model = 'frame'`).
    type :: building_spec
@@ -50,8 +66,10 @@ module pound_building_spec
       character(len=:), allocatable :: mass_source
       !> How stiffness was given: 'stiffness' or 'columns' (for the echo).
       character(len=:), allocatable :: stiffness_source
-      !> Model: 'shear' (the default: the storey table above) or 'frame' (a planar frame of
-      !> column lines and floors, pound_frame_building; the variables below).
+      !> Model: 'shear' (the default: the storey table above), 'frame' (a planar frame of
+      !> column lines and floors, pound_frame_building; the variables below) or 'plan' (rigid
+      !> floor diaphragms with three DOFs a floor and planes placed in plan; the plan variables
+      !> at the end).
       character(len=:), allocatable :: model
       !> Frame: bay widths (m), n_bays values.
       real(dp), allocatable :: bay_width(:)
@@ -90,6 +108,15 @@ module pound_building_spec
       !> 'elastic_plastic': kinematic hardening ratio r of the hinges of each storey's columns and
       !> floor's beams (n_storeys; 0: elastic-perfectly plastic), pound_frame_hinges.
       real(dp), allocatable :: hinge_hardening_ratio(:)
+      !> Building in plan (`model = 'plan'`, pound_plan_building): outline Lx, Ly (m), site y
+      !> of the outline's edge y = 0 (m), centre of mass (m, outline coordinates; default the
+      !> outline's centre: `mass_centre_given` false), rotational inertia of each floor about
+      !> its centre of mass (t m^2; unallocated: mass (Lx^2 + Ly^2)/12) and the planes in
+      !> deck order (the `&plane` groups naming this building).
+      real(dp) :: plan_size(2) = 0.0_dp, plan_origin_y = 0.0_dp, mass_centre(2) = 0.0_dp
+      logical :: mass_centre_given = .false.
+      real(dp), allocatable :: rot_inertia(:)
+      type(plane_spec), allocatable :: planes(:)
    end type building_spec
 
 contains
@@ -102,5 +129,14 @@ contains
       is_frame = .false.
       if (allocated(cfg%model)) is_frame = cfg%model == 'frame'
    end function is_frame
+
+   !> Whether the building entry is a building in plan (`model = 'plan'`).
+   pure logical function is_plan(cfg)
+      !> A building entry.
+      type(building_spec), intent(in) :: cfg
+
+      is_plan = .false.
+      if (allocated(cfg%model)) is_plan = cfg%model == 'plan'
+   end function is_plan
 
 end module pound_building_spec
