@@ -51,6 +51,10 @@ module pound_contact_settings
       !> How the stiffness was found when the deck gives none (the default's rule, for the
       !> listing); blank: given by the deck.
       character(len=:), allocatable :: stiffness_rule
+      !> Coulomb friction coefficient mu between the facing facades (>= 0; 0: no friction) and
+      !> the pair's tangential stiffness kt (kN/m; 0: not given, the default rule of the
+      !> friction applies: `stiffness` for the linear laws). Buildings in plan only.
+      real(dp) :: friction = 0.0_dp, shear_stiffness = 0.0_dp
    end type contact_config
 
    !> A law-study variant: the `&contact` groups of one `variant` name, the same pairs as the

@@ -111,6 +111,15 @@ module pound_config
       integer :: seed = 1
       !> Suite: write this motion's histories under /suite/<name>/ of the HDF5 file.
       logical :: histories = .false.
+      !> Direction of the motion (degrees from +x toward +y): component 1 acts along `angle`,
+      !> the second component (`file_2`) along `angle` + 90 degrees.
+      real(dp) :: angle = 0.0_dp
+      !> `kind = 'record'`: the second horizontal component's record file (resolved relative
+      !> to the deck's directory; unallocated: none) and its scale factor (`scale_2_given`
+      !> false: `scale`).
+      character(len=:), allocatable :: file_2
+      real(dp) :: scale_2 = 1.0_dp
+      logical :: scale_2_given = .false.
    end type ground_config
 
    !> A whole, validated deck.
