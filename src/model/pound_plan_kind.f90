@@ -3,7 +3,7 @@
 module pound_plan_kind
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_strings, only: str, counted, fixed_cell
+   use pound_strings, only: str, counted, fixed_cell, plain_real
    use pound_model_sink, only: model_sink, text_lines
    use pound_structure, only: structure_model
    use pound_building_kind, only: building_kind
@@ -43,9 +43,9 @@ contains
       call lines%add('  Building '//m%name//' (plan): '//counted(kind%n_storeys, 'storey')//', '// &
                      counted(np, 'plane')//', '//str(m%n)//' DOFs (u_x, u_y, theta a floor), P-Delta '// &
                      trim(merge('on ', 'off', kind%p_delta)))
-      call lines%add('  outline Lx x Ly = '//str(m%plan%lx)//' x '//str(m%plan%ly)// &
-                     ' m, edge y = 0 at site y = '//str(m%plan%y0)//' m, centre of mass (xm, ym) = ('// &
-                     str(m%plan%xm)//', '//str(m%plan%ym)//') m')
+      call lines%add('  outline Lx x Ly = '//plain_real(m%plan%lx)//' x '//plain_real(m%plan%ly)// &
+                     ' m, edge y = 0 at site y = '//plain_real(m%plan%y0)//' m, centre of mass (xm, ym) = ('// &
+                     plain_real(m%plan%xm)//', '//plain_real(m%plan%ym)//') m')
       call lines%add('  storey    h [m]    mass [t]   I [t m2]      W [kN]     R [kN m2]')
       do j = 1, kind%n_storeys
          write (buf, '(2x,i6,a9,a12,es11.4,2es13.5)') j, fixed_cell(kind%height(j), 9, 3, .true.), &
