@@ -36,7 +36,8 @@ set(POUND_SOURCES
   # models: planar frames (beam-column element, frame assembly, gravity analysis, banded eigenpairs)
   model/pound_band_lapack.f90 model/pound_band_solve.f90 model/pound_band_eigen.f90 model/pound_frame_element.f90
   model/pound_frame.f90 model/pound_frame_gravity.f90 model/pound_frame_hinges.f90 model/pound_frame_building.f90 model/pound_building_kind.f90
-  model/pound_shear_kind.f90 model/pound_frame_kind.f90 model/pound_building.f90
+  model/pound_shear_kind.f90 model/pound_frame_kind.f90 model/pound_plan_building.f90 model/pound_plan_kind.f90
+  model/pound_building.f90
   # solver: Newmark average acceleration
   solver/pound_integrator.f90 solver/pound_newmark.f90 solver/pound_newmark_step.f90 solver/pound_newmark_band.f90
   # solver: exact free steps (modes of (K+G, M), each mode's exact step)
@@ -102,7 +103,7 @@ set(POUND_SOURCES
   # results file, the text writer (unit + first failure), listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_h5_sink.f90 output/pound_h5_support.f90 output/pound_h5_attributes.f90
   output/pound_results_h5.f90 output/pound_text_writer.f90
-  output/pound_influence_output.f90 output/pound_summary_item.f90 output/pound_summary_yield.f90 output/pound_hinge_output.f90 output/pound_yield_output.f90 output/pound_listing.f90
+  output/pound_influence_output.f90 output/pound_result_groups_output.f90 output/pound_summary_item.f90 output/pound_summary_yield.f90 output/pound_hinge_output.f90 output/pound_yield_output.f90 output/pound_listing.f90
   # outputs: the separation rules' listing table and datasets (a run and a suite)
   output/pound_separation_output.f90 output/pound_sweep_joints_output.f90
   # outputs: the suite's listing sections and /suite

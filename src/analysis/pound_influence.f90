@@ -44,6 +44,10 @@ module pound_influence
       !> lambda (%) of each member row (`structure_model%member`, e.g. a frame's column end
       !> forces), the same rule; unallocated without member rows.
       real(dp), allocatable :: member_lambda(:)
+      !> lambda (%) of each result row (`structure_model%result_rows`, e.g. a building in plan's
+      !> plane shears and floor rotations), the same rule within each group, and NaN where the
+      !> uncoupled peak is 0; unallocated without result rows.
+      real(dp), allocatable :: result_lambda(:)
    end type building_influence
 
 contains
@@ -165,8 +169,31 @@ contains
                end do
             end associate
          end if
+         if (allocated(cpl%building(ib)%result_peak) .and. allocated(unc%building(ib)%result_peak) .and. &
+             present(models)) then
+            if (allocated(models(ib)%result)) infl(ib)%result_lambda = &
+               result_influences(cpl%building(ib)%result_peak, unc%building(ib)%result_peak, models(ib))
+         end if
       end do
    end function influence_of
+
+   !> lambda of the result rows group by group (`influences` within a group), NaN where the
+   !> uncoupled peak is 0.
+   pure function result_influences(qc, qu, model) result(lambda)
+      !> Absolute maxima, coupled and uncoupled (the model's result rows).
+      real(dp), intent(in) :: qc(:), qu(:)
+      !> The model (its result groups).
+      type(structure_model), intent(in) :: model
+      real(dp) :: lambda(size(qu))
+      integer :: g, i0, i1
+
+      do g = 1, size(model%result)
+         i0 = model%result(g)%first
+         i1 = i0 + product(model%result(g)%extent) - 1
+         lambda(i0:i1) = influences(qc(i0:i1), qu(i0:i1))
+      end do
+      where (.not. qu > 0.0_dp) lambda = not_meaningful()
+   end function result_influences
 
    !> Largest |lambda| over the floors/storeys, (n_history_quantities, n_buildings).
    pure function max_abs_influence(infl) result(m)

@@ -14,7 +14,8 @@
 !>
 !> **Member rows.** A model with member recovery rows (`structure_model%member`, a frame's
 !> column end forces) gets their absolute maxima and times at every step (`member_peak`,
-!> `member_time`), whatever the rows mean. **Points between floors** (a frame's split column
+!> `member_time`), whatever the rows mean; so do a model's result rows (`structure_model%result_rows`,
+!> a building in plan's plane shears and floor rotations: `result_peak`, `result_time`). **Points between floors** (a frame's split column
 !> nodes, contact ends of `&contact elevations`: `point_dof`, `point_dof_left`) get their
 !> absolute maxima of u at every step (`point_peak`, `response_point_peak`; not refined between
 !> samples). **Deformed shapes** (`snapshots`): the DOF vector
@@ -118,6 +119,10 @@ module pound_response
       !> Member rows (`structure_model%member`): peak absolute value and its time per row, and
       !> the rows' values of the step (work); unallocated without member rows.
       real(dp), allocatable :: member_peak(:), member_time(:), pm(:)
+      !> Result rows (`structure_model%result_rows`, in its groups `structure_model%result`): peak
+      !> absolute value and its time per row, and the rows' values of the step (work);
+      !> unallocated without result rows.
+      real(dp), allocatable :: result_peak(:), result_time(:), pr(:)
       !> Points between floors (the model's `point_dof` and `point_dof_left`, each DOF once):
       !> their DOFs and the peak |u| of each at every step (m); unallocated: none.
       integer, allocatable :: point_dofs(:)
@@ -179,7 +184,7 @@ contains
       n = size(b%floor_dof)
       rec%snapshots = .false.
       if (present(snapshots)) rec%snapshots = snapshots
-      rec%stick = b%stick .and. b%member%n == 0 .and. .not. rec%snapshots
+      rec%stick = b%stick .and. b%member%n == 0 .and. b%result_rows%n == 0 .and. .not. rec%snapshots
       if (.not. rec%stick) then
          allocate (rec%pu(n), rec%pv(n), rec%pa(n), rec%pd(n), rec%ps(n), stat=stat(1))
          if (stat(1) /= 0) then
@@ -206,6 +211,9 @@ contains
       if (rec%nodes) allocate (rec%u_nodes(n_node, capacity), source=0.0_dp, stat=stat(7))
       if (b%member%n > 0) allocate (rec%member_peak(b%member%n), rec%member_time(b%member%n), &
                                     rec%pm(b%member%n), source=0.0_dp, stat=stat(8))
+      if (b%result_rows%n > 0 .and. stat(8) == 0) &
+         allocate (rec%result_peak(b%result_rows%n), rec%result_time(b%result_rows%n), rec%pr(b%result_rows%n), &
+                   source=0.0_dp, stat=stat(8))
       if (rec%snapshots .and. stat(8) == 0) then
          allocate (rec%pool(b%n, n + 1), source=0.0_dp, stat=stat(8))
          if (stat(8) == 0) allocate (rec%slot_of(n), rec%refs(n + 1), rec%free(n + 1), source=0, stat=stat(8))
@@ -339,6 +347,7 @@ contains
       if (b%member%n > 0) then
          call recover_peaks(b%member, u, t, rec%pm, rec%member_peak, rec%member_time)
       end if
+      if (b%result_rows%n > 0) call recover_peaks(b%result_rows, u, t, rec%pr, rec%result_peak, rec%result_time)
       call track_general(rec%n, b%n, b%floor_dof, u, v, a, ag, rec%pd, rec%ps, t, rec%pu, rec%pv, rec%pa, &
                          rec%peak, rec%peak_time)
       if (.not. output) return

@@ -21,7 +21,10 @@
 !>   and per analysis its deformed shapes (DOFs x n_storeys, at most `deformed_limit`) and
 !>   column-segment peaks; with `free_steps = 'exact'`, 5 n^2 reals per building of n floors
 !>   (its modes in up to three integrators and the dense eigenproblem of their set-up), and
-!>   12 n^2 per frame of n DOFs (shapes and coordinate rows, the condensed set-up).
+!>   12 n^2 per frame of n DOFs (shapes and coordinate rows, the condensed set-up); a
+!>   building in plan (`model = 'plan'`) counts its 3 n_storeys DOFs with 8 band matrices
+!>   of half-bandwidth 5, per analysis its result rows' peaks ((n_planes + 1) n_storeys,
+!>   3 reals each), with `node_histories` its DOFs, and 5 (3 n)^2 reals for exact free steps.
 !>
 !> The memory available is the smallest of: MemAvailable of /proc/meminfo, the memory
 !> limit less the current use of the process's cgroup and of each of its ancestors
@@ -35,6 +38,7 @@ module pound_memory
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: deck_type, n_history_quantities, history_names, is_frame
+   use pound_building_spec, only: is_plan
    use pound_posix, only: posix_address_space_limit
    use pound_analysis_plan, only: steps_of_int64
    use pound_response, only: history_block
@@ -96,6 +100,17 @@ contains
       frame_bytes = 0.0_dp
       if (allocated(deck%buildings)) then
          do ib = 1, size(deck%buildings)
+            if (is_plan(deck%buildings(ib))) then
+               associate (b => deck%buildings(ib))
+                  dofs = 3.0_dp*real(b%n_storeys, dp)
+                  lines = 0.0_dp
+                  if (allocated(b%planes)) lines = real(size(b%planes), dp)
+                  frame_bytes = frame_bytes + 8.0_dp*8.0_dp*6.0_dp*dofs + &
+                                2.0_dp*8.0_dp*3.0_dp*(lines + 1.0_dp)*real(b%n_storeys, dp)
+                  if (deck%analysis%node_histories) est%node_columns = est%node_columns + dofs
+                  if (deck%analysis%free_steps == 'exact') frame_bytes = frame_bytes + 5.0_dp*8.0_dp*dofs**2
+               end associate
+            end if
             if (.not. is_frame(deck%buildings(ib))) cycle
             associate (b => deck%buildings(ib))
                lines = real(size(b%bay_width) + 1, dp)
@@ -119,7 +134,7 @@ contains
          ! eigenproblem of their set-up.
          if (deck%analysis%free_steps == 'exact') then
             do ib = 1, size(deck%buildings)
-               if (is_frame(deck%buildings(ib))) cycle
+               if (is_frame(deck%buildings(ib)) .or. is_plan(deck%buildings(ib))) cycle
                frame_bytes = frame_bytes + 5.0_dp*8.0_dp*real(deck%buildings(ib)%n_storeys, dp)**2
             end do
          end if

@@ -41,6 +41,7 @@ program pound
    use pound_listing, only: write_listing_header, write_model_summary, write_peak_tables, write_warning_lines, &
                             write_contact_summary, write_influence_tables, write_sweep_table, write_column_tables, &
                             write_sweep_column_table, write_section
+   use pound_result_groups_output, only: write_result_groups_listing
    use pound_text_writer, only: text_writer, open_text, close_text
    use pound_summary, only: summary_item, build_summary, summary_lines, motion_heading, summary_text_len
    use pound_summary_output, only: write_summary_csv, write_summary_attributes, summary_attribute_text
@@ -406,6 +407,7 @@ contains
       end if
       call write_peak_tables(lst, 'Uncoupled', res%models, res%unc)
       if (.not. res%has_coupled) call write_column_tables(lst, res%models, res%buildings, res%unc)
+      if (.not. res%has_coupled) call write_result_groups_listing(lst, res%models, res%unc)
       if (.not. res%has_coupled) call write_yield_tables(lst, res%models, res%unc)
       if (res%has_coupled) then
          call write_peak_tables(lst, 'Coupled', res%models, res%cpl)
@@ -414,6 +416,7 @@ contains
          call write_influence_tables(lst, res%models, res%influence)
          call write_yield_tables(lst, res%models, res%unc, res%cpl)
          call write_column_tables(lst, res%models, res%buildings, res%unc, res%cpl, res%influence)
+         call write_result_groups_listing(lst, res%models, res%unc, res%cpl, res%influence)
          if (res%has_sweep) call write_sweep_table(lst, res%models, deck%sweep, res%sweep)
          if (res%has_sweep) call write_sweep_column_table(lst, res%models, deck%sweep, res%sweep)
          if (joint_count() > 1) call write_joint_sweep_tables(lst, deck%sweep, res%joints, pair_labels(res%cs))

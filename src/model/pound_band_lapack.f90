@@ -1,13 +1,14 @@
 !> Explicit interfaces to the LAPACK routines used by the frame models: band Cholesky and
 !> LU, the tridiagonal L D L^T factorization and solve (the integrators' tridiagonal kernels),
-!> and the small dense generalized eigenproblem of a Rayleigh-Ritz step
+!> the small dense generalized eigenproblem of a Rayleigh-Ritz step and the selected
+!> eigenvalues of a banded generalized eigenproblem (a building in plan's periods)
 !> (pound is compiled with -Wimplicit-interface).
 module pound_band_lapack
    use pound_kinds, only: dp
    implicit none
    private
 
-   public :: dpbtrf, dpbtrs, dpttrf, dpttrs, dsygv, dgbtrf, dgbtrs
+   public :: dpbtrf, dpbtrs, dpttrf, dpttrs, dsygv, dgbtrf, dgbtrs, dsbgvx, dlamch
 
    interface
       !> L D L^T factorization of a symmetric positive definite tridiagonal matrix.
@@ -68,6 +69,24 @@ module pound_band_lapack
          real(dp), intent(inout) :: b(ldb, *)
          integer, intent(out) :: info
       end subroutine dgbtrs
+      !> Selected eigenvalues (and optionally eigenvectors) of a symmetric-definite banded
+      !> generalized eigenproblem A x = lambda B x.
+      subroutine dsbgvx(jobz, range, uplo, n, ka, kb, ab, ldab, bb, ldbb, q, ldq, vl, vu, il, iu, &
+                        abstol, m, w, z, ldz, work, iwork, ifail, info)
+         import :: dp
+         character, intent(in) :: jobz, range, uplo
+         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldq, il, iu, ldz
+         real(dp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
+         real(dp), intent(in) :: vl, vu, abstol
+         real(dp), intent(out) :: q(ldq, *), w(*), z(ldz, *), work(*)
+         integer, intent(out) :: m, iwork(*), ifail(*), info
+      end subroutine dsbgvx
+      !> Machine parameters ('S': safe minimum).
+      function dlamch(cmach) result(r)
+         import :: dp
+         character, intent(in) :: cmach
+         real(dp) :: r
+      end function dlamch
    end interface
 
 end module pound_band_lapack

@@ -1,12 +1,13 @@
 !> One building of a deck, whatever its model: `build_building` makes the `structure_model`
 !> the analyses read and, beside it, its building kind (`building_model%kind`, a
 !> `building_kind`: `shear_kind` with the storey table, `frame_kind` with the nodes, elements
-!> and gravity analysis), which answers the writers. The two are kept in separate arrays by
+!> and gravity analysis, `plan_kind` with the outline and planes of a building in plan),
+!> which answers the writers. The two are kept in separate arrays by
 !> the run driver, so that the analyses get a contiguous array of structural models (no copy).
 module pound_building
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_building_spec, only: building_spec, is_frame
+   use pound_building_spec, only: building_spec, is_frame, is_plan
    use pound_structure, only: structure_model, structure_check
    use pound_shear_building, only: shear_building, build_shear_building
    use pound_frame_building, only: build_frame_building
@@ -14,6 +15,8 @@ module pound_building
    use pound_building_kind, only: building_kind
    use pound_shear_kind, only: shear_kind
    use pound_frame_kind, only: frame_kind
+   use pound_plan_building, only: build_plan_building
+   use pound_plan_kind, only: plan_kind
    implicit none
    private
 
@@ -27,7 +30,7 @@ module pound_building
 
 contains
 
-   !> Build the model of a deck entry: a shear building or a frame (`model`).
+   !> Build the model of a deck entry: a shear building, a frame or a building in plan (`model`).
    subroutine build_building(deck_entry, m, b, error, number)
       !> Validated deck entry.
       type(building_spec), intent(in) :: deck_entry
@@ -42,9 +45,17 @@ contains
       type(shear_building) :: sb
       type(shear_kind), allocatable :: shear
       type(frame_kind), allocatable :: frame
+      type(plan_kind), allocatable :: plan
       integer :: j
 
-      if (is_frame(deck_entry)) then
+      if (is_plan(deck_entry)) then
+         allocate (plan)
+         call set_common(plan)
+         call build_plan_building(deck_entry, m, plan%plan, error, number)
+         if (allocated(error)) return
+         plan%floor_mass = plan%plan%floor_mass
+         call move_alloc(plan, b%kind)
+      else if (is_frame(deck_entry)) then
          allocate (frame)
          call set_common(frame)
          call build_frame_building(deck_entry, m, frame%frame, error, number)

@@ -17,6 +17,7 @@ module pound_shear_building
    use pound_building_spec, only: building_spec
    use pound_storey_properties, only: storey_properties
    use pound_band, only: band_add_storey
+   use pound_band_lapack, only: dsbgvx, dlamch
    use pound_sort, only: sort_ascending
    use pound_structure, only: structure_model, structure_label, chain_rows, structure_finish, modes_listed
    implicit none
@@ -44,27 +45,6 @@ module pound_shear_building
       !> Whether P-Delta is modelled.
       logical :: p_delta = .false.
    end type shear_building
-
-   interface
-      !> Selected eigenvalues (and optionally eigenvectors) of a symmetric-definite banded
-      !> generalized eigenproblem A x = lambda B x.
-      subroutine dsbgvx(jobz, range, uplo, n, ka, kb, ab, ldab, bb, ldbb, q, ldq, vl, vu, il, iu, &
-                        abstol, m, w, z, ldz, work, iwork, ifail, info)
-         import :: dp
-         character, intent(in) :: jobz, range, uplo
-         integer, intent(in) :: n, ka, kb, ldab, ldbb, ldq, il, iu, ldz
-         real(dp), intent(inout) :: ab(ldab, *), bb(ldbb, *)
-         real(dp), intent(in) :: vl, vu, abstol
-         real(dp), intent(out) :: q(ldq, *), w(*), z(ldz, *), work(*)
-         integer, intent(out) :: m, iwork(*), ifail(*), info
-      end subroutine dsbgvx
-      !> Machine parameters ('S': safe minimum).
-      function dlamch(cmach) result(r)
-         import :: dp
-         character, intent(in) :: cmach
-         real(dp) :: r
-      end function dlamch
-   end interface
 
 contains
 

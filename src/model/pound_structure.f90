@@ -41,7 +41,7 @@ module pound_structure
    private
 
    public :: structure_model, recovery_rows, recover, recover_all, recover_peaks, group_rows, structure_label
-   public :: structure_names
+   public :: structure_names, result_group, result_rows_of
    public :: structure_strain_energy
    public :: direction_x, direction_z, direction_rotation, direction_y, direction_torsion
    public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
@@ -87,6 +87,24 @@ module pound_structure
       integer, allocatable :: group_block(:), block_first(:)
       real(dp), allocatable :: group_coef(:, :), block_scale(:, :)
    end type recovery_rows
+
+   !> A named group of result rows (`structure_model%result`): rows `first` ..
+   !> `first + product(extent) - 1` of the result rows, an array of Fortran shape `extent`
+   !> (first index fastest; h5py reads it reversed: a building in plan's plane shears, extent
+   !> (n_storeys, n_planes), read as (n_planes, n_storeys)). The response takes the rows'
+   !> absolute maxima at every step; the writers name the group's peaks `peak/<name>` and its
+   !> influence coefficients `/influence/<b>/<name>`.
+   type :: result_group
+      !> Dataset name (e.g. 'plane_shear', 'rotation') and the rows' units.
+      character(len=32) :: name = ''
+      character(len=16) :: units = ''
+      !> First row of the group in the result rows.
+      integer :: first = 1
+      !> Shape of the group's array (Fortran order; its product is the number of rows).
+      integer, allocatable :: extent(:)
+      !> What the rows are (the dataset's description attribute).
+      character(len=200) :: description = ''
+   end type result_group
 
    !> A structural model ready for time integration (a plain data type: see the module doc).
    type :: structure_model
@@ -179,6 +197,12 @@ module pound_structure
       !> A building in plan (`&building model = 'plan'`): outline, centre of mass, planes and
       !> DOF layout (pound_plan_geometry); unallocated: a planar building.
       type(plan_geometry), allocatable :: plan
+      !> Result rows (none: `result_rows%n` = 0): further linear quantities whose absolute
+      !> maxima the response takes at every step and whose influence coefficients follow (a
+      !> building in plan's plane shears and floor rotations), in named groups
+      !> (`result_group`), the groups' rows consecutive in group order.
+      type(recovery_rows) :: result_rows
+      type(result_group), allocatable :: result(:)
       !> Each hinge's element kind (1 column, 2 beam), storey (column) or floor (beam), column
       !> line of the element's first node, end (1: bottom or left, 2: top or right), element.
       integer, allocatable :: hinge_kind(:), hinge_level(:), hinge_line(:), hinge_end(:), hinge_element(:)
@@ -629,6 +653,35 @@ contains
       end if
    end function plan_point_row
 
+   !> The rows of `parts` one after the other, as one set of rows (each part's rows in order).
+   pure function result_rows_of(parts) result(rows)
+      !> The parts (each any number of rows).
+      type(recovery_rows), intent(in) :: parts(:)
+      type(recovery_rows) :: rows
+      integer :: k, nnz, p, i
+
+      rows%n = sum(parts%n)
+      nnz = 0
+      do k = 1, size(parts)
+         if (parts(k)%n > 0) nnz = nnz + parts(k)%start(parts(k)%n + 1) - 1
+      end do
+      allocate (rows%start(rows%n + 1), rows%dof(nnz), rows%coef(nnz), rows%scale(rows%n))
+      rows%start(1) = 1
+      i = 0
+      p = 0
+      do k = 1, size(parts)
+         if (parts(k)%n == 0) cycle
+         associate (q => parts(k), e => parts(k)%start(parts(k)%n + 1) - 1)
+            rows%dof(p + 1:p + e) = q%dof(1:e)
+            rows%coef(p + 1:p + e) = q%coef(1:e)
+            rows%start(i + 2:i + q%n + 1) = q%start(2:q%n + 1) + p
+            rows%scale(i + 1:i + q%n) = q%scale
+            p = p + e
+            i = i + q%n
+         end associate
+      end do
+   end function result_rows_of
+
    !> One row of one DOF with coefficient 1 (the value is u(dof)).
    pure function single_row(dof) result(row)
       !> The DOF.
@@ -735,6 +788,8 @@ contains
       class(structure_model), intent(in) :: m
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
+      integer :: k
+
       if (.not. (allocated(m%kt) .and. allocated(m%mass) .and. allocated(m%ground) .and. &
                  allocated(m%floor_dof) .and. allocated(m%drift%start) .and. allocated(m%shear%start))) then
          call fatal_error(error, structure_label(m)//': incomplete structural model')
@@ -766,6 +821,16 @@ contains
          if (size(m%dof_direction) /= m%n .or. any(m%dof_direction < direction_x) .or. &
              any(m%dof_direction > direction_torsion)) then
             call fatal_error(error, structure_label(m)//': DOF directions of the wrong size or unknown')
+            return
+         end if
+      end if
+      if (m%result_rows%n > 0) then
+         if (.not. allocated(m%result)) then
+            call fatal_error(error, structure_label(m)//': result rows without groups')
+            return
+         else if (any(m%result_rows%dof < 1) .or. any(m%result_rows%dof > m%n) .or. &
+                  sum([(product(m%result(k)%extent), k=1, size(m%result))]) /= m%result_rows%n) then
+            call fatal_error(error, structure_label(m)//': result rows out of range')
             return
          end if
       end if

@@ -76,6 +76,7 @@ module pound_results_h5
    use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
    use pound_influence_output, only: write_lambda_h5
+   use pound_result_groups_output, only: write_result_groups_h5
    use pound_h5, only: h5_file, h5_create, h5_close, h5_write, h5_write_attr, h5_create_history, h5_write_columns
    use pound_sweep, only: sweep_result
    use pound_sweep_joints, only: joint_sweep
@@ -279,6 +280,10 @@ contains
                   if (allocated(error)) return
                end do
                if (allocated(influence(ib)%member_lambda)) call write_member_influence(models(ib), influence(ib))
+               if (allocated(error)) return
+               if (allocated(influence(ib)%result_lambda)) &
+                  call write_result_groups_h5(h5, '/influence/'//models(ib)%name//'/', models(ib), &
+                                              influence(ib)%result_lambda, error, units='%')
                if (allocated(error)) return
             end do
             if (present(cpl)) call write_yield_influence_h5(h5, models, unc, cpl, error)
@@ -634,6 +639,12 @@ contains
             end do
             if (allocated(r%member_peak)) call write_members(models(i), r)
             if (allocated(error)) return
+            if (allocated(r%result_peak)) then
+               call write_result_groups_h5(h5, gb//'peak/', models(i), r%result_peak, error)
+               if (allocated(error)) return
+               call write_result_groups_h5(h5, gb//'peak_time/', models(i), r%result_time, error, units='s')
+               if (allocated(error)) return
+            end if
             if (r%snapshots) then
                call h5_write(h5, gb//'deformed', r%deformed, error, units='m, rad')
                if (allocated(error)) return
