@@ -13,16 +13,16 @@
 !> configuration can be run for many cases; `run_case` does not change it.
 module pound_run_case
    use pound_kinds, only: dp
-   use pound_error, only: error_type, fatal_error
+   use pound_error, only: error_type, fatal_error, status_input
    use pound_strings, only: str
    use pound_config, only: deck_type, ground_config, analysis_config
    use pound_contact_settings, only: contact_config
    use pound_analysis_plan, only: analysis_plan, steps_of, stepping_uniform, stepping_impact, free_newmark, &
                                   free_exact, lcp_auto, lcp_lemke, integrator_newmark, integrator_hht
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, stop_ground, &
-                                  describe_ground
+                                  describe_ground, second_component, set_ground_angle, ground_moves_y
    use pound_building, only: building_model, build_building
-   use pound_structure, only: structure_model, structure_names, structure_yields, structure_end_dof
+   use pound_structure, only: structure_model, structure_names, structure_yields, structure_end_dof, direction_y
    use pound_newmark, only: exact_max_dofs
    use pound_residual_settle, only: residual_warning, ground_tail_fraction, kinetic_tail_fraction
    use pound_response, only: response_point_peak
@@ -122,7 +122,12 @@ contains
          call pulse_motion(gm, g%x0, g%a, g%b)
       case default
          call record_motion(gm, g%file, g%format, g%scale, error)
+         if (allocated(error)) return
+         ! Component 2 in the same format; scale_2 defaults to scale.
+         if (allocated(g%file_2)) call second_component(gm, g%file_2, g%format, merge(g%scale_2, g%scale, g%scale_2_given), &
+                                                        error)
       end select
+      call set_ground_angle(gm, g%angle)
    end subroutine configured_motion
 
    !> What `run_case` puts before its error messages for a case labelled `label` (`case_options`):
@@ -202,6 +207,19 @@ contains
             error%message = prefix//error%message
             return
          end if
+      end do
+
+      ! The ground along y (an angle, a second component) reaches the x DOFs only (a_gx): a
+      ! building with a ground component along y (in plan) would miss a_gy, so it is refused.
+      do ib = 1, size(res%models)
+         if (.not. ground_moves_y(gm)) exit
+         if (.not. allocated(res%models(ib)%ground_direction)) cycle
+         if (.not. any(res%models(ib)%ground_direction == direction_y)) cycle
+         call fatal_error(error, prefix//"&ground: building "//res%models(ib)%name//' has DOFs along y, and the '// &
+                          'ground along y (angle = '//str(gm%angle)//' degrees or a second component, file_2) '// &
+                          'does not reach them yet: the integrators take the ground along x only; '// &
+                          'give angle = 0 and no file_2', status_input)
+         return
       end do
 
       ! The exact free steps hold every building's n x n modes: refused for a larger model,

@@ -8,7 +8,9 @@
 !>    T = `period`, by default the fundamental period of the most flexible building) of the
 !>    motion as the solver samples it, a_g(n dt), n = 0..n_steps. A scaled motion is run as
 !>    the samples f a_g(n dt) (a record of step dt, linear between samples: what the solver saw
-!>    before scaling, times f), so it meets its target up to rounding. A pulse or record without
+!>    before scaling, times f), so it meets its target up to rounding. A motion with a second
+!>    component is scaled on component 1 (its samples along the motion's direction), and the
+!>    factor scales component 2 too, which keeps its own samples. A pulse or record without
 !>    `scale_to` is run as it is: a suite of one is today's single run, bit for bit.
 module pound_suite_motions
    use pound_kinds, only: dp
@@ -16,7 +18,8 @@ module pound_suite_motions
    use pound_config, only: deck_type, ground_config
    use pound_deck_variables, only: word_len
    use pound_strings, only: str
-   use pound_ground_motion, only: ground_motion_t, sample_ground, stop_ground
+   use pound_ground_motion, only: ground_motion_t, sample_ground, stop_ground, first_component, set_ground_angle, &
+                                  take_second_component
    use pound_synthetic_motion, only: synthetic_config, synthetic_motion
    use pound_structure, only: structure_model, structure_names
    use pound_contact, only: contact_pair, pairs_from_config
@@ -78,8 +81,10 @@ contains
          if (deck%analysis%t_free > 0.0_dp) call stop_ground(gm, deck%analysis%t_end - deck%analysis%t_free, dt)
          return
       end if
+      if (g%kind == 'synthetic') call set_ground_angle(base, g%angle)
       allocate (ag(0:n_steps))
-      call sample_ground(base, dt, n_steps, ag)
+      ! The factor is found on component 1 and scales both.
+      call sample_ground(first_component(base), dt, n_steps, ag)
       select case (g%scale_to)
       case ('pga')
          call scale_to_pga(ag, g%target, factor, error)
@@ -107,6 +112,7 @@ contains
       gm%accel = factor*ag
       gm%name = g%name
       gm%scaled = len(g%scale_to) > 0
+      call take_second_component(gm, base, factor)
       if (deck%analysis%t_free > 0.0_dp) call stop_ground(gm, deck%analysis%t_end - deck%analysis%t_free, dt)
 
    contains
