@@ -5,8 +5,8 @@
 !> the run driver, so that the analyses get a contiguous array of structural models (no copy).
 module pound_building
    use pound_kinds, only: dp
-   use pound_error, only: error_type
-   use pound_building_spec, only: building_spec, is_frame
+   use pound_error, only: error_type, fatal_error, status_input
+   use pound_building_spec, only: building_spec, is_frame, is_plan
    use pound_structure, only: structure_model, structure_check
    use pound_shear_building, only: shear_building, build_shear_building
    use pound_frame_building, only: build_frame_building
@@ -44,6 +44,13 @@ contains
       type(frame_kind), allocatable :: frame
       integer :: j
 
+      if (is_plan(deck_entry)) then
+         ! The deck reads buildings in plan (pound_deck_plane); their builder is not part of this
+         ! version: refused, not built as something else.
+         call fatal_error(error, 'building '//deck_entry%name//": model = 'plan' (a building in plan) "// &
+                          'is read from the deck but this version of pound does not build it', status_input)
+         return
+      end if
       if (is_frame(deck_entry)) then
          allocate (frame)
          call set_common(frame)
