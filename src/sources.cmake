@@ -22,7 +22,7 @@ set(POUND_SOURCES
   core/pound_input_checks.f90
   # deck: configuration types, variable table, lexer, checks, one reader per group, the reader, records
   deck/pound_config.f90 deck/pound_deck_variables.f90 deck/pound_deck_values.f90 deck/pound_deck_lexer.f90 deck/pound_deck_checks.f90
-  deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_hinge_law.f90 deck/pound_deck_building.f90
+  deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_hinge_law.f90 deck/pound_deck_building.f90 deck/pound_deck_plane.f90
   deck/pound_deck_stiffness.f90 deck/pound_deck_contact.f90 deck/pound_deck_study.f90 deck/pound_deck_targets.f90 deck/pound_deck_sweep.f90 deck/pound_deck_risk.f90 deck/pound_deck_record_set.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
   model/pound_band.f90 model/pound_plan_geometry.f90 model/pound_structure.f90 model/pound_storey_properties.f90

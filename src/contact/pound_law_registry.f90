@@ -25,7 +25,7 @@ module pound_law_registry
    private
 
    public :: law_entry, registered_laws, law_from_config, law_is_registered, law_reads, law_restitution, &
-             registered_law_names, law_take_deck, restitution_law_names, law_variables
+             registered_law_names, law_take_deck, restitution_law_names, law_variables, law_stiffness_linear
 
    abstract interface
       !> Build the law of a `&contact` group (its parameters already checked by the deck).
@@ -139,6 +139,25 @@ contains
          if (e%variables(i)%name == var) law_reads = .true.
       end do
    end function law_reads
+
+   !> Whether the stiffness of registered law `name` (`contact_config%stiffness` once its
+   !> variables are read: given, or derived as k0) is a linear joint stiffness in kN/m: every
+   !> law but those that declare `stiffness` in another unit (the Hertz family's kN/m^(3/2));
+   !> false for an unknown law.
+   pure logical function law_stiffness_linear(name)
+      !> Deck name of the law.
+      character(len=*), intent(in) :: name
+      type(law_entry) :: e
+      integer :: i
+
+      law_stiffness_linear = .false.
+      e = law_entry_of(name)
+      if (len_trim(e%name) == 0) return
+      law_stiffness_linear = .true.
+      do i = 1, size(e%variables)
+         if (e%variables(i)%name == 'stiffness' .and. e%variables(i)%unit /= 'kN/m') law_stiffness_linear = .false.
+      end do
+   end function law_stiffness_linear
 
    !> Every `&contact` variable of the registered laws, once each, in the order the laws
    !> declare them (the table's order), then `restitution` (the laws that calibrate their

@@ -65,7 +65,7 @@ module pound_input_checks
 
    !> The ranges: generous enough for any real structure and record, tight enough that every
    !> value inside gives finite derived quantities (12EI/h^3, masses, periods, forces).
-   type(bound_t), parameter :: bounds(49) = [ &
+   type(bound_t), parameter :: bounds(56) = [ &
       bound_t('analysis:dt', 1.0e-7_dp, 1.0_dp, 's', .false.), &
       bound_t('analysis:t_end', 0.0_dp, 1.0e4_dp, 's', .false.), &
       bound_t('analysis:t_free', 0.0_dp, 1.0e4_dp, 's', .false.), &
@@ -114,7 +114,14 @@ module pound_input_checks
       bound_t('contact:fracture_penetration', 1.0e-9_dp, 10.0_dp, 'm', .false.), &
       bound_t('contact:envelope_r', 0.0_dp, 1.0e10_dp, 'kN', .false.), &
       bound_t('sweep:target_lambda', 0.0_dp, 1.0e6_dp, '%', .false.), &
-      bound_t('sweep:refine_tolerance', 1.0e-9_dp, 1.0_dp, 'm', .false.)]
+      bound_t('sweep:refine_tolerance', 1.0e-9_dp, 1.0_dp, 'm', .false.), &
+      bound_t('building:plan_size', 0.1_dp, 1.0e3_dp, 'm', .false.), &
+      bound_t('building:plan_origin_y', 0.0_dp, 1.0e4_dp, 'm', .true.), &
+      bound_t('building:rot_inertia', 1.0e-6_dp, 1.0e15_dp, 't m^2', .false.), &
+      bound_t('plane:stiffness', 1.0e-3_dp, 1.0e12_dp, 'kN/m', .false.), &
+      bound_t('contact:shear_stiffness', 1.0e-3_dp, 1.0e13_dp, 'kN/m', .false.), &
+      bound_t('contact:friction', 0.0_dp, 10.0_dp, '', .false.), &
+      bound_t('ground:scale_2', 1.0e-6_dp, 1.0e3_dp, '', .true.)]
 
 contains
 

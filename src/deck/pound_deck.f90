@@ -1,4 +1,4 @@
-!> Input deck reader: Fortran namelist groups `&analysis`, `&ground`, `&building` and `&contact`.
+!> Input deck reader: Fortran namelist groups `&analysis`, `&ground`, `&building`, `&plane` and `&contact`.
 !>
 !> The deck is read into memory once (kept in `deck%text` for the echo; any line ends, a
 !> UTF-8 byte-order mark dropped, pipes read to their end), then scanned: every group must
@@ -15,6 +15,9 @@
 !> * `&analysis` exactly once, `&building` once per building, left to right.
 !> * `&ground` once, or several times with distinct `name`s: a suite of ground motions
 !>   (pound_suite), each a pulse, a record or a synthetic motion with its scaling.
+!> * `&plane` once or more per building in plan (`&building model = 'plan'`), in any order:
+!>   its lateral load-resisting planes (pound_deck_plane); in a deck with a building in plan
+!>   every building is in plan and has a plane in each direction.
 !> * `&contact` zero or more times (none: the buildings are uncoupled).
 !> * `&sweep` at most once, with at least one `&contact`: gap_from, gap_to (m), n_gaps, and
 !>   optionally target_lambda (%) and target_quantities (default 'u a_abs drift storey_shear').
@@ -54,8 +57,8 @@
 !> One job per module: pound_deck_lexer (text to groups and checked assignments),
 !> pound_deck_variables (the one table of groups and variables), pound_deck_checks (value
 !> checks, plausible ranges, the message format), and one reader per group:
-!> pound_deck_analysis, pound_deck_ground, pound_deck_building, pound_deck_contact,
-!> pound_deck_sweep. This module reads the file and calls them in order.
+!> pound_deck_analysis, pound_deck_ground, pound_deck_building, pound_deck_plane,
+!> pound_deck_contact, pound_deck_sweep. This module reads the file and calls them in order.
 !> The first error found is reported in one message of the form
 !> `deck.nml:14: &building #2 (B): n_columns(5) = 0, must be >= 1`
 !> (line of the variable's assignment, or of the group start when the variable is missing).
@@ -66,6 +69,7 @@ module pound_deck
    use pound_deck_building, only: read_building
    use pound_deck_contact, only: read_contact
    use pound_deck_ground, only: read_ground
+   use pound_deck_plane, only: read_plane, check_plan_deck
    use pound_deck_lexer, only: find_single, group_ref, normalize_text, scan_groups
    use pound_deck_sweep, only: read_sweep
    use pound_deck_risk, only: read_stripes, read_hazard, check_risk
@@ -165,6 +169,14 @@ contains
          call read_building(path, text, groups(i), d%buildings(1:k - 1), d%buildings(k), error, d%warnings)
          if (allocated(error)) return
       end do
+      ! The planes of the buildings in plan, each appended to its building in deck order.
+      do i = 1, n_groups
+         if (groups(i)%name /= 'plane') cycle
+         call read_plane(path, text, groups(i), d%buildings, error, d%warnings)
+         if (allocated(error)) return
+      end do
+      call check_plan_deck(path, groups(1:n_groups), d%buildings, error)
+      if (allocated(error)) return
       allocate (d%contacts(count([(groups(i)%name == 'contact', i=1, n_groups)])))
       k = 0
       do i = 1, n_groups

@@ -1,19 +1,22 @@
 !> Reader of `&building`: name, storeys, heights, masses (or load coefficients), storey
 !> stiffnesses (or columns), damping and P-Delta, kept as given (the model derives the
-!> masses, stiffnesses and gravity loads: pound_storey_properties).
+!> masses, stiffnesses and gravity loads: pound_storey_properties). A building in plan
+!> (`model = 'plan'`) gives its outline, origin, centre of mass and rotational inertia here;
+!> its storey stiffness comes from its planes (`&plane`, pound_deck_plane).
 module pound_deck_building
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_config, only: building_config, deck_warning_len
-   use pound_deck_checks, only: check_real, fail, given_count, is_set, read_failed, require_real, widen, &
-                                site, site_of, take_ints, take_reals, unset_int, unset_real, warn
+   use pound_constants, only: g_accel
+   use pound_deck_checks, only: check_plausible, check_real, fail, given_count, is_set, read_failed, require_real, &
+                                widen, site, site_of, take_ints, take_reals, unset_int, unset_real, warn
    use pound_deck_storey_law, only: take_storey_law
    use pound_deck_hinge_law, only: take_hinge_law
    use pound_deck_lexer, only: group_extent, group_ref, group_text, is_name_char, lower
    use pound_deck_variables, only: max_name_length, max_storeys, word_len, max_bays, max_column_elements, &
-                                   frame_variables
+                                   frame_variables, plan_variables
    use pound_error, only: error_type
    use pound_kinds, only: dp
-   use pound_strings, only: plain_real, str
+   use pound_strings, only: plain_real, plain_significant, str
    implicit none
    private
 
@@ -22,6 +25,11 @@ module pound_deck_building
    !> The `&building` variables that give a shear building's storey stiffness (not with a frame).
    character(len=*), parameter :: shear_variables(5) = [character(len=11) :: 'stiffness', 'n_columns', &
       'e_modulus', 'inertia', 'column_ends']
+   !> Why a plan variable is refused on another model (the building's model follows).
+   character(len=*), parameter :: plan_only = " describes a building in plan: it applies only with model = 'plan' "
+   !> The `&building` variables of a shear building's storey law (a building in plan: its planes').
+   character(len=*), parameter :: storey_law_variables(3) = [character(len=15) :: 'storey_law', 'yield_shear', &
+      'hardening_ratio']
 
 contains
 
@@ -47,6 +55,8 @@ contains
       real(dp), allocatable :: bay_width(:), column_e(:), column_area(:), column_inertia(:), &
                                beam_e(:), beam_area(:), beam_inertia(:)
       real(dp) :: ref_floor_load, damping_ratio, cd, importance, behaviour_factor, response_reduction
+      real(dp) :: plan_size(2), plan_origin_y, mass_centre(2)
+      real(dp), allocatable :: rot_inertia(:)
       logical :: p_delta
       real(dp), allocatable :: height(:), mass(:), load_coeff(:), stiffness(:), e_modulus(:), &
                                inertia(:), gravity_load(:), yield_shear(:), hardening_ratio(:), &
@@ -55,13 +65,14 @@ contains
       character(len=:), allocatable :: buf
       character(len=512) :: msg
       type(site) :: at
-      integer :: ios, n, i, cap
+      integer :: ios, n, cap
       namelist /building/ name, n_storeys, height, mass, load_coeff, ref_floor_load, stiffness, &
          n_columns, e_modulus, inertia, column_ends, damping_ratio, damping_modes, p_delta, &
          gravity_load, model, n_bays, bay_width, column_e, column_area, column_inertia, beam_e, &
          beam_area, beam_inertia, base, column_elements, rigid_beams, rigid_diaphragm, rigid_columns, &
          geometric, cd, importance, behaviour_factor, response_reduction, storey_law, yield_shear, &
-         hardening_ratio, hinge_law, column_yield_moment, beam_yield_moment, hinge_hardening
+         hardening_ratio, hinge_law, column_yield_moment, beam_yield_moment, hinge_hardening, &
+         plan_size, plan_origin_y, mass_centre, rot_inertia
 
       ! The per-storey arrays as long as the deck's highest element (the lexer checked it
       ! against max_storeys), widened to n_storeys once it is known: a few storeys do not
@@ -99,7 +110,10 @@ contains
       storey_law = ' '
       hinge_law = ' '
       allocate (yield_shear(cap), hardening_ratio(cap), column_yield_moment(cap), beam_yield_moment(cap), &
-                hinge_hardening(cap), source=unset_real)
+                hinge_hardening(cap), rot_inertia(cap), source=unset_real)
+      plan_size = unset_real
+      plan_origin_y = unset_real
+      mass_centre = unset_real
       allocate (bay_width(max_bays), column_e(cap), column_area(cap), column_inertia(cap), &
                 beam_e(cap), beam_area(cap), beam_inertia(cap))
       bay_width = unset_real
@@ -147,6 +161,7 @@ contains
          call widen(beam_e, n)
          call widen(beam_area, n)
          call widen(beam_inertia, n)
+         call widen(rot_inertia, n)
       end if
 
       call take_reals(at, 'height', height, n, '>', cfg%height, error)
@@ -157,25 +172,20 @@ contains
       select case (lower(trim(adjustl(model))))
       case ('', 'shear')
          cfg%model = 'shear'
-         do i = 1, size(frame_variables)
-            if (assigned(at, frame_variables(i))) then
-               call fail(at, trim(frame_variables(i)), trim(frame_variables(i))//" describes a frame: "// &
-                         "it applies only with model = 'frame' (this building is a shear building)", error)
-               return
-            end if
-         end do
+         call refuse_given(at, frame_variables, " describes a frame: it applies only with model = 'frame' "// &
+                           '(this building is a shear building)', error)
+         if (allocated(error)) return
+         call refuse_given(at, plan_variables, plan_only//'(this building is a shear building)', error)
+         if (allocated(error)) return
          call resolve_stiffness(at, n, stiffness, n_columns, e_modulus, inertia, &
                                 column_ends, cfg, error)
       case ('frame')
          cfg%model = 'frame'
-         do i = 1, size(shear_variables)
-            if (assigned(at, shear_variables(i))) then
-               call fail(at, trim(shear_variables(i)), trim(shear_variables(i))//" applies only to a "// &
-                         "shear building; a frame (model = 'frame') takes its stiffness from column_e, "// &
-                         'column_area, column_inertia and the beams', error)
-               return
-            end if
-         end do
+         call refuse_given(at, shear_variables, " applies only to a shear building; a frame (model = 'frame') "// &
+                           'takes its stiffness from column_e, column_area, column_inertia and the beams', error)
+         if (allocated(error)) return
+         call refuse_given(at, plan_variables, plan_only//'(this building is a frame)', error)
+         if (allocated(error)) return
          call resolve_bays(at, n_bays, bay_width, cfg, error)
          if (allocated(error)) return
          call take_group(at, 'column_e', column_e, n, cfg%column_e, error)
@@ -201,8 +211,21 @@ contains
          cfg%rigid_beams = rigid_beams
          cfg%rigid_diaphragm = rigid_diaphragm
          cfg%rigid_columns = rigid_columns
+      case ('plan')
+         cfg%model = 'plan'
+         call refuse_given(at, frame_variables, " describes a frame: it applies only with model = 'frame' "// &
+                           "(this building is a building in plan, model = 'plan')", error)
+         if (allocated(error)) return
+         call refuse_given(at, shear_variables, " applies only to a shear building; a building in plan "// &
+                           "(model = 'plan') takes its storey stiffness from its planes (&plane groups naming "// &
+                           'it: stiffness per storey, kN/m)', error)
+         if (allocated(error)) return
+         call refuse_given(at, storey_law_variables, " is not a variable of a building in plan (model = 'plan'): "// &
+                           'each plane has its own storey law (&plane storey_law, yield_shear, hardening_ratio)', error)
+         if (allocated(error)) return
+         call resolve_plan(at, n, plan_size, plan_origin_y, mass_centre, rot_inertia, cfg, warnings, error)
       case default
-         call fail(at, 'model', "model = '"//trim(adjustl(model))//"', must be 'shear' or 'frame'", error)
+         call fail(at, 'model', "model = '"//trim(adjustl(model))//"', must be 'shear', 'frame' or 'plan'", error)
       end select
       if (allocated(error)) return
 
@@ -217,7 +240,13 @@ contains
          return
       end if
       cfg%damping_ratio = damping_ratio
-      call check_modes(at, n, damping_modes, cfg%damping_modes, error)
+      if (cfg%model == 'plan') then
+         ! Three modes a floor (x, y and torsion alike, in ascending frequency).
+         call check_modes(at, 3*n, damping_modes, cfg%damping_modes, error, &
+                          '3 n_storeys = '//str(3*n)//' (the 3D modes: three a floor)')
+      else
+         call check_modes(at, n, damping_modes, cfg%damping_modes, error)
+      end if
       if (allocated(error)) return
       cfg%p_delta = p_delta
       call take_storey_law(at, storey_law, yield_shear, hardening_ratio, cfg, error)
@@ -300,6 +329,128 @@ contains
       if (raw < lo .or. raw > hi) call warn(at, var, var//' = '//plain_real(raw)//' is outside the usual range '// &
                                             plain_real(lo)//'..'//plain_real(hi)//' ('//usual//'); check the value', warnings)
    end subroutine code_factor
+
+   !> The first of `names` the group assigns is refused: `name` followed by `rule`.
+   pure subroutine refuse_given(at, names, rule, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Variable names, lower case.
+      character(len=*), intent(in) :: names(:)
+      !> Why, after the variable's name.
+      character(len=*), intent(in) :: rule
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i
+
+      do i = 1, size(names)
+         if (assigned(at, names(i))) then
+            call fail(at, trim(names(i)), trim(names(i))//rule, error)
+            return
+         end if
+      end do
+   end subroutine refuse_given
+
+   !> A building in plan: the outline `plan_size` (required, Lx, Ly > 0), the site y of its
+   !> edge y = 0 `plan_origin_y` (default 0), the centre of mass `mass_centre` (default the
+   !> outline's centre; inside the outline) and the rotational inertia of each floor
+   !> `rot_inertia` (n_storeys values > 0; default left to the builder: mass (Lx^2 + Ly^2)/12).
+   !> A radius of gyration sqrt(I/m) beyond the outline's diagonal is warned.
+   pure subroutine resolve_plan(at, n, plan_size, plan_origin_y, mass_centre, rot_inertia, cfg, warnings, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Number of storeys.
+      integer, intent(in) :: n
+      !> Namelist values as read (`unset_real` where not given).
+      real(dp), intent(in) :: plan_size(2), plan_origin_y, mass_centre(2), rot_inertia(:)
+      !> Building being resolved (its masses already).
+      type(building_config), intent(inout) :: cfg
+      !> The deck's plausibility warnings.
+      character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: size_names(2) = ['Lx', 'Ly'], centre_names(2) = ['xm', 'ym']
+      real(dp) :: m, radius, diagonal
+      integer :: i, j
+
+      if (given_count(plan_size) == 0) then
+         call fail(at, 'plan_size', "plan_size is missing: model = 'plan' needs the outline plan_size = Lx, Ly "// &
+                   '(m, > 0; x along the row of buildings, y along the facing facades)', error)
+         return
+      end if
+      if (given_count(plan_size) == 1) then
+         call fail(at, 'plan_size', 'plan_size has 1 value, must have 2: plan_size = Lx, Ly (m, > 0)', error)
+         return
+      end if
+      do i = 1, 2
+         if (.not. is_set(plan_size(i))) then
+            call fail(at, 'plan_size', 'plan_size('//str(i)//') is missing; give plan_size = Lx, Ly (m, > 0)', error)
+            return
+         end if
+         call check_real(at, 'plan_size', plan_size(i), '>', 0.0_dp, error, name='plan_size('//str(i)//')')
+         if (allocated(error)) return
+      end do
+      cfg%plan_size = plan_size
+      if (is_set(plan_origin_y)) then
+         if (.not. ieee_is_finite(plan_origin_y)) then
+            call fail(at, 'plan_origin_y', 'plan_origin_y = '//str(plan_origin_y)//', must be a finite number', error)
+            return
+         end if
+         call check_plausible(at, 'plan_origin_y', plan_origin_y, 'plan_origin_y', error)
+         if (allocated(error)) return
+         cfg%plan_origin_y = plan_origin_y
+      end if
+      cfg%mass_centre = 0.5_dp*plan_size
+      cfg%mass_centre_given = given_count(mass_centre) > 0
+      if (cfg%mass_centre_given) then
+         if (given_count(mass_centre) == 1) then
+            call fail(at, 'mass_centre', 'mass_centre has 1 value, must have 2: mass_centre = xm, ym (m, in '// &
+                      'the outline 0..Lx, 0..Ly)', error)
+            return
+         end if
+         do i = 1, 2
+            if (.not. is_set(mass_centre(i))) then
+               call fail(at, 'mass_centre', 'mass_centre('//str(i)//') is missing; give mass_centre = xm, ym', error)
+               return
+            end if
+            if (.not. ieee_is_finite(mass_centre(i))) then
+               call fail(at, 'mass_centre', 'mass_centre('//str(i)//') = '//str(mass_centre(i))// &
+                         ', must be a finite number', error)
+               return
+            end if
+            if (mass_centre(i) < 0.0_dp .or. mass_centre(i) > plan_size(i)) then
+               call fail(at, 'mass_centre', 'mass_centre('//str(i)//') = '//centre_names(i)//' = '// &
+                         plain_real(mass_centre(i))//' m lies outside the outline: must be in 0..'// &
+                         size_names(i)//' = '//plain_real(plan_size(i))//' m (plan_size; the centre of mass is '// &
+                         "in the outline's coordinates, its corner at 0, 0)", error)
+               return
+            end if
+         end do
+         cfg%mass_centre = mass_centre
+      end if
+      if (given_count(rot_inertia) == 0) return
+      call take_reals(at, 'rot_inertia', rot_inertia, n, '>', cfg%rot_inertia, error)
+      if (allocated(error)) return
+      diagonal = sqrt(plan_size(1)**2 + plan_size(2)**2)
+      do j = 1, n
+         if (allocated(cfg%mass)) then
+            m = cfg%mass(j)
+         else if (allocated(cfg%load_coeff)) then
+            m = cfg%load_coeff(j)*cfg%ref_floor_load/g_accel
+         else
+            return
+         end if
+         radius = sqrt(cfg%rot_inertia(j)/m)
+         if (radius > diagonal) then
+            call warn(at, 'rot_inertia', 'rot_inertia('//str(j)//') = '//plain_significant(cfg%rot_inertia(j), 4)// &
+                      ' t m^2 gives a radius of gyration sqrt(I/m) = '//plain_significant(radius, 4)// &
+                      ' m, more than the outline''s diagonal '//plain_significant(diagonal, 4)//' m: no mass '// &
+                      'inside the outline has it; rot_inertia is in t m^2 per floor about the centre of mass '// &
+                      '(uniform floor: mass (Lx^2 + Ly^2)/12 = '// &
+                      plain_significant(m*diagonal**2/12.0_dp, 4)//' t m^2)', warnings)
+            return
+         end if
+      end do
+   end subroutine resolve_plan
 
    !> Whether the deck assigns `var` in this group occurrence.
    pure logical function assigned(at, var)
@@ -549,10 +700,10 @@ contains
    end subroutine resolve_stiffness
 
    !> Rayleigh modes: default (1, 2); with one storey only mode 1, stored as (1, 1).
-   pure subroutine check_modes(at, n, raw, modes, error)
+   pure subroutine check_modes(at, n, raw, modes, error, limit)
       !> Where messages point.
       type(site), intent(in) :: at
-      !> Number of storeys.
+      !> Number of modes (the storeys; a building in plan: three a floor).
       integer, intent(in) :: n
       !> `damping_modes` as read (`unset_int` where not given).
       integer, intent(in) :: raw(2)
@@ -560,8 +711,13 @@ contains
       integer, intent(out) :: modes(2)
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
+      !> How the messages name the largest mode (default 'n_storeys = n').
+      character(len=*), intent(in), optional :: limit
+      character(len=:), allocatable :: largest
       integer :: i, given
 
+      largest = 'n_storeys = '//str(n)
+      if (present(limit)) largest = limit
       given = count(raw /= unset_int)
       if (raw(1) == unset_int .and. raw(2) /= unset_int) then
          call fail(at, 'damping_modes', 'damping_modes(1) is missing', error)
@@ -590,7 +746,7 @@ contains
       do i = 1, 2
          if (raw(i) < 1 .or. raw(i) > n) then
             call fail(at, 'damping_modes', 'damping_modes('//str(i)//') = '//str(raw(i))// &
-                      ', must be in 1..n_storeys = '//str(n), error)
+                      ', must be in 1..'//largest, error)
             return
          end if
       end do

@@ -2,11 +2,12 @@
 !> parameters (each law's own variables are checked by its module: pound_law_registry).
 module pound_deck_contact
    use pound_config, only: building_config, contact_config, is_frame, deck_warning_len
+   use pound_building_spec, only: is_plan
    use pound_deck_checks, only: check_real, fail, warn, given_count, is_set, read_failed, site, site_of, unset_int, &
                                 unset_real, values_text
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_law_registry, only: registered_law_names, law_is_registered, law_reads, law_restitution, law_take_deck, &
-                                 restitution_law_names, law_variables
+                                 restitution_law_names, law_variables, law_stiffness_linear
    use pound_joint_law, only: law_input, law_variable
    use pound_deck_variables, only: max_envelope_points, max_pairs, word_len
    use pound_deck_stiffness, only: stiffness_has_default, default_joint_stiffness
@@ -16,7 +17,7 @@ module pound_deck_contact
    implicit none
    private
 
-   public :: read_contact, elevation_tol
+   public :: read_contact, elevation_tol, find_building
 
    !> Elevations closer than this are the same point (m): a pair's elevation and a floor's.
    real(dp), parameter :: elevation_tol = 1.0e-6_dp
@@ -45,7 +46,7 @@ contains
       integer, allocatable :: floors_left(:), floors_right(:)
       real(dp), allocatable :: gap(:), envelope_d(:), envelope_r(:), elevations(:)
       real(dp) :: stiffness, dashpot, yield_force, second_slope, peak_force, peak_penetration, &
-                  fracture_penetration, restitution
+                  fracture_penetration, restitution, friction, shear_stiffness
       integer :: n_segments
       character(len=:), allocatable :: buf
       character(len=512) :: msg
@@ -55,7 +56,7 @@ contains
       integer :: ios, n, k, i
       namelist /contact/ left, right, floors_left, floors_right, gap, law, stiffness, dashpot, &
          dashpot_rate, yield_force, second_slope, envelope_d, envelope_r, peak_force, peak_penetration, &
-         fracture_penetration, n_segments, restitution, elevations, variant
+         fracture_penetration, n_segments, restitution, elevations, variant, friction, shear_stiffness
 
       ! One slot more than allowed, so that too many pairs get our message, not gfortran's.
       allocate (floors_left(max_pairs + 1), floors_right(max_pairs + 1), gap(max_pairs + 1), &
@@ -81,6 +82,8 @@ contains
       n_segments = unset_int
       dashpot = unset_real
       restitution = unset_real
+      friction = unset_real
+      shear_stiffness = unset_real
       at = site_of(path, g)
       call group_text(text, g, buf)
       msg = ' '
@@ -235,6 +238,8 @@ contains
                    "', must be 'backward_euler' or 'trapezoidal'", error)
          return
       end if
+      call take_friction(at, friction, shear_stiffness, is_plan(buildings(cfg%left_index)) .or. &
+                         is_plan(buildings(cfg%right_index)), cfg, error, warnings)
 
    contains
 
@@ -300,6 +305,61 @@ contains
 
 
    end subroutine read_contact
+
+   !> `friction` (Coulomb mu >= 0, default 0) and `shear_stiffness` (kt in kN/m, > 0 when given) of
+   !> group `cfg` (its law and stiffness resolved), only between buildings in plan (a planar
+   !> building has no motion along the facades). kt defaults to the group's stiffness k0 for
+   !> the laws whose stiffness is linear (kN/m; pound_law_registry `law_stiffness_linear`) and
+   !> is required for the others (the Hertz family, kN/m^(3/2)) when mu > 0. Stored resolved:
+   !> `cfg%shear_stiffness` = 0 only without friction and without a given kt. A mu above 1 is warned.
+   pure subroutine take_friction(at, friction, shear_stiffness, in_plan, cfg, error, warnings)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> As read (`unset_real`: not given).
+      real(dp), intent(in) :: friction, shear_stiffness
+      !> Whether the pair's buildings are in plan.
+      logical, intent(in) :: in_plan
+      !> The group (law and stiffness resolved).
+      type(contact_config), intent(inout) :: cfg
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+      !> The deck's warnings.
+      character(len=deck_warning_len), allocatable, intent(inout), optional :: warnings(:)
+
+      if (is_set(friction)) then
+         call check_real(at, 'friction', friction, '>=', 0.0_dp, error)
+         if (allocated(error)) return
+         if (friction > 0.0_dp .and. .not. in_plan) then
+            call fail(at, 'friction', 'friction = '//plain_real(friction)//' applies only between buildings '// &
+                      "in plan (model = 'plan'): a planar building has no tangential DOF (no motion along the "// &
+                      'facing facades) for friction to act on', error)
+            return
+         end if
+         cfg%friction = friction
+         if (friction > 1.0_dp .and. present(warnings)) call warn(at, 'friction', 'friction = '// &
+            plain_real(friction)//' is above 1: Coulomb coefficients between concrete or masonry facades are '// &
+            'about 0.3 to 0.8; a value above 1 nearly locks the facades together while in contact; check the value', &
+            warnings)
+      end if
+      if (is_set(shear_stiffness)) then
+         if (.not. in_plan) then
+            call fail(at, 'shear_stiffness', 'shear_stiffness applies only between buildings in plan '// &
+                      "(model = 'plan', with friction): a planar building has no tangential DOF", error)
+            return
+         end if
+         call check_real(at, 'shear_stiffness', shear_stiffness, '>', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%shear_stiffness = shear_stiffness
+      else if (cfg%friction > 0.0_dp) then
+         if (.not. law_stiffness_linear(cfg%law)) then
+            call fail(at, 'shear_stiffness', 'shear_stiffness is missing: friction = '//plain_real(cfg%friction)// &
+                      " with law = '"//cfg%law//"' needs the tangential stiffness kt (kN/m, > 0) of the pair; "// &
+                      "the law's stiffness is a Hertz coefficient (kN/m^(3/2)), no default for kt", error)
+            return
+         end if
+         cfg%shear_stiffness = cfg%stiffness
+      end if
+   end subroutine take_friction
 
    !> A gap above `gap_high` m, or above `gap_height_fraction` of the lower building's height,
    !> most likely in cm or mm instead of m (`gap = 4.0` meant as 4 cm): warned (one line, the
@@ -412,6 +472,10 @@ contains
       if (z > zf) then
          call fail(at, 'elevations', what//' is above the roof of building '//b%name//' ('//str(zf)// &
                    ' m); every pair needs a point of both buildings', error)
+      else if (is_plan(b)) then
+         call fail(at, 'elevations', what//' lies between floors '//str(j - 1)//' ('//str(zf - b%height(j))// &
+                   ' m) and '//str(j)//' ('//str(zf)//' m) of building '//b%name//', a building in plan '// &
+                   "(DOFs only at its floors): give a floor's elevation", error)
       else if (.not. is_frame(b)) then
          call fail(at, 'elevations', what//' lies between floors '//str(j - 1)//' ('//str(zf - b%height(j))// &
                    ' m) and '//str(j)//' ('//str(zf)//' m) of building '//b%name//', a shear building '// &

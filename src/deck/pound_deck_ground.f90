@@ -1,6 +1,8 @@
 !> Reader of `&ground`: a pulse, a record file resolved relative to the deck, or a synthetic
-!> motion (pound_synthetic_motion), each with a name and a scaling for a suite.
+!> motion (pound_synthetic_motion), each with a name and a scaling for a suite, its direction
+!> (`angle`) and, for a record, an optional second horizontal component (`file_2`, `scale_2`).
 module pound_deck_ground
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_config, only: ground_config, deck_warning_len
    use pound_constants, only: g_accel
    use pound_deck_checks, only: check_real, fail, take_real, is_set, read_failed, require_real, site, site_of, &
@@ -40,20 +42,19 @@ contains
       !> The deck's plausibility warnings, this group's appended.
       character(len=deck_warning_len), allocatable, intent(inout) :: warnings(:)
       character(len=word_len) :: kind, format, name, scale_to, filter, envelope
-      character(len=path_len) :: file, folder, pattern
-      real(dp) :: x0, a, b, scale, target, target_g, period
+      character(len=path_len) :: file, folder, pattern, file_2
+      real(dp) :: x0, a, b, scale, target, target_g, period, angle, scale_2
       real(dp) :: ground_frequency, ground_damping, filter_frequency, filter_damping
       real(dp) :: rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga
       integer :: ios, seed
       logical :: exists, histories
       character(len=:), allocatable :: buf
-      character(len=:), allocatable :: resolved
       character(len=512) :: msg
       type(site) :: at
       namelist /ground/ kind, x0, a, b, file, format, scale, name, scale_to, target, period, &
          filter, ground_frequency, ground_damping, filter_frequency, filter_damping, envelope, &
          rise_time, plateau_end, decay_rate, peak_fraction, end_level, duration, pga, seed, histories, target_g, &
-         folder, pattern
+         folder, pattern, angle, file_2, scale_2
 
       kind = ' '
       format = ' '
@@ -84,6 +85,9 @@ contains
       pga = unset_real
       seed = unset_int
       histories = .false.
+      angle = unset_real
+      file_2 = ' '
+      scale_2 = unset_real
       at = site_of(path, g)
       if (n_motions > 1) at%label = at%label//' #'//str(g%occurrence)
       call group_text(text, g, buf)
@@ -184,25 +188,86 @@ contains
                       'directory unless absolute)', error)
             return
          end if
-         if (len_trim(file) == len(file)) then
-            call fail(at, 'file', 'file is longer than '//str(len(file) - 1)//' characters', error)
-            return
-         end if
-         resolved = resolve_path(path, trim(adjustl(file)))
-         inquire (file=resolved, exist=exists)
-         if (.not. exists) then
-            call fail(at, 'file', "file = '"//trim(adjustl(file))//"': record file '"// &
-                      resolved//"' does not exist", error)
-            return
-         end if
-         cfg%file = resolved
+         call existing_record('file', file, cfg%file, error)
+         if (allocated(error)) return
          call record_format(error)
       case default
          call fail(at, 'kind', "kind = '"//trim(adjustl(kind))//"', must be 'pulse', 'record', "// &
                    "'record_set' or 'synthetic'", error)
       end select
+      if (allocated(error)) return
+      call take_components(error)
 
    contains
+
+      !> A record file `var` as given (`raw`, not blank): resolved relative to the deck's
+      !> directory unless absolute; it must exist.
+      subroutine existing_record(var, raw, resolved, error)
+         character(len=*), intent(in) :: var, raw
+         character(len=:), allocatable, intent(out) :: resolved
+         type(error_type), allocatable, intent(out) :: error
+         character(len=:), allocatable :: where
+
+         if (len_trim(raw) == len(raw)) then
+            call fail(at, var, var//' is longer than '//str(len(raw) - 1)//' characters', error)
+            return
+         end if
+         where = resolve_path(path, trim(adjustl(raw)))
+         inquire (file=where, exist=exists)
+         if (.not. exists) then
+            call fail(at, var, var//" = '"//trim(adjustl(raw))//"': record file '"//where//"' does not exist", error)
+            return
+         end if
+         resolved = where
+      end subroutine existing_record
+
+      !> `angle` (degrees, default 0, finite; beyond one turn a warning), and for a record the
+      !> second component `file_2` (resolved like `file`, must exist) with `scale_2` (default
+      !> `scale`; not with `scale_to`, whose factor scales both components).
+      subroutine take_components(error)
+         type(error_type), allocatable, intent(out) :: error
+
+         if (is_set(angle)) then
+            if (.not. ieee_is_finite(angle)) then
+               call fail(at, 'angle', 'angle = '//str(angle)//', must be a finite number (degrees from +x '// &
+                         'toward +y)', error)
+               return
+            end if
+            cfg%angle = angle
+            if (abs(angle) > 360.0_dp) call warn(at, 'angle', 'angle = '//plain_real(angle)//' degrees is more '// &
+               'than a full turn: the direction is '//plain_real(modulo(angle, 360.0_dp))//' degrees; angle is '// &
+               'in degrees from +x toward +y (not radians): check the value', warnings)
+         end if
+         cfg%scale_2 = cfg%scale
+         if (len_trim(file_2) == 0) then
+            if (is_set(scale_2)) call fail(at, 'scale_2', 'scale_2 applies only with file_2 (the scale factor '// &
+                                           "of the second horizontal component's record)", error)
+            return
+         end if
+         if (cfg%kind == 'record_set') then
+            call fail(at, 'file_2', "file_2 applies only to kind = 'record': each file of a record set is a "// &
+                      "motion of one component; give a two-component record as a &ground kind = 'record' with "// &
+                      'file and file_2', error)
+            return
+         end if
+         if (cfg%kind /= 'record') then
+            call fail(at, 'file_2', "file_2 applies only to kind = 'record' (the second horizontal component's "// &
+                      "record file; this motion is kind = '"//cfg%kind//"')", error)
+            return
+         end if
+         call existing_record('file_2', file_2, cfg%file_2, error)
+         if (allocated(error)) return
+         if (.not. is_set(scale_2)) return
+         if (len(cfg%scale_to) > 0) then
+            call fail(at, 'scale_2', "scale_2 and scale_to exclude each other: scale_to's factor, computed on "// &
+                      'the first component (file), scales both components', error)
+            return
+         end if
+         call check_real(at, 'scale_2', scale_2, '/=', 0.0_dp, error)
+         if (allocated(error)) return
+         cfg%scale_2 = scale_2
+         cfg%scale_2_given = .true.
+      end subroutine take_components
 
       !> `format` and `scale` of a record (or of every record of a set).
       subroutine record_format(error)

@@ -161,7 +161,7 @@ contains
             if (.not. any(known_groups == gname) .or. len(gname) == 0) then
                call fatal_error(error, path//':'//str(line)//": unknown namelist group '&"// &
                                 printable(text(i + 1:j))//"'; known groups: &analysis, "// &
-                                '&ground, &building, &contact, &sweep, &stripes, &hazard', status_input)
+                                '&ground, &building, &plane, &contact, &sweep, &stripes, &hazard', status_input)
                return
             end if
             if (n_groups == size(groups)) then
@@ -398,6 +398,7 @@ contains
                   vname = lower(text(toks%t(2, k):toks%t(3, k)))
                   why = text(toks%t(2, neq + 1) + 1:toks%t(3, neq + 1) - 1)
                   if (vname == 'name' .or. vname == 'left') left = why
+                  if (g%name == 'plane' .and. vname == 'building') left = why
                   if (vname == 'right') right = why
                end if
             end if
@@ -411,7 +412,7 @@ contains
          end if
       end do
       starts(na + 1) = toks%n + 1
-      if (g%name == 'building' .and. len(left) > 0) label = label//' ('//printable(left)//')'
+      if ((g%name == 'building' .or. g%name == 'plane') .and. len(left) > 0) label = label//' ('//printable(left)//')'
       if (g%name == 'contact' .and. len(left) > 0 .and. len(right) > 0) &
          label = label//' ('//printable(left)//', '//printable(right)//')'
 
@@ -688,13 +689,13 @@ contains
       g%vars(g%n_vars)%hi = hi
    end subroutine add_var
 
-   !> `&name` for groups that occur once, `&name #k` for `&building` and `&contact`.
+   !> `&name` for groups that occur once, `&name #k` for `&building`, `&contact` and `&plane`.
    pure function group_label(g) result(s)
       !> The group occurrence.
       type(group_ref), intent(in) :: g
       character(len=:), allocatable :: s
 
-      if (g%name == 'building' .or. g%name == 'contact') then
+      if (g%name == 'building' .or. g%name == 'contact' .or. g%name == 'plane') then
          s = '&'//g%name//' #'//str(g%occurrence)
       else
          s = '&'//g%name

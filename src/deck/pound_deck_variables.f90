@@ -16,7 +16,7 @@ module pound_deck_variables
              variable_list, group_variable_count, findloc_name, join
    public :: max_storeys, max_name_length, max_pairs, max_columns, max_steps, title_len, path_len, &
              word_len, max_substeps, max_envelope_points, max_segments, max_bays, max_column_elements, &
-             frame_variables, max_risk_points
+             frame_variables, plan_variables, max_risk_points
 
    !> Largest number of storeys a `&building` may have.
    integer, parameter :: max_storeys = 20000
@@ -26,6 +26,9 @@ module pound_deck_variables
    integer, parameter :: max_bays = 1000
    !> Largest number of elements per storey column of a frame.
    integer, parameter :: max_column_elements = 100
+   !> The `&building` variables that describe a building in plan (only with model = 'plan').
+   character(len=*), parameter :: plan_variables(4) = [character(len=13) :: 'plan_size', 'plan_origin_y', &
+      'mass_centre', 'rot_inertia']
    !> The `&building` variables that describe a frame (only with model = 'frame').
    character(len=*), parameter :: frame_variables(14) = [character(len=15) :: 'n_bays', 'bay_width', &
       'column_e', 'column_area', 'column_inertia', 'beam_e', 'beam_area', 'beam_inertia', 'base', &
@@ -46,8 +49,8 @@ module pound_deck_variables
    integer, parameter :: max_risk_points = 1000
 
    !> The groups a deck may hold.
-   character(len=*), parameter :: known_groups(7) = &
-      [character(len=8) :: 'analysis', 'ground', 'building', 'contact', 'sweep', 'stripes', 'hazard']
+   character(len=*), parameter :: known_groups(8) = &
+      [character(len=8) :: 'analysis', 'ground', 'building', 'contact', 'sweep', 'stripes', 'hazard', 'plane']
 
    !> One variable of one group.
    type :: var_spec
@@ -67,7 +70,7 @@ module pound_deck_variables
 
    !> Every variable of every group that is not a joint law's, in the order the messages list
    !> them (`variables` inserts the laws' at `laws_marker`).
-   type(var_spec), parameter :: fixed_variables(117) = [ &
+   type(var_spec), parameter :: fixed_variables(133) = [ &
       var_spec('analysis', 'title', 'c', 0), var_spec('analysis', 'dt', 'r', 0), &
       var_spec('analysis', 't_end', 'r', 0), var_spec('analysis', 't_free', 'r', 0), &
       var_spec('analysis', 'output_every', 'i', 0), &
@@ -134,7 +137,15 @@ module pound_deck_variables
       var_spec('stripes', 'target_lambda', 'r', 0), var_spec('stripes', 'target_quantities', 'c', 0), &
       var_spec('hazard', 'im', 'r', max_risk_points), var_spec('hazard', 'im_g', 'r', max_risk_points), &
       var_spec('hazard', 'rate', 'r', max_risk_points), var_spec('hazard', 'years', 'r', 0), &
-      var_spec('hazard', 'target_probability', 'r', 0)]
+      var_spec('hazard', 'target_probability', 'r', 0), &
+      var_spec('building', 'plan_size', 'r', 2), var_spec('building', 'plan_origin_y', 'r', 0), &
+      var_spec('building', 'mass_centre', 'r', 2), var_spec('building', 'rot_inertia', 'r', max_storeys), &
+      var_spec('plane', 'building', 'c', 0), var_spec('plane', 'direction', 'c', 0), &
+      var_spec('plane', 'position', 'r', 0), var_spec('plane', 'stiffness', 'r', max_storeys), &
+      var_spec('plane', 'storey_law', 'c', 0), var_spec('plane', 'yield_shear', 'r', max_storeys), &
+      var_spec('plane', 'hardening_ratio', 'r', max_storeys), &
+      var_spec('contact', 'friction', 'r', 0), var_spec('contact', 'shear_stiffness', 'r', 0), &
+      var_spec('ground', 'angle', 'r', 0), var_spec('ground', 'file_2', 'c', 0), var_spec('ground', 'scale_2', 'r', 0)]
 
 contains
 
