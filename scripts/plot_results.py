@@ -108,7 +108,9 @@ def _text(value):
 
 
 def parse_pair(label, names):
-    """'A:1-B:3' -> ('A', 1, 'B', 3), building names checked against the model."""
+    """'A:1-B:3' -> ('A', 1, 'B', 3), building names checked against the model (a contact point of
+    buildings in plan, 'A:1-B:3@y=2.50m', is its pair's)."""
+    label = label.split("@")[0]
     for m in re.finditer(r"-", label):
         left, right = label[: m.start()], label[m.end():]
         lm = re.fullmatch(r"(.+):(\d+)", left)
@@ -134,6 +136,7 @@ def pair_elevations(label, names, heights):
             return (m.group(1), float(np.sum(h[:j]))) if 1 <= j <= len(h) else None
         return m.group(1), float(m.group(3))
 
+    label = label.split("@")[0]
     for m in re.finditer(r"-", label):
         a, b = end(label[: m.start()]), end(label[m.end():])
         if a and b:

@@ -60,7 +60,7 @@ set(POUND_SOURCES
   contact/pound_law_hertz_damp.f90 contact/pound_law_jankowski.f90
   contact/pound_law_registry.f90 contact/pound_contact_pair.f90
   contact/pound_joint_state.f90 contact/pound_contact_lcp.f90
-  contact/pound_contact_system.f90 contact/pound_contact_smooth.f90 contact/pound_contact.f90
+  contact/pound_contact_friction.f90 contact/pound_contact_system.f90 contact/pound_contact_friction_lcp.f90 contact/pound_contact_smooth.f90 contact/pound_contact.f90
   # contact: the contact half-period of a joint (substep count), ends without mass condensed
   contact/pound_contact_period.f90
   # analyses: response records, uncoupled and coupled runs, influence coefficients, gap sweep

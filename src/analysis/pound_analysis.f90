@@ -39,6 +39,7 @@ module pound_analysis
                             joint_history, joint_history_init, joint_history_record, &
                             lcp_solver_lemke, contact_track_closing
    use pound_deck_variables, only: max_substeps
+   use pound_contact_friction, only: friction_history_record
    use pound_storey_yield, only: storey_yield_set, storey_yield_result, yield_sets_init, &
                                  yield_sample, yield_results, yield_energy_step
    use pound_storey_collapse, only: yield_hold, yield_freeze
@@ -523,6 +524,7 @@ contains
          res%energy(e_contact, k) = cs%element_work - cs%plastic_work
          res%energy(e_plastic, k) = cs%plastic_work
          call joint_history_record(res%joints, k, cs%joint)
+         if (cs%fr%n > 0) call friction_history_record(res%joints, k, cs%fr, cs%m)
       end if
       sample(1:n_energy) = res%energy(:, k)
       sample(e_numerical) = 0.0_dp

@@ -70,6 +70,8 @@ module pound_contact
    use pound_joint_law, only: law_iteration_limit
    use pound_contact_smooth, only: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_speeds, &
                                    smooth_unsettled
+   use pound_contact_friction_lcp, only: friction_start, friction_assemble, friction_forces, friction_opening, &
+                                         friction_q, friction_apply, friction_commit
    use pound_contact_system, only: contact_system, contact_init, contact_init_flexibility, contact_swap_step, &
                                    lcp_workspace, residual_limit, fallback_max_rows, initial_hinges, &
                                    lcp_solver_auto, lcp_solver_lemke, joint_constants
@@ -258,6 +260,8 @@ contains
       do k = 1, cs%m
          if (cs%joint(k)%r /= 0.0_dp) cs%vp = cs%vp + cs%f(:, k)*cs%joint(k)%r
       end do
+      ! Friction (pound_contact_friction_lcp): the tangential forces released too.
+      if (cs%fr%n > 0) call friction_start(cs, states)
       ! The smooth joints' closing speeds at the step's start (pound_contact_smooth).
       if (size(cs%iterating) > 0) call smooth_speeds(cs, states)
       call contact_solve(cs, cs%vp, t, step, error)
@@ -327,6 +331,7 @@ contains
       integer :: k, e, b
       real(dp) :: dr
 
+      if (cs%fr%n > 0) call friction_apply(cs, states, undo)
       do k = 1, cs%m
          dr = cs%r_new(k) - cs%joint(k)%r
          if (dr == 0.0_dp) cycle
@@ -491,8 +496,9 @@ contains
       timed = any(cs%in_lcp)
       if (.not. timed) return
       call system_clock(clock_start, clock_rate)
-      ! Elastic joints only: the active-set method from the previous step's set.
-      if (cs%solver == lcp_solver_auto) then
+      ! Elastic joints only: the active-set method from the previous step's set (not with
+      ! friction: its problem is not symmetric).
+      if (cs%solver == lcp_solver_auto .and. cs%fr%n == 0) then
          if (active_set_step(cs)) then
             call system_clock(clock_end)
             cs%stats%lcp_seconds = cs%stats%lcp_seconds + real(clock_end - clock_start, dp)/real(clock_rate, dp)
@@ -520,6 +526,10 @@ contains
          call assemble(cs, na, n, nonconvex, error)
          if (allocated(error)) return
          if (n == 0) exit
+         if (cs%fr%n > 0) then
+            call friction_assemble(cs, na, n, error)
+            if (allocated(error)) return
+         end if
          cs%stats%largest_lcp = max(cs%stats%largest_lcp, n)
          if (cs%pivot_cap > 0) then
             call lemke_solve(cs%ws, n, cs%mat, cs%qa, cs%za, cs%wa, rep, active_guess=cs%guess(1:n), &
@@ -547,6 +557,7 @@ contains
          cs%r_new = 0.0_dp
          cs%x_new = 0.0_dp
          cs%r_new(cs%act(1:na)) = cs%za(1:na)
+         if (cs%fr%n > 0) call friction_forces(cs, na)
          added = .false.
          do j = 1, na
             k = cs%act(j)
@@ -556,6 +567,7 @@ contains
          do k = 1, cs%m
             if (cs%in_lcp(k) .or. cs%joint(k)%fractured) cycle
             wk = released_opening(cs%f, cs%q, cs%act, na, cs%za, k)
+            if (cs%fr%nt > 0) wk = wk + friction_opening(cs, k)
             if (wk < -residual_limit*qnorm) then
                cs%in_lcp(k) = .true.
                added = .true.
@@ -570,8 +582,15 @@ contains
 
       ! Verify the accepted solution on the full LCP: the assembled rows and the left-out
       ! constraints.
-      call lcp_residual(n, cs%mat, cs%qa, cs%za, cs%wa, cs%f, cs%q, cs%act, na, cs%in_lcp, cs%joint, qnorm, &
-                        resid)
+      if (cs%fr%nt > 0) then
+         ! The joints left out open under the tangential forces too.
+         call friction_q(cs)
+         call lcp_residual(n, cs%mat, cs%qa, cs%za, cs%wa, cs%f, cs%fr%qx, cs%act, na, cs%in_lcp, cs%joint, qnorm, &
+                           resid)
+      else
+         call lcp_residual(n, cs%mat, cs%qa, cs%za, cs%wa, cs%f, cs%q, cs%act, na, cs%in_lcp, cs%joint, qnorm, &
+                           resid)
+      end if
       cs%stats%residual_max = max(cs%stats%residual_max, resid)
       call system_clock(clock_end)
       cs%stats%lcp_seconds = cs%stats%lcp_seconds + real(clock_end - clock_start, dp)/real(clock_rate, dp)
@@ -722,6 +741,7 @@ contains
       call closing_displacements(cs, states, .false.)
       call contact_update(cs, cs%vp, t, dt)
       if (size(cs%iterating) > 0) call smooth_commit(cs)
+      if (cs%fr%n > 0) call friction_commit(cs, states, t)
    end subroutine contact_commit
 
    !> Closing displacements v = B^T u of every constraint into `cs%vp` (left end + u, right

@@ -31,6 +31,7 @@ module pound_contact_law
    public :: contact_law, compile_envelope, rate_trapezoidal, rate_backward_euler, rate_name
    public :: envelope_force, yield_force, yield_segment, is_plastic, plastic_modulus, max_law_points
    public :: restitution_of_ratio, ratio_of_restitution, dashpot_of_restitution, stiffness_units, add_stiffness_unit
+   public :: scale_law_force
 
    !> Dashpot rate by the trapezoidal rule (Newmark's own): d'_{n+1} = (2/dt) (d_{n+1} - d_n) - d'_n.
    integer, parameter :: rate_trapezoidal = 1
@@ -234,6 +235,25 @@ contains
       end do
       law%yh(ns) = plastic_modulus(k0, law%tail_slope)
    end subroutine compile_envelope
+
+   !> Scale the force axis of the rows by `s` > 0: the force at every compression and rate
+   !> becomes s times the law's (stiffness, dashpot, envelope forces, yield forces and plastic
+   !> moduli; the penetrations stay). A contact point that takes a share s of its pair
+   !> (pound_contact_pair, buildings in plan). Piecewise-linear rows only: the smooth laws
+   !> compute their force in the `given` law (`contact_init` refuses them with s /= 1).
+   pure subroutine scale_law_force(law, s)
+      !> The rows.
+      type(contact_law), intent(inout) :: law
+      !> The factor.
+      real(dp), intent(in) :: s
+
+      law%stiffness = s*law%stiffness
+      law%dashpot = s*law%dashpot
+      law%tail_slope = s*law%tail_slope
+      if (allocated(law%env_r)) law%env_r = s*law%env_r
+      if (allocated(law%yr)) law%yr = s*law%yr
+      if (allocated(law%yh)) law%yh = s*law%yh
+   end subroutine scale_law_force
 
    !> The law's deck name ('elastic' for rows without a `given` law).
    pure function law_title(law) result(name)

@@ -14,10 +14,12 @@ module pound_contact_pair
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str
-   use pound_contact_law, only: contact_law, rate_trapezoidal, rate_backward_euler
+   use pound_error, only: fatal_error
+   use pound_contact_law, only: contact_law, rate_trapezoidal, rate_backward_euler, scale_law_force
    use pound_law_registry, only: law_from_config
    use pound_contact_settings, only: contact_config
-   use pound_structure, only: recovery_rows, recover
+   use pound_structure, only: recovery_rows, recover, structure_model, plan_point_row
+   use pound_plan_geometry, only: plane_x, plane_y, plan_dof, plan_ux
    implicit none
    private
 
@@ -43,27 +45,53 @@ module pound_contact_pair
       integer :: dof(2) = 0
       !> Initial gap g (m).
       real(dp) :: gap = 0.0_dp
-      !> Constraint law.
+      !> Constraint law (of a contact point: the pair's law with its force scaled by `share`).
       type(contact_law) :: law
+      !> Buildings in plan: the share of its pair this contact point takes (1/2 of two points,
+      !> 1 of one; `scale_law_force`), the DOF whose lumped mass times `share` is the end's mass
+      !> for the restitution (the floor's u_x: two points of a symmetric pair calibrate the
+      !> pair's dashpot, halved; 0: `end_mass`), and the point's site y (m).
+      real(dp) :: share = 1.0_dp
+      integer :: mass_dof(2) = 0
+      real(dp) :: site_y = 0.0_dp
+      !> Coulomb friction at the point: coefficient mu (0: none, no tangential rows) and the
+      !> point's tangential stiffness kt (kN/m, the pair's `shear_stiffness` times `share`).
+      real(dp) :: friction = 0.0_dp, shear_stiffness = 0.0_dp
+      !> Each end's displacement along the facade (site y) as a sparse row (`plan_point_row`
+      !> of u_y); unset (n = 0) without friction.
+      type(recovery_rows) :: tan_row(2)
    end type contact_pair
 
 contains
 
-   !> One constraint per facing floor pair of the deck's `&contact` groups, in deck order.
-   function pairs_from_config(contacts, names, error) result(pairs)
+   !> One constraint per facing floor pair of the deck's `&contact` groups, in deck order;
+   !> between buildings in plan (`models` given, a building's `plan` allocated), one or two
+   !> contact points per floor pair (`plan_points`).
+   function pairs_from_config(contacts, names, error, models) result(pairs)
       !> The deck's contact groups.
       type(contact_config), intent(in) :: contacts(:)
       !> Building names, in deck order.
       character(len=*), intent(in) :: names(:)
-      !> Error state (a law that cannot be built).
+      !> Error state (a law that cannot be built, facades that do not overlap).
       type(error_type), allocatable, intent(out) :: error
+      !> The structural models, in deck order (needed for buildings in plan).
+      type(structure_model), intent(in), optional :: models(:)
       type(contact_pair), allocatable :: pairs(:)
       type(contact_law) :: law
-      integer :: i, k, n
+      real(dp) :: ys(2)
+      integer :: i, k, n, np, ip
 
       n = 0
       do i = 1, size(contacts)
-         n = n + size(contacts(i)%floor_left)
+         np = 1
+         if (plan_contact(contacts(i), models)) then
+            call plan_points(contacts(i), i, names, models, ys, np, error)
+            if (allocated(error)) then
+               allocate (pairs(0))
+               return
+            end if
+         end if
+         n = n + np*size(contacts(i)%floor_left)
       end do
       allocate (pairs(n))
       n = 0
@@ -80,18 +108,200 @@ contains
                law%dashpot_rate = rate_backward_euler
             end if
             law%restitution = c%restitution
+            if (.not. plan_contact(c, models)) then
+               if (c%friction > 0.0_dp) then
+                  call fatal_error(error, '&contact #'//str(i)//' ('//pair_names(c, names)//'): friction = '// &
+                                   str(c%friction)//' needs buildings in plan (model = ''plan''): a planar '// &
+                                   'pair has no displacement along the facades; set friction = 0')
+                  return
+               end if
+               do k = 1, size(c%floor_left)
+                  n = n + 1
+                  pairs(n)%building = [c%left_index, c%right_index]
+                  pairs(n)%floor = [c%floor_left(k), c%floor_right(k)]
+                  if (allocated(c%elevation)) pairs(n)%elevation = c%elevation(k)
+                  pairs(n)%label = pair_label(pairs(n), names(c%left_index), names(c%right_index))
+                  pairs(n)%gap = c%gap(k)
+                  pairs(n)%law = law
+               end do
+               cycle
+            end if
+            call plan_points(c, i, names, models, ys, np, error)
+            if (allocated(error)) return
+            call plan_law_checks(c, i, names, law, np, error)
+            if (allocated(error)) return
             do k = 1, size(c%floor_left)
-               n = n + 1
-               pairs(n)%building = [c%left_index, c%right_index]
-               pairs(n)%floor = [c%floor_left(k), c%floor_right(k)]
-               if (allocated(c%elevation)) pairs(n)%elevation = c%elevation(k)
-               pairs(n)%label = pair_label(pairs(n), names(c%left_index), names(c%right_index))
-               pairs(n)%gap = c%gap(k)
-               pairs(n)%law = law
+               do ip = 1, np
+                  n = n + 1
+                  call plan_point(pairs(n), c, k, ys(ip), np, law, names, models)
+               end do
             end do
          end associate
       end do
    end function pairs_from_config
+
+   !> Whether a contact group joins buildings in plan (either end a building with `plan`).
+   logical function plan_contact(c, models) result(plan)
+      type(contact_config), intent(in) :: c
+      type(structure_model), intent(in), optional :: models(:)
+
+      plan = .false.
+      if (.not. present(models)) return
+      if (c%left_index > 0) plan = allocated(models(c%left_index)%plan)
+      if (c%right_index > 0) plan = plan .or. allocated(models(c%right_index)%plan)
+   end function plan_contact
+
+   !> 'A-B' of a contact group, for messages ('wall' for a rigid neighbour).
+   function pair_names(c, names) result(s)
+      type(contact_config), intent(in) :: c
+      character(len=*), intent(in) :: names(:)
+      character(len=:), allocatable :: s
+
+      s = side_name(names, c%left_index)//'-'//side_name(names, c%right_index)
+   end function pair_names
+
+   !> The name of building b ('wall' for 0, a rigid neighbour).
+   pure function side_name(names, b) result(t)
+      character(len=*), intent(in) :: names(:)
+      integer, intent(in) :: b
+      character(len=:), allocatable :: t
+
+      t = 'wall'
+      if (b > 0) t = trim(names(b))
+   end function side_name
+
+   !> The site y of the contact points of a group between buildings in plan: the overlap
+   !> [y_lo, y_hi] = [max(y0_A, y0_B), min(y0_A + Ly_A, y0_B + Ly_B)] of A's right facade and
+   !> B's left facade (a rigid neighbour spans the other's facade); y_lo > y_hi is refused,
+   !> y_lo = y_hi is one point, else two (y_lo, y_hi).
+   subroutine plan_points(c, i, names, models, ys, np, error)
+      type(contact_config), intent(in) :: c
+      integer, intent(in) :: i
+      character(len=*), intent(in) :: names(:)
+      type(structure_model), intent(in) :: models(:)
+      real(dp), intent(out) :: ys(2)
+      integer, intent(out) :: np
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: lo, hi
+      character(len=:), allocatable :: spans
+      integer :: e, b
+
+      lo = -huge(1.0_dp)
+      hi = huge(1.0_dp)
+      spans = ''
+      np = 0
+      ys = 0.0_dp
+      do e = 1, 2
+         b = merge(c%left_index, c%right_index, e == 1)
+         if (b == 0) cycle
+         if (.not. allocated(models(b)%plan)) then
+            call fatal_error(error, '&contact #'//str(i)//' ('//pair_names(c, names)//'): building '// &
+                             trim(names(b))//' is not in plan; in a deck with a ''plan'' building every '// &
+                             'building is ''plan''')
+            return
+         end if
+         associate (g => models(b)%plan)
+            lo = max(lo, g%y0)
+            hi = min(hi, g%y0 + g%ly)
+            if (len(spans) > 0) spans = spans//', '
+            spans = spans//trim(names(b))//' spans y = '//str(g%y0)//' .. '//str(g%y0 + g%ly)//' m'
+         end associate
+      end do
+      if (lo > hi) then
+         call fatal_error(error, '&contact #'//str(i)//' ('//pair_names(c, names)//'): the facing facades '// &
+                          'do not overlap along y ('//spans//'): no contact point; move plan_origin_y or '// &
+                          'drop the &contact')
+         return
+      end if
+      if (lo == hi) then
+         np = 1
+         ys(1) = lo
+      else
+         np = 2
+         ys = [lo, hi]
+      end if
+   end subroutine plan_points
+
+   !> Laws a contact point of buildings in plan cannot take: a smooth law (its force is the
+   !> law's own, not scaled) at two points, or with friction.
+   subroutine plan_law_checks(c, i, names, law, np, error)
+      type(contact_config), intent(in) :: c
+      integer, intent(in) :: i, np
+      character(len=*), intent(in) :: names(:)
+      type(contact_law), intent(in) :: law
+      type(error_type), allocatable, intent(out) :: error
+      logical :: smooth
+
+      smooth = .false.
+      if (allocated(law%given)) smooth = law%given%iterates()
+      if (.not. smooth) return
+      if (c%friction > 0.0_dp) then
+         call fatal_error(error, '&contact #'//str(i)//' ('//pair_names(c, names)//'): friction = '// &
+                          str(c%friction)//' with the smooth law '''//law%title()//''' is not available '// &
+                          '(friction is solved with the piecewise-linear laws); set friction = 0 or take a '// &
+                          'piecewise-linear law')
+      else if (np > 1) then
+         call fatal_error(error, '&contact #'//str(i)//' ('//pair_names(c, names)//'): the smooth law '''// &
+                          law%title()//''' cannot be shared by the two contact points of overlapping '// &
+                          'facades (its force is not scaled); take a piecewise-linear law')
+      end if
+   end subroutine plan_law_checks
+
+   !> Contact point of floor pair k of group c at site y: its ends (u_x and u_y rows of A's
+   !> right facade x = Lx_A and B's left facade x = 0), the pair's law with its force scaled
+   !> by the point's share (1/np), its friction and tangential stiffness, its label.
+   subroutine plan_point(p, c, k, y, np, law, names, models)
+      type(contact_pair), intent(inout) :: p
+      type(contact_config), intent(in) :: c
+      integer, intent(in) :: k, np
+      real(dp), intent(in) :: y
+      type(contact_law), intent(in) :: law
+      character(len=*), intent(in) :: names(:)
+      type(structure_model), intent(in) :: models(:)
+      real(dp) :: px
+      integer :: e, b, f
+
+      p%building = [c%left_index, c%right_index]
+      p%floor = [c%floor_left(k), c%floor_right(k)]
+      p%label = pair_label(p, side_name(names, c%left_index), side_name(names, c%right_index))//'@y='//site_text(y)
+      p%gap = c%gap(k)
+      p%share = 1.0_dp/real(np, dp)
+      p%site_y = y
+      p%law = law
+      if (np > 1) call scale_law_force(p%law, p%share)
+      p%friction = c%friction
+      if (c%friction > 0.0_dp) then
+         if (c%shear_stiffness > 0.0_dp) then
+            p%shear_stiffness = p%share*c%shear_stiffness
+         else
+            p%shear_stiffness = p%law%stiffness
+         end if
+      end if
+      do e = 1, 2
+         b = p%building(e)
+         f = p%floor(e)
+         if (b == 0) cycle
+         px = merge(models(b)%plan%lx, 0.0_dp, e == 1)
+         p%end_row(e) = plan_point_row(models(b), f, px, y - models(b)%plan%y0, plane_x)
+         if (c%friction > 0.0_dp) p%tan_row(e) = plan_point_row(models(b), f, px, y - models(b)%plan%y0, plane_y)
+         p%mass_dof(e) = plan_dof(f, plan_ux)
+      end do
+   end subroutine plan_point
+
+   !> A site y in labels: metres with at least two and at most three decimals, a negative
+   !> value written 'neg' (a label holds no '-' but its separator): '2.50m', 'neg1.25m'.
+   pure function site_text(y) result(s)
+      real(dp), intent(in) :: y
+      character(len=:), allocatable :: s
+      character(len=32) :: buf
+
+      write (buf, '(f0.3)') abs(y)
+      s = trim(adjustl(buf))
+      if (s(1:1) == '.') s = '0'//s
+      if (s(len(s):len(s)) == '0') s = s(1:len(s) - 1)
+      s = s//'m'
+      if (y < 0.0_dp) s = 'neg'//s
+   end function site_text
 
    !> The name of a pair wherever one is named (listing, messages, HDF5 attributes and
    !> paths): '<left building>:<end>-<right building>:<end>', an end being the floor number

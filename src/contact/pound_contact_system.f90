@@ -9,7 +9,8 @@ module pound_contact_system
    use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_integrator, only: integrator, trapezoid_rate
-   use pound_structure, only: structure_model, structure_end_row
+   use pound_structure, only: structure_model, structure_end_row, recovery_rows, recover
+   use pound_contact_friction, only: friction_set, friction_vector
    use pound_contact_law, only: is_plastic, rate_trapezoidal
    use pound_contact_pair, only: contact_pair, end_sign, end_value, end_load, end_mass, end_single_dof
    use pound_joint_state, only: joint_state, plain_law
@@ -108,6 +109,9 @@ module pound_contact_system
       !> released of every force that the steps have predicted so far, at the steps' ends
       !> (`contact_step`) and, where `contact_track_paths` is called, inside them (m).
       real(dp), allocatable :: closing_max(:)
+      !> Coulomb friction at the contact points with mu > 0 (pound_contact_friction; `fr%n`
+      !> = 0: none, and no tangential row anywhere).
+      type(friction_set) :: fr
    end type contact_system
 
 contains
@@ -215,8 +219,109 @@ contains
       call contact_init_flexibility(cs, located, f, states(1)%step_size(), error, states(1)%velocity_rate())
       if (allocated(error)) return
       cs%span = states(1)%path_span()
+      if (any(cs%pair(:)%friction > 0.0_dp)) then
+         call friction_init(cs%fr, cs%pair, y, states, error)
+         if (allocated(error)) return
+         call lcp_workspace(cs, cs%n_max + 2*cs%fr%n, error)
+         if (allocated(error)) return
+      end if
       call move_alloc(y, cs%y)
    end subroutine contact_init
+
+   !> The contact points with friction (mu > 0) of `pairs`: their tangential ends as rows,
+   !> Khat^{-1} C and the condensed flexibilities C^T Khat^{-1} C, C^T Khat^{-1} B and
+   !> B^T Khat^{-1} C, and the step's work arrays.
+   subroutine friction_init(fr, pairs, y, states, error)
+      !> The friction set (built).
+      type(friction_set), intent(out) :: fr
+      !> The constraints, their ends located (their tangential rows' scale is folded here).
+      type(contact_pair), intent(inout) :: pairs(:)
+      !> Khat^{-1} B of every normal end.
+      type(column), intent(in) :: y(:, :)
+      !> Initialised integrators.
+      class(integrator), intent(in) :: states(:)
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i, j, k, l, e, g, b, m, n
+
+      m = size(pairs)
+      n = count(pairs(:)%friction > 0.0_dp)
+      fr%n = n
+      allocate (fr%joint(n), fr%index(m), fr%mu(n), fr%kt(n), fr%y(2, n), fr%gtt(n, n), fr%gtn(n, m), &
+                fr%gnt(m, n), fr%p(n), fr%e(n), fr%force_new(n), fr%slip_new(n), fr%sub(n), fr%jrow(n), &
+                fr%s_mat(n, n), fr%x_mat(n, m + 1 + n), fr%qx(m))
+      fr%index = 0
+      i = 0
+      do k = 1, m
+         if (.not. (pairs(k)%friction > 0.0_dp)) cycle
+         i = i + 1
+         fr%joint(i) = k
+         fr%index(k) = i
+         fr%mu(i) = pairs(k)%friction
+         fr%kt(i) = pairs(k)%shear_stiffness
+         if (.not. (fr%kt(i) > 0.0_dp)) then
+            call fatal_error(error, 'contact '//pairs(k)%label//': friction needs a shear_stiffness > 0')
+            return
+         end if
+         do e = 1, 2
+            b = pairs(k)%building(e)
+            if (b == 0) cycle
+            associate (row => pairs(k)%tan_row(e))
+               if (row%n /= 1) then
+                  call fatal_error(error, 'contact '//pairs(k)%label//': friction needs the end''s '// &
+                                   'displacement along the facade (a building in plan)')
+                  return
+               end if
+               if (any(row%dof(row%start(1):row%start(2) - 1) < 1 .or. &
+                       row%dof(row%start(1):row%start(2) - 1) > states(b)%dofs())) then
+                  call fatal_error(error, 'contact '//pairs(k)%label//': a tangential end row names a DOF '// &
+                                   'outside its building (1..'//str(states(b)%dofs())//')')
+                  return
+               end if
+               row%coef = row%scale(1)*row%coef
+               row%scale(1) = 1.0_dp
+               allocate (fr%y(e, i)%x(states(b)%dofs()))
+               fr%y(e, i)%x = 0.0_dp
+               do l = row%start(1), row%start(2) - 1
+                  fr%y(e, i)%x(row%dof(l)) = fr%y(e, i)%x(row%dof(l)) + row%coef(l)
+               end do
+               call states(b)%solve(fr%y(e, i)%x)
+            end associate
+         end do
+      end do
+      fr%gtt = 0.0_dp
+      fr%gtn = 0.0_dp
+      fr%gnt = 0.0_dp
+      do i = 1, n
+         k = fr%joint(i)
+         do e = 1, 2
+            b = pairs(k)%building(e)
+            if (b == 0) cycle
+            do j = 1, n
+               l = fr%joint(j)
+               do g = 1, 2
+                  if (pairs(l)%building(g) /= b) cycle
+                  fr%gtt(i, j) = fr%gtt(i, j) + end_sign(e)*end_sign(g)*recover(pairs(k)%tan_row(e), 1, fr%y(g, j)%x)
+               end do
+            end do
+            do l = 1, m
+               do g = 1, 2
+                  if (pairs(l)%building(g) /= b) cycle
+                  fr%gtn(i, l) = fr%gtn(i, l) + end_sign(e)*end_sign(g)*recover(pairs(k)%tan_row(e), 1, y(g, l)%x)
+                  fr%gnt(l, i) = fr%gnt(l, i) + end_sign(e)*end_sign(g)*end_value(pairs(l), g, fr%y(e, i)%x)
+               end do
+            end do
+         end do
+      end do
+      if (.not. (all(ieee_is_finite(fr%gtt)) .and. all(ieee_is_finite(fr%gtn)) .and. all(ieee_is_finite(fr%gnt)))) then
+         call fatal_error(error, 'contact: the condensed tangential flexibility C^T Khat^{-1} C is not finite: '// &
+                          'from dt and the buildings'' masses, stiffnesses and damping')
+         return
+      end if
+      fr%force_new = 0.0_dp
+      fr%slip_new = 0.0_dp
+      fr%e = 0.0_dp
+   end subroutine friction_init
 
    !> Dashpot of a joint calibrated to its coefficient of restitution: from the joint
    !> stiffness and the lumped masses of the two facing DOFs (a rigid fixed end: infinite
@@ -235,7 +340,11 @@ contains
       do e = 1, 2
          b = p%building(e)
          if (b == 0) cycle
-         mass(e) = end_mass(p, e, models(b)%mass)
+         if (p%mass_dof(e) > 0) then
+            mass(e) = p%share*models(b)%mass(p%mass_dof(e))
+         else
+            mass(e) = end_mass(p, e, models(b)%mass)
+         end if
          if (.not. (mass(e) > 0.0_dp)) then
             call fatal_error(error, 'contact '//p%label//': restitution needs the mass of floor '// &
                              str(p%floor(e))//' of '//models(b)%name//', which is '//str(mass(e))//' t')
@@ -380,6 +489,7 @@ contains
       type(contact_system), intent(inout) :: other
       type(column), allocatable :: ty(:, :)
       type(active_set_workspace), allocatable :: ta
+      type(friction_vector), allocatable :: ty2(:, :)
 
       call swap(cs%rate, other%rate)
       call swap(cs%span, other%span)
@@ -397,6 +507,14 @@ contains
       call move_alloc(cs%as, ta)
       call move_alloc(other%as, cs%as)
       call move_alloc(ta, other%as)
+      if (cs%fr%n > 0) then
+         call move_alloc(cs%fr%y, ty2)
+         call move_alloc(other%fr%y, cs%fr%y)
+         call move_alloc(ty2, other%fr%y)
+         call swap(cs%fr%gtt, other%fr%gtt)
+         call swap(cs%fr%gtn, other%fr%gtn)
+         call swap(cs%fr%gnt, other%fr%gnt)
+      end if
    end subroutine contact_swap_step
 
 end module pound_contact_system

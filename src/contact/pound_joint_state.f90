@@ -54,6 +54,10 @@ module pound_joint_state
       real(dp), allocatable :: force(:, :), closing(:, :), penetration(:, :), plastic(:, :)
       !> Joint state (`state_open`, `state_elastic`, `state_fractured` or the yield segment).
       integer, allocatable :: state(:, :)
+      !> Contact points with friction (pound_contact_friction): the tangential force T on the
+      !> right building (kN) and the committed slip s_p (m) of every joint (0 without
+      !> friction); unallocated when no point has friction.
+      real(dp), allocatable :: friction(:, :), slip(:, :)
    end type joint_history
 
 contains

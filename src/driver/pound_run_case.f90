@@ -247,7 +247,7 @@ contains
          res%has_uncoupled = .true.
       end if
       if (size(deck%contacts) > 0) then
-         pairs = pairs_from_config(deck%contacts, structure_names(res%models), error)
+         pairs = pairs_from_config(deck%contacts, structure_names(res%models), error, res%models)
          if (allocated(error)) then
             error%message = prefix//error%message
             return

@@ -338,7 +338,7 @@ contains
       logical :: has_probe
       integer :: g
 
-      pairs = pairs_from_config(work%deck%contacts, structure_names(res%models), error)
+      pairs = pairs_from_config(work%deck%contacts, structure_names(res%models), error, res%models)
       if (allocated(error)) return
       call gap_cases_init(cases, analysis_plan_of(work%deck%analysis), work%deck%sweep, res%models, ag, pairs, &
                           res%unc, error, gm)

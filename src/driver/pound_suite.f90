@@ -306,7 +306,7 @@ contains
       type(error_type), allocatable :: error
 
       o%has_probe = .false.
-      pairs = pairs_from_config(ctx%deck%contacts, structure_names(res%models), error)
+      pairs = pairs_from_config(ctx%deck%contacts, structure_names(res%models), error, res%models)
       if (allocated(error)) return
       call gap_cases_init(cases, analysis_plan_of(ctx%deck%analysis), ctx%deck%sweep, res%models, ag, pairs, res%unc, &
                           error, ground)

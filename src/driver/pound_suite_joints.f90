@@ -71,7 +71,7 @@ contains
       real(dp), allocatable :: sweep_all(:, :, :, :)
       integer :: nm, nb, nj, ng, j, m, k, ig, iq
 
-      pairs = pairs_from_config(ctx%deck%contacts, structure_names(ctx%models), error)
+      pairs = pairs_from_config(ctx%deck%contacts, structure_names(ctx%models), error, ctx%models)
       if (allocated(error)) return
       work%joints = find_joints(pairs, structure_names(ctx%models))
       nj = size(work%joints)

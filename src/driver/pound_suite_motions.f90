@@ -290,7 +290,7 @@ contains
       allocate (ag(0:steps_of(deck%analysis%t_end, deck%analysis%dt)))
       call suite_motion_samples(deck, k, models, gm, factor, ag, error)
       if (allocated(error)) return
-      pairs = pairs_from_config(deck%contacts, structure_names(models), error)
+      pairs = pairs_from_config(deck%contacts, structure_names(models), error, models)
    end subroutine suite_motion_setup
 
 end module pound_suite_motions

@@ -52,6 +52,12 @@ contains
       integer :: ib, j, k, a, s, na, nj, n, ns, round, nsol
       logical :: added, nonconvex
 
+      if (cs%fr%n > 0) then
+         call fatal_error(error, 'at t = '//str(t)//' s (step '//str(step)//'): storeys or hinges yield '// &
+                          'while contact points with friction act; friction is not solved together with '// &
+                          'yielding storeys (set friction = 0 or elastic storeys)')
+         return
+      end if
       ! du back to the prediction: the joints' forces of the start of the step, no plastic load.
       call contact_release(cs, st)
       do ib = 1, size(ys)

@@ -316,6 +316,23 @@ contains
             ' FRACTURED at t = ', cs%joint(k)%fracture_time, ' s: it carries nothing for the rest of the analysis'
          call lst%note()
       end do
+      if (cs%fr%n > 0) then
+         ! Coulomb friction at the contact points (pound_contact_friction).
+         write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell('contact point', w)// &
+            '        mu   kt [kN/m]  peak |T| [kN]     t [s]  slip_final [mm]'
+         call lst%note()
+         do k = 1, cs%fr%n
+            associate (p => cs%fr%p(k))
+               write (lst%unit, '(2x,a,f10.3,es12.4,es15.4,a10,es17.4)', iostat=lst%ios, iomsg=lst%msg) &
+                  left_cell(cs%pair(cs%fr%joint(k))%label, w), cs%fr%mu(k), cs%fr%kt(k), p%peak, &
+                  fixed_cell(p%peak_time, 10, 4), mm*p%slip
+               call lst%note()
+            end associate
+         end do
+         write (lst%unit, '(a,es12.4,a)', iostat=lst%ios, iomsg=lst%msg) '  friction work (dissipated): ', &
+            cs%fr%work, ' kJ'
+         call lst%note()
+      end if
       mean_pivots = 0.0_dp
       if (cs%stats%solves > 0) mean_pivots = real(cs%stats%pivots_total, dp)/real(cs%stats%solves, dp)
       write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  LCP (Lemke, lexicographic) statistics:'

@@ -71,7 +71,7 @@ module pound_results_h5
    use pound_structure, only: structure_model, structure_yields, structure_names
    use pound_analysis, only: analysis_result, history_sink
    use pound_analysis_plan, only: output_steps, steps_of
-   use pound_contact, only: contact_system
+   use pound_contact, only: contact_system, joint_history
    use pound_contact_law, only: add_stiffness_unit
    use pound_response, only: response_record, q_u, q_v, q_a_abs, q_drift, q_shear
    use pound_influence, only: building_influence
@@ -472,6 +472,10 @@ contains
          rv = cs%joint(:)%peak_time
          call h5_write(h5, c//'/peak_time', rv, error, units='s')
          if (allocated(error)) return
+         if (cs%fr%n > 0) then
+            call write_friction(h5, c, cs, cpl%joints, error)
+            if (allocated(error)) return
+         end if
          rv = cs%pair(:)%gap
          call h5_write(h5, c//'/gap', rv, error, units='m')
          if (allocated(error)) return
@@ -817,5 +821,44 @@ contains
          labels = labels//cs%pair(k)%label
       end do
    end function pair_list
+
+   !> The contact points' friction (pound_contact_friction) under `/coupled/contact`: peak |T|
+   !> per point (`peak_friction`, 0 for a point without friction) and its time, the final
+   !> slip, the friction work, and the histories of T (`friction_force`) and of the committed
+   !> slip (`slip`), (n_points, n_out) as the joints' other histories.
+   subroutine write_friction(h5, c, cs, joints, error)
+      type(h5_file), intent(inout) :: h5
+      character(len=*), intent(in) :: c
+      type(contact_system), intent(in) :: cs
+      type(joint_history), intent(in) :: joints
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: peak(:), when(:), slip(:), mu(:)
+      integer :: i
+
+      allocate (peak(cs%m), when(cs%m), slip(cs%m), mu(cs%m))
+      peak = 0.0_dp
+      when = 0.0_dp
+      slip = 0.0_dp
+      mu = cs%pair(:)%friction
+      do i = 1, cs%fr%n
+         peak(cs%fr%joint(i)) = cs%fr%p(i)%peak
+         when(cs%fr%joint(i)) = cs%fr%p(i)%peak_time
+         slip(cs%fr%joint(i)) = cs%fr%p(i)%slip
+      end do
+      call h5_write(h5, c//'/peak_friction', peak, error, units='kN')
+      if (allocated(error)) return
+      call h5_write(h5, c//'/peak_friction_time', when, error, units='s')
+      if (allocated(error)) return
+      call h5_write(h5, c//'/slip_final', slip, error, units='m')
+      if (allocated(error)) return
+      call h5_write(h5, c//'/friction', mu, error, units='1')
+      if (allocated(error)) return
+      call h5_write(h5, c//'/friction_work', [cs%fr%work], error, units='kJ')
+      if (allocated(error)) return
+      if (.not. allocated(joints%friction)) return
+      call h5_write(h5, c//'/friction_force', joints%friction, error, units='kN')
+      if (allocated(error)) return
+      call h5_write(h5, c//'/slip', joints%slip, error, units='m')
+   end subroutine write_friction
 
 end module pound_results_h5

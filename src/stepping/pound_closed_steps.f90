@@ -394,6 +394,10 @@ contains
          if (cs%joint(k)%fractured) cycle
          if (cs%joint(k)%r > 0.0_dp) then
             if (.not. (cs%plain(k) .and. cl%joint_ok(k))) return
+            ! A point with friction rows (pound_contact_friction): the step is substepped.
+            if (cs%fr%n > 0) then
+               if (cs%fr%index(k) > 0) return
+            end if
             if (allocated(cs%pair(k)%law%given)) then
                if (cs%pair(k)%law%given%has_force()) return
             end if
