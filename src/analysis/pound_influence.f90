@@ -19,7 +19,8 @@ module pound_influence
    use pound_kinds, only: dp
    use pound_quantities, only: n_history_quantities, n_target_quantities, q_column_shear, q_column_moment, q_ductility
    use pound_analysis, only: analysis_result
-   use pound_structure, only: structure_model, structure_yields
+   use pound_structure, only: structure_model, structure_yields, result_noise
+   use pound_response, only: q_u
    implicit none
    private
 
@@ -172,18 +173,21 @@ contains
          if (allocated(cpl%building(ib)%result_peak) .and. allocated(unc%building(ib)%result_peak) .and. &
              present(models)) then
             if (allocated(models(ib)%result)) infl(ib)%result_lambda = &
-               result_influences(cpl%building(ib)%result_peak, unc%building(ib)%result_peak, models(ib))
+               result_influences(cpl%building(ib)%result_peak, unc%building(ib)%result_peak, models(ib), &
+                                 maxval(unc%building(ib)%peak(:, q_u)))
          end if
       end do
    end function influence_of
 
    !> lambda of the result rows group by group (`influences` within a group), NaN where the
-   !> uncoupled peak is 0.
-   pure function result_influences(qc, qu, model) result(lambda)
+   !> uncoupled peak is 0 or round-off (`result_group%arm`).
+   pure function result_influences(qc, qu, model, u_peak) result(lambda)
       !> Absolute maxima, coupled and uncoupled (the model's result rows).
       real(dp), intent(in) :: qc(:), qu(:)
       !> The model (its result groups).
       type(structure_model), intent(in) :: model
+      !> The building's largest uncoupled floor displacement peak (m).
+      real(dp), intent(in) :: u_peak
       real(dp) :: lambda(size(qu))
       integer :: g, i0, i1
 
@@ -191,6 +195,9 @@ contains
          i0 = model%result(g)%first
          i1 = i0 + product(model%result(g)%extent) - 1
          lambda(i0:i1) = influences(qc(i0:i1), qu(i0:i1))
+         if (model%result(g)%arm > 0.0_dp) then
+            where (qu(i0:i1)*model%result(g)%arm < result_noise*u_peak) lambda(i0:i1) = not_meaningful()
+         end if
       end do
       where (.not. qu > 0.0_dp) lambda = not_meaningful()
    end function result_influences

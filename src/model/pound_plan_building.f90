@@ -236,7 +236,7 @@ contains
                                  'storey (column)')
       m%result(2) = result_group(name='rotation', units='rad', first=np*ns + 1, extent=[ns], &
                                  description='floor rotation theta about z at the centre of mass, '// &
-                                 'counter-clockwise positive')
+                                 'counter-clockwise positive', arm=0.5_dp*hypot(m%plan%lx, m%plan%ly))
       call structure_finish(m)
    end subroutine build_plan_building
 

@@ -41,7 +41,7 @@ module pound_structure
    private
 
    public :: structure_model, recovery_rows, recover, recover_all, recover_peaks, group_rows, structure_label
-   public :: structure_names, result_group, result_rows_of
+   public :: structure_names, result_group, result_rows_of, result_noise
    public :: structure_strain_energy
    public :: direction_x, direction_z, direction_rotation, direction_y, direction_torsion
    public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
@@ -52,6 +52,9 @@ module pound_structure
    !> plan, translation along y and rotation about z.
    integer, parameter :: direction_x = 1, direction_z = 2, direction_rotation = 3, direction_y = 4, &
                          direction_torsion = 5
+
+   !> Relative size below which a result row is round-off (`result_group%arm`).
+   real(dp), parameter :: result_noise = 1.0e-9_dp
 
    !> Natural modes a builder computes besides the two Rayleigh modes: the periods the listing
    !> shows (the lowest `modes_listed`; fewer when the model has fewer modes).
@@ -104,6 +107,11 @@ module pound_structure
       integer, allocatable :: extent(:)
       !> What the rows are (the dataset's description attribute).
       character(len=200) :: description = ''
+      !> A length (m) that makes the rows displacements (a rotation: the outline's half
+      !> diagonal): a row whose uncoupled peak times `arm` is below `result_noise` times the
+      !> building's largest floor displacement peak is round-off, taken as 0 (lambda NaN);
+      !> 0: no such test.
+      real(dp) :: arm = 0.0_dp
    end type result_group
 
    !> A structural model ready for time integration (a plain data type: see the module doc).
