@@ -36,7 +36,7 @@ import sys
 import tempfile
 
 PLOTS = ("displacement", "force", "loops", "shear", "influence", "ground", "sweep", "suite", "frame",
-         "deformed", "columns", "study", "hysteresis", "risk", "separation")
+         "deformed", "columns", "study", "hysteresis", "risk", "separation", "plan")
 # The sweep's column-segment target quantities of frames (/sweep/max_abs_lambda/<b>/<q>, where targeted).
 COLUMN_TARGETS = {"column_shear": "column segment shear V", "column_moment": "column segment end moment M"}
 CONTACT_PLOTS = ("displacement", "force", "loops")
@@ -1013,6 +1013,32 @@ PLOTTERS = {"displacement": plot_displacement, "force": plot_force, "loops": plo
             "risk": plot_risk_group, "separation": plot_separation}
 
 
+def plot_plan_group(plt, r, args, written, notes):
+    """The plan view of buildings in plan (scripts/plot_plan.py), written as <stem>_plan_view."""
+    import h5py
+    import numpy as np
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import plot_plan
+
+    def save_plan(fig, what):
+        save(fig, r, "plan_" + what, args, written)
+        plt.close(fig)
+
+    with h5py.File(r.path, "r") as f:
+        plot_plan.plot_all(f, plt, np, save_plan)
+
+
+def has_plan(path):
+    import h5py
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import plot_plan
+    with h5py.File(path, "r") as f:
+        return plot_plan.has_plan(f)
+
+
+PLOTTERS["plan"] = plot_plan_group
+
+
 # --------------------------------------------------------------------------------------------
 
 
@@ -1320,6 +1346,10 @@ def run(argv):
         if name == "separation" and not has_separation(r.path):
             if "separation" in args.explicit:
                 notes.append("separation: skipped (no /separation in this file: no contact, or a suite)")
+            continue
+        if name == "plan" and not has_plan(r.path):
+            if "plan" in args.explicit:
+                notes.append("plan: skipped (no building in plan in this file)")
             continue
         if name == "sweep" and r.sweep is None:
             if "sweep" in args.explicit:

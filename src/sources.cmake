@@ -58,7 +58,7 @@ set(POUND_SOURCES
   contact/pound_law_bilinear.f90 contact/pound_law_piecewise.f90 contact/pound_law_parabola_cubic.f90
   contact/pound_law_impact.f90 contact/pound_law_smooth.f90 contact/pound_law_kelvin.f90 contact/pound_law_hertz.f90
   contact/pound_law_hertz_damp.f90 contact/pound_law_jankowski.f90
-  contact/pound_law_registry.f90 contact/pound_contact_pair.f90
+  contact/pound_law_registry.f90 contact/pound_contact_pair.f90 contact/pound_contact_corners.f90
   contact/pound_joint_state.f90 contact/pound_contact_lcp.f90
   contact/pound_contact_friction.f90 contact/pound_contact_system.f90 contact/pound_contact_friction_lcp.f90 contact/pound_contact_smooth.f90 contact/pound_contact.f90
   # contact: the contact half-period of a joint (substep count), ends without mass condensed
@@ -103,7 +103,7 @@ set(POUND_SOURCES
   # results file, the text writer (unit + first failure), listing
   output/pound_files.f90 output/pound_h5.f90 output/pound_h5_sink.f90 output/pound_h5_support.f90 output/pound_h5_attributes.f90
   output/pound_results_h5.f90 output/pound_text_writer.f90
-  output/pound_influence_output.f90 output/pound_result_groups_output.f90 output/pound_summary_item.f90 output/pound_summary_yield.f90 output/pound_hinge_output.f90 output/pound_yield_output.f90 output/pound_listing.f90
+  output/pound_influence_output.f90 output/pound_result_groups_output.f90 output/pound_summary_item.f90 output/pound_summary_plan.f90 output/pound_summary_yield.f90 output/pound_hinge_output.f90 output/pound_yield_output.f90 output/pound_listing.f90
   # outputs: the separation rules' listing table and datasets (a run and a suite)
   output/pound_separation_output.f90 output/pound_sweep_joints_output.f90
   # outputs: the suite's listing sections and /suite

@@ -11,6 +11,7 @@ module pound_deck_study
    use pound_error, only: error_type, fatal_error, status_input
    use pound_law_smooth, only: hertz_stiffness_range, smooth_law
    use pound_kinds, only: dp
+   use pound_building_spec, only: is_plan
    use pound_strings, only: str
    implicit none
    private
@@ -224,6 +225,12 @@ contains
 
       if (d%sweep%parameter == 'gap') return
       at = site_of(path, g)
+      if (any([(is_plan(d%buildings(k)), k=1, size(d%buildings))])) then
+         call fail(at, 'parameter', "parameter = '"//trim(d%sweep%parameter)//"' sweeps the joints' law; "// &
+                   'it does not take buildings in plan (model = ''plan''): their contact points are not '// &
+                   "built by the study. Run one deck per value, or sweep the gap (parameter = 'gap')", error)
+         return
+      end if
       if (study_deck_is_suite(d)) then
          call fail(at, 'parameter', "parameter = '"//trim(d%sweep%parameter)//"' runs with one ground motion; "// &
                    'this deck is a suite of '//str(size(d%motions))//' motions (several &ground): run its '// &
@@ -332,6 +339,16 @@ contains
       if (.not. any(len_trim(d%contacts(:)%variant) > 0)) then
          allocate (d%variants(0))
          return
+      end if
+      if (any([(is_plan(d%buildings(j)), j=1, size(d%buildings))])) then
+         do i = 1, size(d%contacts)
+            if (len_trim(d%contacts(i)%variant) == 0) cycle
+            at = site_of(path, groups(gi(i)))
+            call fail(at, 'variant', "variant = '"//trim(d%contacts(i)%variant)//"': a law study does not take "// &
+                      "buildings in plan (model = 'plan'): their contact points are not built by the study. "// &
+                      'Run one deck per law', error)
+            return
+         end do
       end if
       allocate (names(size(d%contacts)), owner(size(d%contacts)))
       owner = 0

@@ -29,6 +29,7 @@ module pound_run_case
    use pound_analysis, only: analysis_result, run_uncoupled, run_coupled, add_warning, history_sink, &
                              analysis_copy, e_kinetic
    use pound_contact, only: contact_system, contact_pair, pairs_from_config
+   use pound_contact_corners, only: add_corner_rows
    use pound_influence, only: building_influence, influence_of
    use pound_sweep, only: sweep_result, run_sweep
    use pound_sweep_joints, only: joint_sweep, find_joints, run_joint_sweeps, joint_thresholds
@@ -158,6 +159,8 @@ contains
       !> The case's ground motion: `options%ground`, else the deck's (`deck_gm`).
       type(ground_motion_t), pointer :: gm
       type(contact_pair), allocatable :: pairs(:)
+      ! Row of each joint end in its building's result rows (buildings in plan: `corner_ux`).
+      integer, allocatable :: corner_row(:, :)
       type(analysis_plan) :: plan
       character(len=:), allocatable :: prefix, text, joint_warnings(:)
       real(dp), allocatable :: ag(:)
@@ -236,6 +239,18 @@ contains
          end do
       end if
 
+      ! The joints. The contact points of buildings in plan are results of both analyses
+      ! (`corner_ux`): their uncoupled peaks give the separation rules point by point.
+      if (size(deck%contacts) > 0) then
+         pairs = pairs_from_config(deck%contacts, structure_names(res%models), error, res%models)
+         if (allocated(error)) then
+            error%message = prefix//error%message
+            return
+         end if
+         if (any([(allocated(res%models(ib)%plan), ib=1, size(res%models))])) &
+            call add_corner_rows(res%models, pairs, corner_row)
+      end if
+
       ! Analyses.
       if (.not. coupled_only) then
          if (has_uncoupled()) then
@@ -247,11 +262,6 @@ contains
          res%has_uncoupled = .true.
       end if
       if (size(deck%contacts) > 0) then
-         pairs = pairs_from_config(deck%contacts, structure_names(res%models), error, res%models)
-         if (allocated(error)) then
-            error%message = prefix//error%message
-            return
-         end if
          if (present(options)) then
             if (allocated(options%gap)) pairs(:)%gap = options%gap
          end if
@@ -389,8 +399,25 @@ contains
          logical, allocatable :: th_valid(:)
 
          np = 0
-         allocate (res%separation(sum([(size(deck%contacts(ic)%floor_left), ic=1, size(deck%contacts))])))
+         if (allocated(corner_row)) then
+            ! Buildings in plan: every contact point, from the uncoupled peaks of its corners.
+            np = size(pairs)
+            allocate (res%separation(np))
+            do k = 1, np
+               associate (p => pairs(k))
+                  res%separation(k) = pair_separation(deck, p%building(1), p%building(2), p%floor(1), &
+                                                      p%floor(2), corner_peak(1, k), corner_peak(2, k), &
+                                                      res%models(p%building(1))%period(1), &
+                                                      res%models(p%building(2))%period(1))
+                  res%separation(k)%inelastic = [structure_yields(res%models(p%building(1))), &
+                                                 structure_yields(res%models(p%building(2)))]
+               end associate
+            end do
+         else
+            allocate (res%separation(sum([(size(deck%contacts(ic)%floor_left), ic=1, size(deck%contacts))])))
+         end if
          do ic = 1, size(deck%contacts)
+            if (allocated(corner_row)) exit
             associate (c => deck%contacts(ic), z => elevations(deck%contacts(ic)))
                do k = 1, size(c%floor_left)
                   np = np + 1
@@ -424,6 +451,14 @@ contains
             end if
          end if
       end subroutine separations
+
+      !> Peak |u_x| (m) in the uncoupled run of end e of joint k (a contact point of a building
+      !> in plan: its `corner_ux` row).
+      real(dp) function corner_peak(e, k)
+         integer, intent(in) :: e, k
+
+         corner_peak = res%unc%building(pairs(k)%building(e))%result_peak(corner_row(e, k))
+      end function corner_peak
 
       !> The elevations (m) of a `&contact`'s pairs (0 where it gives floors).
       pure function elevations(c) result(z)

@@ -10,6 +10,8 @@
 !>    motion (with that motion);
 !> 2. per building (a suite: of the single-motion case, `motion_heading`): the largest
 !>    |lambda| of the storey shear with its storey and the time of the coupled peak; for a
+!>    building in plan the largest plane-shear |lambda| (plane, storey) and the peak floor
+!>    rotation (`pound_summary_plan`); for a
 !>    frame also of the column segments' shear and end moments with the segment (storey,
 !>    column line) and time; the largest impact force on the building with its joint and time;
 !> 3. per contact pair: the no-contact gap, the time-history threshold gap of the sweep and
@@ -44,6 +46,7 @@ module pound_summary
    use pound_separation, only: separation_t, no_contact_gap, peaks_label, building_setbacks
    use pound_structure, only: structure_yields
    use pound_summary_item, only: summary_item, summary_text_len, item, append, largest
+   use pound_summary_plan, only: plan_items
    use pound_summary_yield, only: lambda_item, yield_items, suite_lambdas, suite_yield_items, suite_collapses
    implicit none
    private
@@ -205,6 +208,7 @@ contains
          end if
          call yield_items(items, res, ib, motion)
          call lambda_item(items, res, ib, b, q_shear, 'lambda_storey_shear', 'storey-shear', motion)
+         call plan_items(items, res, ib, b, motion)
          if (res%buildings(ib)%kind%n_segments() > 0 .and. allocated(res%influence(ib)%member_lambda) .and. &
              allocated(res%cpl%building(ib)%member_time)) then
             nq = size(res%models(ib)%member_names)
