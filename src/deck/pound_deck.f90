@@ -65,6 +65,8 @@
 module pound_deck
    use pound_config, only: building_config, contact_config, deck_type, is_frame
    use pound_kinds, only: dp
+   use pound_building_spec, only: is_plan
+   use pound_deck_checks, only: fail, site_of
    use pound_deck_analysis, only: read_analysis
    use pound_deck_building, only: read_building
    use pound_deck_contact, only: read_contact
@@ -226,7 +228,41 @@ contains
       if (allocated(error)) return
       d%ground = d%motions(1)
       call check_risk(path, d, stripes_group, hazard_group, ground_groups, size(d%motions), error)
+      if (allocated(error)) return
+      call check_plan_suite(path, d, ground_groups, stripes_group, error)
    end subroutine parse_deck
+
+   !> Buildings in plan run one ground motion: a suite (several `&ground`, a record set, a
+   !> synthetic motion, `scale_to`) and `&stripes` are refused, because their statistics and
+   !> separation rules are per floor pair, not per contact point.
+   pure subroutine check_plan_suite(path, d, ground_groups, stripes_group, error)
+      !> Deck path as given.
+      character(len=*), intent(in) :: path
+      !> The deck.
+      type(deck_type), intent(in) :: d
+      !> The `&ground` groups and the `&stripes` group (line 0: none).
+      type(group_ref), intent(in) :: ground_groups(:), stripes_group
+      !> Unallocated on success; otherwise the problem.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: why = ' does not take buildings in plan (model = ''plan'') yet: its '// &
+         'statistics and separation rules are per floor pair, not per contact point. Run each motion in a deck '// &
+         'of its own (one &ground, scaled by scale)'
+      integer :: k
+
+      if (.not. any([(is_plan(d%buildings(k)), k=1, size(d%buildings))])) return
+      if (stripes_group%line1 > 0) then
+         call fail(site_of(path, stripes_group), 'stripes', '&stripes'//why, error)
+      else if (size(d%motions) > 1) then
+         call fail(site_of(path, ground_groups(min(2, size(ground_groups)))), 'kind', 'a suite of '//str(size(d%motions))// &
+                   ' motions (several &ground or a record set)'//why, error)
+      else if (d%ground%kind == 'synthetic') then
+         call fail(site_of(path, ground_groups(1)), 'kind', "kind = 'synthetic' (a suite of generated motions)"// &
+                   why, error)
+      else if (allocated(d%ground%scale_to)) then
+         if (len(d%ground%scale_to) > 0) call fail(site_of(path, ground_groups(1)), 'scale_to', &
+                                                   'scale_to (a scaled suite)'//why, error)
+      end if
+   end subroutine check_plan_suite
 
    !> The pairs of `c` between floors (by elevation) become column nodes of the frames: the
    !> left building's rightmost column line, the right building's leftmost.
