@@ -26,7 +26,7 @@ module pound_analysis
    use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str, add_warning
    use pound_analysis_plan, only: analysis_plan, output_steps, stepping_impact, free_exact, lcp_lemke
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, direction_y
    use pound_ground_motion, only: check_ground_samples, ground_motion_t
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_integrator, only: integrator, integrator_properties, max_lanes, en_input, en_damping, en_numerical, &

@@ -121,6 +121,7 @@ contains
       call yield_sets_init(ys, models, cfg, inelastic, collapsed, frozen)
       coupled = cs%m > 0
       call step_state_point(s, st, models, cs, ag, ys, frozen, res%building)
+      if (allocated(cfg%ground_y)) call ground_y_setup(s, cfg%ground_y, st, models)
       call pol%start(s, inelastic)
       n = pol%tally()
       res%substep_factor = n%factor
@@ -145,6 +146,10 @@ contains
          s%h = cfg%dt
          s%ag_old = ag(step - 1)
          s%ag_new = ag(step)
+         if (associated(s%ag_y)) then
+            s%agy_old = s%ag_y(step - 1)
+            s%agy_new = s%ag_y(step)
+         end if
          ! out = mod(step, output_every) == 0, counted down (no division per step)
          until_out = until_out - 1
          out = until_out == 0
@@ -187,6 +192,7 @@ contains
             resid = max(resid, abs(s%win - s%eout))
             scale = max(scale, abs(s%win), s%eout)
             s%ag_old = s%ag_new
+            s%agy_old = s%agy_new
          end do
          if (collapsed) call yield_freeze(ys, st, cs, s%t, frozen, collapsed)
          if (collapsed) exit steps
@@ -606,5 +612,42 @@ contains
          call progress_run_done()
       end do
    end subroutine lanes_finish
+
+   !> A run under a ground component along y (`analysis_plan%ground_y`): each building with
+   !> DOFs along y (`ground_set(:, 2)`, direction y) gets its load rows, -M r_y, and
+   !> x = Khat^{-1} M r_y, and starts at rest in equilibrium with both components:
+   !> a_0 = -(r_x a_gx(0) + r_y a_gy(0)).
+   subroutine ground_y_setup(s, ag_y, st, models)
+      !> The step (pointed at the run).
+      type(step_state), intent(inout) :: s
+      !> The component along y at t_n (0:n_steps).
+      real(dp), intent(in), target :: ag_y(0:)
+      !> Integrators at t = 0.
+      class(integrator), intent(inout) :: st(:)
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      real(dp), pointer :: a(:)
+      real(dp), allocatable :: a0(:)
+      integer :: ib, c, i
+
+      s%ag_y(0:) => ag_y
+      allocate (s%gy(size(models)))
+      do ib = 1, size(models)
+         if (.not. allocated(models(ib)%ground_direction)) cycle
+         c = findloc(models(ib)%ground_direction, direction_y, 1)
+         if (c == 0) cycle
+         s%gy(ib)%dof = pack([(i, i=1, models(ib)%n)], models(ib)%ground_set(:, c) /= 0.0_dp)
+         s%gy(ib)%w = models(ib)%mass(s%gy(ib)%dof)*models(ib)%ground_set(s%gy(ib)%dof, c)
+         allocate (s%gy(ib)%x(models(ib)%n))
+         s%gy(ib)%x = 0.0_dp
+         s%gy(ib)%x(s%gy(ib)%dof) = s%gy(ib)%w
+         call st(ib)%solve(s%gy(ib)%x)
+         if (ag_y(0) == 0.0_dp) cycle
+         a => st(ib)%a_view()
+         a0 = a
+         a0(s%gy(ib)%dof) = a0(s%gy(ib)%dof) - ag_y(0)*models(ib)%ground_set(s%gy(ib)%dof, c)
+         call st(ib)%set_state(models(ib), a=a0)
+      end do
+   end subroutine ground_y_setup
 
 end submodule pound_analysis_loop

@@ -63,6 +63,10 @@ module pound_analysis_plan
       !> Time integrator (`integrator_newmark`, `integrator_hht`) and HHT-alpha's alpha.
       integer :: integrator = integrator_newmark
       real(dp) :: hht_alpha = 0.0_dp
+      !> The ground component along y at t_n = n dt (0:n_steps, m/s^2): allocated by run_case
+      !> when the ground moves along y and a building has DOFs along y (a plan building);
+      !> such a building then takes -M (r_x a_gx + r_y a_gy).
+      real(dp), allocatable :: ground_y(:)
    contains
 
       !> Number of output samples of a whole history (t = 0 included).

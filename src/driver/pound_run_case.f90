@@ -20,7 +20,8 @@ module pound_run_case
    use pound_analysis_plan, only: analysis_plan, steps_of, stepping_uniform, stepping_impact, free_newmark, &
                                   free_exact, lcp_auto, lcp_lemke, integrator_newmark, integrator_hht
    use pound_ground_motion, only: ground_motion_t, pulse_motion, record_motion, sample_ground, stop_ground, &
-                                  describe_ground, second_component, set_ground_angle, ground_moves_y
+                                  describe_ground, second_component, set_ground_angle, ground_moves_y, &
+                                 ground_accel_y, check_ground_samples
    use pound_building, only: building_model, build_building
    use pound_structure, only: structure_model, structure_names, structure_yields, structure_end_dof, direction_y
    use pound_newmark, only: exact_max_dofs
@@ -165,7 +166,7 @@ contains
       character(len=:), allocatable :: prefix, text, joint_warnings(:)
       real(dp), allocatable :: ag(:)
       logical :: coupled_only
-      integer :: n_steps, n_out, ib, stat
+      integer :: n_steps, n_out, ib, stat, k
       class(history_sink), pointer :: sink
 
       prefix = ''
@@ -212,17 +213,31 @@ contains
          end if
       end do
 
-      ! The ground along y (an angle, a second component) reaches the x DOFs only (a_gx): a
-      ! building with a ground component along y (in plan) would miss a_gy, so it is refused.
+      ! The ground along y (an angle, a second component): a building with DOFs along y (in
+      ! plan) takes -M (r_x a_gx + r_y a_gy), the component along y as a load of Newmark's
+      ! uniform steps (`analysis_plan%ground_y`); the settings whose steps take the ground along
+      ! x only are refused for such runs.
       do ib = 1, size(res%models)
          if (.not. ground_moves_y(gm)) exit
          if (.not. allocated(res%models(ib)%ground_direction)) cycle
          if (.not. any(res%models(ib)%ground_direction == direction_y)) cycle
-         call fatal_error(error, prefix//"&ground: building "//res%models(ib)%name//' has DOFs along y, and the '// &
-                          'ground along y (angle = '//str(gm%angle)//' degrees or a second component, file_2) '// &
-                          'does not reach them yet: the integrators take the ground along x only; '// &
-                          'give angle = 0 and no file_2', status_input)
-         return
+         text = ''
+         if (plan%integrator /= integrator_newmark) text = "integrator = 'newmark'"
+         if (plan%free_steps == free_exact) text = "free_steps = 'newmark'"
+         if (plan%stepping == stepping_impact) text = "stepping = 'uniform'"
+         if (len(text) > 0) then
+            call fatal_error(error, prefix//"&ground: building "//res%models(ib)%name//' has DOFs along y, and '// &
+                             'the ground along y (angle = '//str(gm%angle)//' degrees or a second component, '// &
+                             "file_2) is taken by Newmark's uniform steps only: give "//text, status_input)
+            return
+         end if
+         allocate (plan%ground_y(0:n_steps))
+         do k = 0, n_steps
+            plan%ground_y(k) = ground_accel_y(gm, real(k, dp)*deck%analysis%dt)
+         end do
+         call check_ground_samples(plan%ground_y, deck%analysis%dt, error, gm)
+         if (allocated(error)) return
+         exit
       end do
 
       ! The exact free steps hold every building's n x n modes: refused for a larger model,

@@ -25,11 +25,11 @@ module pound_stripes
    use, intrinsic :: iso_fortran_env, only: int64
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    use pound_kinds, only: dp
-   use pound_error, only: error_type
+   use pound_error, only: error_type, fatal_error
    use pound_strings, only: str
    use pound_config, only: deck_type, n_target_quantities
-   use pound_ground_motion, only: ground_motion_t
-   use pound_structure, only: structure_model, structure_names
+   use pound_ground_motion, only: ground_motion_t, ground_moves_y
+   use pound_structure, only: structure_model, structure_names, direction_y
    use pound_building, only: building_model, build_building
    use pound_analysis, only: analysis_result, coupled_integrate, beyond_closing, probe_gap
    use pound_analysis_plan, only: steps_of
@@ -338,6 +338,14 @@ contains
       logical :: has_probe
       integer :: g
 
+      ! The stripes' gap runs take the ground along x only (no `analysis_plan%ground_y`).
+      do g = 1, size(res%models)
+         if (.not. ground_moves_y(gm) .or. .not. allocated(res%models(g)%ground_direction)) cycle
+         if (.not. any(res%models(g)%ground_direction == direction_y)) cycle
+         call fatal_error(error, '&risk: the stripes take the ground along x only; buildings in plan under a '// &
+                          'ground along y (angle or file_2) are refused here: give angle = 0 and no file_2')
+         return
+      end do
       pairs = pairs_from_config(work%deck%contacts, structure_names(res%models), error, res%models)
       if (allocated(error)) return
       call gap_cases_init(cases, analysis_plan_of(work%deck%analysis), work%deck%sweep, res%models, ag, pairs, &

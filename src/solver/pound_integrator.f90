@@ -138,6 +138,10 @@ module pound_integrator
       !> of that state, the step's input work and the work of the joints' forces on the model
       !> (the damping energy is the balance). The default does nothing (`takes_state` false).
       procedure :: put_state => no_put_state
+      !> Add work to the input work (a ground component the step took as a load,
+      !> `add_load_rows`: the component along y). Only an integrator that overrides it may
+      !> take such a component (the default drops the work; run_case refuses the others).
+      procedure :: add_input_work => no_input_work
    end type integrator
 
    abstract interface
@@ -367,6 +371,16 @@ contains
       if (same_type_as(st, st) .or. size(u) + size(v) + size(a) < 0) return
       if (kinetic + strain + work + joint_work < 0.0_dp) return
    end subroutine no_put_state
+
+   !> Default `add_input_work`: nothing (an integrator that cannot take a ground load).
+   pure subroutine no_input_work(st, w)
+      !> Integrator state.
+      class(integrator), intent(inout) :: st
+      !> Work (kJ).
+      real(dp), intent(in) :: w
+
+      if (same_type_as(st, st) .or. w < 0.0_dp) return
+   end subroutine no_input_work
 
    !> The velocity per displacement increment of the trapezoidal rule, 2/dt (1/s): the
    !> default rate of a joint's compression when no integrator is given

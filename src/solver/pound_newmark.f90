@@ -157,6 +157,7 @@ module pound_newmark
       procedure :: solve_matrix => newmark_solve_matrix
       procedure :: add_load => newmark_add_response
       procedure :: add_load_rows => newmark_add_response_rows
+      procedure :: add_input_work => newmark_add_input_work
       procedure :: swap_step => swap_binding
       procedure :: set_state => newmark_set_state
       procedure :: dofs => newmark_n
@@ -612,6 +613,16 @@ contains
          st%loaded = .true.
       end if
    end subroutine newmark_add_response_rows
+
+   !> Add work to the input work (a ground component taken as a load).
+   pure subroutine newmark_add_input_work(st, w)
+      !> Integrator state.
+      class(newmark_state), intent(inout) :: st
+      !> Work (kJ).
+      real(dp), intent(in) :: w
+
+      st%input_work = st%input_work + w
+   end subroutine newmark_add_input_work
 
    !> Number of DOFs.
    pure integer function newmark_n(st)

@@ -37,7 +37,15 @@ module pound_step_policy
    private
 
    public :: step_policy, step_state, step_counts, uniform_policy, policy_start, take_pass, predict_again, free_prediction
+   public :: ground_y_rows, ground_y_predict
    public :: step_state_point
+
+   !> A building's load of the ground component along y, -M r_y a_gy (`ground_y_setup`): the
+   !> DOFs r_y moves, their weights m_i r_y,i and x = Khat^{-1} M r_y.
+   type :: ground_y_rows
+      integer, allocatable :: dof(:)
+      real(dp), allocatable :: w(:), x(:)
+   end type ground_y_rows
 
    !> One step of the time loop as the policies see it.
    type :: step_state
@@ -49,6 +57,12 @@ module pound_step_policy
       real(dp) :: dt = 0.0_dp, t = 0.0_dp, t_pass = 0.0_dp, h = 0.0_dp
       !> Ground acceleration at the pass's start and end (m/s^2).
       real(dp) :: ag_old = 0.0_dp, ag_new = 0.0_dp
+      !> Ground acceleration along y at the pass's start and end (m/s^2; runs with `ag_y`).
+      real(dp) :: agy_old = 0.0_dp, agy_new = 0.0_dp
+      !> The ground component along y at t_n (0:n_steps; null: none) and each building's
+      !> load rows of it (unallocated for a building without DOFs along y).
+      real(dp), pointer :: ag_y(:) => null()
+      type(ground_y_rows), allocatable :: gy(:)
       !> The pass's end is an output sample.
       logical :: output = .false.
       !> The step was taken exactly with joints closed (pound_step_closed; the pass commits
@@ -209,6 +223,7 @@ contains
          if (s%frozen(ib)) then
             call yield_frozen_step(s%st(ib), s%rec(ib), s%output, s%win, s%eout)
          else if (.not. s%closed) then
+            if (associated(s%ag_y)) call ground_y_work(s, ib)
             call s%st(ib)%commit(s%models(ib), s%ag_old, s%ag_new, s%win, s%eout)
          end if
       end do
@@ -223,7 +238,7 @@ contains
       logical, intent(in) :: inelastic
 
       call policy_start(pol, s, inelastic)
-      pol%fused = .not. (pol%coupled .or. inelastic)
+      pol%fused = .not. (pol%coupled .or. inelastic .or. associated(s%ag_y))
       if (pol%fused .and. s%n_steps > 0) call predict_again(s%st, s%models, s%ag(1) - s%ag(0))
    end subroutine uniform_start
 
@@ -240,7 +255,44 @@ contains
       do ib = 1, size(s%st)
          if (.not. s%frozen(ib)) call s%st(ib)%predict(s%models(ib), s%ag_new - s%ag_old)
       end do
+      if (associated(s%ag_y)) call ground_y_predict(s)
    end subroutine uniform_begin
+
+   !> After the method's prediction (ground along x): the increment of the ground load along
+   !> y, -M r_y (a_gy,new - a_gy,old), added to every building not frozen that has DOFs along y
+   !> (`add_load_rows`: Newmark's step is linear in its load increments, so this is the step
+   !> under -M (r_x a_gx + r_y a_gy)).
+   subroutine ground_y_predict(s)
+      !> The step (predicted along x; `ag_y`, `gy` set).
+      type(step_state), intent(inout) :: s
+      integer :: ib
+
+      do ib = 1, size(s%st)
+         if (s%frozen(ib) .or. .not. allocated(s%gy(ib)%dof)) cycle
+         call s%st(ib)%add_load_rows(-(s%agy_new - s%agy_old), s%gy(ib)%dof, s%gy(ib)%w, s%gy(ib)%x)
+      end do
+   end subroutine ground_y_predict
+
+   !> Before building ib's commit: the input work of the ground along y over the step,
+   !> -sum_i m_i r_y,i du_i (a_gy,old + a_gy,new)/2 (the trapezoid the method's input work of
+   !> the component along x takes), added to the integrator's input work.
+   subroutine ground_y_work(s, ib)
+      !> The step (predicted and loaded; not yet committed).
+      type(step_state), intent(inout) :: s
+      !> The building.
+      integer, intent(in) :: ib
+      real(dp), pointer :: du(:)
+      real(dp) :: mdu
+      integer :: i
+
+      if (.not. allocated(s%gy(ib)%dof)) return
+      du => s%st(ib)%du_view()
+      mdu = 0.0_dp
+      do i = 1, size(s%gy(ib)%dof)
+         mdu = mdu + s%gy(ib)%w(i)*du(s%gy(ib)%dof(i))
+      end do
+      call s%st(ib)%add_input_work(-0.5_dp*(s%agy_old + s%agy_new)*mdu)
+   end subroutine ground_y_work
 
    !> `pass` of the uniform steps: fused, every building's commit and the next step's
    !> prediction (the last step only committed); else the common pass.

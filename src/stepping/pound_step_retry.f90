@@ -91,6 +91,9 @@ contains
 
       call pol%inner%pass(s, error)
       if (.not. s%solve_failed .or. pol%inelastic) return
+      ! The retry's substeps take the ground along x only: a run with a component along y
+      ! keeps the failure (never a step without its load along y).
+      if (associated(s%ag_y)) return
       call retry_step(pol%rt, s%models, s%st, s%cs, s%ag_old, s%ag_new, s%t_pass, s%h, s%step, error, s%warnings)
       s%solve_failed = allocated(error)
    end subroutine retry_pass
