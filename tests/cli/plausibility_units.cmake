@@ -91,12 +91,6 @@ foreach(deck ${shipped})
     continue()
   endif()
   run_pound(s ${deck} -o shipped --quiet)
-  # A deck of buildings in plan is read (the deck's part) but runs only where the program
-  # builds buildings in plan; until then it is refused with this reason, and not checked here.
-  string(FIND "${s_err}" "this version of pound does not build it" unbuilt)
-  if(NOT unbuilt EQUAL -1)
-    continue()
-  endif()
   expect_equal("${stem}: exit status (${s_err})" 0 "${s_rc}")
   file(READ ${WORK_DIR}/shipped/${stem}.out listing)
   foreach(needle "is above 2 g" "scale_to needs a scale factor" "did you mean target_g" "gaps are in m")
