@@ -25,7 +25,7 @@ set(POUND_SOURCES
   deck/pound_deck_analysis.f90 deck/pound_deck_ground.f90 deck/pound_deck_storey_law.f90 deck/pound_deck_hinge_law.f90 deck/pound_deck_building.f90 deck/pound_deck_plane.f90
   deck/pound_deck_stiffness.f90 deck/pound_deck_contact.f90 deck/pound_deck_study.f90 deck/pound_deck_targets.f90 deck/pound_deck_sweep.f90 deck/pound_deck_risk.f90 deck/pound_deck_record_set.f90 deck/pound_deck.f90 deck/pound_accelerogram.f90
   # models: band storage, shear building, ground motion
-  model/pound_band.f90 model/pound_plan_geometry.f90 model/pound_structure.f90 model/pound_storey_properties.f90
+  model/pound_band.f90 model/pound_plan_geometry.f90 model/pound_padded_rows.f90 model/pound_structure.f90 model/pound_storey_properties.f90
   model/pound_shear_building.f90 model/pound_ground_motion.f90
   # models: plausibility (period against the code estimate for the height, buckling hint)
   model/pound_plausibility.f90
@@ -120,5 +120,6 @@ set(POUND_SOURCES_MPI core/pound_cases_mpi.f90)
 # fused multiply-adds, so that they give the same numbers with and without -march=native.
 if(CMAKE_Fortran_COMPILER_ID STREQUAL "GNU")
   set_source_files_properties(${PROJECT_SOURCE_DIR}/src/model/pound_structure.f90
+                              ${PROJECT_SOURCE_DIR}/src/model/pound_padded_rows.f90
                               PROPERTIES COMPILE_OPTIONS -ffp-contract=off)
 endif()

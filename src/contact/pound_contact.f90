@@ -754,12 +754,7 @@ contains
       real(dp) :: v
 
       if (cs%general_ends) then
-         do k = 1, cs%m
-            v = 0.0_dp
-            if (cs%ends(1, k) > 0) v = v + row_u(1)
-            if (cs%ends(3, k) > 0) v = v - row_u(2)
-            cs%vp(k) = v
-         end do
+         call closing_rows(cs, states, predicted)
          return
       end if
       do k = 1, cs%m
@@ -773,25 +768,6 @@ contains
 
    contains
 
-      !> The displacement of end e of pair k (its DOF or its row).
-      real(dp) function row_u(e)
-         integer, intent(in) :: e
-         integer :: i, b
-
-         b = cs%ends(2*e - 1, k)
-         if (cs%ends(2*e, k) > 0) then
-            row_u = end_u(states(b), cs%ends(2*e, k))
-            return
-         end if
-         row_u = 0.0_dp
-         associate (row => cs%pair(k)%end_row(e))
-            do i = row%start(1), row%start(2) - 1
-               row_u = row_u + row%coef(i)*end_u(states(b), row%dof(i))
-            end do
-            row_u = row%scale(1)*row_u
-         end associate
-      end function row_u
-
       real(dp) function end_u(st, i)
          class(integrator), intent(in) :: st
          integer, intent(in) :: i
@@ -803,6 +779,65 @@ contains
          end if
       end function end_u
    end subroutine closing_displacements
+
+   !> `closing_displacements` of joints whose ends are rows over their models' DOFs (buildings
+   !> in plan): each building's u (and du) read through views taken once per call, not one
+   !> call of the integrator per entry. The predicted displacement of a DOF is u + du, as the
+   !> integrators' `predicted`, summed in the same order: the same numbers.
+   subroutine closing_rows(cs, states, predicted)
+      type(contact_system), intent(inout) :: cs
+      class(integrator), intent(in), target :: states(:)
+      logical, intent(in) :: predicted
+      type :: dof_view
+         real(dp), pointer, contiguous :: u(:) => null(), du(:) => null()
+      end type dof_view
+      type(dof_view) :: w(size(states))
+      integer :: k, b
+      real(dp) :: v
+
+      do b = 1, size(states)
+         w(b)%u => states(b)%u_view()
+         if (predicted) w(b)%du => states(b)%du_view()
+      end do
+      do k = 1, cs%m
+         v = 0.0_dp
+         if (cs%ends(1, k) > 0) v = v + row_u(1)
+         if (cs%ends(3, k) > 0) v = v - row_u(2)
+         cs%vp(k) = v
+      end do
+
+   contains
+
+      !> The displacement of end e of pair k (its DOF or its row).
+      real(dp) function row_u(e)
+         integer, intent(in) :: e
+         integer :: i, b
+
+         b = cs%ends(2*e - 1, k)
+         if (cs%ends(2*e, k) > 0) then
+            row_u = end_u(w(b), cs%ends(2*e, k))
+            return
+         end if
+         row_u = 0.0_dp
+         associate (row => cs%pair(k)%end_row(e))
+            do i = row%start(1), row%start(2) - 1
+               row_u = row_u + row%coef(i)*end_u(w(b), row%dof(i))
+            end do
+            row_u = row%scale(1)*row_u
+         end associate
+      end function row_u
+
+      real(dp) function end_u(x, i)
+         type(dof_view), intent(in) :: x
+         integer, intent(in) :: i
+
+         if (predicted) then
+            end_u = x%u(i) + x%du(i)
+         else
+            end_u = x%u(i)
+         end if
+      end function end_u
+   end subroutine closing_rows
 
    !> Update the joints for the accepted step: plastic penetration, compression, rate,
    !> state, statistics and energy. `v` (closing displacements at the end of the step) may

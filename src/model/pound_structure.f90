@@ -37,10 +37,11 @@ module pound_structure
    use pound_error, only: error_type, fatal_error
    use pound_band, only: band_symv
    use pound_plan_geometry, only: plan_geometry, plan_dof, plane_x, plan_ux, plan_uy, plan_theta
+   use pound_padded_rows, only: pad_width, pad_layout, padded_kernel, padded_peaks_kernel
    implicit none
    private
 
-   public :: structure_model, recovery_rows, recover, recover_all, recover_peaks, group_rows, structure_label
+   public :: structure_model, recovery_rows, recover, recover_all, recover_peaks, group_rows, pad_rows, structure_label
    public :: structure_names, result_group, result_rows_of, result_noise
    public :: structure_strain_energy
    public :: direction_x, direction_z, direction_rotation, direction_y, direction_torsion
@@ -89,6 +90,11 @@ module pound_structure
       !> frame) share one block, so that a step reads the coefficients from cache, not memory.
       integer, allocatable :: group_block(:), block_first(:)
       real(dp), allocatable :: group_coef(:, :), block_scale(:, :)
+      !> Padded layout (`pad_rows`, pound_padded_rows; 0: none): short rows of at most
+      !> `pad_width` entries in the columns of `pad_dof` and `pad_coef`.
+      integer :: pad_width = 0
+      integer, allocatable :: pad_dof(:, :)
+      real(dp), allocatable :: pad_coef(:, :)
    end type recovery_rows
 
    !> A named group of result rows (`structure_model%result`): rows `first` ..
@@ -248,6 +254,8 @@ contains
          call grouped4_kernel(rows%n/4, size(rows%group_dof), size(rows%group_coef, 2), size(rows%block_first), &
                               size(u), rows%group_start, rows%group_dof, rows%group_block, rows%block_first, &
                               rows%group_coef, rows%block_scale, u, y)
+      else if (rows%pad_width > 0) then
+         call padded_kernel(rows%n, size(u), rows%pad_dof, rows%pad_coef, rows%scale, u, y)
       else
          call rows_kernel(rows%n, size(rows%dof), size(u), rows%start, rows%dof, rows%coef, rows%scale, u, y)
       end if
@@ -274,6 +282,10 @@ contains
          call grouped4_kernel(rows%n/4, size(rows%group_dof), size(rows%group_coef, 2), size(rows%block_first), &
                               size(u), rows%group_start, rows%group_dof, rows%group_block, rows%block_first, &
                               rows%group_coef, rows%block_scale, u, y, t, peak, peak_time)
+         return
+      end if
+      if (rows%pad_width > 0) then
+         call padded_peaks_kernel(rows%n, size(u), rows%pad_dof, rows%pad_coef, rows%scale, u, t, peak, peak_time)
          return
       end if
       call recover_all(rows, u, y)
@@ -688,7 +700,21 @@ contains
             i = i + q%n
          end associate
       end do
+      call pad_rows(rows)
    end function result_rows_of
+
+   !> Set up the padded layout of `rows` (`recovery_rows%pad_width`) when every row has at most
+   !> `pad_width` entries and the rows are not grouped (else rows unchanged): the same values.
+   pure subroutine pad_rows(rows)
+      !> The rows.
+      type(recovery_rows), intent(inout) :: rows
+      logical :: ok
+
+      rows%pad_width = 0
+      if (rows%group_width /= 0) return
+      call pad_layout(rows%n, rows%start, rows%dof, rows%coef, rows%pad_dof, rows%pad_coef, ok)
+      if (ok) rows%pad_width = pad_width
+   end subroutine pad_rows
 
    !> One row of one DOF with coefficient 1 (the value is u(dof)).
    pure function single_row(dof) result(row)
