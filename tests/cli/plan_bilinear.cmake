@@ -27,3 +27,12 @@ expect_contains("summary names plane and storey" "${e_out}" "A: largest plane st
 file(READ ${WORK_DIR}/plan_bilinear_eccentric.out listing)
 expect_contains("listing table of the bilinear planes" "${listing}" "  Bilinear planes of A (plane shear = spring force;")
 expect_contains("listing table header" "${listing}" "   plane storey     Fy [kN]       r    mu unc")
+
+# Friction while planes yield is refused at the step, with its time (not solved together yet).
+file(READ ${SOURCE_DIR}/tests/data/plan_bilinear_eccentric.nml deck)
+string(REPLACE "law = 'elastic'," "law = 'elastic', friction = 0.3," deck "${deck}")
+file(WRITE ${WORK_DIR}/plan_bilinear_friction.nml "${deck}")
+run_pound(f ${WORK_DIR}/plan_bilinear_friction.nml)
+expect_equal("friction while planes yield: exit" 1 "${f_rc}")
+expect_contains("friction while planes yield: message" "${f_err}"
+                "storeys, planes or hinges yield while contact points with friction act; friction is not solved together with yielding storeys or planes (set friction = 0, or elastic storeys and planes)")
