@@ -36,3 +36,11 @@ run_pound(f ${WORK_DIR}/plan_bilinear_friction.nml)
 expect_equal("friction while planes yield: exit" 1 "${f_rc}")
 expect_contains("friction while planes yield: message" "${f_err}"
                 "storeys, planes or hinges yield while contact points with friction act; friction is not solved together with yielding storeys or planes (set friction = 0, or elastic storeys and planes)")
+
+# A gap sweep targeting the ductility: bilinear planes count as yielding buildings.
+file(READ ${SOURCE_DIR}/tests/data/plan_bilinear_eccentric.nml deck)
+file(WRITE ${WORK_DIR}/plan_bilinear_sweep.nml "${deck}&sweep gap_from = 0.0, gap_to = 0.01, n_gaps = 3, target_quantities = 'ductility' /\n")
+run_pound(w ${WORK_DIR}/plan_bilinear_sweep.nml)
+expect_equal("gap sweep of the ductility of bilinear planes (${w_err})" 0 "${w_rc}")
+file(READ ${WORK_DIR}/plan_bilinear_sweep.out listing)
+expect_contains("sweep ductility column" "${listing}" "a_abs  ductility")
