@@ -71,7 +71,7 @@ module pound_deck
    use pound_deck_building, only: read_building
    use pound_deck_contact, only: read_contact
    use pound_deck_ground, only: read_ground
-   use pound_deck_plane, only: read_plane, check_plan_deck
+   use pound_deck_plane, only: read_plane, check_plan_deck, deck_yields
    use pound_deck_lexer, only: find_single, group_ref, normalize_text, scan_groups
    use pound_deck_sweep, only: read_sweep
    use pound_deck_risk, only: read_stripes, read_hazard, check_risk
@@ -197,7 +197,7 @@ contains
          if (allocated(error)) return
          call read_sweep(path, text, groups(i), size(d%contacts), &
                          any([(is_frame(d%buildings(k)), k=1, size(d%buildings))]), d%sweep, error, &
-                         any(d%buildings%storey_law == 'bilinear' .or. d%buildings%hinge_law == 'elastic_plastic'))
+                         deck_yields(d%buildings))
          if (allocated(error)) return
          call check_parameter_sweep(path, groups(i), d, error)
          if (allocated(error)) return

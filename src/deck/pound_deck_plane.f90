@@ -28,9 +28,25 @@ module pound_deck_plane
    implicit none
    private
 
-   public :: read_plane, check_plan_deck
+   public :: read_plane, check_plan_deck, deck_yields
 
 contains
+
+   !> Some building of the deck yields: bilinear storeys (`storey_law = 'bilinear'`), plastic
+   !> hinges (`hinge_law = 'elastic_plastic'`) or a bilinear plane of a building in plan.
+   pure logical function deck_yields(buildings) result(yields)
+      !> The deck's buildings (with their planes).
+      type(building_config), intent(in) :: buildings(:)
+      integer :: ib, p
+
+      yields = any(buildings%storey_law == 'bilinear' .or. buildings%hinge_law == 'elastic_plastic')
+      do ib = 1, size(buildings)
+         if (.not. allocated(buildings(ib)%planes)) cycle
+         do p = 1, size(buildings(ib)%planes)
+            if (buildings(ib)%planes(p)%storey_law == 'bilinear') yields = .true.
+         end do
+      end do
+   end function deck_yields
 
    !> `&plane`: one plane, appended to the `planes` of the building it names.
    subroutine read_plane(path, text, g, buildings, error, warnings)

@@ -9,6 +9,7 @@ module pound_deck_risk
                                 site, site_of, unset_real
    use pound_deck_lexer, only: group_ref, group_text, lower
    use pound_deck_targets, only: take_target_quantities
+   use pound_deck_plane, only: deck_yields
    use pound_deck_variables, only: path_len, max_risk_points
    use pound_error, only: error_type, fatal_error
    use pound_kinds, only: dp
@@ -85,8 +86,8 @@ contains
          if (allocated(error)) return
          if (len_trim(target_quantities) > 0) then
             call take_target_quantities(at, target_quantities, any([(is_frame(d%buildings(ios)), &
-                                        ios=1, size(d%buildings))]), any(d%buildings%storey_law == 'bilinear' .or. &
-                                        d%buildings%hinge_law == 'elastic_plastic'), r%target_quantities, error)
+                                        ios=1, size(d%buildings))]), deck_yields(d%buildings), &
+                                        r%target_quantities, error)
             if (allocated(error)) return
          end if
       end associate

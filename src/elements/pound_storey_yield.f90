@@ -28,7 +28,7 @@ module pound_storey_yield
    use pound_kinds, only: dp
    use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str
-   use pound_structure, only: structure_model, recovery_rows, recover, structure_yields
+   use pound_structure, only: structure_model, recovery_rows, recover, structure_yields, never_yields
    use pound_integrator, only: integrator
    use pound_analysis_plan, only: analysis_plan
    use pound_contact, only: contact_system, contact_step, contact_release
@@ -116,6 +116,13 @@ module pound_storey_yield
       type(dense_lcp) :: clcp
       real(dp), allocatable :: cg(:, :)
       integer, allocatable :: cb(:), cj(:)
+      !> Rows that are not the storeys (a building in plan's planes, `structure_model%yield_k`):
+      !> the storey of each row, whether its force is part of its storey's storey shear
+      !> (`sval`, `speak`, `stime` then hold the storey shears), the result row of row 1
+      !> (0: none; the rows' peak forces become the result rows' peaks).
+      integer, allocatable :: storey_of(:)
+      logical, allocatable :: in_shear(:)
+      integer :: result_first = 0
       !> Plastic hinges of a frame (pound_storey_yield_hinges): the rows are the hinges' end
       !> rotations (k = 4EI/L, fy the yield moment, r = 0), each coupled by kc = 2EI/L to the
       !> row `mate` (the element's other end): m = S (theta - p), S = [k kc; kc k] per element.
@@ -410,20 +417,33 @@ contains
          n = ys%n
       else
          if (.not. allocated(b%yield_shear)) return
-         n = b%drift%n
-         ys%n = n
-         ys%nd = b%n
-         ys%rows = b%drift
-         allocate (ys%k(n))
-         do j = 1, n
-            do e = b%drift%start(j), b%drift%start(j + 1) - 1
-               ys%rows%coef(e) = b%drift%scale(j)*b%drift%coef(e)
+         if (allocated(b%yield_k)) then
+            ! The model's own yielding rows (a building in plan's planes).
+            n = b%yield_rows%n
+            ys%n = n
+            ys%nd = b%n
+            ys%rows = b%yield_rows
+            ys%k = b%yield_k
+            ys%storey_of = b%yield_storey
+            ys%in_shear = b%yield_in_shear
+            ys%result_first = b%yield_result_first
+            allocate (ys%sval(b%drift%n), ys%speak(b%drift%n), ys%stime(b%drift%n), source=0.0_dp)
+         else
+            n = b%drift%n
+            ys%n = n
+            ys%nd = b%n
+            ys%rows = b%drift
+            allocate (ys%k(n))
+            do j = 1, n
+               do e = b%drift%start(j), b%drift%start(j + 1) - 1
+                  ys%rows%coef(e) = b%drift%scale(j)*b%drift%coef(e)
+               end do
+               ys%rows%scale(j) = 1.0_dp
+               ys%k(j) = b%shear%scale(j)/b%drift%scale(j)
             end do
-            ys%rows%scale(j) = 1.0_dp
-            ys%k(j) = b%shear%scale(j)/b%drift%scale(j)
-         end do
-         ys%stick = b%stick .and. b%n == n .and. b%kd == 1
-         if (ys%stick) ys%stick = all(b%drift%scale == 1.0_dp)
+            ys%stick = b%stick .and. b%n == n .and. b%kd == 1
+            if (ys%stick) ys%stick = all(b%drift%scale == 1.0_dp)
+         end if
          ys%limit = spread(huge(1.0_dp), 1, n)
          if (present(collapse_drift) .and. allocated(b%yield_height)) ys%limit = collapse_drift*b%yield_height
          ys%fy = b%yield_shear
@@ -518,6 +538,17 @@ contains
       do ib = 1, size(ys)
          if (ys(ib)%hinges) then
             call hinge_finish(ys(ib), rec(ib), res(ib))
+         else if (allocated(ys(ib)%storey_of)) then
+            call yield_finish(ys(ib), rec(ib)%peak(:, q_shear), rec(ib)%peak_time(:, q_shear), res(ib))
+            ! The storey shears and the result rows of the rows' forces (a plan's plane shears).
+            rec(ib)%peak(:, q_shear) = ys(ib)%speak
+            rec(ib)%peak_time(:, q_shear) = ys(ib)%stime
+            if (ys(ib)%result_first > 0 .and. allocated(rec(ib)%result_peak)) then
+               associate (i0 => ys(ib)%result_first, n => ys(ib)%n)
+                  rec(ib)%result_peak(i0:i0 + n - 1) = ys(ib)%fmax
+                  rec(ib)%result_time(i0:i0 + n - 1) = ys(ib)%tmax
+               end associate
+            end if
          else
             call yield_finish(ys(ib), rec(ib)%peak(:, q_shear), rec(ib)%peak_time(:, q_shear), res(ib))
          end if
@@ -763,6 +794,7 @@ contains
          ys%dmax(j) = max(ys%dmax(j), abs(d))
          if (abs(d) > ys%limit(j) .and. ys%collapse_storey == 0) then
             ys%collapse_storey = j
+            if (allocated(ys%storey_of)) ys%collapse_storey = ys%storey_of(j)
             ys%collapse_time = t
          end if
          if (abs(f) > ys%fmax(j)) then
@@ -770,7 +802,22 @@ contains
             ys%tmax(j) = t
          end if
       end do
-      if (present(shear)) shear = ys%f
+      if (allocated(ys%storey_of)) then
+         ! The storey shears: the sums of their rows' forces.
+         ys%sval = 0.0_dp
+         do j = 1, ys%n
+            if (ys%in_shear(j)) ys%sval(ys%storey_of(j)) = ys%sval(ys%storey_of(j)) + ys%f(j)
+         end do
+         do j = 1, size(ys%sval)
+            if (abs(ys%sval(j)) > ys%speak(j)) then
+               ys%speak(j) = abs(ys%sval(j))
+               ys%stime(j) = t
+            end if
+         end do
+         if (present(shear)) shear = ys%sval
+      else
+         if (present(shear)) shear = ys%f
+      end if
       ys%dpl = 0.0_dp
       ys%xdp = 0.0_dp
       ys%loaded = .false.
@@ -789,9 +836,12 @@ contains
       if (ys%n == 0) return
       res%n = ys%n
       res%ductility = ys%dmax/(ys%fy/ys%k)
+      ! (A row that never yields, an elastic plane: mu = 0.)
+      where (ys%fy >= never_yields) res%ductility = 0.0_dp
       res%residual_drift = ys%d
       res%peak_force = ys%fmax
       call finish_tallies(ys, res)
+      if (allocated(ys%storey_of)) return
       peak = ys%fmax
       peak_time = ys%tmax
    end subroutine yield_finish

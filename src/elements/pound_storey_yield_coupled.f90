@@ -53,9 +53,9 @@ contains
       logical :: added, nonconvex
 
       if (cs%fr%n > 0) then
-         call fatal_error(error, 'at t = '//str(t)//' s (step '//str(step)//'): storeys or hinges yield '// &
-                          'while contact points with friction act; friction is not solved together with '// &
-                          'yielding storeys (set friction = 0 or elastic storeys)')
+         call fatal_error(error, 'at t = '//str(t)//' s (step '//str(step)//'): storeys, planes or hinges '// &
+                          'yield while contact points with friction act; friction is not solved together with '// &
+                          'yielding storeys or planes (set friction = 0, or elastic storeys and planes)')
          return
       end if
       ! du back to the prediction: the joints' forces of the start of the step, no plastic load.

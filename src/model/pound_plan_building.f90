@@ -24,8 +24,11 @@
 !>
 !> **Refused:** K not positive definite (a mechanism: no plane in one direction, or every
 !> plane through one point, about which the floors turn freely), or K+G not positive definite
-!> (buckling under gravity); bilinear planes (the storey yield set takes springs that are
-!> the model's drift rows, which a plane's storey is not).
+!> (buckling under gravity).
+!>
+!> **Bilinear planes** (`&plane storey_law = 'bilinear'`): the model's yielding rows
+!> (`structure_model%yield_rows`, `yield_planes`) are the planes' storey drift rows, which
+!> the storey yield set (pound_storey_yield) takes as its springs.
 !>
 !> **Response.** Response points (`floor_dof`, both faces) are the u_x DOFs; drift rows are the
 !> storey x drifts at the centre of mass, shear rows the storey x shears (sum over the 'x'
@@ -46,7 +49,7 @@ module pound_plan_building
    use pound_band_lapack, only: dpbtrf, dsbgvx, dlamch
    use pound_plan_geometry, only: plan_geometry, plan_dof, plane_x, plane_y, plan_ux, plan_uy, plan_theta
    use pound_structure, only: structure_model, recovery_rows, structure_label, chain_rows, structure_finish, &
-                              modes_listed, plan_point_row, result_group, result_rows_of, direction_x, &
+                              modes_listed, plan_point_row, never_yields, result_group, result_rows_of, direction_x, &
                               direction_y, direction_torsion
    use pound_shear_building, only: rayleigh_coefficients
    implicit none
@@ -237,8 +240,50 @@ contains
       m%result(2) = result_group(name='rotation', units='rad', first=np*ns + 1, extent=[ns], &
                                  description='floor rotation theta about z at the centre of mass, '// &
                                  'counter-clockwise positive', arm=0.5_dp*hypot(m%plan%lx, m%plan%ly))
+      call yield_planes(cfg, m, data)
       call structure_finish(m)
    end subroutine build_plan_building
+
+   !> Bilinear planes (`&plane storey_law = 'bilinear'` on some plane): the model's yielding
+   !> rows are every plane's storey drift rows (`plane_drift_row`, planes in deck order, storey
+   !> fastest: the rows of the `plane_shear` result group), k the plane's storey stiffness,
+   !> the yield shear and hardening ratio of a bilinear plane, `never_yields` and 0 for an
+   !> elastic plane (it never yields); an 'x' plane's forces sum to the storey x shear.
+   pure subroutine yield_planes(cfg, m, data)
+      type(building_spec), intent(in) :: cfg
+      type(structure_model), intent(inout) :: m
+      type(plan_data), intent(in) :: data
+      type(recovery_rows), allocatable :: parts(:)
+      integer :: ns, np, p, j, i
+
+      if (.not. any([(cfg%planes(p)%storey_law == 'bilinear', p=1, size(cfg%planes))])) return
+      ns = cfg%n_storeys
+      np = size(cfg%planes)
+      allocate (parts(np*ns), m%yield_k(np*ns), m%yield_shear(np*ns), m%hardening(np*ns), m%yield_height(np*ns), &
+                m%yield_storey(np*ns), m%yield_plane(np*ns), m%yield_in_shear(np*ns))
+      do p = 1, np
+         do j = 1, ns
+            i = (p - 1)*ns + j
+            parts(i) = plane_drift_row(m, p, j)
+            m%yield_k(i) = data%plane_stiffness(j, p)
+            if (cfg%planes(p)%storey_law == 'bilinear') then
+               m%yield_shear(i) = cfg%planes(p)%yield_shear(j)
+               m%hardening(i) = cfg%planes(p)%hardening_ratio(j)
+            else
+               m%yield_shear(i) = never_yields
+               m%hardening(i) = 0.0_dp
+            end if
+            m%yield_height(i) = cfg%height(j)
+            m%yield_storey(i) = j
+            m%yield_plane(i) = p
+            m%yield_in_shear(i) = m%plan%plane_direction(p) == plane_x
+         end do
+      end do
+      m%yield_rows = result_rows_of(parts)
+      m%yield_result_first = m%result(1)%first
+      m%result(1)%description = 'storey shear of every plane (row, deck order) and storey (column): the '// &
+                                'spring force k (d - p) of a bilinear plane, k d of an elastic one'
+   end subroutine yield_planes
 
    !> The drift row of storey j of plane p: row(P_j) - row(P_{j-1}) (floor 0: the ground), with
    !> P on the plane's line (an 'x' plane at y = c: P = (xm, c), u_x rows; a 'y' plane at
@@ -436,12 +481,29 @@ contains
       end if
       do p = 1, size(cfg%planes)
          associate (pl => cfg%planes(p))
-            if (pl%storey_law /= 'elastic') then
+            if (pl%storey_law /= 'elastic' .and. pl%storey_law /= 'bilinear') then
                call fatal_error(error, structure_label(m)//': &plane '//str(p)//' (line '//str(pl%line)// &
-                                "): storey_law = '"//trim(pl%storey_law)//"' is not supported for planes yet "// &
-                                "(only 'elastic'): the bilinear storeys yield on the model's storey drift rows, "// &
-                                'which a plane''s storey is not')
+                                "): storey_law = '"//trim(pl%storey_law)//"', must be 'elastic' or 'bilinear'")
                return
+            end if
+            if (pl%storey_law == 'bilinear') then
+               if (.not. (allocated(pl%yield_shear) .and. allocated(pl%hardening_ratio))) then
+                  call fatal_error(error, structure_label(m)//': &plane '//str(p)//' (line '//str(pl%line)// &
+                                   "): storey_law = 'bilinear' needs yield_shear (and hardening_ratio)")
+                  return
+               end if
+               if (size(pl%yield_shear) /= ns .or. .not. all(pl%yield_shear > 0.0_dp .and. &
+                                                             ieee_is_finite(pl%yield_shear))) then
+                  call fatal_error(error, structure_label(m)//': &plane '//str(p)//' (line '//str(pl%line)// &
+                                   '): yield_shear needs n_storeys = '//str(ns)//' positive, finite values (kN)')
+                  return
+               end if
+               if (size(pl%hardening_ratio) /= ns .or. .not. all(pl%hardening_ratio > -1.0_dp .and. &
+                                                                 pl%hardening_ratio < 1.0_dp)) then
+                  call fatal_error(error, structure_label(m)//': &plane '//str(p)//' (line '//str(pl%line)// &
+                                   '): hardening_ratio needs n_storeys = '//str(ns)//' values > -1 and < 1')
+                  return
+               end if
             end if
             if (.not. allocated(pl%stiffness)) then
                call fatal_error(error, structure_label(m)//': &plane '//str(p)//' has no stiffness')

@@ -46,7 +46,7 @@ module pound_structure
    public :: structure_strain_energy
    public :: direction_x, direction_z, direction_rotation, direction_y, direction_torsion
    public :: structure_check, chain_rows, structure_is_stick, structure_finish, modes_listed, structure_end_dof, &
-             structure_end_row, single_row, structure_yields, plan_point_row
+             structure_end_row, single_row, structure_yields, plan_point_row, never_yields
 
    !> Directions of a DOF and of a ground component: translation along site x (the row of
    !> buildings), along z (up), rotation in the x-z plane (a frame's node); for buildings in
@@ -54,6 +54,9 @@ module pound_structure
    integer, parameter :: direction_x = 1, direction_z = 2, direction_rotation = 3, direction_y = 4, &
                          direction_torsion = 5
 
+   !> The yield shear (kN) of a yielding row that never yields (an elastic plane among
+   !> bilinear ones, `yield_rows`): far beyond any force, yet its sums stay finite.
+   real(dp), parameter :: never_yields = 1.0e100_dp
    !> Relative size below which a result row is round-off (`result_group%arm`).
    real(dp), parameter :: result_noise = 1.0e-9_dp
 
@@ -197,6 +200,19 @@ module pound_structure
       real(dp), allocatable :: yield_shear(:), hardening(:)
       !> Their storey heights (m), for the collapse check (drift / height).
       real(dp), allocatable :: yield_height(:)
+      !> Yielding rows that are not the drift rows (a building in plan: one per plane and
+      !> storey, planes in deck order, storey fastest; unallocated `yield_k`: the drift rows,
+      !> k the shear row's scale): the rows (scale 1; `yield_shear`, `hardening`,
+      !> `yield_height` are then per row), each row's initial stiffness k (kN/m), its storey and
+      !> plane, whether its force is part of its storey's storey shear (the shear rows are
+      !> then the sums of those forces), and the result row of row 1 (0: none; the rows'
+      !> forces are then result rows `yield_result_first` onward, e.g. the plane shears).
+      !> An elastic row (a plane without storey law) has the yield shear `never_yields`.
+      type(recovery_rows) :: yield_rows
+      real(dp), allocatable :: yield_k(:)
+      integer, allocatable :: yield_storey(:), yield_plane(:)
+      logical, allocatable :: yield_in_shear(:)
+      integer :: yield_result_first = 0
       !> Plastic hinges of a frame (`&building hinge_law = 'elastic_plastic'`, issue 25): one
       !> row per element end (`hinge%n`), its rotation relative to the element's chord (rad); the
       !> element's flexural stiffness S = [k kc; kc k] joins the two ends (`hinge_mate`: the row of

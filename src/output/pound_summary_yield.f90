@@ -19,7 +19,8 @@ module pound_summary_yield
    use pound_response, only: q_drift
    use pound_influence, only: influences, largest_meaningful
    use pound_storey_yield, only: storey_yield_result
-   use pound_structure, only: structure_model, structure_yields
+   use pound_structure, only: structure_model, structure_yields, never_yields
+   use pound_plan_geometry, only: plane_x
    use pound_case_result, only: case_result
    use pound_suite_statistics, only: suite_result
    use pound_suite_yield_output, only: suite_ductility_statistics
@@ -77,46 +78,66 @@ contains
          if (yc%n_hinges > 0) then
             call hinge_items(items, res%models(ib), b, yc, yu, motion)
          else
-            call storey_items(items, b, yc, yu, motion)
+            call storey_items(items, res%models(ib), b, yc, yu, motion)
          end if
-         j = largest(yc%residual_drift)
-         call append(items, item('building', b, 'residual_drift', b//': largest residual drift, coupled'//motion, &
-                       1000.0_dp*abs(yc%residual_drift(j)), 'mm', 'storey '//str(j)//'; uncoupled (same storey) '// &
-                       plain_real(1000.0_dp*abs(yu%residual_drift(j)))//' mm'))
+         if (allocated(res%models(ib)%yield_k)) then
+            j = largest(yc%residual_drift)
+            call append(items, item('building', b, 'plane_residual_drift', b//': largest plane residual drift, '// &
+                          'coupled'//motion, 1000.0_dp*abs(yc%residual_drift(j)), 'mm', row_where(res%models(ib), j)// &
+                          '; uncoupled (same plane storey) '//plain_real(1000.0_dp*abs(yu%residual_drift(j)))//' mm'))
+         else
+            j = largest(yc%residual_drift)
+            call append(items, item('building', b, 'residual_drift', b//': largest residual drift, coupled'//motion, &
+                          1000.0_dp*abs(yc%residual_drift(j)), 'mm', 'storey '//str(j)//'; uncoupled (same storey) '// &
+                          plain_real(1000.0_dp*abs(yu%residual_drift(j)))//' mm'))
+         end if
       end associate
 
    end subroutine yield_items
 
    !> Bilinear storeys: ductility lambda of largest |lambda| (every storey's on the line),
-   !> the largest coupled ductility, the storeys that yield only with pounding.
-   subroutine storey_items(items, b, yc, yu, motion)
+   !> the largest coupled ductility, the storeys that yield only with pounding. Bilinear
+   !> planes (a building in plan): the same per plane storey (the bilinear planes' storeys on
+   !> the line, 'p/j' for plane p, storey j; the CSV quantities `lambda_plane_ductility`,
+   !> `plane_ductility`, `plane_storeys_yielding_only_with_pounding`).
+   subroutine storey_items(items, m, b, yc, yu, motion)
       type(summary_item), allocatable, intent(inout) :: items(:)
+      type(structure_model), intent(in) :: m
       character(len=*), intent(in) :: b, motion
       type(storey_yield_result), intent(in) :: yc, yu
       real(dp), allocatable :: lam(:)
-      character(len=:), allocatable :: list
-      integer :: j, k, n_new
+      character(len=:), allocatable :: list, pre, what, same
+      integer :: j, k, n_new, n_list
+      logical :: planes
 
+      planes = allocated(m%yield_k)
+      pre = trim(merge('plane_', '      ', planes))
+      what = trim(merge('plane storey', 'storey      ', planes))
+      same = trim(merge('same plane storey', 'same storey      ', planes))
       lam = influences(yc%ductility, yu%ductility)
       list = ''
+      n_list = 0
       do k = 1, yc%n
-         if (k > 1) list = list//', '
-         list = list//str(k)//': '//fixed2(yu%ductility(k))//' -> '//fixed2(yc%ductility(k))//' ('// &
+         if (.not. yields(k)) cycle
+         n_list = n_list + 1
+         if (n_list > 1) list = list//', '
+         list = list//key(k)//': '//fixed2(yu%ductility(k))//' -> '//fixed2(yc%ductility(k))//' ('// &
                 lambda_word(lam(k))//')'
       end do
       j = largest_meaningful(lam)
       if (j > 0) then
-         call append(items, item('building', b, 'lambda_ductility', b//': storey ductility lambda, largest |lambda|'// &
-                       motion, lam(j), '%', 'storey '//str(j)//': mu uncoupled '//fixed2(yu%ductility(j))// &
-                       ', coupled '//fixed2(yc%ductility(j))//'; per storey mu unc -> cpl (lambda %): '//list))
+         call append(items, item('building', b, 'lambda_'//pre//'ductility', b//': '//what//' ductility lambda, '// &
+                       'largest |lambda|'//motion, lam(j), '%', row_where(m, j)//': mu uncoupled '// &
+                       fixed2(yu%ductility(j))//', coupled '//fixed2(yc%ductility(j))//'; per '//what// &
+                       ' mu unc -> cpl (lambda %): '//list))
       else
-         call append(items, item('building', b, 'lambda_ductility', b//': storey ductility lambda, largest |lambda|'// &
-                       motion, unit='%', available=.false., location='n/m: no storey''s uncoupled '// &
-                       'ductility is meaningful; per storey mu unc -> cpl (lambda %): '//list))
+         call append(items, item('building', b, 'lambda_'//pre//'ductility', b//': '//what//' ductility lambda, '// &
+                       'largest |lambda|'//motion, unit='%', available=.false., location='n/m: no '//what// &
+                       '''s uncoupled ductility is meaningful; per '//what//' mu unc -> cpl (lambda %): '//list))
       end if
       j = largest(yc%ductility)
-      call append(items, item('building', b, 'ductility', b//': largest storey ductility, coupled'//motion, &
-                    yc%ductility(j), '-', 'storey '//str(j)//'; uncoupled (same storey) '// &
+      call append(items, item('building', b, pre//'ductility', b//': largest '//what//' ductility, coupled'//motion, &
+                    yc%ductility(j), '-', row_where(m, j)//'; uncoupled ('//same//') '// &
                     plain_real(yu%ductility(j))))
       n_new = 0
       list = ''
@@ -124,13 +145,34 @@ contains
          if (.not. (yc%ductility(k) > 1.0_dp .and. yu%ductility(k) <= 1.0_dp)) cycle
          n_new = n_new + 1
          if (n_new > 1) list = list//', '
-         list = list//str(k)
+         list = list//key(k)
       end do
       if (n_new == 0) list = 'none'
-      if (n_new > 0) list = 'storeys '//list
-      call append(items, item('building', b, 'storeys_yielding_only_with_pounding', b//': storeys that yield only '// &
-                    'with pounding'//motion, real(n_new, dp), '-', list// &
+      if (n_new > 0) list = trim(merge('plane storeys', 'storeys      ', planes))//' '//list
+      call append(items, item('building', b, pre//'storeys_yielding_only_with_pounding', b//': '//what// &
+                    's that yield only with pounding'//motion, real(n_new, dp), '-', list// &
                     ' (mu > 1 coupled, mu <= 1 uncoupled)'))
+
+   contains
+
+      !> Row k can yield (an elastic plane's rows cannot).
+      pure logical function yields(k)
+         integer, intent(in) :: k
+
+         yields = m%yield_shear(k) < never_yields
+      end function yields
+
+      !> Row k in a list: 'k' (storey) or 'p/j' (plane p, storey j).
+      pure function key(k) result(text)
+         integer, intent(in) :: k
+         character(len=:), allocatable :: text
+
+         if (planes) then
+            text = str(m%yield_plane(k))//'/'//str(m%yield_storey(k))
+         else
+            text = str(k)
+         end if
+      end function key
    end subroutine storey_items
 
    !> Plastic hinges (columns and beams): the hinges that form only with pounding, the
@@ -178,6 +220,28 @@ contains
                     motion, 1000.0_dp*yc%rotation(h), 'mrad', 'hinge '//str(h)//'; uncoupled (same hinge) '// &
                     plain_real(1000.0_dp*yu%rotation(h))//' mrad'))
    end subroutine hinge_items
+
+   !> Where yielding row k of model m is: 'storey k', or 'plane p (x, y = c m) storey j' of
+   !> a building in plan.
+   pure function row_where(m, k) result(text)
+      type(structure_model), intent(in) :: m
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      integer :: p
+
+      if (.not. allocated(m%yield_k)) then
+         text = 'storey '//str(k)
+         return
+      end if
+      p = m%yield_plane(k)
+      if (m%plan%plane_direction(p) == plane_x) then
+         text = 'plane '//str(p)//' (x, y = '//plain_real(m%plan%plane_position(p))//' m) storey '// &
+                str(m%yield_storey(k))
+      else
+         text = 'plane '//str(p)//' (y, x = '//plain_real(m%plan%plane_position(p))//' m) storey '// &
+                str(m%yield_storey(k))
+      end if
+   end function row_where
 
    !> 'hinge h (column, storey 2, line 1, bottom)' or '(beam, floor 3, line 2, right)'.
    pure function hinge_where(m, h) result(text)

@@ -14,11 +14,26 @@
 !>
 !> (the storey-shear histories and peaks of such a building are its spring forces), and the
 !> listing's table of the storeys. Only buildings with bilinear storeys get them.
+!>
+!> A building in plan with bilinear planes (its yielding rows are its planes' storeys,
+!> `structure_model%yield_k`) gets them per plane and storey, h5py shape (n_planes,
+!> n_storeys), planes in deck order, an elastic plane's rows included:
+!>
+!>     /<analysis>/<b>/peak/plane_ductility   mu = max|plane storey drift| / (Fy/k); 0: elastic plane
+!>     /<analysis>/<b>/plane_residual_drift   m, the plane's storey drift at the end
+!>     /influence/<b>/plane_ductility, /influence/<b>/plane_residual_drift   %
+!>     /model/<b>/plane_yield_shear           kN, inf for an elastic plane
+!>     /model/<b>/plane_hardening_ratio       -, 0 for an elastic plane
+!>     /model/<b>/plane_storey_law            (n_planes) 'elastic' or 'bilinear'
+!>
+!> (`hysteretic_energy` as above; `peak/plane_shear` and the storey shears are the planes'
+!> spring forces), and the listing's table of the bilinear planes' storeys.
 module pound_yield_output
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: fixed_cell, right_cell, str
-   use pound_structure, only: structure_model
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_is_nan
+   use pound_structure, only: structure_model, never_yields
    use pound_analysis, only: analysis_result
    use pound_storey_yield, only: storey_yield_result
    use pound_influence, only: influences
@@ -44,8 +59,25 @@ contains
       !> Error state.
       type(error_type), allocatable, intent(out) :: error
 
+      real(dp), allocatable :: fy(:)
+      integer :: p
+
       if (allocated(b%hinge_moment)) call write_hinge_model_h5(h5, g, b, error)
       if (.not. allocated(b%yield_shear)) return
+      if (allocated(b%yield_k)) then
+         ! Bilinear planes: per plane and storey.
+         fy = b%yield_shear
+         where (fy >= never_yields) fy = ieee_value(1.0_dp, ieee_positive_inf)
+         call h5_write(h5, g//'plane_yield_shear', plane_table(b, fy), error, units='kN')
+         if (.not. allocated(error)) call h5_write(h5, g//'plane_hardening_ratio', plane_table(b, b%hardening), &
+                                                   error, units='-')
+         if (.not. allocated(error)) &
+            call h5_write(h5, g//'plane_storey_law', [character(len=8) :: (merge('bilinear', 'elastic ', &
+                          any(b%yield_plane == p .and. b%yield_shear < never_yields)), p=1, maxval(b%yield_plane))], &
+                          error)
+         if (.not. allocated(error)) call h5_write_attr(h5, g(1:len(g) - 1), 'storey_law', 'bilinear planes', error)
+         return
+      end if
       call h5_write(h5, g//'yield_shear', b%yield_shear, error, units='kN')
       if (.not. allocated(error)) call h5_write(h5, g//'hardening_ratio', b%hardening, error, units='-')
       if (.not. allocated(error)) call h5_write_attr(h5, g(1:len(g) - 1), 'storey_law', 'bilinear', error)
@@ -69,14 +101,23 @@ contains
       do ib = 1, size(models)
          associate (y => res%yielding(ib), gb => g//'/'//models(ib)%name//'/')
             if (y%n == 0) cycle
-            if (y%n_hinges > 0) then
+            if (allocated(models(ib)%yield_k)) then
+               call h5_write(h5, gb//'peak/plane_ductility', plane_table(models(ib), y%ductility), error, units='-')
+               if (.not. allocated(error)) call h5_write_attr(h5, gb//'peak/plane_ductility', 'description', &
+                                                             'max |plane storey drift| / (yield_shear / k) per '// &
+                                                             'plane (row, deck order) and storey (column); 0: '// &
+                                                             'an elastic plane', error)
+               if (.not. allocated(error)) call h5_write(h5, gb//'plane_residual_drift', &
+                                                         plane_table(models(ib), y%residual_drift), error, units='m')
+            else if (y%n_hinges > 0) then
                call write_hinge_h5(h5, gb, y, error)
             else
                call h5_write(h5, gb//'peak/ductility', y%ductility, error, units='-')
                if (.not. allocated(error)) call h5_write_attr(h5, gb//'peak/ductility', 'description', &
                                                              'max |storey drift| / (yield_shear / k) per storey', error)
             end if
-            if (.not. allocated(error)) call h5_write(h5, gb//'residual_drift', y%residual_drift, error, units='m')
+            if (.not. allocated(error) .and. .not. allocated(models(ib)%yield_k)) &
+               call h5_write(h5, gb//'residual_drift', y%residual_drift, error, units='m')
             if (.not. allocated(error)) call h5_write(h5, gb//'hysteretic_energy', y%hysteretic, error, units='kJ')
             if (.not. allocated(error)) call h5_write_attr(h5, gb//'hysteretic_energy', 'lcp_residual', &
                                                           y%residual, error)
@@ -118,7 +159,19 @@ contains
       do ib = 1, size(models)
          if (unc%yielding(ib)%n == 0) cycle
          call yield_influence(unc%yielding(ib), cpl%yielding(ib), lam_mu, lam_res)
-         if (unc%yielding(ib)%n_hinges > 0) then
+         if (allocated(models(ib)%yield_k)) then
+            call write_lambda_table_h5(h5, '/influence/'//models(ib)%name//'/plane_ductility', &
+                                       plane_table(models(ib), lam_mu), error)
+            if (.not. allocated(error)) &
+               call write_lambda_table_h5(h5, '/influence/'//models(ib)%name//'/plane_residual_drift', &
+                                          plane_table(models(ib), lam_res), error)
+            if (.not. allocated(error) .and. max(unc%yielding(ib)%collapse_storey, &
+                                                 cpl%yielding(ib)%collapse_storey) > 0) &
+               call h5_write_attr(h5, '/influence/'//models(ib)%name, 'meaningful', 'no: '// &
+                                  collapse_text(unc%yielding(ib), cpl%yielding(ib)), error)
+            if (allocated(error)) return
+            cycle
+         else if (unc%yielding(ib)%n_hinges > 0) then
             call write_lambda_h5(h5, '/influence/'//models(ib)%name//'/plastic_rotation', &
                                  hinge_influence(unc%yielding(ib), cpl%yielding(ib)), error)
          else
@@ -180,16 +233,29 @@ contains
             cycle
          end if
          call lst%put('')
-         call lst%put('  Bilinear storeys of '//models(ib)%name//' (storey shear Q = spring force; mu = max|drift| '// &
-                  '/ (Fy/k), residual drift at the end)')
-         line = '  '//right_cell('storey', 6)//right_cell('Fy [kN]', 12)//right_cell('r', 8)// &
+         if (allocated(models(ib)%yield_k)) then
+            call lst%put('  Bilinear planes of '//models(ib)%name//' (plane shear = spring force; mu = max|plane '// &
+                         'storey drift| / (Fy/k), residual drift at the end; elastic planes not listed)')
+         else
+            call lst%put('  Bilinear storeys of '//models(ib)%name//' (storey shear Q = spring force; mu = '// &
+                         'max|drift| / (Fy/k), residual drift at the end)')
+         end if
+         line = '  '//right_cell(trim(merge('plane storey', 'storey      ', allocated(models(ib)%yield_k))), &
+                                 merge(13, 6, allocated(models(ib)%yield_k)))// &
+                right_cell('Fy [kN]', 12)//right_cell('r', 8)// &
                 right_cell('mu unc', 10)//right_cell('resid unc [mm]', 16)
          if (both) line = line//right_cell('mu cpl', 10)//right_cell('resid cpl [mm]', 16)// &
                           right_cell('lambda mu [%]', 15)//right_cell('lambda res [%]', 16)
          call lst%put(line)
          if (both) call yield_influence(unc%yielding(ib), cpl%yielding(ib), lam_mu, lam_res)
          do j = unc%yielding(ib)%n, 1, -1
-            line = '  '//right_cell(str(j), 6)//fixed_cell(models(ib)%yield_shear(j), 12, 2)// &
+            if (allocated(models(ib)%yield_k)) then
+               if (models(ib)%yield_shear(j) >= never_yields) cycle
+               line = '  '//right_cell(str(models(ib)%yield_plane(j)), 5)//right_cell(str(models(ib)%yield_storey(j)), 8)
+            else
+               line = '  '//right_cell(str(j), 6)
+            end if
+            line = line//fixed_cell(models(ib)%yield_shear(j), 12, 2)// &
                    fixed_cell(models(ib)%hardening(j), 8, 3)//fixed_cell(unc%yielding(ib)%ductility(j), 10, 3)// &
                    fixed_cell(1.0e3_dp*unc%yielding(ib)%residual_drift(j), 16, 4)
             if (both) line = line//fixed_cell(cpl%yielding(ib)%ductility(j), 10, 3)// &
@@ -236,5 +302,32 @@ contains
          cell = lambda_text(lambda, w, 2)
       end function lambda_cell
    end subroutine write_yield_tables
+
+   !> A building in plan's per-row values (planes in deck order, storey fastest) as the
+   !> table (n_storeys, n_planes): h5py (n_planes, n_storeys).
+   pure function plane_table(b, x) result(t)
+      !> The building (`yield_k` allocated).
+      type(structure_model), intent(in) :: b
+      !> One value per yielding row.
+      real(dp), intent(in) :: x(:)
+      real(dp), allocatable :: t(:, :)
+      integer :: ns
+
+      ns = maxval(b%yield_storey)
+      t = reshape(x, [ns, size(x)/ns])
+   end function plane_table
+
+   !> A table of lambdas (%) with the `not_meaningful` note where some are NaN.
+   subroutine write_lambda_table_h5(h5, path, lam, error)
+      type(h5_file), intent(inout) :: h5
+      character(len=*), intent(in) :: path
+      real(dp), intent(in) :: lam(:, :)
+      type(error_type), allocatable, intent(out) :: error
+
+      call h5_write(h5, path, lam, error, units='%')
+      if (.not. allocated(error) .and. any(ieee_is_nan(lam))) &
+         call h5_write_attr(h5, path, 'not_meaningful', 'NaN where the uncoupled value is 0 (an elastic plane, '// &
+                            'or below the meaningful fraction of the largest)', error)
+   end subroutine write_lambda_table_h5
 
 end module pound_yield_output
