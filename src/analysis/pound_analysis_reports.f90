@@ -124,6 +124,9 @@ contains
       else
          meff = max(m(1), m(2))
       end if
+      ! A contact point of buildings in plan with the share s of its pair (its law's force
+      ! scaled by s) against the share s of the masses: the pair's half-period.
+      meff = p%share*meff
    end function effective_mass
 
    !> The audit residual is large: name the joints whose contact half-period pi sqrt(m_eff/k0)

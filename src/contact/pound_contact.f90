@@ -71,7 +71,7 @@ module pound_contact
    use pound_contact_smooth, only: smooth_start, smooth_relinearise, smooth_finish, smooth_commit, smooth_speeds, &
                                    smooth_unsettled
    use pound_contact_friction_lcp, only: friction_start, friction_assemble, friction_forces, friction_opening, &
-                                         friction_q, friction_apply, friction_commit
+                                         friction_q, friction_apply, friction_commit, friction_verify
    use pound_contact_system, only: contact_system, contact_init, contact_init_flexibility, contact_swap_step, &
                                    lcp_workspace, residual_limit, fallback_max_rows, initial_hinges, &
                                    lcp_solver_auto, lcp_solver_lemke, joint_constants
@@ -437,6 +437,7 @@ contains
          if (size(cs%iterating) == 0) return
          if (.not. smooth_relinearise(cs, v_pred, it)) then
             call smooth_finish(cs, v_pred)
+            if (cs%fr%n > 0) call friction_verify(cs, t, step, error)
             return
          end if
       end do
@@ -493,6 +494,13 @@ contains
       ! solution z = 0, w = q is exact; the clock is read only when there is an LCP to solve.
       cs%r_new = 0.0_dp
       cs%x_new = 0.0_dp
+      if (cs%fr%n > 0) then
+         ! No friction rows until assembled (an iterate of a smooth law that opens every
+         ! joint keeps no tangential force of the iterate before).
+         cs%fr%nt = 0
+         cs%fr%force_new = 0.0_dp
+         cs%fr%slip_new = 0.0_dp
+      end if
       timed = any(cs%in_lcp)
       if (.not. timed) return
       call system_clock(clock_start, clock_rate)

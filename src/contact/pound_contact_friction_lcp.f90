@@ -23,7 +23,8 @@
 !> non-symmetrically through mu, so the step is solved by Lemke (never the active-set method).
 module pound_contact_friction_lcp
    use pound_kinds, only: dp
-   use pound_error, only: error_type
+   use pound_error, only: error_type, fatal_error, error_at
+   use pound_strings, only: str
    use pound_integrator, only: integrator
    use pound_structure, only: recovery_rows
    use pound_contact_pair, only: end_sign
@@ -32,7 +33,12 @@ module pound_contact_friction_lcp
    private
 
    public :: friction_start, friction_assemble, friction_forces, friction_opening, friction_q, friction_apply, &
-             friction_commit
+             friction_commit, friction_verify, friction_check_limit
+
+   !> Largest violation of a friction row after a step whose normal rows were iterated
+   !> (`friction_verify`), relative to mu N + |T| + kt (|e| + |q|_inf) of the point (|q|_inf:
+   !> the step's largest released opening, the scale of the LCP's own residual).
+   real(dp), parameter :: friction_check_limit = 1.0e-8_dp
 
 contains
 
@@ -382,5 +388,48 @@ contains
          end associate
       end do
    end subroutine friction_commit
+
+   !> The check of a step whose smooth joints were iterated (pound_contact_smooth: each
+   !> iterate's LCP holds the friction rows with the iterate's linearised normal rows): with
+   !> the step's final normal forces N = r_new, every point's tangential force T and slip
+   !> increment l = l+ - l- meet Coulomb's complementarity, min(kt max(l, 0), mu N - T) = 0 and
+   !> min(kt max(-l, 0), mu N + T) = 0 (so |T| <= mu N, T = mu N while slipping forward, T =
+   !> -mu N backward, T = 0 at an open point), within `friction_check_limit`. A point that does
+   !> not fails the step, named with time, step and its values.
+   subroutine friction_verify(cs, t, step, error)
+      !> The contact system after the step's last solve.
+      type(contact_system), intent(in) :: cs
+      !> Time at the end of the step (s) and step, for the message.
+      real(dp), intent(in) :: t
+      integer, intent(in) :: step
+      !> Error state.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i, k
+      real(dp) :: n, tt, l, mu, kt, tol, plus, minus, qnorm
+
+      ! The step's scale in metres (the last solve's q, as the LCP's residual).
+      qnorm = 0.0_dp
+      do k = 1, cs%m
+         if (.not. cs%joint(k)%fractured) qnorm = max(qnorm, abs(cs%q(k)))
+      end do
+      do i = 1, cs%fr%n
+         k = cs%fr%joint(i)
+         n = cs%r_new(k)
+         tt = cs%fr%force_new(i)
+         l = cs%fr%slip_new(i)
+         mu = cs%fr%mu(i)
+         kt = cs%fr%kt(i)
+         tol = friction_check_limit*max(mu*abs(n) + abs(tt) + kt*(abs(cs%fr%e(i)) + qnorm), tiny(1.0_dp))
+         plus = min(kt*max(l, 0.0_dp), mu*n - tt)
+         minus = min(kt*max(-l, 0.0_dp), mu*n + tt)
+         if (abs(plus) <= tol .and. abs(minus) <= tol) cycle
+         call fatal_error(error, 'contact at t = '//str(t)//' s (step '//str(step)//'): the friction of contact '// &
+                          'point '//cs%pair(k)%label//' does not hold with the step''s normal force N = '//str(n)// &
+                          ' kN: T = '//str(tt)//' kN, mu N = '//str(mu*n)//' kN, slip increment '//str(l)// &
+                          ' m (reduce dt)')
+         call error_at(error, time=t, step=step, joint=k)
+         return
+      end do
+   end subroutine friction_verify
 
 end module pound_contact_friction_lcp

@@ -238,15 +238,16 @@ contains
 
    !> Scale the force axis of the rows by `s` > 0: the force at every compression and rate
    !> becomes s times the law's (stiffness, dashpot, envelope forces, yield forces and plastic
-   !> moduli; the penetrations stay). A contact point that takes a share s of its pair
-   !> (pound_contact_pair, buildings in plan). Piecewise-linear rows only: the smooth laws
-   !> compute their force in the `given` law (`contact_init` refuses them with s /= 1).
+   !> moduli; the penetrations stay), and so does the force of the `given` law where it has one
+   !> of its own (a smooth law: `joint_law%scale_force`, its stiffness scaled). A contact point
+   !> that takes a share s of its pair (pound_contact_pair, buildings in plan).
    pure subroutine scale_law_force(law, s)
       !> The rows.
       type(contact_law), intent(inout) :: law
       !> The factor.
       real(dp), intent(in) :: s
 
+      if (allocated(law%given)) call law%given%scale_force(s)
       law%stiffness = s*law%stiffness
       law%dashpot = s*law%dashpot
       law%tail_slope = s*law%tail_slope

@@ -45,7 +45,8 @@ module pound_contact_pair
       integer :: dof(2) = 0
       !> Initial gap g (m).
       real(dp) :: gap = 0.0_dp
-      !> Constraint law (of a contact point: the pair's law with its force scaled by `share`).
+      !> Constraint law (of a contact point: the pair's law with its force scaled by `share`,
+      !> a smooth law's own force too: `scale_law_force`).
       type(contact_law) :: law
       !> Buildings in plan: the share of its pair this contact point takes (1/2 of two points,
       !> 1 of one; `scale_law_force`), the DOF whose lumped mass times `share` is the end's mass
@@ -127,8 +128,6 @@ contains
                cycle
             end if
             call plan_points(c, i, names, models, ys, np, error)
-            if (allocated(error)) return
-            call plan_law_checks(c, i, names, law, np, error)
             if (allocated(error)) return
             do k = 1, size(c%floor_left)
                do ip = 1, np
@@ -221,31 +220,6 @@ contains
          ys = [lo, hi]
       end if
    end subroutine plan_points
-
-   !> Laws a contact point of buildings in plan cannot take: a smooth law (its force is the
-   !> law's own, not scaled) at two points, or with friction.
-   subroutine plan_law_checks(c, i, names, law, np, error)
-      type(contact_config), intent(in) :: c
-      integer, intent(in) :: i, np
-      character(len=*), intent(in) :: names(:)
-      type(contact_law), intent(in) :: law
-      type(error_type), allocatable, intent(out) :: error
-      logical :: smooth
-
-      smooth = .false.
-      if (allocated(law%given)) smooth = law%given%iterates()
-      if (.not. smooth) return
-      if (c%friction > 0.0_dp) then
-         call fatal_error(error, '&contact #'//str(i)//' ('//pair_names(c, names)//'): friction = '// &
-                          str(c%friction)//' with the smooth law '''//law%title()//''' is not available '// &
-                          '(friction is solved with the piecewise-linear laws); set friction = 0 or take a '// &
-                          'piecewise-linear law')
-      else if (np > 1) then
-         call fatal_error(error, '&contact #'//str(i)//' ('//pair_names(c, names)//'): the smooth law '''// &
-                          law%title()//''' cannot be shared by the two contact points of overlapping '// &
-                          'facades (its force is not scaled); take a piecewise-linear law')
-      end if
-   end subroutine plan_law_checks
 
    !> Contact point of floor pair k of group c at site y: its ends (u_x and u_y rows of A's
    !> right facade x = Lx_A and B's left facade x = 0), the pair's law with its force scaled

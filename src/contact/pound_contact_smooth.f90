@@ -35,6 +35,11 @@
 !> (`joint_advance`, pound_joint_state) gives d. Every row of an iterate is the law's trial
 !> state (`contact_law%set_trial`, `joint_law%set_trial`: the LCP reads the rows' slope);
 !> the commit drops it (`contact_law%commit`: the row is back at the law's stiffness).
+!> With friction (contact points of buildings in plan, pound_contact_friction_lcp) each
+!> iterate's LCP holds the friction rows with the iterate's linearised normal rows, and the
+!> end-of-step closing includes the tangential forces' opening (`solved_closing`); the
+!> converged step's friction is checked with its final N (`friction_verify`). A contact point
+!> that takes a share of its pair has the pair's law with its force scaled (`scale_law_force`).
 module pound_contact_smooth
    use pound_kinds, only: dp
    use pound_strings, only: str
@@ -42,6 +47,7 @@ module pound_contact_smooth
    use pound_contact_pair, only: end_sign
    use pound_contact_system, only: contact_system, joint_constants
    use pound_lcp_active_set, only: active_set_forget
+   use pound_contact_friction_lcp, only: friction_opening
    implicit none
    private
 
@@ -71,6 +77,21 @@ contains
 
       has_force = cs%pair(k)%law%given%has_force()
    end function has_force
+
+   !> The closing displacement of joint k at the end of the step for the last solve's forces:
+   !> v_pred - F r_new, and with friction rows in the solve the tangential forces' opening
+   !> (- G_nt T, `friction_opening`).
+   pure real(dp) function solved_closing(cs, v_pred, k) result(v)
+      !> The contact system after a solve.
+      type(contact_system), intent(in) :: cs
+      !> Closing displacements with every force of the step released (m).
+      real(dp), intent(in) :: v_pred(:)
+      !> Joint.
+      integer, intent(in) :: k
+
+      v = v_pred(k) - dot_product(cs%f(:, k), cs%r_new)
+      if (cs%fr%nt > 0) v = v - friction_opening(cs, k)
+   end function solved_closing
 
    !> Before the step's first LCP: the constants of every iterating joint, a smooth joint's
    !> latch candidate v0 (when it starts open) and its first tangent row, at the released
@@ -242,7 +263,7 @@ contains
          ! A fractured joint (a collapse opened it) carries nothing: no equation to solve.
          if (cs%joint(k)%fractured) cycle
          if (has_force(cs, k)) then
-            v = v_pred(k) - dot_product(cs%f(:, k), cs%r_new)
+            v = solved_closing(cs, v_pred, k)
             if (smooth_residual(cs, k, v, cs%r_new(k)) <= smooth_residual_limit) cycle
             call linearise(cs, k, v - cs%pair(k)%gap, it >= secant_after)
             changed = .true.
@@ -279,7 +300,7 @@ contains
          k = cs%iterating(i)
          if (cs%joint(k)%fractured) cycle
          if (has_force(cs, k)) then
-            res = smooth_residual(cs, k, v_pred(k) - dot_product(cs%f(:, k), cs%r_new), cs%r_new(k))
+            res = smooth_residual(cs, k, solved_closing(cs, v_pred, k), cs%r_new(k))
             if (res <= smooth_residual_limit) cycle
             if (first == 0) first = k
             if (len(text) > 0) text = text//', '
@@ -305,7 +326,7 @@ contains
       do i = 1, size(cs%iterating)
          k = cs%iterating(i)
          if (.not. has_force(cs, k)) cycle
-         d = v_pred(k) - dot_product(cs%f(:, k), cs%r_new) - cs%pair(k)%gap
+         d = solved_closing(cs, v_pred, k) - cs%pair(k)%gap
          if (cs%r_new(k) > 0.0_dp .and. d > 0.0_dp) then
             call cs%pair(k)%law%set_trial(cs%r_new(k)/d)
             call joint_constants(cs, k)

@@ -142,6 +142,10 @@ module pound_joint_law
       !> The slope (kN/m) of the law's row: the trial one during a step, else the committed
       !> one; `k_rows` (the rows' own k0) for a law without trial state.
       procedure :: row_stiffness => law_rows_stiffness
+      !> Scale the law's own force by s > 0 (a contact point that takes the share s of its
+      !> pair, pound_contact_pair; `contact_law`'s `scale_law_force` scales the rows); default:
+      !> nothing (a piecewise-linear law's force is its rows').
+      procedure :: scale_force => law_no_scale
    end type joint_law
 
    abstract interface
@@ -372,5 +376,18 @@ contains
       end associate
       k = k_rows
    end function law_rows_stiffness
+
+   !> Default `scale_force`: the law has no force of its own (its rows are scaled).
+   pure subroutine law_no_scale(law, s)
+      !> The law.
+      class(joint_law), intent(inout) :: law
+      !> The factor.
+      real(dp), intent(in) :: s
+
+      associate (unused => s)
+      end associate
+      associate (unused => law)
+      end associate
+   end subroutine law_no_scale
 
 end module pound_joint_law

@@ -71,6 +71,8 @@ module pound_law_smooth
       procedure :: commit => smooth_commit_state
       !> The trial slope during a step, else k.
       procedure :: row_stiffness => smooth_row_stiffness
+      !> The force scaled by s: the stiffness k scaled (`smooth_scale_force`).
+      procedure :: scale_force => smooth_scale_force
    end type smooth_law
 
 contains
@@ -264,6 +266,22 @@ contains
       k = law%k
       if (law%in_trial) k = law%k_trial
    end function smooth_row_stiffness
+
+   !> Scale the law's force by s > 0 (a contact point that takes the share s of its pair):
+   !> its stiffness k (k or kh, beta) becomes s k. Every smooth law's force is homogeneous of
+   !> degree one in its stiffness and the facing masses together, f(d, d'; s k, s m1, s m2) =
+   !> s f(d, d'; k, m1, m2) (the dashpots c = 2 xi sqrt(k m_eff) of `kelvin` and `jankowski`
+   !> scale by s; the constant a of `hertz_damp` is e's alone), and the point's masses are the
+   !> share s of the floors' (pound_contact_system `calibrate_dashpot`): the point's force is
+   !> s times the pair's law's, its tangent s times the tangent, its calibration (the realised
+   !> restitution, the contact duration) the pair's.
+   pure subroutine smooth_scale_force(law, s)
+      class(smooth_law), intent(inout) :: law
+      real(dp), intent(in) :: s
+
+      law%k = s*law%k
+      law%impact_known = .false.
+   end subroutine smooth_scale_force
 
    pure real(dp) function smooth_shown_stiffness(law) result(k)
       class(smooth_law), intent(in) :: law
