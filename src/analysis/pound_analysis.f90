@@ -26,7 +26,7 @@ module pound_analysis
    use pound_error, only: error_type, fatal_error, error_at
    use pound_strings, only: str, add_warning
    use pound_analysis_plan, only: analysis_plan, output_steps, stepping_impact, free_exact, lcp_lemke
-   use pound_structure, only: structure_model, direction_y
+   use pound_structure, only: structure_model
    use pound_ground_motion, only: check_ground_samples, ground_motion_t
    use pound_progress, only: progress_steps, progress_run_done, progress_stride
    use pound_integrator, only: integrator, integrator_properties, max_lanes, en_input, en_damping, en_numerical, &
@@ -44,7 +44,7 @@ module pound_analysis
                                  yield_sample, yield_results, yield_energy_step
    use pound_storey_collapse, only: yield_hold, yield_freeze
    use pound_contact_period, only: joint_half_period, substep_impact_speed
-   use pound_step_policy, only: step_policy, step_state, step_counts, uniform_policy, step_state_point
+   use pound_step_policy, only: step_policy, step_state, step_counts, uniform_policy, step_state_point, ground_rows_of
    use pound_step_exact, only: exact_policy
    use pound_step_impact, only: impact_policy, impact_setup
    use pound_step_closed, only: closed_policy, closed_setup

@@ -614,9 +614,10 @@ contains
    end subroutine lanes_finish
 
    !> A run under a ground component along y (`analysis_plan%ground_y`): each building with
-   !> DOFs along y (`ground_set(:, 2)`, direction y) gets its load rows, -M r_y, and
-   !> x = Khat^{-1} M r_y, and starts at rest in equilibrium with both components:
-   !> a_0 = -(r_x a_gx(0) + r_y a_gy(0)).
+   !> DOFs along y (`ground_set(:, c)`, direction y) gets its load rows, -M r_y, and
+   !> x = Khat^{-1} M r_y (`ground_rows_of`), and starts at rest in equilibrium with both
+   !> components, a_0 = -(r_x a_gx(0) + r_y a_gy(0)) (`integrator%start_load`: HHT-alpha also
+   !> keeps the load in its F_0).
    subroutine ground_y_setup(s, ag_y, st, models)
       !> The step (pointed at the run).
       type(step_state), intent(inout) :: s
@@ -626,27 +627,13 @@ contains
       class(integrator), intent(inout) :: st(:)
       !> The buildings.
       type(structure_model), intent(in) :: models(:)
-      real(dp), pointer :: a(:)
-      real(dp), allocatable :: a0(:)
-      integer :: ib, c, i
+      integer :: ib
 
       s%ag_y(0:) => ag_y
-      allocate (s%gy(size(models)))
+      call ground_rows_of(s%gy, st, models)
       do ib = 1, size(models)
-         if (.not. allocated(models(ib)%ground_direction)) cycle
-         c = findloc(models(ib)%ground_direction, direction_y, 1)
-         if (c == 0) cycle
-         s%gy(ib)%dof = pack([(i, i=1, models(ib)%n)], models(ib)%ground_set(:, c) /= 0.0_dp)
-         s%gy(ib)%w = models(ib)%mass(s%gy(ib)%dof)*models(ib)%ground_set(s%gy(ib)%dof, c)
-         allocate (s%gy(ib)%x(models(ib)%n))
-         s%gy(ib)%x = 0.0_dp
-         s%gy(ib)%x(s%gy(ib)%dof) = s%gy(ib)%w
-         call st(ib)%solve(s%gy(ib)%x)
-         if (ag_y(0) == 0.0_dp) cycle
-         a => st(ib)%a_view()
-         a0 = a
-         a0(s%gy(ib)%dof) = a0(s%gy(ib)%dof) - ag_y(0)*models(ib)%ground_set(s%gy(ib)%dof, c)
-         call st(ib)%set_state(models(ib), a=a0)
+         if (.not. allocated(s%gy(ib)%dof)) cycle
+         call st(ib)%start_load(models(ib), -ag_y(0), s%gy(ib)%dof, s%gy(ib)%w)
       end do
    end subroutine ground_y_setup
 

@@ -214,23 +214,13 @@ contains
       end do
 
       ! The ground along y (an angle, a second component): a building with DOFs along y (in
-      ! plan) takes -M (r_x a_gx + r_y a_gy), the component along y as a load of Newmark's
-      ! uniform steps (`analysis_plan%ground_y`); the settings whose steps take the ground along
-      ! x only are refused for such runs.
+      ! plan) takes -M (r_x a_gx + r_y a_gy); `run_case` samples the component along y at the
+      ! steps (`analysis_plan%ground_y`), which every integrator and step policy takes (the
+      ! load rows of the method's steps, the exact steps' modal forcing, the substeps').
       do ib = 1, size(res%models)
          if (.not. ground_moves_y(gm)) exit
          if (.not. allocated(res%models(ib)%ground_direction)) cycle
          if (.not. any(res%models(ib)%ground_direction == direction_y)) cycle
-         text = ''
-         if (plan%integrator /= integrator_newmark) text = "integrator = 'newmark'"
-         if (plan%free_steps == free_exact) text = "free_steps = 'newmark'"
-         if (plan%stepping == stepping_impact) text = "stepping = 'uniform'"
-         if (len(text) > 0) then
-            call fatal_error(error, prefix//"&ground: building "//res%models(ib)%name//' has DOFs along y, and '// &
-                             'the ground along y (angle = '//str(gm%angle)//' degrees or a second component, '// &
-                             "file_2) is taken by Newmark's uniform steps only: give "//text, status_input)
-            return
-         end if
          allocate (plan%ground_y(0:n_steps))
          do k = 0, n_steps
             plan%ground_y(k) = ground_accel_y(gm, real(k, dp)*deck%analysis%dt)

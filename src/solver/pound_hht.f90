@@ -22,6 +22,12 @@
 !> at u_n + du; the joints' compression rate keeps the trapezoidal rule (`velocity_rate` =
 !> 2/dt: a joint's rate is its own variable).
 !>
+!> **Other ground components.** A ground component the caller takes as load rows (along y:
+!> -M r_y a_gy, `add_load_rows` with its increments) is a load of F like the contact loads, so
+!> it enters F_{n+1} with the weight 1+alpha and F_n exactly as -M r_x a_gx does: its value
+!> at t = 0 is put in f_0 (`start_load`) and its trapezoid work added to the input work
+!> (`add_input_work`).
+!>
 !> **Energy.** With e_n = M a_n + C v_n + K u_n - F_n (the force HHT leaves unbalanced at
 !> t_n; e_0 = 0) the averaged equation M a_avg + C v_avg + K u_avg = F_avg + e_avg and the
 !> kinematics give, exactly, per step
@@ -39,7 +45,8 @@ module pound_hht
    use pound_band_lapack, only: dpbtrf, dpbtrs, dpttrf, dpttrs
    use pound_swap, only: swap
    use pound_structure, only: structure_model, structure_label, structure_strain_energy
-   use pound_integrator, only: integrator, integrator_properties, trapezoid_rate, n_integrator_energies
+   use pound_integrator, only: integrator, integrator_properties, trapezoid_rate, n_integrator_energies, &
+                               default_start_load
    implicit none
    private
 
@@ -101,6 +108,8 @@ module pound_hht
       procedure :: add_energies => hht_add_energies
       procedure :: kinetic_energy => hht_kinetic_energy
       procedure :: strain_energy => hht_strain_energy
+      procedure :: add_input_work => hht_add_input_work
+      procedure :: start_load => hht_start_load
    end type hht_state
 
 contains
@@ -249,15 +258,18 @@ contains
       st%cd = st%dt*(1.0_dp - st%gamma/(2.0_dp*st%beta))
    end subroutine kinematic_constants
 
-   !> HHT-alpha has no exact steps: predicts by `hht_predict`.
-   subroutine hht_predict_exact(st, b, ag_old, ag_new)
+   !> HHT-alpha has no exact steps: predicts by `hht_predict` under the first component.
+   subroutine hht_predict_exact(st, b, ag_old, ag_new, ag2_old, ag2_new)
       !> Integrator.
       class(hht_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       !> Ground acceleration at the start and end of the step (m/s^2).
       real(dp), intent(in), value :: ag_old, ag_new
+      !> Not used (a second component is the caller's load rows: no exact steps).
+      real(dp), intent(in), optional :: ag2_old, ag2_new
 
+      if (present(ag2_old) .or. present(ag2_new)) continue
       call hht_predict(st, b, ag_new - ag_old)
    end subroutine hht_predict_exact
 
@@ -701,6 +713,34 @@ contains
       e_damping = e_damping + st%damping_energy
       e_numerical = e_numerical + st%numerical
    end subroutine hht_add_energies
+
+   !> Add work to the input work (a ground component taken as load rows).
+   pure subroutine hht_add_input_work(st, w)
+      !> Integrator.
+      class(hht_state), intent(inout) :: st
+      !> Work (kJ).
+      real(dp), intent(in) :: w
+
+      st%input_work = st%input_work + w
+   end subroutine hht_add_input_work
+
+   !> Start at rest under a further load s w at t = 0: kept in the loads f_0 (F_0), then a_0 +=
+   !> M^-1 s w as any integrator starts (`default_start_load`, whose `set_state` forms e_0 = 0
+   !> again with f_0).
+   subroutine hht_start_load(st, b, s, dof, w)
+      !> Integrator at t = 0.
+      class(hht_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Load factor (m/s^2: -a_gy(0)).
+      real(dp), intent(in) :: s
+      !> DOFs and weights (m_i r_i).
+      integer, intent(in) :: dof(:)
+      real(dp), intent(in) :: w(:)
+
+      st%f(dof) = st%f(dof) + s*w
+      call default_start_load(st, b, s, dof, w)
+   end subroutine hht_start_load
 
    !> Kinetic energy v^T M v/2 (kJ).
    pure function hht_kinetic_energy(st, b) result(e)

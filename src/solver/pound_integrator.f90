@@ -39,7 +39,7 @@ module pound_integrator
    implicit none
    private
 
-   public :: integrator, integrator_properties, trapezoid_rate, max_lanes
+   public :: integrator, integrator_properties, trapezoid_rate, max_lanes, default_start_load
    public :: en_input, en_kinetic, en_strain, en_damping, en_numerical, n_integrator_energies
 
    !> Indices of `energies`: input work, kinetic, strain and viscous damping energy, and the
@@ -75,7 +75,11 @@ module pound_integrator
       procedure(init_i), deferred :: init
       !> The step's increment du for the ground acceleration increment alone.
       procedure(predict_i), deferred :: predict
-      !> Predict the step exactly (exact free steps; an integrator without them predicts).
+      !> Predict the step exactly (exact free steps; an integrator without them predicts), under
+      !> the ground along x and, with `ag2_old`, `ag2_new`, the model's second ground component
+      !> (along y: `ground_set(:, 2)`), both linear over the step. An integrator with
+      !> `exact_steps` takes both; one without predicts by its method under the first alone
+      !> (its caller adds the second as load rows).
       procedure(predict_exact_i), deferred :: predict_exact
       !> Drop an exact prediction (the step is predicted again by `predict`).
       procedure(drop_exact_i), deferred :: drop_exact
@@ -139,9 +143,14 @@ module pound_integrator
       !> (the damping energy is the balance). The default does nothing (`takes_state` false).
       procedure :: put_state => no_put_state
       !> Add work to the input work (a ground component the step took as a load,
-      !> `add_load_rows`: the component along y). Only an integrator that overrides it may
-      !> take such a component (the default drops the work; run_case refuses the others).
+      !> `add_load_rows`: the component along y). Every integrator overrides it (the default
+      !> drops the work).
       procedure :: add_input_work => no_input_work
+      !> Start at rest under a further load s w at t = 0 along the weights w of the DOFs dof
+      !> (a ground component the steps take as load rows: -M r_y a_gy(0)): a_0 += M^-1 s w, and
+      !> the loads at t_0 the method keeps (HHT-alpha's F_0). The default sets a through
+      !> `set_state` (Newmark's step is incremental: a_0 is all it keeps).
+      procedure :: start_load => default_start_load
    end type integrator
 
    abstract interface
@@ -170,11 +179,12 @@ module pound_integrator
          real(dp), intent(in), value :: dag
       end subroutine predict_i
       !> Interface of the binding(s) declared with `predict_exact_i` (see the type).
-      subroutine predict_exact_i(st, b, ag_old, ag_new)
+      subroutine predict_exact_i(st, b, ag_old, ag_new, ag2_old, ag2_new)
          import :: integrator, structure_model, dp
          class(integrator), intent(inout) :: st
          type(structure_model), intent(in) :: b
          real(dp), intent(in), value :: ag_old, ag_new
+         real(dp), intent(in), optional :: ag2_old, ag2_new
       end subroutine predict_exact_i
       !> Interface of the binding(s) declared with `drop_exact_i` (see the type).
       pure subroutine drop_exact_i(st)
@@ -371,6 +381,30 @@ contains
       if (same_type_as(st, st) .or. size(u) + size(v) + size(a) < 0) return
       if (kinetic + strain + work + joint_work < 0.0_dp) return
    end subroutine no_put_state
+
+   !> Default `start_load`: a_0 += M^-1 s w at the DOFs with mass (`set_state`).
+   subroutine default_start_load(st, b, s, dof, w)
+      !> Integrator at t = 0.
+      class(integrator), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> Load factor (m/s^2: -a_gy(0)).
+      real(dp), intent(in) :: s
+      !> DOFs and weights (m_i r_i).
+      integer, intent(in) :: dof(:)
+      real(dp), intent(in) :: w(:)
+      real(dp), pointer :: a(:)
+      real(dp), allocatable :: a0(:)
+      integer :: i
+
+      if (s == 0.0_dp) return
+      a => st%a_view()
+      a0 = a
+      do i = 1, size(dof)
+         if (b%mass(dof(i)) > 0.0_dp) a0(dof(i)) = a0(dof(i)) + s*(w(i)/b%mass(dof(i)))
+      end do
+      call st%set_state(b, a=a0)
+   end subroutine default_start_load
 
    !> Default `add_input_work`: nothing (an integrator that cannot take a ground load).
    pure subroutine no_input_work(st, w)

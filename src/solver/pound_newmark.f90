@@ -136,6 +136,11 @@ module pound_newmark
       !> The largest entry of each relaxation coordinate's column of phi (n - nm).
       real(dp), allocatable :: zscale(:)
       real(dp) :: ground_terms(6) = 0.0_dp
+      !> Exact free steps of a model with a second ground component (`ground_set(:, 2)`): per
+      !> mode its participations Gamma_1, Gamma_2 (n, 2), the step's coefficients for a unit
+      !> participation (n, 28: `coef`'s 22 and the six terms of the energies in the modal ground
+      !> alone) and the modal ground Gamma_1 a_g1 + Gamma_2 a_g2 at the step's ends (n each).
+      real(dp), allocatable :: gam(:, :), coef2(:, :), g0(:), g1(:)
       !> Exact free steps: modal coordinates and rates now and at the end of the predicted
       !> step, the modal accelerations without the ground term at its end; v and a at its end
       !> (n each).
@@ -235,12 +240,14 @@ module pound_newmark
          type(error_type), allocatable, intent(out) :: error
       end subroutine exact_init
       !> Predict the step exactly for the ground acceleration linear from `ag_old` to `ag_new`
-      !> (du, and v, a at the end); an integrator without exact steps predicts by Newmark
-      !> (`newmark_predict`). Submodule pound_newmark_exact.
-      module subroutine newmark_predict_exact(st, b, ag_old, ag_new)
+      !> (and a second component from `ag2_old` to `ag2_new`) (du, and v, a at the end); an
+      !> integrator without exact steps predicts by Newmark (`newmark_predict`). Submodule
+      !> pound_newmark_exact.
+      module subroutine newmark_predict_exact(st, b, ag_old, ag_new, ag2_old, ag2_new)
          class(newmark_state), intent(inout) :: st
          type(structure_model), intent(in) :: b
          real(dp), intent(in), value :: ag_old, ag_new
+         real(dp), intent(in), optional :: ag2_old, ag2_new
       end subroutine newmark_predict_exact
       !> Complete the exact step predicted by `newmark_predict_exact` (submodule
       !> pound_newmark_exact).

@@ -17,6 +17,13 @@
 !> q0'^2, q0 a_g0, q0 a_g1, q0' a_g0, q0' a_g1) (the forms' off-diagonal terms doubled); the
 !> forms' terms in a_g alone (a_g0^2, a_g0 a_g1, a_g1^2) are the same for every step and summed
 !> over the modes in `ground_terms` (1:3 input work, 4:6 damping energy).
+!>
+!> A model with a second ground component (a building in plan under a ground along y: load
+!> -M (r_1 a_g1 + r_2 a_g2)) drives mode i by its modal ground g_i = Gamma_1 a_g1 + Gamma_2 a_g2,
+!> linear over the step too: `coef2` holds each mode's step for a unit participation against
+!> x = (q0, q0', g_i0, g_i1) (1:22 as `coef`, 23:25 and 26:28 the terms in g alone of the input
+!> work and the damping energy, per mode since g differs from mode to mode), and
+!> `newmark_predict_exact` with `ag2_old`, `ag2_new` steps it (`modal_kernel_g`).
 submodule(pound_newmark) pound_newmark_exact
    use pound_modal_step, only: modal_step_coefficients
    use pound_band, only: band_to_dense
@@ -124,6 +131,10 @@ contains
             return
          end if
       end do
+      if (allocated(b%ground_set)) then
+         if (size(b%ground_set, 2) >= 2) call second_component_init(st, b, w, error)
+         if (allocated(error)) return
+      end if
       ! The massless DOFs' relaxation coordinates z (g = L z, K_ss = L L^T): z' = -z/a1, so
       ! z(h) = exp(-h/a1) z(0), z' = -z/a1, z'' = z/a1^2 (lam = 0, cm = 1/a1 give
       ! xw = -(lam z + cm z') = z/a1^2), and the damping energy of the step is the strain
@@ -147,6 +158,13 @@ contains
       end if
       ! Held mode-fastest, (n, 22): the step's kernel runs over the modes in vectors.
       st%coef = transpose(st%coef)
+      if (allocated(st%coef2)) then
+         do i = nm + 1, n
+            st%coef2(1:22, i) = st%coef(i, :)
+            st%coef2(23:28, i) = 0.0_dp
+         end do
+         st%coef2 = transpose(st%coef2)
+      end if
       st%exact = .true.
       st%pending = .false.
       st%modal_valid = .false.
@@ -161,6 +179,51 @@ contains
          t = [f(1, 1), 2.0_dp*f(1, 2), f(2, 2), 2.0_dp*f(1, 3), 2.0_dp*f(1, 4), 2.0_dp*f(2, 3), 2.0_dp*f(2, 4)]
       end function form_terms
    end subroutine exact_init
+
+   !> The step of each mode under its modal ground (a model with a second ground component,
+   !> see the module doc): the participations of the first two components, the coefficients for
+   !> a unit participation (28, n; the relaxation coordinates' are set with `coef`'s) and the
+   !> work arrays of the modal ground.
+   subroutine second_component_init(st, b, lam, error)
+      !> Integrator state (its modes set).
+      type(newmark_state), intent(inout) :: st
+      !> The structural model.
+      type(structure_model), intent(in) :: b
+      !> omega^2 of the modes.
+      real(dp), intent(in) :: lam(:)
+      !> Error state: a step that is not finite.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: wi(4, 4), wd(4, 4)
+      integer :: i, n, stat
+
+      n = st%n
+      allocate (st%gam(n, 2), st%coef2(28, n), st%g0(n), st%g1(n), stat=stat)
+      if (stat /= 0) then
+         call fatal_error(error, structure_label(b)//": free_steps = 'exact': cannot allocate the modes' steps "// &
+                          'under two ground components')
+         return
+      end if
+      st%gam = 0.0_dp
+      st%g0 = 0.0_dp
+      st%g1 = 0.0_dp
+      do i = 1, st%nm
+         st%gam(i, 1) = sum(st%phi(:, i)*b%mass*b%ground_set(:, 1))
+         st%gam(i, 2) = sum(st%phi(:, i)*b%mass*b%ground_set(:, 2))
+         call modal_step_coefficients(lam(i), st%cm(i), 1.0_dp, st%dt, st%coef2(1:8, i), wi, wd)
+         st%coef2(9:15, i) = [wi(1, 1), 2.0_dp*wi(1, 2), wi(2, 2), 2.0_dp*wi(1, 3), 2.0_dp*wi(1, 4), &
+                              2.0_dp*wi(2, 3), 2.0_dp*wi(2, 4)]
+         st%coef2(16:22, i) = [wd(1, 1), 2.0_dp*wd(1, 2), wd(2, 2), 2.0_dp*wd(1, 3), 2.0_dp*wd(1, 4), &
+                               2.0_dp*wd(2, 3), 2.0_dp*wd(2, 4)]
+         st%coef2(23:25, i) = [wi(3, 3), 2.0_dp*wi(3, 4), wi(4, 4)]
+         st%coef2(26:28, i) = [wd(3, 3), 2.0_dp*wd(3, 4), wd(4, 4)]
+         if (.not. all(ieee_is_finite(st%coef2(:, i)))) then
+            call fatal_error(error, structure_label(b)//": free_steps = 'exact': mode "//str(i)// &
+                             ' (omega^2 = '//str(lam(i))//' 1/s^2) gives a step that is not finite at dt = '// &
+                             str(st%dt)//' s')
+            return
+         end if
+      end do
+   end subroutine second_component_init
 
    !> The exact free step of a model with DOFs without mass (index sets m: mass > 0, s: mass =
    !> 0; K meaning K+G). With C = a0 M + a1 K and no force at the s DOFs, their rows read
@@ -242,14 +305,18 @@ contains
 
    !> Predict the step exactly: the modal coordinates at its end, du, v and a at its end, and
    !> its input work and damping energy (committed by `newmark_commit`).
-   module subroutine newmark_predict_exact(st, b, ag_old, ag_new)
+   module subroutine newmark_predict_exact(st, b, ag_old, ag_new, ag2_old, ag2_new)
       !> Integrator state; `du` is set.
       class(newmark_state), intent(inout) :: st
       !> The structural model.
       type(structure_model), intent(in) :: b
       !> Ground acceleration at the start and the end of the step (m/s^2).
       real(dp), intent(in), value :: ag_old, ag_new
+      !> The second ground component at the start and the end of the step (m/s^2; a model
+      !> with one, `ground_set(:, 2)`).
+      real(dp), intent(in), optional :: ag2_old, ag2_new
       integer :: n, ncol
+      logical :: two
 
       if (.not. st%exact) then
          call newmark_predict(st, b, ag_new - ag_old)
@@ -265,12 +332,23 @@ contains
             call modal_state(n, st%phi, b%mass, st%u, st%v, st%q, st%qd)
          end if
       end if
-      associate (g => st%ground_terms)
-         st%x_input = (g(1)*ag_old + g(2)*ag_new)*ag_old + g(3)*ag_new*ag_new
-         st%x_damping = (g(4)*ag_old + g(5)*ag_new)*ag_old + g(6)*ag_new*ag_new
-      end associate
-      call modal_kernel(n, st%coef, st%lam, st%cm, st%q, st%qd, ag_old, ag_new, st%xq, st%xqd, st%xw, &
-                        st%x_input, st%x_damping)
+      two = present(ag2_old) .and. present(ag2_new) .and. allocated(st%coef2)
+      if (two) then
+         ! Each mode under its modal ground (the relaxation coordinates' is 0).
+         st%g0 = st%gam(:, 1)*ag_old + st%gam(:, 2)*ag2_old
+         st%g1 = st%gam(:, 1)*ag_new + st%gam(:, 2)*ag2_new
+         st%x_input = 0.0_dp
+         st%x_damping = 0.0_dp
+         call modal_kernel_g(n, st%coef2, st%lam, st%cm, st%q, st%qd, st%g0, st%g1, st%xq, st%xqd, st%xw, &
+                             st%x_input, st%x_damping)
+      else
+         associate (g => st%ground_terms)
+            st%x_input = (g(1)*ag_old + g(2)*ag_new)*ag_old + g(3)*ag_new*ag_new
+            st%x_damping = (g(4)*ag_old + g(5)*ag_new)*ag_old + g(6)*ag_new*ag_new
+         end associate
+         call modal_kernel(n, st%coef, st%lam, st%cm, st%q, st%qd, ag_old, ag_new, st%xq, st%xqd, st%xw, &
+                           st%x_input, st%x_damping)
+      end if
       ! With DOFs without mass the relaxation coordinates (and, where the ground is still, the
       ! over-damped stiff modes) decay by exp(-h/a1) a step and would go subnormal, which
       ! slows every product with them many times: below `negligible` they are zero.
@@ -294,6 +372,7 @@ contains
          end if
       end if
       call shape_kernel(n, ncol, st%phi, st%xq, st%xqd, st%xw, st%u, b%ground, ag_new, st%du, st%xv, st%xa)
+      if (two) st%xa = st%xa - b%ground_set(:, 2)*ag2_new
       st%pending = .true.
    end subroutine newmark_predict_exact
 
@@ -413,6 +492,41 @@ contains
       din = din + ((s1(1) + s1(3)) + (s1(2) + s1(4)))
       ddamp = ddamp + ((s2(1) + s2(3)) + (s2(2) + s2(4)))
    end subroutine modal_kernel
+
+   !> Each mode's step under its modal ground, linear from g0(i) to g1(i) (unit participation,
+   !> `coef2`): q, q' and -(omega^2 q + c q') at the end, and the step's input work and damping
+   !> energy added to `din`, `ddamp`.
+   pure subroutine modal_kernel_g(n, coef, lam, cm, q, qd, g0, g1, xq, xqd, xw, din, ddamp)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: coef(n, 28), lam(n), cm(n), q(n), qd(n), g0(n), g1(n)
+      real(dp), intent(out) :: xq(n), xqd(n), xw(n)
+      real(dp), intent(inout) :: din, ddamp
+      real(dp) :: p1, p2, p3, p4, p5, p6, p7, s1, s2
+      integer :: i
+
+      s1 = 0.0_dp
+      s2 = 0.0_dp
+      do i = 1, n
+         xq(i) = coef(i, 1)*q(i) + coef(i, 2)*qd(i) + coef(i, 3)*g0(i) + coef(i, 4)*g1(i)
+         xqd(i) = coef(i, 5)*q(i) + coef(i, 6)*qd(i) + coef(i, 7)*g0(i) + coef(i, 8)*g1(i)
+         xw(i) = -(lam(i)*xq(i) + cm(i)*xqd(i))
+         p1 = q(i)*q(i)
+         p2 = q(i)*qd(i)
+         p3 = qd(i)*qd(i)
+         p4 = q(i)*g0(i)
+         p5 = q(i)*g1(i)
+         p6 = qd(i)*g0(i)
+         p7 = qd(i)*g1(i)
+         s1 = s1 + (((coef(i, 9)*p1 + coef(i, 10)*p2) + (coef(i, 11)*p3 + coef(i, 12)*p4)) + &
+                    ((coef(i, 13)*p5 + coef(i, 14)*p6) + coef(i, 15)*p7)) + &
+              ((coef(i, 23)*g0(i) + coef(i, 24)*g1(i))*g0(i) + coef(i, 25)*g1(i)*g1(i))
+         s2 = s2 + (((coef(i, 16)*p1 + coef(i, 17)*p2) + (coef(i, 18)*p3 + coef(i, 19)*p4)) + &
+                    ((coef(i, 20)*p5 + coef(i, 21)*p6) + coef(i, 22)*p7)) + &
+              ((coef(i, 26)*g0(i) + coef(i, 27)*g1(i))*g0(i) + coef(i, 28)*g1(i)*g1(i))
+      end do
+      din = din + s1
+      ddamp = ddamp + s2
+   end subroutine modal_kernel_g
 
    !> u, v, a at the end from the modes: du = Phi q - u, v = Phi q', a = Phi w - r a_g (the first
    !> `ncol` columns; the others' coordinates are 0).

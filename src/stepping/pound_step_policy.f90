@@ -27,7 +27,7 @@
 module pound_step_policy
    use pound_kinds, only: dp
    use pound_error, only: error_type
-   use pound_structure, only: structure_model
+   use pound_structure, only: structure_model, direction_y
    use pound_integrator, only: integrator, integrator_properties
    use pound_contact, only: contact_system, contact_step, contact_commit, contact_carries_force, contact_track_paths
    use pound_response, only: response_record
@@ -37,7 +37,7 @@ module pound_step_policy
    private
 
    public :: step_policy, step_state, step_counts, uniform_policy, policy_start, take_pass, predict_again, free_prediction
-   public :: ground_y_rows, ground_y_predict
+   public :: ground_y_rows, ground_y_predict, ground_rows_of, ground_rows_load, ground_rows_work
    public :: step_state_point
 
    !> A building's load of the ground component along y, -M r_y a_gy (`ground_y_setup`): the
@@ -63,6 +63,9 @@ module pound_step_policy
       !> load rows of it (unallocated for a building without DOFs along y).
       real(dp), pointer :: ag_y(:) => null()
       type(ground_y_rows), allocatable :: gy(:)
+      !> The step's prediction is every building's exact step (`free_prediction`), which takes
+      !> every ground component itself: no load rows of the component along y, no work of them.
+      logical :: exact_pred = .false.
       !> The pass's end is an output sample.
       logical :: output = .false.
       !> The step was taken exactly with joints closed (pound_step_closed; the pass commits
@@ -223,7 +226,8 @@ contains
          if (s%frozen(ib)) then
             call yield_frozen_step(s%st(ib), s%rec(ib), s%output, s%win, s%eout)
          else if (.not. s%closed) then
-            if (associated(s%ag_y)) call ground_y_work(s, ib)
+            if (associated(s%ag_y) .and. .not. s%exact_pred) &
+               call ground_rows_work(s%st(ib), s%gy(ib), s%agy_old, s%agy_new)
             call s%st(ib)%commit(s%models(ib), s%ag_old, s%ag_new, s%win, s%eout)
          end if
       end do
@@ -251,6 +255,7 @@ contains
 
       s%passes = 1
       s%closed = .false.
+      s%exact_pred = .false.
       if (pol%fused) return
       do ib = 1, size(s%st)
          if (.not. s%frozen(ib)) call s%st(ib)%predict(s%models(ib), s%ag_new - s%ag_old)
@@ -260,39 +265,83 @@ contains
 
    !> After the method's prediction (ground along x): the increment of the ground load along
    !> y, -M r_y (a_gy,new - a_gy,old), added to every building not frozen that has DOFs along y
-   !> (`add_load_rows`: Newmark's step is linear in its load increments, so this is the step
-   !> under -M (r_x a_gx + r_y a_gy)).
+   !> (`add_load_rows`: the step of every integrator is linear in its load increments, so this
+   !> is the step under -M (r_x a_gx + r_y a_gy); HHT-alpha keeps it in F_{n+1} as it keeps
+   !> -M r_x a_gx).
    subroutine ground_y_predict(s)
       !> The step (predicted along x; `ag_y`, `gy` set).
       type(step_state), intent(inout) :: s
       integer :: ib
 
       do ib = 1, size(s%st)
-         if (s%frozen(ib) .or. .not. allocated(s%gy(ib)%dof)) cycle
-         call s%st(ib)%add_load_rows(-(s%agy_new - s%agy_old), s%gy(ib)%dof, s%gy(ib)%w, s%gy(ib)%x)
+         if (s%frozen(ib)) cycle
+         call ground_rows_load(s%st(ib), s%gy(ib), s%agy_new - s%agy_old)
       end do
    end subroutine ground_y_predict
 
-   !> Before building ib's commit: the input work of the ground along y over the step,
+   !> The load increment -M r_y dag of one building's rows (none without rows), predicted with
+   !> x = Khat^{-1} M r_y of the integrator's present step.
+   pure subroutine ground_rows_load(st, rows, dag)
+      !> The integrator (predicted).
+      class(integrator), intent(inout) :: st
+      !> The building's rows of the component.
+      type(ground_y_rows), intent(in) :: rows
+      !> Increment of the component over the pass (m/s^2).
+      real(dp), intent(in) :: dag
+
+      if (.not. allocated(rows%dof)) return
+      call st%add_load_rows(-dag, rows%dof, rows%w, rows%x)
+   end subroutine ground_rows_load
+
+   !> Before a building's commit: the input work of the ground along y over the pass,
    !> -sum_i m_i r_y,i du_i (a_gy,old + a_gy,new)/2 (the trapezoid the method's input work of
    !> the component along x takes), added to the integrator's input work.
-   subroutine ground_y_work(s, ib)
-      !> The step (predicted and loaded; not yet committed).
-      type(step_state), intent(inout) :: s
-      !> The building.
-      integer, intent(in) :: ib
+   subroutine ground_rows_work(st, rows, ag_old, ag_new)
+      !> The integrator (predicted and loaded; not yet committed).
+      class(integrator), intent(inout) :: st
+      !> The building's rows of the component (none: nothing).
+      type(ground_y_rows), intent(in) :: rows
+      !> The component at the pass's start and end (m/s^2).
+      real(dp), intent(in) :: ag_old, ag_new
       real(dp), pointer :: du(:)
       real(dp) :: mdu
       integer :: i
 
-      if (.not. allocated(s%gy(ib)%dof)) return
-      du => s%st(ib)%du_view()
+      if (.not. allocated(rows%dof)) return
+      du => st%du_view()
       mdu = 0.0_dp
-      do i = 1, size(s%gy(ib)%dof)
-         mdu = mdu + s%gy(ib)%w(i)*du(s%gy(ib)%dof(i))
+      do i = 1, size(rows%dof)
+         mdu = mdu + rows%w(i)*du(rows%dof(i))
       end do
-      call s%st(ib)%add_input_work(-0.5_dp*(s%agy_old + s%agy_new)*mdu)
-   end subroutine ground_y_work
+      call st%add_input_work(-0.5_dp*(ag_old + ag_new)*mdu)
+   end subroutine ground_rows_work
+
+   !> Each building's rows of the ground component along y for the integrators `st` (at their
+   !> step: the run's, the impact substeps', a retry's): the DOFs r_y moves, m_i r_y,i, and
+   !> x = Khat^{-1} M r_y (one solve a building; unallocated for a building without DOFs
+   !> along y).
+   subroutine ground_rows_of(gy, st, models)
+      !> The rows (one per building).
+      type(ground_y_rows), allocatable, intent(out) :: gy(:)
+      !> The integrators (their step data the step's).
+      class(integrator), intent(in) :: st(:)
+      !> The buildings.
+      type(structure_model), intent(in) :: models(:)
+      integer :: ib, c, i
+
+      allocate (gy(size(models)))
+      do ib = 1, size(models)
+         if (.not. allocated(models(ib)%ground_direction)) cycle
+         c = findloc(models(ib)%ground_direction, direction_y, 1)
+         if (c == 0) cycle
+         gy(ib)%dof = pack([(i, i=1, models(ib)%n)], models(ib)%ground_set(:, c) /= 0.0_dp)
+         gy(ib)%w = models(ib)%mass(gy(ib)%dof)*models(ib)%ground_set(gy(ib)%dof, c)
+         allocate (gy(ib)%x(models(ib)%n))
+         gy(ib)%x = 0.0_dp
+         gy(ib)%x(gy(ib)%dof) = gy(ib)%w
+         call st(ib)%solve(gy(ib)%x)
+      end do
+   end subroutine ground_rows_of
 
    !> `pass` of the uniform steps: fused, every building's commit and the next step's
    !> prediction (the last step only committed); else the common pass.
@@ -339,8 +388,10 @@ contains
    !> `impact_policy`), one pass: with exact free steps, every building's exact step, unless a
    !> joint carries force at the start (`loaded`: the step is the method's, its exact
    !> prediction would be dropped; not judged when the closing paths are tracked); else the
-   !> method's prediction of every building not frozen. With `track`, the joints' closing
-   !> paths are then tracked (`contact_track_paths`).
+   !> method's prediction of every building not frozen. A ground component along y enters the
+   !> exact step as a second component (`predict_exact`'s `ag2_old`, `ag2_new`), the method's
+   !> as load rows (`ground_y_predict`). With `track`, the joints' closing paths are then
+   !> tracked (`contact_track_paths`).
    subroutine free_prediction(pol, s, loaded)
       !> The policy.
       class(step_policy), intent(in) :: pol
@@ -354,16 +405,22 @@ contains
       s%closed = .false.
       loaded = .false.
       if (pol%n%exact .and. pol%coupled .and. .not. pol%track) loaded = contact_carries_force(s%cs)
+      s%exact_pred = pol%n%exact .and. .not. loaded
       if (pol%n%exact) then
          if (.not. loaded) then
             do ib = 1, size(s%st)
-               call s%st(ib)%predict_exact(s%models(ib), s%ag_old, s%ag_new)
+               if (associated(s%ag_y)) then
+                  call s%st(ib)%predict_exact(s%models(ib), s%ag_old, s%ag_new, s%agy_old, s%agy_new)
+               else
+                  call s%st(ib)%predict_exact(s%models(ib), s%ag_old, s%ag_new)
+               end if
             end do
          end if
       else
          do ib = 1, size(s%st)
             if (.not. s%frozen(ib)) call s%st(ib)%predict(s%models(ib), s%ag_new - s%ag_old)
          end do
+         if (associated(s%ag_y)) call ground_y_predict(s)
       end if
       if (pol%track) call contact_track_paths(s%cs, s%st)
    end subroutine free_prediction

@@ -6,7 +6,8 @@
 !> machinery of the impact substeps (`integrator%swap_step`, `contact_swap_step`: integrators
 !> and a contact system at the retry's substep, made on the first retry and kept for the
 !> next ones of the same h). The ground acceleration is linear between the step's ends within
-!> it. The substeps commit the integrators and the joints (`contact_commit`); the time loop
+!> it, and so is a ground component along y (its load rows at the substep, `ground_rows_of`).
+!> The substeps commit the integrators and the joints (`contact_commit`); the time loop
 !> then samples the step's end as after any step and does not commit it again. The first
 !> retried step is listed as a warning (time, step, the failure), with the number of steps
 !> retried in the run not counted. A retry that fails too is reported with the step's time
@@ -20,7 +21,9 @@ module pound_step_retry
    use pound_integrator, only: integrator
    use pound_contact, only: contact_system, contact_init, contact_step, contact_commit
    use pound_contact_system, only: contact_swap_step
-   use pound_step_policy, only: step_policy, step_state, step_counts, policy_start
+   use pound_step_policy, only: step_policy, step_state, step_counts, policy_start, ground_y_rows, ground_rows_of, &
+                                ground_rows_load, ground_rows_work
+   use pound_swap, only: swap
    implicit none
    private
 
@@ -36,6 +39,8 @@ module pound_step_retry
       !> Integrators and contact system at the substep h (only their step data are used).
       class(integrator), allocatable :: st(:)
       type(contact_system) :: cs
+      !> The load rows of a ground component along y at the substep h (runs with one).
+      type(ground_y_rows), allocatable :: gy(:)
       !> Steps retried in the run.
       integer :: count = 0
    end type step_retry
@@ -91,10 +96,12 @@ contains
 
       call pol%inner%pass(s, error)
       if (.not. s%solve_failed .or. pol%inelastic) return
-      ! The retry's substeps take the ground along x only: a run with a component along y
-      ! keeps the failure (never a step without its load along y).
-      if (associated(s%ag_y)) return
-      call retry_step(pol%rt, s%models, s%st, s%cs, s%ag_old, s%ag_new, s%t_pass, s%h, s%step, error, s%warnings)
+      if (associated(s%ag_y)) then
+         call retry_step(pol%rt, s%models, s%st, s%cs, s%ag_old, s%ag_new, s%t_pass, s%h, s%step, error, s%warnings, &
+                         s%agy_old, s%agy_new)
+      else
+         call retry_step(pol%rt, s%models, s%st, s%cs, s%ag_old, s%ag_new, s%t_pass, s%h, s%step, error, s%warnings)
+      end if
       s%solve_failed = allocated(error)
    end subroutine retry_pass
 
@@ -110,7 +117,7 @@ contains
    !> Take the step from t - h to t, whose `contact_step` failed with `error`, again as
    !> `retry_substeps` substeps, committed (integrators and joints). On return `error` is
    !> unallocated when the retry succeeded, else it says where both failed.
-   subroutine retry_step(rt, models, st, cs, ag_old, ag_new, t, h, step, error, warnings)
+   subroutine retry_step(rt, models, st, cs, ag_old, ag_new, t, h, step, error, warnings, agy_old, agy_new)
       !> The retry's step data (set up on the first retry of this h).
       type(step_retry), intent(inout) :: rt
       !> The buildings.
@@ -130,14 +137,17 @@ contains
       type(error_type), allocatable, intent(inout) :: error
       !> The run's warnings (the first retry is listed).
       character(len=:), allocatable, intent(inout) :: warnings(:)
+      !> A ground component along y at the step's start and end (m/s^2; its load rows at the
+      !> substep are the retry's, `step_retry%gy`).
+      real(dp), intent(in), optional :: agy_old, agy_new
       type(error_type), allocatable :: failed
-      real(dp) :: hs, a0, a1, ts, w, e
+      real(dp) :: hs, a0, a1, ts, w, e, b0, b1
       integer :: i, j
 
       call move_alloc(error, failed)
       hs = h/real(retry_substeps, dp)
-      if (rt%h /= hs) then
-         call retry_setup(rt, models, st, cs, ag_old, hs, error)
+      if (rt%h /= hs .or. (present(agy_old) .neqv. allocated(rt%gy))) then
+         call retry_setup(rt, models, st, cs, ag_old, hs, error, present(agy_old))
          if (allocated(error)) then
             error%message = failed%message//'; the retry with substeps could not be set up: '//error%message
             call place(error, failed, t, step)
@@ -146,16 +156,22 @@ contains
       end if
       call swap_step_data(st, rt%st, cs, rt%cs)
       a0 = ag_old
+      b0 = 0.0_dp
+      b1 = 0.0_dp
+      if (present(agy_old)) b0 = agy_old
       do j = 1, retry_substeps
          ts = t - h + real(j, dp)*hs
          a1 = ag_old + (ag_new - ag_old)*(real(j, dp)/real(retry_substeps, dp))
+         if (present(agy_old)) b1 = agy_old + (agy_new - agy_old)*(real(j, dp)/real(retry_substeps, dp))
          if (j == retry_substeps) then
             ts = t
             a1 = ag_new
+            if (present(agy_old)) b1 = agy_new
          end if
          do i = 1, size(st)
             call st(i)%drop_exact()
             call st(i)%predict(models(i), a1 - a0)
+            if (present(agy_old)) call ground_rows_load(st(i), rt%gy(i), b1 - b0)
          end do
          call contact_step(cs, st, ts, step, error)
          if (allocated(error)) then
@@ -169,10 +185,12 @@ contains
          w = 0.0_dp
          e = 0.0_dp
          do i = 1, size(st)
+            if (present(agy_old)) call ground_rows_work(st(i), rt%gy(i), b0, b1)
             call st(i)%commit(models(i), a0, a1, w, e)
          end do
          call contact_commit(cs, st, ts, hs)
          a0 = a1
+         b0 = b1
       end do
       call swap_step_data(st, rt%st, cs, rt%cs)
       rt%count = rt%count + 1
@@ -182,14 +200,16 @@ contains
                                           ' (the first retried step of the run)')
    end subroutine retry_step
 
-   !> Integrators and contact system at the substep hs.
-   subroutine retry_setup(rt, models, st, cs, ag0, hs, error)
+   !> Integrators and contact system at the substep hs (with `ground_y`, the load rows of the
+   !> ground along y at hs).
+   subroutine retry_setup(rt, models, st, cs, ag0, hs, error, ground_y)
       type(step_retry), intent(inout) :: rt
       type(structure_model), intent(in) :: models(:)
       class(integrator), intent(in) :: st(:)
       type(contact_system), intent(in) :: cs
       real(dp), intent(in) :: ag0, hs
       type(error_type), allocatable, intent(out) :: error
+      logical, intent(in) :: ground_y
       integer :: i
 
       rt%h = 0.0_dp
@@ -201,13 +221,16 @@ contains
       end do
       call contact_init(rt%cs, cs%pair, rt%st, models, error)
       if (allocated(error)) return
+      if (allocated(rt%gy)) deallocate (rt%gy)
+      if (ground_y) call ground_rows_of(rt%gy, rt%st, models)
       rt%h = hs
    end subroutine retry_setup
 
    !> Exchange the step data of the integrators and the contact system with those of `sst`
    !> and `scs` (the same buildings and constraints at another step: the impact substeps,
-   !> pound_analysis, and the retry's).
-   subroutine swap_step_data(st, sst, cs, scs)
+   !> pound_analysis, and the retry's); with `gy`, `sgy`, the load rows of a ground component
+   !> along y at each step too.
+   subroutine swap_step_data(st, sst, cs, scs, gy, sgy)
       !> Integrators.
       class(integrator), intent(inout) :: st(:)
       !> Integrators at the other step.
@@ -216,12 +239,18 @@ contains
       type(contact_system), intent(inout) :: cs
       !> The contact system at the other step.
       type(contact_system), intent(inout) :: scs
+      !> The load rows of a ground component along y at each step.
+      type(ground_y_rows), intent(inout), optional :: gy(:), sgy(:)
       integer :: i
 
       do i = 1, size(st)
          call st(i)%swap_step(sst(i))
       end do
       call contact_swap_step(cs, scs)
+      if (.not. (present(gy) .and. present(sgy))) return
+      do i = 1, size(gy)
+         if (allocated(gy(i)%x)) call swap(gy(i)%x, sgy(i)%x)
+      end do
    end subroutine swap_step_data
 
    !> The failure placed at the step: its time and step, the joint of the substep's failure
