@@ -17,11 +17,7 @@ contains
    !> derived type reliably). Whatever a result holds must be copied here: a suite hands its
    !> motions' uncoupled results to their runs at other gaps by this copy, and a part left
    !> out (the bilinear storeys' and hinges' `yielding` was) is silently missing there.
-   module subroutine analysis_copy(src, dst)
-      !> The result copied.
-      type(analysis_result), intent(in) :: src
-      !> The copy.
-      type(analysis_result), intent(out) :: dst
+   module procedure analysis_copy
       integer :: i
 
       dst%n_steps = src%n_steps
@@ -48,36 +44,24 @@ contains
       do i = 1, size(src%warnings)
          call add_warning(dst%warnings, trim(src%warnings(i)))
       end do
-   end subroutine analysis_copy
+   end procedure analysis_copy
 
    !> The warning of an uncoupled run whose relative audit residual `err` exceeds
    !> `audit_warning_limit`.
-   pure module function uncoupled_audit_warning(err) result(text)
-      !> Relative residual of the energy audit.
-      real(dp), intent(in) :: err
-      character(len=:), allocatable :: text
-
+   module procedure uncoupled_audit_warning
       text = 'energy audit (uncoupled): relative residual '//str(err)//' > '//str(audit_warning_limit)// &
              ' without contact: the integration is not trustworthy; reduce dt'
-   end function uncoupled_audit_warning
+   end procedure uncoupled_audit_warning
 
    !> The substeps an analysis with `stepping = 'impact'` took, as one line of text.
-   module function substep_text(res) result(text)
-      !> The result.
-      type(analysis_result), intent(in) :: res
-      character(len=:), allocatable :: text
-
+   module procedure substep_text
       text = 'm = '//str(res%substep_factor)//' substeps of '//str(res%substep)//' s; '// &
              str(res%substepped)//' of '//str(res%n_steps)//' steps substepped, '//str(res%substeps)// &
              ' substeps taken ('//str(res%n_steps - res%substepped + res%substeps)//' steps in all)'
-   end function substep_text
+   end procedure substep_text
 
    !> The steps an analysis with `free_steps = 'exact'` took exactly, as one line of text.
-   module function exact_text(res) result(text)
-      !> The result.
-      type(analysis_result), intent(in) :: res
-      character(len=:), allocatable :: text
-
+   module procedure exact_text
       text = str(res%exact_steps)//' of '//str(res%n_steps)//' steps exact (no joint acting), '// &
              str(res%n_steps - res%exact_steps)//" by Newmark's method"
       if (res%substep_factor > 0) text = text//' in substeps'
@@ -85,33 +69,22 @@ contains
                                        ' steps exact with no joint acting, '//str(res%closed_steps)// &
                                        ' exact with elastic joints closed, '//str(res%n_steps - res%exact_steps)// &
                                        " by Newmark's method in substeps"
-   end function exact_text
+   end procedure exact_text
 
    !> Write each warning of a list (e.g. `res%warnings`, `sweep%warnings`) as one line, `prefix`
    !> first (e.g. 'pound: warning: '); nothing for an empty or unallocated list.
-   module subroutine write_warnings(unit, warnings, prefix)
-      !> Open formatted unit.
-      integer, intent(in) :: unit
-      !> The warnings.
-      character(len=:), allocatable, intent(in) :: warnings(:)
-      !> Text put before each warning.
-      character(len=*), intent(in) :: prefix
+   module procedure write_warnings
       integer :: i
 
       if (.not. allocated(warnings)) return
       do i = 1, size(warnings)
          write (unit, '(a)') prefix//trim(warnings(i))
       end do
-   end subroutine write_warnings
+   end procedure write_warnings
 
    !> m_eff = m1 m2/(m1 + m2) of a joint's facing floor masses (the mass of the one
    !> building against a rigid neighbour) (t).
-   pure module function effective_mass(p, models) result(meff)
-      !> The constraint, its DOFs located.
-      type(contact_pair), intent(in) :: p
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      real(dp) :: meff
+   module procedure effective_mass
       real(dp) :: m(2)
       integer :: e
 
@@ -127,20 +100,12 @@ contains
       ! A contact point of buildings in plan with the share s of its pair (its law's force
       ! scaled by s) against the share s of the masses: the pair's half-period.
       meff = p%share*meff
-   end function effective_mass
+   end procedure effective_mass
 
    !> The audit residual is large: name the joints whose contact half-period pi sqrt(m_eff/k0)
    !> (m_eff = m1 m2/(m1 + m2) of the facing floor masses) spans fewer than `resolved_steps`
    !> steps, and the dt that would resolve them (a tenth of the half-period).
-   module subroutine warn_unresolved_joints(res, models, cs, dt)
-      !> The coupled result (its warnings extended).
-      type(analysis_result), intent(inout) :: res
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      !> The contact system at the end of the run.
-      type(contact_system), intent(in) :: cs
-      !> The step (s) the joints are judged by.
-      real(dp), intent(in) :: dt
+   module procedure warn_unresolved_joints
       real(dp) :: meff, half, worst
       integer :: k, found, kw
       character(len=:), allocatable :: head
@@ -189,28 +154,12 @@ contains
       else
          call add_warning(res%warnings, head//': reduce dt')
       end if
-   end subroutine warn_unresolved_joints
+   end procedure warn_unresolved_joints
 
    !> The energy sum of a step is not finite: name the first non-finite value (building and
    !> floor, or joint), or else the building and energy term that overflowed, with the largest
    !> ground acceleration so far.
-   module subroutine state_failure(st, models, cs, sample, ag, dt, step, error)
-      !> Integrator states at the end of the step.
-      class(integrator), intent(in), target :: st(:)
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      !> The contact system.
-      type(contact_system), intent(in) :: cs
-      !> The step's energy sample (n_energy), not finite in total.
-      real(dp), intent(in) :: sample(:)
-      !> Ground acceleration samples (m/s^2) from step 0.
-      real(dp), intent(in) :: ag(0:)
-      !> Time step (s).
-      real(dp), intent(in) :: dt
-      !> The step that failed.
-      integer, intent(in) :: step
-      !> Error state: what is not finite, where and when.
-      type(error_type), allocatable, intent(out) :: error
+   module procedure state_failure
       character(len=*), parameter :: term(n_integrator_energies) = [character(len=21) :: 'input', 'kinetic', &
                                                                     'strain', 'damping', 'numerical dissipation']
       real(dp) :: e(n_integrator_energies), t
@@ -243,27 +192,13 @@ contains
       call fatal_error(error, 'energy audit failed at t = '//str(t)//' s (step '//str(step)//'): the '// &
                        'energy total overflows'//hint)
       call error_at(error, t, step)
-   end subroutine state_failure
+   end procedure state_failure
 
    !> Set `error` to the first value of the state that is not finite, if there is one: u, v,
    !> a (and, if `predicted`, the step's increment du) of every building by floor, then every
    !> joint's force, compression, rate, plastic penetration and closing displacement. An
    !> `error` passed in is kept when everything is finite.
-   module subroutine locate_nonfinite(st, models, cs, t, step, error, predicted)
-      !> Integrator states.
-      class(integrator), intent(in), target :: st(:)
-      !> The buildings.
-      type(structure_model), intent(in) :: models(:)
-      !> The contact system.
-      type(contact_system), intent(in) :: cs
-      !> Time (s) named in the message.
-      real(dp), intent(in) :: t
-      !> Step named in the message.
-      integer, intent(in) :: step
-      !> Error state: set to the first non-finite value (kept when all is finite).
-      type(error_type), allocatable, intent(inout) :: error
-      !> Also check the step's increment du (the state was predicted).
-      logical, intent(in), optional :: predicted
+   module procedure locate_nonfinite
       character(len=*), parameter :: names(4) = ['u ', 'v ', 'a ', 'du']
       character(len=*), parameter :: joint(5) = [character(len=20) :: 'force r', 'compression d', &
                                                  'compression rate', 'plastic penetration', &
@@ -317,6 +252,6 @@ contains
             end do
          end associate
       end do
-   end subroutine locate_nonfinite
+   end procedure locate_nonfinite
 
 end submodule pound_analysis_reports

@@ -180,8 +180,9 @@ contains
       k = 0
    end function given_count_int
 
-   !> A required real: error if the deck did not give it.
-   pure subroutine require_real(at, var, x, what, error)
+   !> A required real: error if the deck did not give it; with `rule` and `bound`, the value
+   !> given is also checked (`check_real`).
+   pure subroutine require_real(at, var, x, what, error, rule, bound, bound_text)
       !> Where messages point.
       class(input_site), intent(in) :: at
       !> Variable name as in the deck.
@@ -192,8 +193,18 @@ contains
       character(len=*), intent(in) :: what
       !> Unallocated on success; otherwise the first problem found.
       type(error_type), allocatable, intent(out) :: error
+      !> Comparison with the bound: '>', '>=' or '/=' (none: no check).
+      character(len=*), intent(in), optional :: rule
+      !> Bound of the rule.
+      real(dp), intent(in), optional :: bound
+      !> How to show the bound (default: its value).
+      character(len=*), intent(in), optional :: bound_text
 
-      if (.not. is_set(x)) call fail(at, var, var//' is missing ('//what//')', error)
+      if (.not. is_set(x)) then
+         call fail(at, var, var//' is missing ('//what//')', error)
+      else if (present(rule) .and. present(bound)) then
+         call check_real(at, var, x, rule, bound, error, bound_text)
+      end if
    end subroutine require_real
 
    !> `x rule bound` must hold (rule: '>', '>=', '/='), and `x` must be finite.

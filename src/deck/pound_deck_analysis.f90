@@ -2,9 +2,9 @@
 !> compress, node_histories, lcp_solver, free_steps, integrator, hht_alpha, collapse_drift.
 module pound_deck_analysis
    use pound_config, only: analysis_config
-   use pound_deck_checks, only: check_real, fail, parse_history, read_failed, require_real, site, &
-                                site_of, site_text, unset_real
-   use pound_deck_lexer, only: base_name, group_ref, group_text, lower
+   use pound_deck_checks, only: check_real, fail, group_input, parse_history, read_failed, require_real, site, &
+                                site_text, unset_real
+   use pound_deck_lexer, only: base_name, group_ref, lower
    use pound_deck_variables, only: max_steps, max_substeps, path_len, title_len, word_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
@@ -55,9 +55,7 @@ contains
       integrator = 'newmark'
       hht_alpha = unset_real
       collapse_drift = 0.10_dp
-      at = site_of(path, g)
-      call group_text(text, g, buf)
-      msg = ' '
+      call group_input(path, text, g, at, buf, msg)
       read (buf, nml=analysis, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
       if (allocated(error)) return
@@ -72,13 +70,9 @@ contains
          cfg%title = base_name(path)
       end if
 
-      call require_real(at, 'dt', dt, 'time step in s', error)
+      call require_real(at, 'dt', dt, 'time step in s', error, '>', 0.0_dp)
       if (allocated(error)) return
-      call check_real(at, 'dt', dt, '>', 0.0_dp, error)
-      if (allocated(error)) return
-      call require_real(at, 't_end', t_end, 'duration in s', error)
-      if (allocated(error)) return
-      call check_real(at, 't_end', t_end, '>=', dt, error, 'dt = '//str(dt))
+      call require_real(at, 't_end', t_end, 'duration in s', error, '>=', dt, 'dt = '//str(dt))
       if (allocated(error)) return
       if (t_end > dt*real(max_steps, dp)) then
          call fail(at, 't_end', 't_end/dt = '//str(t_end/dt)//' steps, must be <= '// &

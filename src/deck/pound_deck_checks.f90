@@ -5,7 +5,7 @@
 !> that also keeps its group occurrence.
 module pound_deck_checks
    use pound_config, only: deck_warning_len, history_names, n_history_quantities
-   use pound_deck_lexer, only: group_label, group_ref, lower
+   use pound_deck_lexer, only: group_label, group_ref, group_text, lower
    use pound_deck_variables, only: findloc_name, join, max_columns
    use pound_error, only: error_type, fatal_error, status_input
    use pound_kinds, only: dp
@@ -16,8 +16,9 @@ module pound_deck_checks
    implicit none
    private
 
-   public :: check_plausible, check_real, fail, warn, site_text, given_count, is_set, parse_history, read_failed, &
-             require_real, site, site_of, take_ints, take_real, take_reals, unset_int, unset_real, values_text, widen
+   public :: check_plausible, check_real, fail, warn, site_text, given_count, group_input, is_set, parse_history, &
+             read_failed, require_real, site, site_of, take_ints, take_real, take_reals, take_sa_period, unset_int, &
+             unset_real, values_text, widen
 
    !> Where a message points: an `input_site` and the group occurrence it was made from.
    type, extends(input_site) :: site
@@ -54,6 +55,51 @@ contains
          at%lines(i) = g%vars(i)%line
       end do
    end function site_of
+
+   !> What a group's reader starts from: the site of the group occurrence (where its messages
+   !> point), its text as one record for the namelist read, and a cleared `iomsg` buffer.
+   pure subroutine group_input(path, text, g, at, buf, msg)
+      !> Deck path as given (named in messages).
+      character(len=*), intent(in) :: path
+      !> Deck text, lines separated by LF.
+      character(len=*), intent(in) :: text
+      !> The group occurrence.
+      type(group_ref), intent(in) :: g
+      !> Where the reader's messages point.
+      type(site), intent(out) :: at
+      !> The group's text, one record.
+      character(len=:), allocatable, intent(out) :: buf
+      !> The namelist read's `iomsg`, blank.
+      character(len=*), intent(out) :: msg
+
+      at = site_of(path, g)
+      call group_text(text, g, buf)
+      msg = ' '
+   end subroutine group_input
+
+   !> `period` (s) of a 5 %-damped Sa: given only where the intensity measure (variable
+   !> `measure_var`, value `measure`: 'sa' or 'pga') is 'sa'; when given, > 0 and stored in `dest`.
+   pure subroutine take_sa_period(at, measure_var, measure, period, dest, error)
+      !> Where messages point.
+      type(site), intent(in) :: at
+      !> Name of the variable that chooses the measure (e.g. 'scale_to').
+      character(len=*), intent(in) :: measure_var
+      !> The measure chosen ('sa' or 'pga').
+      character(len=*), intent(in) :: measure
+      !> `period` as read (`unset_real`: not given).
+      real(dp), intent(in) :: period
+      !> Where the period goes (left alone when not given).
+      real(dp), intent(inout) :: dest
+      !> Unallocated on success; otherwise the first problem found.
+      type(error_type), allocatable, intent(out) :: error
+
+      if (.not. is_set(period)) return
+      if (measure /= 'sa') then
+         call fail(at, 'period', 'period applies only with '//measure_var//" = 'sa'", error)
+         return
+      end if
+      call take_real(at, 'period', period, '>', 0.0_dp, dest, error)
+   end subroutine take_sa_period
 
    !> Append a plausibility warning about `var` (suspicious, not refused) to `warnings`, in
    !> the form of `fail`'s messages.

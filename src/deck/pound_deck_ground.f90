@@ -5,9 +5,9 @@ module pound_deck_ground
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use pound_config, only: ground_config, deck_warning_len
    use pound_constants, only: g_accel
-   use pound_deck_checks, only: check_real, fail, take_real, is_set, read_failed, require_real, site, site_of, &
-                                unset_int, unset_real, warn
-   use pound_deck_lexer, only: group_ref, group_text, lower
+   use pound_deck_checks, only: check_real, fail, group_input, take_real, take_sa_period, is_set, read_failed, &
+                                require_real, site, unset_int, unset_real, warn
+   use pound_deck_lexer, only: group_ref, lower
    use pound_deck_variables, only: path_len, word_len
    use pound_error, only: error_type
    use pound_kinds, only: dp
@@ -88,10 +88,8 @@ contains
       angle = unset_real
       file_2 = ' '
       scale_2 = unset_real
-      at = site_of(path, g)
+      call group_input(path, text, g, at, buf, msg)
       if (n_motions > 1) at%label = at%label//' #'//str(g%occurrence)
-      call group_text(text, g, buf)
-      msg = ' '
       read (buf, nml=ground, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
       if (allocated(error)) return
@@ -136,17 +134,11 @@ contains
             call fail(at, 'scale', "scale applies only to kind = 'record'", error)
          end if
          if (allocated(error)) return
-         call require_real(at, 'x0', x0, 'pulse amplitude in m', error)
+         call require_real(at, 'x0', x0, 'pulse amplitude in m', error, '/=', 0.0_dp)
          if (allocated(error)) return
-         call check_real(at, 'x0', x0, '/=', 0.0_dp, error)
+         call require_real(at, 'a', a, 'pulse decay in 1/s', error, '>=', 0.0_dp)
          if (allocated(error)) return
-         call require_real(at, 'a', a, 'pulse decay in 1/s', error)
-         if (allocated(error)) return
-         call check_real(at, 'a', a, '>=', 0.0_dp, error)
-         if (allocated(error)) return
-         call require_real(at, 'b', b, 'pulse circular frequency in rad/s', error)
-         if (allocated(error)) return
-         call check_real(at, 'b', b, '>', 0.0_dp, error)
+         call require_real(at, 'b', b, 'pulse circular frequency in rad/s', error, '>', 0.0_dp)
          if (allocated(error)) return
          cfg%x0 = x0
          cfg%a = a
@@ -331,15 +323,7 @@ contains
                   'if '//plain_real(target)//' m/s^2 is meant, target_g = '//plain_significant(target/g_accel, 3)// &
                   ' says so without this warning', warnings)
             end if
-            if (is_set(period)) then
-               if (cfg%scale_to == 'pga') then
-                  call fail(at, 'period', "period applies only with scale_to = 'sa'", error)
-                  return
-               end if
-               call check_real(at, 'period', period, '>', 0.0_dp, error)
-               if (allocated(error)) return
-               cfg%period = period
-            end if
+            call take_sa_period(at, 'scale_to', cfg%scale_to, period, cfg%period, error)
          case default
             call fail(at, 'scale_to', "scale_to = '"//trim(adjustl(scale_to))//"', must be 'pga' "// &
                       "or 'sa' (or absent: the factor scale)", error)
@@ -448,8 +432,7 @@ contains
          real(dp), intent(inout) :: value
          type(error_type), allocatable, intent(out) :: error
 
-         call require_real(at, var, x, what, error)
-         if (.not. allocated(error)) call check_real(at, var, x, '>', 0.0_dp, error)
+         call require_real(at, var, x, what, error, '>', 0.0_dp)
          if (.not. allocated(error)) value = x
       end subroutine required_positive
 

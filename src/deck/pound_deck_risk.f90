@@ -5,9 +5,9 @@
 module pound_deck_risk
    use pound_config, only: deck_type, risk_config, is_frame
    use pound_constants, only: g_accel
-   use pound_deck_checks, only: check_real, fail, take_real, given_count, is_set, read_failed, &
-                                site, site_of, unset_real
-   use pound_deck_lexer, only: group_ref, group_text, lower
+   use pound_deck_checks, only: check_real, fail, take_real, take_sa_period, given_count, group_input, is_set, &
+                                read_failed, site, site_of, unset_real
+   use pound_deck_lexer, only: group_ref, lower
    use pound_deck_targets, only: take_target_quantities
    use pound_deck_plane, only: deck_yields
    use pound_deck_variables, only: path_len, max_risk_points
@@ -53,9 +53,7 @@ contains
       allocate (levels(max_risk_points + 1), levels_g(max_risk_points + 1))
       levels = unset_real
       levels_g = unset_real
-      at = site_of(path, g)
-      call group_text(text, g, buf)
-      msg = ' '
+      call group_input(path, text, g, at, buf, msg)
       read (buf, nml=stripes, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
       if (allocated(error)) return
@@ -67,15 +65,8 @@ contains
                       "at period) or 'pga'", error)
             return
          end if
-         if (is_set(period)) then
-            if (r%measure == 'pga') then
-               call fail(at, 'period', "period applies only with measure = 'sa'", error)
-               return
-            end if
-            call check_real(at, 'period', period, '>', 0.0_dp, error)
-            if (allocated(error)) return
-            r%period = period
-         end if
+         call take_sa_period(at, 'measure', r%measure, period, r%period, error)
+         if (allocated(error)) return
          call take_ascending(at, 'levels', levels, 'levels_g', levels_g, r%levels, error)
          if (allocated(error)) return
          if (d%sweep%active .and. d%sweep%target > 0.0_dp) then
@@ -120,9 +111,7 @@ contains
       im = unset_real
       im_g = unset_real
       rate = unset_real
-      at = site_of(path, g)
-      call group_text(text, g, buf)
-      msg = ' '
+      call group_input(path, text, g, at, buf, msg)
       read (buf, nml=hazard, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
       if (allocated(error)) return

@@ -1,9 +1,9 @@
 !> Reader of `&sweep`: the range of seismic-joint gaps and the optional target for |lambda|.
 module pound_deck_sweep
    use pound_config, only: sweep_config
-   use pound_deck_checks, only: check_real, fail, take_real, given_count, is_set, read_failed, require_real, &
-                                site, site_of, unset_int, unset_real
-   use pound_deck_lexer, only: group_ref, group_text, lower
+   use pound_deck_checks, only: fail, take_real, given_count, group_input, is_set, read_failed, require_real, &
+                                site, unset_int, unset_real
+   use pound_deck_lexer, only: group_ref, lower
    use pound_deck_study, only: take_parameter_sweep, max_study_values
    use pound_deck_targets, only: take_target_quantities
    use pound_deck_variables, only: path_len
@@ -60,9 +60,7 @@ contains
       ! One slot more than allowed, so that too many values get our message.
       allocate (values(max_study_values + 1))
       values = unset_real
-      at = site_of(path, g)
-      call group_text(text, g, buf)
-      msg = ' '
+      call group_input(path, text, g, at, buf, msg)
       read (buf, nml=sweep, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
       if (allocated(error)) return
@@ -86,13 +84,9 @@ contains
                    'gap_to and n_gaps', error)
          return
       end if
-      call require_real(at, 'gap_from', gap_from, 'first gap in m', error)
+      call require_real(at, 'gap_from', gap_from, 'first gap in m', error, '>=', 0.0_dp)
       if (allocated(error)) return
-      call check_real(at, 'gap_from', gap_from, '>=', 0.0_dp, error)
-      if (allocated(error)) return
-      call require_real(at, 'gap_to', gap_to, 'last gap in m', error)
-      if (allocated(error)) return
-      call check_real(at, 'gap_to', gap_to, '>', gap_from, error, 'gap_from = '//str(gap_from))
+      call require_real(at, 'gap_to', gap_to, 'last gap in m', error, '>', gap_from, 'gap_from = '//str(gap_from))
       if (allocated(error)) return
       if (n_gaps == unset_int) then
          call fail(at, 'n_gaps', 'n_gaps is missing (number of gaps from gap_from to gap_to)', error)

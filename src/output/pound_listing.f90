@@ -3,7 +3,6 @@
 !> Every write is checked: the writers take a `text_writer` (pound_text_writer), which
 !> keeps the first failure (no space left, file too large, ...); the caller asks it once.
 module pound_listing
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use pound_kinds, only: dp
    use pound_strings, only: counted, fixed_cell, left_cell, right_cell, plain_real
    use pound_text_writer, only: text_writer
@@ -20,6 +19,7 @@ module pound_listing
    use pound_joint_law, only: law_text
    use pound_lemke, only: lemke_status_name
    use pound_influence, only: building_influence
+   use pound_influence_output, only: lambda_cell
    use pound_config, only: sweep_config, target_names, q_column_shear, q_column_moment, q_ductility
    use pound_sweep, only: sweep_result
    implicit none
@@ -48,8 +48,7 @@ contains
 
       if (.not. allocated(warnings)) return
       do i = 1, size(warnings)
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  WARNING: '//trim(warnings(i))
-         call lst%note()
+         call lst%put('  WARNING: '//trim(warnings(i)))
       end do
    end subroutine write_warning_lines
 
@@ -68,38 +67,29 @@ contains
       integer :: i, start
 
       call date_and_time(date=date, time=time)
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) repeat('=', 78)
-      call lst%note()
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) program_name//' '//program_version// &
-         ' - seismic pounding of adjacent buildings (unilateral contact, LCP)'
-      call lst%note()
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+      call lst%put(repeat('=', 78))
+      call lst%put(program_name//' '//program_version// &
+         ' - seismic pounding of adjacent buildings (unilateral contact, LCP)')
+      call lst%put( &
          'run on '//date(1:4)//'-'//date(5:6)//'-'//date(7:8)//' '// &
-         time(1:2)//':'//time(3:4)//':'//time(5:6)
-      call lst%note()
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) 'deck:  '//deck%path
-      call lst%note()
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) 'title: '//deck%analysis%title
-      call lst%note()
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+         time(1:2)//':'//time(3:4)//':'//time(5:6))
+      call lst%put('deck:  '//deck%path)
+      call lst%put('title: '//deck%analysis%title)
+      call lst%put( &
          'units: kN, m, s, t (tonne); accelerations m/s^2; energies kJ; '// &
-         'gaps, displacements, drifts and penetrations in mm'
-      call lst%note()
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) repeat('=', 78)
-      call lst%note()
+         'gaps, displacements, drifts and penetrations in mm')
+      call lst%put(repeat('=', 78))
       if (present(summary)) then
          call write_section(lst, 'Summary')
          do i = 1, size(summary)
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//trim(summary(i))
-            call lst%note()
+            call lst%put('  '//trim(summary(i)))
          end do
       end if
       call write_section(lst, 'Deck echo')
       start = 1
       do i = 1, len(deck%text)
          if (deck%text(i:i) == new_line('a')) then
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  | '//deck%text(start:i - 1)
-            call lst%note()
+            call lst%put('  | '//deck%text(start:i - 1))
             start = i + 1
          end if
       end do
@@ -112,14 +102,12 @@ contains
          '   history every ', deck%analysis%output_every
       call lst%note()
       if (deck%analysis%t_free > 0.0_dp) then
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  t_free = '//plain_real(deck%analysis%t_free)// &
+         call lst%put('  t_free = '//plain_real(deck%analysis%t_free)// &
             ' s of free vibration after t_end, the ground at rest: the analysis ends at '// &
-            plain_real(deck%analysis%t_end)//' s (the steps above include it; residual drift read there)'
-         call lst%note()
+            plain_real(deck%analysis%t_end)//' s (the steps above include it; residual drift read there)')
       end if
       do i = 1, size(ground_text)
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//trim(ground_text(i))
-         call lst%note()
+         call lst%put('  '//trim(ground_text(i)))
       end do
    end subroutine write_listing_header
 
@@ -205,18 +193,14 @@ contains
          associate (b => models(ib), p => res%building(ib)%peak, t => res%building(ib)%peak_time)
             write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  Building '//b%name
             call lst%note()
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-               '   floor    |u| [mm]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]'
-            call lst%note()
+            call lst%put('   floor    |u| [mm]    t [s]   |v| [m/s]    t [s]  |a_abs| [m/s2]    t [s]')
             do j = size(b%floor_dof), 1, -1
                write (lst%unit, '(2x,i6,es12.4,a9,es12.4,a9,es16.4,a9)', iostat=lst%ios, iomsg=lst%msg) &
                   j, mm*p(j, q_u), fixed_cell(t(j, q_u), 9, 3), &
                   p(j, q_v), fixed_cell(t(j, q_v), 9, 3), p(j, q_a_abs), fixed_cell(t(j, q_a_abs), 9, 3)
                call lst%note()
             end do
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-               '  storey  |drift| [mm]    t [s]    |Q| [kN]    t [s]'
-            call lst%note()
+            call lst%put('  storey  |drift| [mm]    t [s]    |Q| [kN]    t [s]')
             do j = size(b%floor_dof), 1, -1
                write (lst%unit, '(2x,i6,es14.4,a9,es12.4,a9)', iostat=lst%ios, iomsg=lst%msg) j, mm*p(j, q_drift), &
                   fixed_cell(t(j, q_drift), 9, 3), p(j, q_shear), fixed_cell(t(j, q_shear), 9, 3)
@@ -236,11 +220,8 @@ contains
       call lst%note()
       call write_warning_lines(lst, res%warnings)
       j = res%n_out
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  energies at the end [kJ]:'
-      call lst%note()
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-         '         input     kinetic      strain     damping     contact     plastic'
-      call lst%note()
+      call lst%put('  energies at the end [kJ]:')
+      call lst%put('         input     kinetic      strain     damping     contact     plastic')
       write (lst%unit, '(a,6es12.4)', iostat=lst%ios, iomsg=lst%msg) '  ', res%energy(:, j)
       call lst%note()
       if (allocated(res%numerical)) then
@@ -269,10 +250,9 @@ contains
       do k = 1, cs%m
          w = max(w, len(cs%pair(k)%label))
       end do
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+      call lst%put( &
          '  '//left_cell('pair', w)//'    gap [mm]  '//left_cell('law', 16)// &
-         right_cell('k0 [kN/m]', 12)//right_cell('c [kNs/m]', 12)//'  dashpot_rate'
-      call lst%note()
+         right_cell('k0 [kN/m]', 12)//right_cell('c [kNs/m]', 12)//'  dashpot_rate')
       do k = 1, cs%m
          associate (p => cs%pair(k))
             write (lst%unit, '(2x,a,a12,2x,a16,es12.3,es12.3,2x,a)', iostat=lst%ios, iomsg=lst%msg) &
@@ -286,8 +266,7 @@ contains
          associate (p => cs%pair(k))
             call p%law%lines(lines)
             if (p%law%restitution <= 0.0_dp .and. size(lines) == 0) cycle
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//p%label//':'
-            call lst%note()
+            call lst%put('  '//p%label//':')
             if (p%law%restitution > 0.0_dp) then
                write (lst%unit, '(4x,a,f6.3,a)', iostat=lst%ios, iomsg=lst%msg) 'c calibrated to the restitution e =', &
                   p%law%restitution, ' (exact relation of the joint: docs/verification.md)'
@@ -448,14 +427,12 @@ contains
             end if
          end do
          if (both) then
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) trim(line)
-            call lst%note()
+            call lst%put(trim(line))
             line = trim(head)
          else
             line = head(1:46)//trim(line(47:))
          end if
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-         call lst%note()
+         call lst%put(line)
          associate (kind => buildings(ib)%kind)
             do s = kind%n_segments(), 1, -1
                write (head, '(2x,i6,i8,i6,2a12)') s, kind%segment_storey(s), kind%segment_line(s), &
@@ -466,34 +443,16 @@ contains
                      if (both) then
                         line = line//'  '//fixed_cell(unc%building(ib)%member_peak(k), 10, 3, .true.)// &
                                fixed_cell(cpl%building(ib)%member_peak(k), 10, 3, .true.)// &
-                               lambda_cell(infl(ib)%member_lambda(k))
+                               lambda_cell(infl(ib)%member_lambda(k), 9, 1)
                      else
                         line = line//'  '//fixed_cell(unc%building(ib)%member_peak(k), 10, 3, .true.)
                      end if
                   end associate
                end do
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-               call lst%note()
+               call lst%put(line)
             end do
          end associate
       end do
-
-   contains
-
-      !> lambda in 9 columns ('inf' for a response created by pounding).
-      pure function lambda_cell(x) result(cell)
-         real(dp), intent(in) :: x
-         character(len=9) :: cell
-
-         if (ieee_is_nan(x)) then
-            cell = '      n/m'
-         else if (x >= huge(1.0_dp)) then
-            cell = '      inf'
-         else
-            cell = fixed_cell(x, 9, 1)
-         end if
-      end function lambda_cell
-
    end subroutine write_column_tables
 
    !> Influence coefficients lambda = (Qc - Qu)/Qu * 100 (%), storey (floor) rows and one
@@ -523,7 +482,6 @@ contains
          character(len=6) :: number
          character(len=:), allocatable :: line
          integer :: j, ib, w
-         real(dp) :: lambda
 
          write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  '//title
          call lst%note()
@@ -531,8 +489,7 @@ contains
          do ib = 1, size(models)
             line = line//right_cell(models(ib)%name, column_width(ib))
          end do
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-         call lst%note()
+         call lst%put(line)
          do j = maxval([(size(models(ib)%floor_dof), ib=1, size(models))]), 1, -1
             write (number, '(i6)') j
             line = '  '//number
@@ -541,18 +498,10 @@ contains
                if (j > size(models(ib)%floor_dof)) then
                   line = line//right_cell('-', w)
                else
-                  lambda = infl(ib)%lambda(j, q)
-                  if (ieee_is_nan(lambda)) then
-                     line = line//right_cell('n/m', w)
-                  else if (lambda >= huge(1.0_dp)) then
-                     line = line//right_cell('inf', w)
-                  else
-                     line = line//repeat(' ', w - 14)//fixed_cell(lambda, 14, 2)
-                  end if
+                  line = line//repeat(' ', w - 14)//lambda_cell(infl(ib)%lambda(j, q), 14, 2)
                end if
             end do
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-            call lst%note()
+            call lst%put(line)
          end do
       end subroutine table
 
@@ -606,34 +555,21 @@ contains
          mu = cfg%target_quantities(q_ductility) .and. structure_yields(models(ib))
          if (mu) line = line//right_cell('ductility', 11)
          if (cfg%target > 0.0_dp) line = line//'  target'
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-         call lst%note()
+         call lst%put(line)
          do i = 1, size(res%gap)
             line = '  '//fixed_cell(mm*res%gap(i), 12, 4)
             if (res%failed(i)) then
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line//'   FAILED (see the failed gaps below)'
-               call lst%note()
+               call lst%put(line//'   FAILED (see the failed gaps below)')
                cycle
             end if
             write (cell, '(i11)') res%impacts(i)
             line = line//cell
             do k = 1, size(shown)
-               if (res%max_abs_lambda(shown(k), ib, i) >= huge(1.0_dp)) then
-                  line = line//right_cell('inf', 10)
-               else
-                  line = line//fixed_cell(res%max_abs_lambda(shown(k), ib, i), 10, 2)
-               end if
+               line = line//lambda_cell(res%max_abs_lambda(shown(k), ib, i), 10, 2)
             end do
-            if (mu) then
-               if (res%max_abs_lambda(q_ductility, ib, i) >= huge(1.0_dp)) then
-                  line = line//right_cell('inf', 11)
-               else
-                  line = line//fixed_cell(res%max_abs_lambda(q_ductility, ib, i), 11, 2)
-               end if
-            end if
+            if (mu) line = line//lambda_cell(res%max_abs_lambda(q_ductility, ib, i), 11, 2)
             if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-            call lst%note()
+            call lst%put(line)
          end do
       end do
       if (cfg%target > 0.0_dp) then
@@ -654,8 +590,7 @@ contains
             '  Failed gaps (', count(res%failed), ' of ', &
             size(res%gap), '; left out, counted as not meeting the target):'
          call lst%note()
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '    case      gap [mm]       t [s]      step  message'
-         call lst%note()
+         call lst%put('    case      gap [mm]       t [s]      step  message')
          do i = 1, size(res%gap)
             if (.not. res%failed(i)) cycle
             write (lst%unit, '(i8,a14,es12.4,i10,2x,a)', iostat=lst%ios, iomsg=lst%msg) i, fixed_cell(mm*res%gap(i), 14, 4), &
@@ -704,9 +639,8 @@ contains
       if (all(models%member%n == 0)) return
       call write_section(lst, 'Gap study: largest |lambda| [%] over the column segments of the frames '// &
                          'against the gap')
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  one column per frame and targeted column quantity: '// &
-         '<building>:column_shear (segment shear V), <building>:column_moment (end moments M1, M2)'
-      call lst%note()
+      call lst%put('  one column per frame and targeted column quantity: '// &
+         '<building>:column_shear (segment shear V), <building>:column_moment (end moments M1, M2)')
       line = '    gap [mm]  impacts'
       do ib = 1, size(models)
          if (models(ib)%member%n == 0) cycle
@@ -718,14 +652,12 @@ contains
          end do
       end do
       if (cfg%target > 0.0_dp) line = line//'  target'
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-      call lst%note()
+      call lst%put(line)
       do i = 1, size(res%gap)
          write (cell, '(f12.4)') 1000.0_dp*res%gap(i)
          line = cell
          if (res%failed(i)) then
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line//'   FAILED (see the failed gaps above)'
-            call lst%note()
+            call lst%put(line//'   FAILED (see the failed gaps above)')
             cycle
          end if
          write (cell, '(i9)') res%impacts(i)
@@ -735,16 +667,11 @@ contains
             do q = q_column_shear, q_column_moment
                if (.not. cfg%target_quantities(q)) cycle
                w = max(12, len_trim(models(ib)%name) + len_trim(target_names(q)) + 3)
-               if (res%max_abs_lambda(q, ib, i) >= huge(1.0_dp)) then
-                  line = line//repeat(' ', w - 3)//'inf'
-               else
-                  line = line//fixed_cell(res%max_abs_lambda(q, ib, i), w, 2)
-               end if
+               line = line//lambda_cell(res%max_abs_lambda(q, ib, i), w, 2)
             end do
          end do
          if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-         call lst%note()
+         call lst%put(line)
       end do
    end subroutine write_sweep_column_table
 

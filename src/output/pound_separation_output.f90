@@ -127,10 +127,9 @@ contains
       call write_separation_legend(lst, .false., sep)
       if (present(per_joint)) then
          if (per_joint) then
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  time-hist. per joint: the threshold of '// &
+            call lst%put('  time-hist. per joint: the threshold of '// &
                'the pair''s joint''s own sweep (its pairs at the gaps, the other pairs at their deck gaps; Gap '// &
-               'study per joint).'
-            call lst%note()
+               'study per joint).')
          end if
       end if
       do ip = 1, size(sep)
@@ -168,9 +167,8 @@ contains
       do ib = 1, size(names)
          setback = building_setbacks(sep, ib, size(names))
          if (.not. (setback >= 0.0_dp)) cycle
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell(trim(names(ib)), 12)// &
-            fixed_cell(1000.0_dp*setback, cw, 3)//' mm  '//trim(where(ib, setback))
-         call lst%note()
+         call lst%put('  '//left_cell(trim(names(ib)), 12)// &
+            fixed_cell(1000.0_dp*setback, cw, 3)//' mm  '//trim(where(ib, setback)))
       end do
 
    contains
@@ -223,8 +221,7 @@ contains
       do q = 1, size(heads)
          line = line//right_cell(trim(heads(q)), cw)
       end do
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-      call lst%note()
+      call lst%put(line)
    end subroutine write_separation_head
 
    !> One row of a pair's table: the rules in mm (n/a where not computed) and rho.
@@ -238,12 +235,11 @@ contains
       !> Width of the row column.
       integer, intent(in) :: w
 
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+      call lst%put( &
          '  '//left_cell(name, w)//mm(sep%abs, sep%computed)//mm(sep%srss, sep%computed)// &
          mm(sep%ddc, sep%computed)//ratio(sep%rho, sep%computed)//mm(sep%asce7, sep%asce7_valid)// &
          mm(sep%en1998, sep%en1998_valid)//mm(sep%is1893, sep%is1893_valid)// &
-         mm(sep%no_contact, sep%no_contact_valid)//mm(sep%time_history, sep%time_history_valid)
-      call lst%note()
+         mm(sep%no_contact, sep%no_contact_valid)//mm(sep%time_history, sep%time_history_valid))
 
    contains
 

@@ -234,8 +234,7 @@ contains
          character(len=*), intent(in) :: text
 
          if (lst%ios /= 0) return
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) text
-         call lst%note()
+         call lst%put(text)
       end subroutine put
 
       function targets() result(s)
@@ -405,10 +404,8 @@ contains
       do s = 1, size(res%levels)
          call open_text(demand_file_name(listing, s), 'demands', w, error)
          if (allocated(error)) return
-         write (w%unit, '(a)', iostat=w%ios, iomsg=w%msg) header
-         call w%note()
-         write (w%unit, '(a)', iostat=w%ios, iomsg=w%msg) units
-         call w%note()
+         call w%put(header)
+         call w%put(units)
          do k = 1, size(res%motions)
             row = trim(res%motions(k))
             do ib = 1, nb
@@ -422,8 +419,7 @@ contains
                end do
             end do
             if (w%ios /= 0) exit
-            write (w%unit, '(a)', iostat=w%ios, iomsg=w%msg) row
-            call w%note()
+            call w%put(row)
          end do
          call close_text(w, error)
          if (allocated(error)) return

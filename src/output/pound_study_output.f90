@@ -17,7 +17,6 @@
 !>         <variant>/peak_force, realised_restitution   (n_pairs) kN, 1 (-1: not computed)
 !>         <variant>  attribute law: the laws of its groups; pairs: the pair labels
 module pound_study_output
-   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    use pound_kinds, only: dp
    use pound_error, only: error_type
    use pound_strings, only: str, fixed_cell, right_cell
@@ -28,6 +27,7 @@ module pound_study_output
    use pound_joint_study, only: joint_study_result, realised_not_computed
    use pound_text_writer, only: text_writer
    use pound_listing, only: write_section
+   use pound_influence_output, only: lambda_cell
    use pound_h5, only: h5_file, h5_open, h5_close, h5_write, h5_write_attr
    implicit none
    private
@@ -53,14 +53,12 @@ contains
       call write_section(lst, 'Joint stiffness by default (groups without stiffness)')
       do ic = 1, size(contacts)
          if (.not. has_rule(contacts(ic))) cycle
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  &contact #'//str(ic)//' ('// &
-            contacts(ic)%left//', '//contacts(ic)%right//'): '//contacts(ic)%stiffness_rule
-         call lst%note()
+         call lst%put('  &contact #'//str(ic)//' ('// &
+            contacts(ic)%left//', '//contacts(ic)%right//'): '//contacts(ic)%stiffness_rule)
       end do
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  The impact stiffness is uncertain by an '// &
+      call lst%put('  The impact stiffness is uncertain by an '// &
          "order of magnitude: a &sweep parameter = 'stiffness' shows how much every lambda and impact force "// &
-         'depends on it.'
-      call lst%note()
+         'depends on it.')
    contains
       pure logical function has_rule(c)
          type(contact_config), intent(in) :: c
@@ -106,8 +104,7 @@ contains
       call lst%note()
       if (res%kind == 'law') then
          do i = 1, n
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//trim(res%label(i))//': law '//trim(res%law(i))
-            call lst%note()
+            call lst%put('  '//trim(res%label(i))//': law '//trim(res%law(i)))
          end do
       end if
       do ib = 1, size(models)
@@ -121,25 +118,22 @@ contains
             if (column_listed(ib, q)) line = line//right_cell(trim(target_names(q)), 15)
          end do
          if (target > 0.0_dp) line = line//'  target'
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-         call lst%note()
+         call lst%put(line)
          do i = 1, n
             line = right_cell(trim(res%label(i)), 12)
             if (res%failed(i)) then
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line//'   FAILED: '//trim(res%messages(i))
-               call lst%note()
+               call lst%put(line//'   FAILED: '//trim(res%messages(i)))
                cycle
             end if
             line = line//right_cell(str(res%impacts(i)), 11)
             do k = 1, size(shown)
-               line = line//lambda_cell(res%max_abs_lambda(shown(k), ib, i))
+               line = line//lambda_cell(res%max_abs_lambda(shown(k), ib, i), 10, 2)
             end do
             do q = n_history_quantities + 1, q_column_moment
-               if (column_listed(ib, q)) line = line//'     '//lambda_cell(res%max_abs_lambda(q, ib, i))
+               if (column_listed(ib, q)) line = line//'     '//lambda_cell(res%max_abs_lambda(q, ib, i), 10, 2)
             end do
             if (target > 0.0_dp) line = line//merge('     met', '      no', res%meets(i))
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-            call lst%note()
+            call lst%put(line)
          end do
       end do
       write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  Peak force [kN] and realised coefficient of '// &
@@ -149,8 +143,7 @@ contains
       do k = 1, size(res%pair)
          line = line//right_cell(trim(res%pair(k)), 16)//right_cell('e_r', 7)
       end do
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-      call lst%note()
+      call lst%put(line)
       do i = 1, n
          line = right_cell(trim(res%label(i)), 12)
          if (res%failed(i)) cycle
@@ -162,8 +155,7 @@ contains
                line = line//fixed_cell(res%realised_e(k, i), 7, 3)
             end if
          end do
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-         call lst%note()
+         call lst%put(line)
       end do
    contains
       !> Whether a frame's column quantity q (column_shear, column_moment) of building ib is listed.
@@ -172,19 +164,6 @@ contains
 
          column_listed = models(ib)%member%n > 0 .and. targeted(q)
       end function column_listed
-
-      pure function lambda_cell(x) result(cell)
-         real(dp), intent(in) :: x
-         character(len=:), allocatable :: cell
-
-         if (ieee_is_nan(x)) then
-            cell = right_cell('n/m', 10)
-         else if (x >= huge(1.0_dp)) then
-            cell = right_cell('inf', 10)
-         else
-            cell = fixed_cell(x, 10, 2)
-         end if
-      end function lambda_cell
    end subroutine write_study_tables
 
    !> The studies' groups appended to the results file `path` (see the module doc).

@@ -46,10 +46,9 @@ contains
 
       if (all(models%member%n == 0)) return
       call write_section(lst, 'Suite: largest |lambda| [%] over the column segments per motion and frame')
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+      call lst%put( &
          '  column_shear: segment shear V; column_moment: end moments '// &
-         'M1, M2 (the &sweep target quantities); mean and max over the motions that did not fail'
-      call lst%note()
+         'M1, M2 (the &sweep target quantities); mean and max over the motions that did not fail')
       line = '  '//'motion'//repeat(' ', 14)
       do ib = 1, size(models)
          if (models(ib)%member%n == 0) cycle

@@ -111,23 +111,20 @@ contains
          wb = max(wb, len(models(ib)%name))
       end do
       call write_section(lst, 'Ground-motion suite ('//counted(nm, 'motion')//')')
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
-         'period of each building (m/s^2); row T1: that period (s)'
-      call lst%note()
+      call lst%put('  Sa: 5 %-damped pseudo-acceleration at the fundamental '// &
+         'period of each building (m/s^2); row T1: that period (s)')
       line = '  '//left_cell('motion', wm)//'  scale_factor  PGA [m/s^2]'
       do ib = 1, nb
          line = line//right_cell('Sa '//models(ib)%name, sa_width(ib))
       end do
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-      call lst%note()
+      call lst%put(line)
       do k = 1, nm
          line = '  '//left_cell(trim(suite%names(k)), wm)//es_cell(suite%scale_factor(k), 14)// &
                 es_cell(suite%pga(k), 13)
          do ib = 1, nb
             line = line//es_cell(suite%sa_building(k, ib), sa_width(ib))
          end do
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-         call lst%note()
+         call lst%put(line)
          if (suite%motion_failed(k)) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//repeat(' ', wm)// &
             '   FAILED (see the failed cases below): left out of every suite statistic'
          call lst%note()
@@ -144,20 +141,17 @@ contains
             line = line//es_cell(sum(suite%sa_building(used, ib))/suite%n_used, sa_width(ib))
          end do
       end if
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-      call lst%note()
+      call lst%put(line)
       line = '  '//left_cell('T1', wm)//right_cell('-', 14)//right_cell('-', 13)
       do ib = 1, nb
          line = line//repeat(' ', sa_width(ib) - 14)//fixed_cell(suite%building_period(ib), 14, 4)
       end do
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-      call lst%note()
+      call lst%put(line)
       write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell('motion', wm)//'  source'
       call lst%note()
       do k = 1, nm
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell(trim(suite%names(k)), wm)//'  '// &
-            trim(suite%source(k))
-         call lst%note()
+         call lst%put('  '//left_cell(trim(suite%names(k)), wm)//'  '// &
+            trim(suite%source(k)))
       end do
       if (lst%first_ios /= 0) return
       if (.not. suite%has_coupled) then
@@ -170,13 +164,10 @@ contains
       do q = 1, n_history_quantities
          line = line//right_cell(trim(history_names(q)), 14)
       end do
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-      call lst%note()
+      call lst%put(line)
       do k = 1, nm
          if (suite%motion_failed(k)) then
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-               '  '//left_cell(trim(suite%names(k)), wm)//'   FAILED'
-            call lst%note()
+            call lst%put('  '//left_cell(trim(suite%names(k)), wm)//'   FAILED')
             cycle
          end if
          do ib = 1, nb
@@ -184,8 +175,7 @@ contains
             do q = 1, n_history_quantities
                line = line//es_cell(max_abs_meaningful(suite%building(ib)%lambda(k, :, q)), 14)
             end do
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-            call lst%note()
+            call lst%put(line)
          end do
       end do
 
@@ -211,27 +201,24 @@ contains
 
       call write_section(lst, 'Separation rules per contact pair [mm]')
       call write_separation_legend(lst, .true., suite%separation(nm + 1, :))
-      write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  The suite row: rules on the mean peaks; no-contact gap: '// &
+      call lst%put('  The suite row: rules on the mean peaks; no-contact gap: '// &
          'the largest over the motions'//over//' (the gap at which no motion makes contact); below each table the '// &
-         'mean closing displacement: the mean of the motions'' no-contact gaps (some motion still makes contact there).'
-      call lst%note()
+         'mean closing displacement: the mean of the motions'' no-contact gaps (some motion still makes contact there).')
       do ip = 1, size(suite%separation, 2)
          call write_separation_head(lst, suite_pair_name(ip, cs), 'motion', wm, suite%separation(nm + 1, ip))
          do k = 1, nm + 1
             if (k <= nm) then
                if (suite%motion_failed(k)) then
-                  write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell(row_name(k), wm)//'   FAILED'
-                  call lst%note()
+                  call lst%put('  '//left_cell(row_name(k), wm)//'   FAILED')
                   cycle
                end if
             end if
             call write_separation_rows(lst, row_name(k), suite%separation(k, ip), wm)
          end do
          if (suite%mean_closing(ip) >= 0.0_dp) then
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  mean closing displacement (mean over the '// &
+            call lst%put('  mean closing displacement (mean over the '// &
                'motions of max_t (u1 - u2)): '// &
-               trim(adjustl(fixed_cell(1000.0_dp*suite%mean_closing(ip), 14, 3)))//' mm'
-            call lst%note()
+               trim(adjustl(fixed_cell(1000.0_dp*suite%mean_closing(ip), 14, 3)))//' mm')
          end if
       end do
       block
@@ -244,37 +231,29 @@ contains
       end block
       if (suite%has_sweep) then
          call write_section(lst, 'Suite gap sweep: largest |lambda| [%] over the targeted quantities')
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  mean: the suite mean of each quantity''s and '// &
-            'building''s largest |lambda|, then the largest; max: the largest over the motions'//over
-         call lst%note()
+         call lst%put('  mean: the suite mean of each quantity''s and '// &
+            'building''s largest |lambda|, then the largest; max: the largest over the motions'//over)
          if (any(suite%gap_failed)) write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
             '  FAILED: a motion''s run '// &
             'failed at the gap (see the failed cases below): not averaged over the others, never meeting the target'
          call lst%note()
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '      gap [mm]          mean           max'
-         call lst%note()
+         call lst%put('      gap [mm]          mean           max')
          do k = 1, size(suite%sweep_gap)
             if (suite%gap_failed(k)) then
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '  '//gap_cell(suite%sweep_gap(k), 12)//'        FAILED'
-               call lst%note()
+               call lst%put('  '//gap_cell(suite%sweep_gap(k), 12)//'        FAILED')
                cycle
             end if
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//gap_cell(suite%sweep_gap(k), 12)// &
-               es_cell(suite%sweep_mean(k), 14)//es_cell(suite%sweep_max(k), 14)
-            call lst%note()
+            call lst%put('  '//gap_cell(suite%sweep_gap(k), 12)// &
+               es_cell(suite%sweep_mean(k), 14)//es_cell(suite%sweep_max(k), 14))
          end do
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  smallest gap meeting the target on the mean: '// &
-            gap_or_why(suite%safe_gap_mean, none_met)
-         call lst%note()
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  smallest gap meeting the target on every motion: '// &
-            gap_or_why(suite%safe_gap_every, none_met)
-         call lst%note()
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  refined by bisection (mean, every motion): '// &
+         call lst%put('  smallest gap meeting the target on the mean: '// &
+            gap_or_why(suite%safe_gap_mean, none_met))
+         call lst%put('  smallest gap meeting the target on every motion: '// &
+            gap_or_why(suite%safe_gap_every, none_met))
+         call lst%put('  refined by bisection (mean, every motion): '// &
             gap_or_why(suite%refined_gap_mean, 'not refined')//', '// &
             gap_or_why(suite%refined_gap_every, 'not refined')//' (tolerance '// &
-            trim(adjustl(fixed_cell(mm*suite%refine_tolerance, 14, 4, .true.)))//' mm)'
-         call lst%note()
+            trim(adjustl(fixed_cell(mm*suite%refine_tolerance, 14, 4, .true.)))//' mm)')
          write (lst%unit, '(a,2(1x,i0),a)', iostat=lst%ios, iomsg=lst%msg) &
             '  non-monotone: grid gaps below the safe gap '// &
             'that pass nevertheless (mean, every motion):', suite%non_monotone_mean, suite%non_monotone_every, &
@@ -288,14 +267,11 @@ contains
             '  Per motion: the threshold on its own largest |lambda| '// &
             '(the time_history rule)'
          call lst%note()
-         write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell('motion', wm)// &
-            '     grid [mm]  refined [mm]  non-monotone'
-         call lst%note()
+         call lst%put('  '//left_cell('motion', wm)// &
+            '     grid [mm]  refined [mm]  non-monotone')
          do k = 1, nm
             if (suite%motion_failed(k)) then
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '  '//left_cell(trim(suite%names(k)), wm)//'        FAILED'
-               call lst%note()
+               call lst%put('  '//left_cell(trim(suite%names(k)), wm)//'        FAILED')
                cycle
             end if
             write (lst%unit, '(a,i14)', iostat=lst%ios, iomsg=lst%msg) '  '//left_cell(trim(suite%names(k)), wm)// &

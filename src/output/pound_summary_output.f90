@@ -107,12 +107,10 @@ contains
 
       call open_text(path, 'summary', w, error)
       if (allocated(error)) return
-      write (w%unit, '(a)', iostat=w%ios, iomsg=w%msg) csv_header
-      call w%note()
+      call w%put(csv_header)
       do i = 1, size(items)
          if (w%ios /= 0) exit
-         write (w%unit, '(a)', iostat=w%ios, iomsg=w%msg) csv_row(items(i))
-         call w%note()
+         call w%put(csv_row(items(i)))
       end do
       call close_text(w, error)
    end subroutine write_summary_csv

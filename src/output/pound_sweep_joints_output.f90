@@ -22,6 +22,7 @@ module pound_sweep_joints_output
    use pound_sweep_joints, only: joint_sweep
    use pound_suite_statistics, only: suite_result
    use pound_listing, only: write_section
+   use pound_influence_output, only: lambda_cell
    use pound_text_writer, only: text_writer
    use pound_h5, only: h5_file, h5_write
    implicit none
@@ -65,45 +66,32 @@ contains
             write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) line//')'
             call lst%note()
             if (.not. jt%done) then
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '    every gap failed: no threshold (see the warnings)'
-               call lst%note()
+               call lst%put('    every gap failed: no threshold (see the warnings)')
                cycle
             end if
             line = '      gap [mm]    impacts  max |lambda|'
             if (cfg%target > 0.0_dp) line = line//'  target'
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-            call lst%note()
+            call lst%put(line)
             do i = 1, size(sw%gap)
                line = '  '//fixed_cell(1000.0_dp*sw%gap(i), 12, 4)
                if (sw%failed(i)) then
-                  write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-                     line//'   FAILED: '//trim(sw%messages(i))
-                  call lst%note()
+                  call lst%put(line//'   FAILED: '//trim(sw%messages(i)))
                   cycle
                end if
                worst = maxval(sw%max_abs_lambda(:, :, i), mask=spread(cfg%target_quantities, 2, &
                                                                      size(sw%max_abs_lambda, 2)))
                line = line//right_cell(str(sw%impacts(i)), 11)
-               if (worst >= huge(1.0_dp)) then
-                  line = line//right_cell('inf', 14)
-               else
-                  line = line//fixed_cell(worst, 14, 2)
-               end if
+               line = line//lambda_cell(worst, 14, 2)
                if (cfg%target > 0.0_dp) line = line//merge('     met', '      no', sw%meets(i))
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-               call lst%note()
+               call lst%put(line)
             end do
             if (cfg%target <= 0.0_dp) cycle
             if (sw%found) then
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+               call lst%put( &
                   '    threshold gap of joint '//jt%name//': '// &
-                  trim(adjustl(fixed_cell(1000.0_dp*sw%safe_gap, 12, 4)))//' mm'
-               call lst%note()
+                  trim(adjustl(fixed_cell(1000.0_dp*sw%safe_gap, 12, 4)))//' mm')
             else
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '    threshold gap of joint '//jt%name//': none in the sweep range'
-               call lst%note()
+               call lst%put('    threshold gap of joint '//jt%name//': none in the sweep range')
             end if
          end associate
       end do
@@ -140,31 +128,26 @@ contains
             end do
             write (lst%unit, '(/,a)', iostat=lst%ios, iomsg=lst%msg) line//')'
             call lst%note()
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) '      gap [mm]          mean           max'
-            call lst%note()
+            call lst%put('      gap [mm]          mean           max')
             do i = 1, size(suite%sweep_gap)
                line = '  '//fixed_cell(1000.0_dp*suite%sweep_gap(i), 12, 3)
                if (jt%gap_failed(i)) then
                   line = line//'        FAILED'
                else
-                  line = line//lambda_cell(jt%mean(i))//lambda_cell(jt%max(i))
+                  line = line//lambda_cell(jt%mean(i), 14, 2)//lambda_cell(jt%max(i), 14, 2)
                end if
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) line
-               call lst%note()
+               call lst%put(line)
             end do
-            write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
+            call lst%put( &
                '    threshold gap of joint '//jt%name//': on the mean '//gap_text(jt%safe_gap_mean)// &
-               ', on every motion '//gap_text(jt%safe_gap_every)
-            call lst%note()
+               ', on every motion '//gap_text(jt%safe_gap_every))
             do k = 1, size(suite%names)
                if (suite%motion_failed(k)) then
                   line = 'FAILED'
                else
                   line = gap_text(jt%safe_gap_motion(k))
                end if
-               write (lst%unit, '(a)', iostat=lst%ios, iomsg=lst%msg) &
-                  '      '//left_cell(trim(suite%names(k)), w)//line
-               call lst%note()
+               call lst%put('      '//left_cell(trim(suite%names(k)), w)//line)
             end do
          end associate
       end do
@@ -182,18 +165,6 @@ contains
             text = 'n/a (none in the sweep range, or no target)'
          end if
       end function gap_text
-
-      !> A |lambda| (%) in 14 columns, 'inf' for +huge.
-      pure function lambda_cell(x) result(cell)
-         real(dp), intent(in) :: x
-         character(len=14) :: cell
-
-         if (x >= huge(1.0_dp)) then
-            cell = right_cell('inf', 14)
-         else
-            cell = fixed_cell(x, 14, 2)
-         end if
-      end function lambda_cell
 
    end subroutine write_suite_joint_tables
 
