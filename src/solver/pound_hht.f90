@@ -110,6 +110,7 @@ module pound_hht
       procedure :: strain_energy => hht_strain_energy
       procedure :: add_input_work => hht_add_input_work
       procedure :: start_load => hht_start_load
+      procedure :: take_settings => hht_take_settings
    end type hht_state
 
 contains
@@ -122,6 +123,19 @@ contains
 
       st%alpha = alpha
    end function hht_new
+
+   !> HHT-alpha's setting is alpha: taken from another HHT-alpha integrator.
+   pure subroutine hht_take_settings(st, other)
+      !> Integrator (not yet set up).
+      class(hht_state), intent(inout) :: st
+      !> The integrator whose alpha it takes.
+      class(integrator), intent(in) :: other
+
+      select type (other)
+      class is (hht_state)
+         st%alpha = other%alpha
+      end select
+   end subroutine hht_take_settings
 
    !> HHT-alpha: no exact free steps, no lanes; it dissipates when alpha < 0.
    pure function hht_properties(st) result(p)

@@ -151,6 +151,10 @@ module pound_integrator
       !> the loads at t_0 the method keeps (HHT-alpha's F_0). The default sets a through
       !> `set_state` (Newmark's step is incremental: a_0 is all it keeps).
       procedure :: start_load => default_start_load
+      !> Take the method's settings (not its state) of another integrator of the same kind, so
+      !> that one allocated with `mold=` and then `init` steps by the same method (HHT-alpha's
+      !> alpha). The default: a method without settings.
+      procedure :: take_settings => no_settings
    end type integrator
 
    abstract interface
@@ -405,6 +409,16 @@ contains
       end do
       call st%set_state(b, a=a0)
    end subroutine default_start_load
+
+   !> Default `take_settings`: nothing (a method without settings of its own).
+   pure subroutine no_settings(st, other)
+      !> Integrator (not yet set up).
+      class(integrator), intent(inout) :: st
+      !> The integrator whose settings it takes.
+      class(integrator), intent(in) :: other
+
+      if (same_type_as(st, other)) return
+   end subroutine no_settings
 
    !> Default `add_input_work`: nothing (an integrator that cannot take a ground load).
    pure subroutine no_input_work(st, w)

@@ -216,6 +216,8 @@ contains
       if (allocated(rt%st)) deallocate (rt%st)
       allocate (rt%st(size(st)), mold=st)
       do i = 1, size(st)
+         ! mold= gives the kind, not its settings: the substeps take the run's (HHT's alpha).
+         call rt%st(i)%take_settings(st(i))
          call rt%st(i)%init(models(i), hs, ag0, error)
          if (allocated(error)) return
       end do
