@@ -16,7 +16,7 @@ module pound_contact_period
    use pound_kinds, only: dp
    use pound_constants, only: pi
    use pound_structure, only: structure_model
-   use pound_contact_pair, only: contact_pair
+   use pound_contact_pair, only: contact_pair, end_mass
    use pound_band, only: band_symv
    use pound_band_lapack, only: dpbtrf, dpbtrs
    implicit none
@@ -31,6 +31,25 @@ module pound_contact_period
 
 contains
 
+   !> The mass of end e for the contact period: a contact point of buildings in plan takes the
+   !> share of its floor's mass (`mass_dof`), as its law takes the share of the pair's (so two
+   !> points give the pair's period); an end at one DOF its lumped mass; an end on a row of
+   !> several DOFs the row's mass (`end_mass`).
+   pure real(dp) function end_period_mass(p, e, mass) result(m)
+      !> The constraint, its DOFs located.
+      type(contact_pair), intent(in) :: p
+      !> End: 1 or 2.
+      integer, intent(in) :: e
+      !> Lumped masses of the end's building (t).
+      real(dp), intent(in) :: mass(:)
+
+      if (p%mass_dof(e) > 0) then
+         m = p%share*mass(p%mass_dof(e))
+      else
+         m = end_mass(p, e, mass)
+      end if
+   end function end_period_mass
+
    !> The contact half-period pi/omega of a joint (s), see the module doc (the facing floor
    !> masses' pi sqrt(m_eff/k0) when both ends have a mass).
    function joint_half_period(p, models) result(half)
@@ -44,7 +63,7 @@ contains
 
       m = 0.0_dp
       do e = 1, 2
-         if (p%building(e) > 0) m(e) = models(p%building(e))%mass(p%dof(e))
+         if (p%building(e) > 0) m(e) = end_period_mass(p, e, models(p%building(e))%mass)
       end do
       if (all(m > 0.0_dp .or. p%building <= 0)) then
          ! A smooth law: its contact duration at `substep_impact_speed` (pound_law_impact).
@@ -63,7 +82,7 @@ contains
          if (p%building(e) <= 0) cycle
          if (m(e) > 0.0_dp) then
             minv = minv + 1.0_dp/m(e)
-         else
+         else if (p%dof(e) > 0) then
             call massless_end(models(p%building(e)), p%dof(e), m(e), kp)
             flex = flex + 1.0_dp/kp
             if (m(e) > 0.0_dp) minv = minv + 1.0_dp/m(e)
