@@ -135,7 +135,7 @@ def main():
     ap.add_argument("--records", default=os.path.join(os.path.dirname(HERE), "..", "shared", "records"))
     ap.add_argument("--t-end", type=float, default=20.0)
     ap.add_argument("--repeats", type=int, default=3, help="runs of each deck; times are their medians")
-    a = ap.parse_args()
+    a = ap.parse_intermixed_args()
     dts = sorted((float(x) for x in a.dts.split(",")), reverse=True)
     if a.deck:
         text = absolute_records(open(a.deck).read(), os.path.dirname(os.path.abspath(a.deck)))
