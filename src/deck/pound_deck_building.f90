@@ -8,10 +8,10 @@ module pound_deck_building
    use pound_config, only: building_config, deck_warning_len
    use pound_constants, only: g_accel
    use pound_deck_checks, only: check_plausible, check_real, fail, given_count, is_set, read_failed, require_real, &
-                                widen, site, site_of, take_ints, take_reals, unset_int, unset_real, warn
+                                widen, site, group_input, take_ints, take_reals, unset_int, unset_real, warn
    use pound_deck_storey_law, only: take_storey_law
    use pound_deck_hinge_law, only: take_hinge_law
-   use pound_deck_lexer, only: group_extent, group_ref, group_text, is_name_char, lower
+   use pound_deck_lexer, only: group_extent, group_ref, is_name_char, lower
    use pound_deck_variables, only: max_name_length, max_storeys, word_len, max_bays, max_column_elements, &
                                    frame_variables, plan_variables
    use pound_error, only: error_type
@@ -123,9 +123,7 @@ contains
       beam_e = unset_real
       beam_area = unset_real
       beam_inertia = unset_real
-      at = site_of(path, g)
-      call group_text(text, g, buf)
-      msg = ' '
+      call group_input(path, text, g, at, buf, msg)
       read (buf, nml=building, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
       if (allocated(error)) return

@@ -3,9 +3,9 @@
 module pound_deck_contact
    use pound_config, only: building_config, contact_config, is_frame, deck_warning_len
    use pound_building_spec, only: is_plan
-   use pound_deck_checks, only: check_real, fail, warn, given_count, is_set, read_failed, site, site_of, unset_int, &
+   use pound_deck_checks, only: check_real, fail, warn, given_count, is_set, read_failed, site, group_input, unset_int, &
                                 unset_real, values_text
-   use pound_deck_lexer, only: group_ref, group_text, lower
+   use pound_deck_lexer, only: group_ref, lower
    use pound_law_registry, only: registered_law_names, law_is_registered, law_reads, law_restitution, law_take_deck, &
                                  restitution_law_names, law_variables, law_stiffness_linear
    use pound_joint_law, only: law_input, law_variable
@@ -84,9 +84,7 @@ contains
       restitution = unset_real
       friction = unset_real
       shear_stiffness = unset_real
-      at = site_of(path, g)
-      call group_text(text, g, buf)
-      msg = ' '
+      call group_input(path, text, g, at, buf, msg)
       read (buf, nml=contact, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
       if (allocated(error)) return

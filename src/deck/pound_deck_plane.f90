@@ -17,9 +17,9 @@ module pound_deck_plane
    use pound_config, only: building_config, deck_warning_len
    use pound_building_spec, only: plane_spec, is_plan
    use pound_deck_contact, only: find_building
-   use pound_deck_checks, only: fail, given_count, is_set, read_failed, site, site_of, take_reals, unset_real, &
+   use pound_deck_checks, only: fail, given_count, is_set, read_failed, site, site_of, group_input, take_reals, unset_real, &
                                 warn, widen
-   use pound_deck_lexer, only: group_extent, group_ref, group_text, lower
+   use pound_deck_lexer, only: group_extent, group_ref, lower
    use pound_deck_storey_law, only: take_law_values
    use pound_deck_variables, only: word_len
    use pound_error, only: error_type
@@ -78,9 +78,7 @@ contains
       direction = ' '
       storey_law = ' '
       position = unset_real
-      at = site_of(path, g)
-      call group_text(text, g, buf)
-      msg = ' '
+      call group_input(path, text, g, at, buf, msg)
       read (buf, nml=plane, iostat=ios, iomsg=msg)
       call read_failed(at, ios, msg, error)
       if (allocated(error)) return
