@@ -122,8 +122,8 @@ contains
          call modal_step_coefficients(w(i), st%cm(i), gamma, st%dt, st%coef(1:8, i), wi, wd)
          st%coef(9:15, i) = form_terms(wi)
          st%coef(16:22, i) = form_terms(wd)
-         st%ground_terms(1:3) = st%ground_terms(1:3) + [wi(3, 3), 2.0_dp*wi(3, 4), wi(4, 4)]
-         st%ground_terms(4:6) = st%ground_terms(4:6) + [wd(3, 3), 2.0_dp*wd(3, 4), wd(4, 4)]
+         st%ground_terms(1:3) = st%ground_terms(1:3) + ground_terms_of(wi)
+         st%ground_terms(4:6) = st%ground_terms(4:6) + ground_terms_of(wd)
          if (.not. all(ieee_is_finite(st%coef(:, i)))) then
             call fatal_error(error, structure_label(b)//": free_steps = 'exact': mode "//str(i)// &
                              ' (omega^2 = '//str(w(i))//' 1/s^2) gives a step that is not finite at dt = '// &
@@ -168,17 +168,26 @@ contains
       st%exact = .true.
       st%pending = .false.
       st%modal_valid = .false.
-
-   contains
-
-      !> A form's terms in (q0^2, q0 q0', q0'^2, q0 a_g0, q0 a_g1, q0' a_g0, q0' a_g1).
-      pure function form_terms(f) result(t)
-         real(dp), intent(in) :: f(4, 4)
-         real(dp) :: t(7)
-
-         t = [f(1, 1), 2.0_dp*f(1, 2), f(2, 2), 2.0_dp*f(1, 3), 2.0_dp*f(1, 4), 2.0_dp*f(2, 3), 2.0_dp*f(2, 4)]
-      end function form_terms
    end subroutine exact_init
+
+   !> A form's terms in (q0^2, q0 q0', q0'^2, q0 a_g0, q0 a_g1, q0' a_g0, q0' a_g1) (the
+   !> off-diagonal terms doubled).
+   pure function form_terms(f) result(t)
+      !> The form over (q0, q0', a_g0, a_g1).
+      real(dp), intent(in) :: f(4, 4)
+      real(dp) :: t(7)
+
+      t = [f(1, 1), 2.0_dp*f(1, 2), f(2, 2), 2.0_dp*f(1, 3), 2.0_dp*f(1, 4), 2.0_dp*f(2, 3), 2.0_dp*f(2, 4)]
+   end function form_terms
+
+   !> A form's terms in the ground alone (a_g0^2, a_g0 a_g1, a_g1^2).
+   pure function ground_terms_of(f) result(t)
+      !> The form over (q0, q0', a_g0, a_g1).
+      real(dp), intent(in) :: f(4, 4)
+      real(dp) :: t(3)
+
+      t = [f(3, 3), 2.0_dp*f(3, 4), f(4, 4)]
+   end function ground_terms_of
 
    !> The step of each mode under its modal ground (a model with a second ground component,
    !> see the module doc): the participations of the first two components, the coefficients for
@@ -210,12 +219,10 @@ contains
          st%gam(i, 1) = sum(st%phi(:, i)*b%mass*b%ground_set(:, 1))
          st%gam(i, 2) = sum(st%phi(:, i)*b%mass*b%ground_set(:, 2))
          call modal_step_coefficients(lam(i), st%cm(i), 1.0_dp, st%dt, st%coef2(1:8, i), wi, wd)
-         st%coef2(9:15, i) = [wi(1, 1), 2.0_dp*wi(1, 2), wi(2, 2), 2.0_dp*wi(1, 3), 2.0_dp*wi(1, 4), &
-                              2.0_dp*wi(2, 3), 2.0_dp*wi(2, 4)]
-         st%coef2(16:22, i) = [wd(1, 1), 2.0_dp*wd(1, 2), wd(2, 2), 2.0_dp*wd(1, 3), 2.0_dp*wd(1, 4), &
-                               2.0_dp*wd(2, 3), 2.0_dp*wd(2, 4)]
-         st%coef2(23:25, i) = [wi(3, 3), 2.0_dp*wi(3, 4), wi(4, 4)]
-         st%coef2(26:28, i) = [wd(3, 3), 2.0_dp*wd(3, 4), wd(4, 4)]
+         st%coef2(9:15, i) = form_terms(wi)
+         st%coef2(16:22, i) = form_terms(wd)
+         st%coef2(23:25, i) = ground_terms_of(wi)
+         st%coef2(26:28, i) = ground_terms_of(wd)
          if (.not. all(ieee_is_finite(st%coef2(:, i)))) then
             call fatal_error(error, structure_label(b)//": free_steps = 'exact': mode "//str(i)// &
                              ' (omega^2 = '//str(lam(i))//' 1/s^2) gives a step that is not finite at dt = '// &
